@@ -1,0 +1,46 @@
+#pragma once
+
+#include "control/StateSpace.h"
+
+#include <Eigen/Core>
+
+namespace learnid {
+
+/// The filtering estimator of paper eq. (17)-(18): F(s) = rho^3/(s + rho)^3 in controllable
+/// canonical form, so that one state vector gives F x, F s x and F s^2 x (x1, x2 = x1', x3 = x2').
+/// Discretised with Tustin at the sample period. Signals are row vectors of samples.
+class FilteringEstimator
+{
+public:
+    FilteringEstimator(double rho, double samplePeriod);
+
+    double rho() const { return m_rho; }
+    const StateSpace &discrete() const { return m_discrete; }
+
+    /// Causal filtering, as a controller could run it: rows F x, F s x, F s^2 x (3 x N).
+    /// The filter starts at rest at x[0].
+    Eigen::MatrixXd causal(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
+
+    /// Causal F x alone (1 x N).
+    Eigen::RowVectorXd lowPass(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
+
+    /// Zero-phase filtering of recorded data: F applied forward, then backward with its
+    /// derivative outputs, i.e. F(s) F(-s) x and its first two time derivatives (3 x N).
+    Eigen::MatrixXd zeroPhase(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
+
+    /// F(s) F(-s) x alone (1 x N).
+    Eigen::RowVectorXd zeroPhaseLowPass(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
+
+private:
+    template <bool allOutputs, bool reversed>
+    void run(const double *x, int n, double *out, int outStride) const;
+
+    double m_rho;
+    StateSpace m_discrete;
+    Eigen::Matrix3d m_a;
+    Eigen::Vector3d m_b;
+    Eigen::Vector3d m_d;   // direct feedthrough of the three outputs (C = I)
+    Eigen::Vector3d m_rest; // state at rest under unit input: (I - A)^-1 B
+};
+
+} // namespace learnid

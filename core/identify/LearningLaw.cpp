@@ -1,0 +1,53 @@
+#include "identify/LearningLaw.h"
+
+#include "identify/ImprovedLaw.h"
+#include "identify/PaperLaw.h"
+#include "model/Error.h"
+
+#include <QCoreApplication>
+
+namespace learnid {
+
+QStringList knownLearningLaws()
+{
+    return {QStringLiteral("paper"), QStringLiteral("improved")};
+}
+
+std::unique_ptr<LearningLaw> makeLearningLaw(const QString &id)
+{
+    if (id == QLatin1String("paper"))
+        return std::make_unique<PaperLaw>();
+    if (id == QLatin1String("improved"))
+        return std::make_unique<ImprovedLaw>();
+    return nullptr;
+}
+
+void validateRecord(const RobotModel &model, const TrialPlan &plan, const TrialRecord &record)
+{
+    const auto tr = [](const char *s) { return QCoreApplication::translate("LearningLaw", s); };
+    const int n = model.dof();
+    if (record.q.rows() != n || record.tau.rows() != n || record.tau.cols() != record.q.cols()
+        || plan.desired.dof() != n || plan.feedforward.rows() != n
+        || plan.feedforward.cols() != plan.samples() || record.samples() != plan.samples()) {
+        throw Error(tr("trial record does not match its plan: %1 of %2 samples, %3 joints "
+                       "recorded for a %4-joint model")
+                        .arg(record.samples())
+                        .arg(plan.samples())
+                        .arg(record.q.rows())
+                        .arg(n));
+    }
+    if (record.samples() < 16)
+        throw Error(tr("trial record has only %1 samples").arg(record.samples()));
+    for (int k = 0; k < record.samples(); ++k) {
+        for (int j = 0; j < n; ++j) {
+            if (!std::isfinite(record.q(j, k)) || !std::isfinite(record.tau(j, k))) {
+                throw Error(tr("trial record has a non-finite %1 at sample %2, joint %3")
+                                .arg(std::isfinite(record.q(j, k)) ? tr("torque") : tr("angle"))
+                                .arg(k)
+                                .arg(j + 1));
+            }
+        }
+    }
+}
+
+} // namespace learnid

@@ -1,0 +1,52 @@
+#pragma once
+
+#include "identify/ObservableUpdate.h"
+#include "model/RobotModel.h"
+#include "robot/Trial.h"
+
+#include <QString>
+#include <QStringList>
+#include <memory>
+#include <vector>
+
+namespace learnid {
+
+/// Settings shared by the learning laws.
+struct EstimatorSettings
+{
+    double rho = 40.0;              ///< bandwidth of F(s) = rho^3/(s + rho)^3 [rad/s]
+    double rankTolerance = 1e-3;    ///< relative singular value below which a direction is kept
+    bool accumulate = true;         ///< improved law: fit all valid trials so far, not the last
+};
+
+/// One trial as a learning law sees it.
+struct TrialData
+{
+    const TrialPlan *plan = nullptr;
+    const TrialRecord *record = nullptr;
+};
+
+/// One learning step (paper eq. 13): from a trial's plan and record and the estimate it ran
+/// with, the next estimate. Laws are stateless; all they need comes in the arguments.
+class LearningLaw
+{
+public:
+    virtual ~LearningLaw() = default;
+    virtual QString id() const = 0;
+    /// trials: the completed trials so far, oldest first; the last is the newest, whose
+    /// feedforward was built with phiPrev (m). A law uses the newest or all of them.
+    /// Throws Error when a record cannot be used (too short, non-finite values).
+    virtual ParameterUpdate update(const RobotModel &model, const std::vector<TrialData> &trials,
+                                   const Eigen::VectorXd &phiPrev,
+                                   const EstimatorSettings &settings) const = 0;
+};
+
+QStringList knownLearningLaws();
+/// The law with this id ("paper" or "improved"), or nullptr.
+std::unique_ptr<LearningLaw> makeLearningLaw(const QString &id);
+
+/// Checks that plan and record agree in size and hold only finite numbers; throws Error naming
+/// the first bad sample and joint.
+void validateRecord(const RobotModel &model, const TrialPlan &plan, const TrialRecord &record);
+
+} // namespace learnid

@@ -1,0 +1,52 @@
+#include "identify/PaperLaw.h"
+
+#include "identify/FilteringEstimator.h"
+#include "model/Error.h"
+
+#include <QCoreApplication>
+
+namespace learnid {
+
+ParameterUpdate PaperLaw::update(const RobotModel &model, const std::vector<TrialData> &trials,
+                                 const Eigen::VectorXd &phiPrev,
+                                 const EstimatorSettings &settings) const
+{
+    if (trials.empty())
+        throw Error(QCoreApplication::translate("LearningLaw", "no completed trial to learn from"));
+    const TrialPlan &plan = *trials.back().plan;
+    const TrialRecord &record = *trials.back().record;
+    validateRecord(model, plan, record);
+    const int n = model.dof();
+    const int m = model.parameterCount();
+    const int samples = record.samples();
+    const FilteringEstimator filter(settings.rho, record.samplePeriod);
+
+    Eigen::MatrixXd qdHat(n, samples);
+    Eigen::MatrixXd qddHat(n, samples);
+    Eigen::MatrixXd tauHat(n, samples);
+    for (int j = 0; j < n; ++j) {
+        const Eigen::MatrixXd fe = filter.causal(plan.desired.q.row(j) - record.q.row(j));
+        qdHat.row(j) = plan.desired.qd.row(j) - fe.row(1);
+        qddHat.row(j) = plan.desired.qdd.row(j) - fe.row(2);
+        tauHat.row(j) = plan.feedforward.row(j)
+                        + filter.lowPass(record.tau.row(j) - plan.feedforward.row(j));
+    }
+
+    // Torque sample k is held over [t_k, t_k + Ts): pair it with the regressor at the interval's
+    // mid-point, (W_k + W_k+1) / 2. Online this costs one sample of delay. Pairing it with W_k
+    // instead leaves a converged bias of about -0.5 % in b on the paper scenario.
+    const int rows = samples - 1;
+    Eigen::MatrixXd a(Eigen::Index(rows) * n, m);
+    Eigen::MatrixXd w0(n, m), w1(n, m);
+    model.regressor(record.q.col(0), qdHat.col(0), qddHat.col(0), w0);
+    for (int k = 0; k < rows; ++k) {
+        model.regressor(record.q.col(k + 1), qdHat.col(k + 1), qddHat.col(k + 1), w1);
+        a.middleRows(Eigen::Index(k) * n, n) = 0.5 * (w0 + w1);
+        w0.swap(w1);
+    }
+    const Eigen::VectorXd b =
+        Eigen::Map<const Eigen::VectorXd>(tauHat.data(), Eigen::Index(rows) * n);
+    return observableUpdate(a, b, n, phiPrev, settings.rankTolerance);
+}
+
+} // namespace learnid

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <QList>
+#include <QString>
+
+namespace learnid {
+
+/// Name, unit and meaning of one dynamic parameter phi_i.
+struct ParameterInfo
+{
+    QString name;
+    QString unit;
+    QString description;
+};
+
+/// Rigid-body dynamics linear in a parameter vector phi (paper eq. 1-2):
+///   tau = M(q, phi) qdd + h(q, qd, phi) = W(q, qd, qdd) phi
+/// q: joint angles [rad] (n), qd [rad/s] (n), qdd [rad/s^2] (n), tau [N m] (n), phi (m).
+/// A model does not change after construction; callers own all working memory. Outputs are
+/// written into caller-sized storage so the simulator's inner loop does not allocate.
+class RobotModel
+{
+public:
+    using VectorRef = Eigen::Ref<const Eigen::VectorXd>;
+
+    virtual ~RobotModel() = default;
+
+    /// Identifier used in scenario files, e.g. "paper-2link".
+    virtual QString id() const = 0;
+    virtual int dof() const = 0;
+    virtual int parameterCount() const = 0;
+    virtual QList<ParameterInfo> parameters() const = 0;
+
+    /// W(q, qd, qdd) into out (dof x parameterCount).
+    virtual void regressor(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd,
+                           Eigen::Ref<Eigen::MatrixXd> out) const = 0;
+    /// M(q, phi) into out (dof x dof).
+    virtual void massMatrix(const VectorRef &q, const VectorRef &phi,
+                            Eigen::Ref<Eigen::MatrixXd> out) const = 0;
+    /// h(q, qd, phi): Coriolis, centripetal and gravity torques [N m] into out (dof).
+    virtual void biasTorque(const VectorRef &q, const VectorRef &qd, const VectorRef &phi,
+                            Eigen::Ref<Eigen::VectorXd> out) const = 0;
+
+    /// tau = M qdd + h into out (dof).
+    virtual void inverseDynamics(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd,
+                                 const VectorRef &phi, Eigen::Ref<Eigen::VectorXd> out) const;
+    /// qdd = M^-1 (tau - h) into out (dof). The default factorises M; models override it with a
+    /// closed form where the simulator's speed matters.
+    virtual void forwardDynamics(const VectorRef &q, const VectorRef &qd, const VectorRef &tau,
+                                 const VectorRef &phi, Eigen::Ref<Eigen::VectorXd> out) const;
+
+    /// True when phi gives a positive definite mass matrix at q (a physically possible robot).
+    bool massMatrixPositiveDefinite(const VectorRef &q, const VectorRef &phi) const;
+
+    /// Allocating conveniences for tests and planning code outside hot loops.
+    Eigen::MatrixXd regressorAt(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd) const;
+    Eigen::VectorXd torqueAt(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd,
+                             const VectorRef &phi) const;
+};
+
+} // namespace learnid

@@ -1,0 +1,82 @@
+#include "motion/TorqueRule.h"
+
+#include "model/Error.h"
+
+#include <QCoreApplication>
+#include <cmath>
+
+namespace learnid {
+
+namespace {
+
+// Peak of |A/T^2 + g| / limit over the grid, per joint.
+Eigen::VectorXd peakRatio(const Eigen::MatrixXd &a, const Eigen::MatrixXd &g,
+                          const Eigen::VectorXd &limit, double T)
+{
+    const Eigen::MatrixXd tau = a / (T * T) + g;
+    return tau.cwiseAbs().rowwise().maxCoeff().cwiseQuotient(limit);
+}
+
+} // namespace
+
+TorqueRuleResult shortestDuration(const RobotModel &model, const Eigen::VectorXd &phi,
+                                  const Kinematics &kinematics, const CartesianLine &line,
+                                  const Eigen::VectorXd &torqueLimit, double fraction,
+                                  int gridPoints)
+{
+    const int n = model.dof();
+    if (torqueLimit.size() != n || (torqueLimit.array() <= 0.0).any() || !(fraction > 0.0)
+        || gridPoints < 2) {
+        throw Error(QCoreApplication::translate(
+            "TorqueRule", "torque rule needs one positive limit per joint and a positive fraction"));
+    }
+
+    // A(u): inertial and velocity torque at T = 1; g(u): the T-independent gravity torque.
+    Eigen::MatrixXd a(n, gridPoints);
+    Eigen::MatrixXd g(n, gridPoints);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd near;
+    Eigen::VectorXd tau(n);
+    for (int i = 0; i < gridPoints; ++i) {
+        const double u = double(i) / (gridPoints - 1);
+        const JointState st = lineStateAt(kinematics, line, 1.0, u, near);
+        near = st.q;
+        model.inverseDynamics(st.q, zero, zero, phi, tau);
+        g.col(i) = tau;
+        model.inverseDynamics(st.q, st.qd, st.qdd, phi, tau);
+        a.col(i) = tau - g.col(i);
+    }
+
+    const Eigen::VectorXd limit = fraction * torqueLimit;
+    const Eigen::VectorXd staticRatio = g.cwiseAbs().rowwise().maxCoeff().cwiseQuotient(limit);
+    if ((staticRatio.array() >= 1.0).any()) {
+        throw Error(QCoreApplication::translate(
+            "TorqueRule", "gravity alone needs more than %1 % of a joint's torque limit")
+                        .arg(fraction * 100.0));
+    }
+    const Eigen::VectorXd inertialRatio = a.cwiseAbs().rowwise().maxCoeff().cwiseQuotient(limit);
+    if (!inertialRatio.allFinite() || inertialRatio.maxCoeff() <= 0.0) {
+        throw Error(QCoreApplication::translate(
+            "TorqueRule", "the path needs no torque: check its length and the parameters"));
+    }
+
+    TorqueRuleResult result;
+    if (staticRatio.maxCoeff() == 0.0) {
+        result.duration = std::sqrt(inertialRatio.maxCoeff()); // max |A|/T^2 = limit
+    } else {
+        // ratio(T) -> staticRatio < 1 as T grows; bisect on the first T meeting the rule.
+        double lo = 1e-3;
+        double hi = std::sqrt(inertialRatio.maxCoeff() / (1.0 - staticRatio.maxCoeff())) + 1.0;
+        for (int it = 0; it < 200 && hi - lo > 1e-12 * hi; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (peakRatio(a, g, limit, mid).maxCoeff() > 1.0 ? lo : hi) = mid;
+        }
+        result.duration = hi;
+    }
+    const Eigen::VectorXd ratio = peakRatio(a, g, limit, result.duration);
+    ratio.maxCoeff(&result.limitingJoint);
+    result.peakTorque = ratio.cwiseProduct(limit);
+    return result;
+}
+
+} // namespace learnid

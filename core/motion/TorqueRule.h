@@ -1,0 +1,27 @@
+#pragma once
+
+#include "model/RobotModel.h"
+#include "motion/CartesianLine.h"
+
+namespace learnid {
+
+/// Result of the torque rule: the shortest motion duration for which the planned peak torque,
+/// computed with a parameter estimate, is `fraction` of the torque limits (DESIGN.md §2).
+struct TorqueRuleResult
+{
+    double duration = 0.0;       ///< T [s]
+    Eigen::VectorXd peakTorque;  ///< planned max |tau_j| over the motion at T [N m] (n)
+    int limitingJoint = 0;       ///< the joint whose peak reaches fraction * limit
+};
+
+/// Shortest duration T of the line such that max_t |tau_j(t)| <= fraction * limit_j for all j,
+/// with tau computed from the model and the estimate phi.
+/// Without gravity tau scales exactly as 1/T^2 (qd ~ 1/T, qdd ~ 1/T^2, Coriolis ~ qd^2), so T
+/// is found in closed form; with gravity tau = A(u)/T^2 + g(q(u)) and T is found by bisection.
+/// gridPoints: samples of normalised time u in [0, 1]. Throws Error when no T can meet the rule.
+TorqueRuleResult shortestDuration(const RobotModel &model, const Eigen::VectorXd &phi,
+                                  const Kinematics &kinematics, const CartesianLine &line,
+                                  const Eigen::VectorXd &torqueLimit, double fraction,
+                                  int gridPoints = 2001);
+
+} // namespace learnid

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "robot/Trial.h"
+
+#include <QString>
+#include <optional>
+
+namespace learnid {
+
+/// A robot the commissioning session can drive: simulated or on a CAN bus, the session cannot
+/// tell the difference. Calls are blocking and are made from one worker thread.
+class Robot
+{
+public:
+    virtual ~Robot() = default;
+
+    /// One line for the status bar, e.g. "simulated paper-2link" or "CAN socketcan/can0".
+    virtual QString description() const = 0;
+
+    /// Runs one trial of the plan under PID plus the plan's feedforward and returns what was
+    /// measured. Faults and safety aborts end the trial early with the partial record.
+    virtual TrialRecord runTrial(const TrialPlan &plan, const TrialMonitor &monitor) = 0;
+
+    /// Writes a parameter set to the robot controller, reads it back and stores it; all or
+    /// nothing. Returns an empty string on success, else what failed and where.
+    virtual QString applyParameters(const Eigen::VectorXd &phi) = 0;
+
+    /// The parameter set the robot controller currently holds (empty before any apply).
+    virtual Eigen::VectorXd storedParameters() const = 0;
+
+    /// The true parameters, known only for a simulated robot (for error-against-truth figures).
+    virtual std::optional<Eigen::VectorXd> trueParameters() const { return std::nullopt; }
+};
+
+} // namespace learnid

@@ -1,0 +1,166 @@
+#include "robot/SimulatedRobot.h"
+
+#include "control/PidController.h"
+
+#include <QCoreApplication>
+#include <cmath>
+#include <limits>
+
+namespace learnid {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+/// RK4 integration of qdd = forwardDynamics(q, qd, tau) over one step h with tau held.
+/// Working vectors are members so the inner loop does not allocate.
+class Rk4Integrator
+{
+public:
+    Rk4Integrator(const RobotModel &model, const Eigen::VectorXd &phi)
+        : m_model(model)
+        , m_phi(phi)
+    {
+        const int n = model.dof();
+        for (Eigen::VectorXd *v : {&m_q, &m_v, &m_a1, &m_a2, &m_a3, &m_a4, &m_v2, &m_v3, &m_v4})
+            v->resize(n);
+    }
+
+    void step(Eigen::VectorXd &q, Eigen::VectorXd &qd, const Eigen::VectorXd &tau, double h)
+    {
+        m_model.forwardDynamics(q, qd, tau, m_phi, m_a1);
+        m_q = q + 0.5 * h * qd;
+        m_v2 = qd + 0.5 * h * m_a1;
+        m_model.forwardDynamics(m_q, m_v2, tau, m_phi, m_a2);
+        m_q = q + 0.5 * h * m_v2;
+        m_v3 = qd + 0.5 * h * m_a2;
+        m_model.forwardDynamics(m_q, m_v3, tau, m_phi, m_a3);
+        m_q = q + h * m_v3;
+        m_v4 = qd + h * m_a3;
+        m_model.forwardDynamics(m_q, m_v4, tau, m_phi, m_a4);
+        q += (h / 6.0) * (qd + 2.0 * m_v2 + 2.0 * m_v3 + m_v4);
+        qd += (h / 6.0) * (m_a1 + 2.0 * m_a2 + 2.0 * m_a3 + m_a4);
+    }
+
+private:
+    const RobotModel &m_model;
+    const Eigen::VectorXd &m_phi;
+    Eigen::VectorXd m_q, m_v, m_a1, m_a2, m_a3, m_a4, m_v2, m_v3, m_v4;
+};
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("SimulatedRobot", text);
+}
+
+} // namespace
+
+SimulatedRobot::SimulatedRobot(std::shared_ptr<const RobotModel> model, Eigen::VectorXd truePhi,
+                               MeasurementOptions options)
+    : m_model(std::move(model))
+    , m_truePhi(std::move(truePhi))
+    , m_options(options)
+{}
+
+QString SimulatedRobot::description() const
+{
+    return tr("simulated %1").arg(m_model->id());
+}
+
+TrialRecord SimulatedRobot::runTrial(const TrialPlan &plan, const TrialMonitor &monitor)
+{
+    const int n = m_model->dof();
+    const int samples = plan.samples();
+    const double ts = plan.desired.samplePeriod;
+    const int substeps = std::max(1, m_options.substeps);
+    const double h = ts / substeps;
+
+    std::seed_seq seq{quint64(m_options.seed), quint64(m_trialCount++)};
+    std::mt19937_64 rng(seq);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    const double countAngle = m_options.encoderCounts > 0
+                                  ? 2.0 * M_PI / double(m_options.encoderCounts)
+                                  : 0.0;
+
+    TrialRecord record;
+    record.samplePeriod = ts;
+    record.q.resize(n, samples);
+    record.tau.resize(n, samples);
+
+    PidController pid(plan.controller);
+    Rk4Integrator rk4(*m_model, m_truePhi);
+    Eigen::VectorXd q = plan.desired.q.col(0); // the robot starts at rest at the path start
+    Eigen::VectorXd qd = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd qMeasured(n), e(n), u(n), tauCommand(n), tauPlant(n);
+
+    int recorded = 0;
+    for (int k = 0; k < samples; ++k) {
+        if (countAngle > 0.0)
+            qMeasured = (q / countAngle).array().round() * countAngle;
+        else
+            qMeasured = q;
+        e = plan.desired.q.col(k) - qMeasured;
+
+        pid.step(e, u);
+        tauCommand = (plan.feedforward.col(k) + u).cwiseMax(-plan.torqueLimit).cwiseMin(plan.torqueLimit);
+        record.q.col(k) = qMeasured;
+        for (int j = 0; j < n; ++j)
+            record.tau(j, k) = tauCommand[j]
+                               + m_options.torqueNoise * plan.torqueLimit[j] * normal(rng);
+        if (k == m_faults.nanTorqueAtSample)
+            record.tau(0, k) = std::numeric_limits<double>::quiet_NaN();
+        recorded = k + 1;
+
+        Eigen::Index worst = 0;
+        const double worstError = e.cwiseAbs().maxCoeff(&worst);
+        if (worstError > plan.maxTrackingError) {
+            record.status = TrialStatus::Aborted;
+            record.message = tr("tracking error of joint %1 reached %2 deg at t = %3 s "
+                                "(limit %4 deg): quick stop")
+                                 .arg(worst + 1)
+                                 .arg(worstError * kRadToDeg, 0, 'g', 4)
+                                 .arg(k * ts, 0, 'f', 3)
+                                 .arg(plan.maxTrackingError * kRadToDeg, 0, 'g', 4);
+            break;
+        }
+        if (k == m_faults.driveFaultAtSample) {
+            record.status = TrialStatus::Faulted;
+            record.message = tr("drive of joint 1 reported a fault at t = %1 s (injected)")
+                                 .arg(k * ts, 0, 'f', 3);
+            break;
+        }
+        if (monitor.cancelled()) {
+            record.status = TrialStatus::Cancelled;
+            record.message = tr("stopped by the operator at t = %1 s").arg(k * ts, 0, 'f', 3);
+            break;
+        }
+
+        tauPlant = tauCommand;
+        if (m_faults.disturbanceFromSample >= 0 && k >= m_faults.disturbanceFromSample
+            && m_faults.disturbanceTorque.size() == n)
+            tauPlant += m_faults.disturbanceTorque;
+        for (int s = 0; s < substeps; ++s)
+            rk4.step(q, qd, tauPlant, h);
+
+        if (monitor.progress && ((k + 1) % 100 == 0 || k + 1 == samples))
+            monitor.progress(k + 1, samples);
+    }
+    record.q.conservativeResize(n, recorded);
+    record.tau.conservativeResize(n, recorded);
+    return record;
+}
+
+QString SimulatedRobot::applyParameters(const Eigen::VectorXd &phi)
+{
+    if (m_faults.refuseApply)
+        return tr("the simulated controller refused the parameter write (injected fault); "
+                  "its stored parameters are unchanged");
+    if (phi.size() != m_model->parameterCount() || !phi.allFinite())
+        return tr("parameter set has %1 values, the model needs %2 finite values")
+            .arg(phi.size())
+            .arg(m_model->parameterCount());
+    m_stored = phi;
+    return {};
+}
+
+} // namespace learnid

@@ -1,0 +1,68 @@
+#pragma once
+
+#include "control/ControllerSettings.h"
+#include "motion/JointTrajectory.h"
+#include "model/RobotModel.h"
+
+#include <Eigen/Core>
+#include <QString>
+#include <atomic>
+#include <functional>
+
+namespace learnid {
+
+/// Everything a robot needs to run one trial: the desired trajectory, the model feedforward
+/// built from a parameter estimate, the controller and the limits.
+struct TrialPlan
+{
+    JointTrajectory desired;
+    Eigen::MatrixXd feedforward;           ///< tau_f = W(q_d, qd_d, qdd_d) phi_hat [N m] (n x N)
+    Eigen::VectorXd feedforwardParameters; ///< phi_hat the feedforward was built with (m)
+    ControllerSettings controller;
+    Eigen::VectorXd torqueLimit;           ///< [N m] (n); commands saturate here
+    double maxTrackingError = 0.0;         ///< abort threshold on |q_d - q| [rad]
+    double motionDuration = 0.0;           ///< T of the motion between the rests [s]
+
+    int samples() const { return desired.samples(); }
+};
+
+/// tau_f = W(q_d, qd_d, qdd_d) phi for every sample of a desired trajectory (paper eq. 8).
+Eigen::MatrixXd feedforwardTorque(const RobotModel &model, const JointTrajectory &desired,
+                                  const Eigen::VectorXd &phi);
+
+enum class TrialStatus {
+    Completed, ///< all samples recorded
+    Aborted,   ///< stopped by a safety limit (tracking error, missing samples)
+    Faulted,   ///< the robot reported a fault
+    Cancelled, ///< stopped on request
+    Refused,   ///< not started: the pre-trial check failed
+};
+
+QString trialStatusName(TrialStatus status);
+
+/// What a robot measured in one trial, sample k at t_k = k * samplePeriod: the joint angles
+/// q [rad] and torques tau [N m], both (n x samples()). A trial that ended early keeps the
+/// samples recorded up to then.
+struct TrialRecord
+{
+    double samplePeriod = 0.0;
+    Eigen::MatrixXd q;
+    Eigen::MatrixXd tau;
+    TrialStatus status = TrialStatus::Completed;
+    QString message; ///< why the trial ended early, in words for the technician
+
+    int samples() const { return int(q.cols()); }
+    bool completed() const { return status == TrialStatus::Completed; }
+};
+
+/// Progress and cancel between a running trial and whoever started it. progress may be called
+/// from the thread running the trial; cancel may be set from any thread.
+struct TrialMonitor
+{
+    std::function<void(int done, int total)> progress;
+    const std::atomic_bool *cancel = nullptr;
+
+    bool cancelled() const { return cancel && cancel->load(std::memory_order_relaxed); }
+};
+
+} // namespace learnid

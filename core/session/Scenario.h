@@ -1,0 +1,46 @@
+#pragma once
+
+#include "control/ControllerSettings.h"
+#include "identify/LearningLaw.h"
+#include "motion/CartesianLine.h"
+
+#include <Eigen/Core>
+#include <QString>
+
+namespace learnid {
+
+/// A commissioning scenario: the robot, the path, the controller, the estimator, the simulated
+/// robot's measurement and the safety limits. Defaults are the paper scenario (DESIGN.md §2).
+/// Every key of the JSON form is documented in docs/scenario.md.
+struct Scenario
+{
+    // robot
+    QString model = QStringLiteral("paper-2link");
+    Eigen::VectorXd linkLengths = Eigen::Vector2d(0.75, 0.75);      ///< [m]
+    int elbowSign = +1;                                             ///< +1: theta2 - theta1 > 0
+    Eigen::VectorXd torqueLimits = Eigen::Vector2d(8.0, 4.0);       ///< [N m]
+    Eigen::VectorXd initialParameters = Eigen::Vector3d(40, 20, 30); ///< phi_0
+    // path
+    CartesianLine line;
+    double restBefore = 0.1;       ///< [s]
+    double restAfter = 0.5;        ///< [s]
+    double planningFraction = 0.8; ///< planned peak torque / limit
+    // controller
+    ControllerSettings controller;
+    // estimator
+    QString law = QStringLiteral("improved");
+    EstimatorSettings estimator;
+    int iterations = 6;  ///< learning trials of a session
+    int repetitions = 1; ///< runs of each trial averaged before identification (improved only)
+    // simulated robot
+    Eigen::VectorXd trueParameters = Eigen::Vector3d(20, 5, 8); ///< phi of the simulated robot
+    qint64 encoderCounts = 0; ///< counts per revolution; 0 = ideal
+    double torqueNoise = 0.0; ///< torque noise standard deviation / limit
+    quint64 seed = 1;
+    int substeps = 10;        ///< RK4 steps per sample
+    // safety
+    double maxTrackingErrorDeg = 1.0; ///< abort threshold during a trial [deg]
+    double stabilityMargin = 0.0;     ///< required decay rate of the linearised loop [1/s]
+};
+
+} // namespace learnid

@@ -1,0 +1,46 @@
+#include "session/TrialPlanner.h"
+
+#include "model/Error.h"
+#include "motion/TwoLinkKinematics.h"
+
+#include <QCoreApplication>
+
+namespace learnid {
+
+TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const RobotModel> model)
+    : m_scenario(scenario)
+    , m_model(std::move(model))
+{
+    if (m_model->dof() != 2 || scenario.linkLengths.size() != 2) {
+        throw Error(QCoreApplication::translate(
+            "TrialPlanner", "only planar 2-link arms have Cartesian line kinematics"));
+    }
+    m_kinematics = std::make_unique<TwoLinkKinematics>(scenario.linkLengths[0],
+                                                       scenario.linkLengths[1], scenario.elbowSign);
+}
+
+TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ruleOut) const
+{
+    const TorqueRuleResult rule = shortestDuration(*m_model, phiHat, *m_kinematics, m_scenario.line,
+                                                   m_scenario.torqueLimits,
+                                                   m_scenario.planningFraction);
+    if (ruleOut)
+        *ruleOut = rule;
+    MotionTiming timing;
+    timing.motionDuration = rule.duration;
+    timing.restBefore = m_scenario.restBefore;
+    timing.restAfter = m_scenario.restAfter;
+    timing.samplePeriod = m_scenario.controller.samplePeriod;
+
+    TrialPlan plan;
+    plan.desired = planLine(*m_kinematics, m_scenario.line, timing);
+    plan.feedforward = feedforwardTorque(*m_model, plan.desired, phiHat);
+    plan.feedforwardParameters = phiHat;
+    plan.controller = m_scenario.controller;
+    plan.torqueLimit = m_scenario.torqueLimits;
+    plan.maxTrackingError = m_scenario.maxTrackingErrorDeg * M_PI / 180.0;
+    plan.motionDuration = rule.duration;
+    return plan;
+}
+
+} // namespace learnid
