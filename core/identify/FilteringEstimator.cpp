@@ -1,9 +1,13 @@
 #include "identify/FilteringEstimator.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace learnid {
 
 FilteringEstimator::FilteringEstimator(double rho, double samplePeriod)
     : m_rho(rho)
+    , m_ts(samplePeriod)
 {
     // eq. (19): x1' = x2, x2' = x3, x3' = -k3 x1 - k2 x2 - k1 x3 + k3 u,
     // k1 = 3 rho, k2 = 3 rho^2, k3 = rho^3.
@@ -47,6 +51,31 @@ void FilteringEstimator::run(const double *x, int n, double *out, int outStride)
     }
 }
 
+namespace {
+// Samples over which the impulse response of F, decaying like t^2 exp(-rho t), is negligible.
+int impulseLength(double rho, double ts)
+{
+    return std::clamp(int(std::ceil(60.0 / (rho * ts))), 64, 1 << 22);
+}
+} // namespace
+
+double FilteringEstimator::lowPassNoiseGain() const
+{
+    // lowPass() starts at rest at its first sample: that sample must be 0 for the output to be
+    // the impulse response (an impulse at sample 0 would give 1 - step response).
+    Eigen::RowVectorXd impulse = Eigen::RowVectorXd::Zero(impulseLength(m_rho, m_ts) + 1);
+    impulse[1] = 1.0;
+    return lowPass(impulse).squaredNorm();
+}
+
+double FilteringEstimator::zeroPhaseNoiseGain() const
+{
+    const int half = impulseLength(m_rho, m_ts);
+    Eigen::RowVectorXd impulse = Eigen::RowVectorXd::Zero(2 * half + 1);
+    impulse[half] = 1.0;
+    return zeroPhaseLowPass(impulse).squaredNorm();
+}
+
 Eigen::MatrixXd FilteringEstimator::causal(const Eigen::Ref<const Eigen::RowVectorXd> &x) const
 {
     const Eigen::RowVectorXd in = x; // contiguous copy
@@ -74,12 +103,18 @@ Eigen::MatrixXd FilteringEstimator::zeroPhase(const Eigen::Ref<const Eigen::RowV
 }
 
 Eigen::RowVectorXd
+FilteringEstimator::anticausalLowPass(const Eigen::Ref<const Eigen::RowVectorXd> &x) const
+{
+    const Eigen::RowVectorXd in = x;
+    Eigen::RowVectorXd out(in.size());
+    run<false, true>(in.data(), int(in.size()), out.data(), 1);
+    return out;
+}
+
+Eigen::RowVectorXd
 FilteringEstimator::zeroPhaseLowPass(const Eigen::Ref<const Eigen::RowVectorXd> &x) const
 {
-    const Eigen::RowVectorXd forward = lowPass(x);
-    Eigen::RowVectorXd out(forward.size());
-    run<false, true>(forward.data(), int(forward.size()), out.data(), 1);
-    return out;
+    return anticausalLowPass(lowPass(x));
 }
 
 } // namespace learnid

@@ -28,14 +28,24 @@ public:
     /// derivative outputs, i.e. F(s) F(-s) x and its first two time derivatives (3 x N).
     Eigen::MatrixXd zeroPhase(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
 
+    /// F applied backward in time, F(-s) x (1 x N): the transpose of lowPass() as a matrix.
+    Eigen::RowVectorXd anticausalLowPass(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
+
     /// F(s) F(-s) x alone (1 x N).
     Eigen::RowVectorXd zeroPhaseLowPass(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
+
+    /// Variance of white noise after lowPass() relative to before: the sum of the squared
+    /// impulse response of F.
+    double lowPassNoiseGain() const;
+    /// The same for zeroPhaseLowPass(): the sum of the squared impulse response of F(s)F(-s).
+    double zeroPhaseNoiseGain() const;
 
 private:
     template <bool allOutputs, bool reversed>
     void run(const double *x, int n, double *out, int outStride) const;
 
     double m_rho;
+    double m_ts;
     StateSpace m_discrete;
     Eigen::Matrix3d m_a;
     Eigen::Vector3d m_b;

@@ -92,21 +92,30 @@ ParameterUpdate ImprovedLaw::update(const RobotModel &model, const std::vector<T
         weights.push_back(jointWeight.replicate(r.a.rows() / n, 1));
         rows += r.a.rows();
     }
-    if (parts.size() == 1)
+    // Torque noise reaches b through F(s)F(-s), a symmetric operator (H^T = H).
+    const FilteringEstimator filter(settings.rho, trials.back().record->samplePeriod);
+    NoiseShaping noise;
+    noise.varianceGain = filter.zeroPhaseNoiseGain();
+    const auto shape = [&filter](const Eigen::RowVectorXd &x) { return filter.zeroPhaseLowPass(x); };
+    if (parts.size() == 1) {
+        noise.transposedApplied = filterJointSignals(parts[0].a, n, shape);
         return observableUpdate(parts[0].a, parts[0].b, n, phiPrev, settings.rankTolerance,
-                                weights[0]);
+                                weights[0], noise);
+    }
 
     Eigen::MatrixXd a(rows, model.parameterCount());
     Eigen::VectorXd b(rows), weight(rows);
+    noise.transposedApplied.resize(rows, model.parameterCount());
     Eigen::Index at = 0;
     for (size_t i = 0; i < parts.size(); ++i) {
         const Eigen::Index r = parts[i].a.rows();
         a.middleRows(at, r) = parts[i].a;
         b.segment(at, r) = parts[i].b;
         weight.segment(at, r) = weights[i];
+        noise.transposedApplied.middleRows(at, r) = filterJointSignals(parts[i].a, n, shape);
         at += r;
     }
-    return observableUpdate(a, b, n, phiPrev, settings.rankTolerance, weight);
+    return observableUpdate(a, b, n, phiPrev, settings.rankTolerance, weight, noise);
 }
 
 } // namespace learnid

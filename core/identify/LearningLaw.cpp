@@ -22,6 +22,25 @@ std::unique_ptr<LearningLaw> makeLearningLaw(const QString &id)
     return nullptr;
 }
 
+Eigen::MatrixXd filterJointSignals(
+    const Eigen::MatrixXd &a, int n,
+    const std::function<Eigen::RowVectorXd(const Eigen::RowVectorXd &)> &filter)
+{
+    const Eigen::Index samples = a.rows() / n;
+    Eigen::MatrixXd out(a.rows(), a.cols());
+    for (Eigen::Index i = 0; i < a.cols(); ++i) {
+        for (int j = 0; j < n; ++j) {
+            const Eigen::Map<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>> signal(
+                a.col(i).data() + j, samples, Eigen::InnerStride<>(n));
+            const Eigen::RowVectorXd filtered = filter(signal);
+            Eigen::Map<Eigen::RowVectorXd, 0, Eigen::InnerStride<>>(out.col(i).data() + j, samples,
+                                                                   Eigen::InnerStride<>(n)) =
+                filtered;
+        }
+    }
+    return out;
+}
+
 void validateRecord(const RobotModel &model, const TrialPlan &plan, const TrialRecord &record)
 {
     const auto tr = [](const char *s) { return QCoreApplication::translate("LearningLaw", s); };

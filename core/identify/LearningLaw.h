@@ -6,6 +6,7 @@
 
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -44,6 +45,12 @@ public:
 QStringList knownLearningLaws();
 /// The law with this id ("paper" or "improved"), or nullptr.
 std::unique_ptr<LearningLaw> makeLearningLaw(const QString &id);
+
+/// Applies a filter to each joint's signal in each column of a stacked regressor (row k*n + j is
+/// joint j of sample k): the H^T A of NoiseShaping.
+Eigen::MatrixXd filterJointSignals(
+    const Eigen::MatrixXd &a, int n,
+    const std::function<Eigen::RowVectorXd(const Eigen::RowVectorXd &)> &filter);
 
 /// Checks that plan and record agree in size and hold only finite numbers; throws Error naming
 /// the first bad sample and joint.

@@ -16,17 +16,30 @@ struct ParameterUpdate
     std::vector<bool> observable; ///< per parameter: false when it lies in the kept directions
 };
 
+/// How white torque noise w reached the targets b = ... + H w through a linear filter H acting on
+/// each joint's signal (identity for unfiltered rows). Filtered residuals are correlated, so
+/// the covariance of the estimate is the sandwich
+///   sigma_w^2 (B^T B)^-1 (H^T B)^T (H^T B) (B^T B)^-1,  sigma_w^2 = residual variance / gain.
+struct NoiseShaping
+{
+    double varianceGain = 1.0;      ///< variance of H w over variance of w (sum of h_k^2)
+    Eigen::MatrixXd transposedApplied; ///< H^T applied to each column of A, per joint; empty: H = I
+};
+
 /// Least-squares update that changes only what the data observe (DESIGN.md §1.6):
-///   phi = phiPrev + V_r S_r^-1 U_r^T (b - A phiPrev)
-/// over the singular directions of A D whose singular value is above tolerance * the largest,
-/// D = diag(|phiPrev|) (so singular values compare the torque each direction explains).
-/// Directions below the tolerance keep phiPrev's component.
+///   phi = phiPrev + D V_r x,  x = argmin || Wr (b - A phiPrev - A D V_r x) ||
+/// V_r: the right singular directions of A D whose singular value is above tolerance * the
+/// largest, D = diag(|phiPrev|), so singular values compare the torque each direction explains.
+/// Observability is decided on the unweighted A D (a property of the trajectory, not of the
+/// noise weights); directions below the tolerance keep phiPrev's component.
 /// A: stacked regressor rows, sample-major: row k*n + j is joint j of sample k (N n x m).
 /// b: stacked targets [N m] (N n). n: joints. rowWeight: a weight per row (N n), e.g. the
 /// inverse of the residual noise of the row's joint and trial; empty means 1.
+/// noise: how the torque noise reached b, for the standard deviations (see NoiseShaping).
 /// Tall systems are reduced by a Householder QR before the SVD of the m x m factor.
 ParameterUpdate observableUpdate(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int n,
                                  const Eigen::VectorXd &phiPrev, double tolerance,
-                                 const Eigen::VectorXd &rowWeight = {});
+                                 const Eigen::VectorXd &rowWeight = {},
+                                 const struct NoiseShaping &noise = {});
 
 } // namespace learnid

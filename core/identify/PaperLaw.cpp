@@ -46,7 +46,12 @@ ParameterUpdate PaperLaw::update(const RobotModel &model, const std::vector<Tria
     }
     const Eigen::VectorXd b =
         Eigen::Map<const Eigen::VectorXd>(tauHat.data(), Eigen::Index(rows) * n);
-    return observableUpdate(a, b, n, phiPrev, settings.rankTolerance);
+    // Torque noise reaches tau_hat through the causal F, whose transpose runs backward in time.
+    NoiseShaping noise;
+    noise.varianceGain = filter.lowPassNoiseGain();
+    noise.transposedApplied = filterJointSignals(
+        a, n, [&filter](const Eigen::RowVectorXd &x) { return filter.anticausalLowPass(x); });
+    return observableUpdate(a, b, n, phiPrev, settings.rankTolerance, {}, noise);
 }
 
 } // namespace learnid

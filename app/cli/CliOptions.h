@@ -1,0 +1,46 @@
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <optional>
+
+namespace learnid::cli {
+
+/// Exit codes of learnid-cli (docs/cli.md).
+enum ExitCode {
+    ExitOk = 0,
+    ExitUsage = 1,      ///< unknown command or option
+    ExitBadInput = 2,   ///< a file or value the tool cannot use; nothing was written
+    ExitTrialFailed = 3, ///< a trial was refused, aborted or faulted; nothing was written
+    ExitWriteFailed = 4, ///< an output could not be written; no output was left half-written
+};
+
+/// What `learnid-cli run` was asked to do. Output paths are already resolved in the workspace.
+struct RunOptions
+{
+    QString scenarioPath;          ///< empty: the built-in paper scenario
+    std::optional<QString> law;    ///< overrides estimator.law
+    std::optional<int> iterations; ///< overrides estimator.iterations
+    QString reportPath;
+    QString exportPath;
+    QString trialCsvDir;
+    bool apply = false;
+    bool quiet = false;
+};
+
+/// The parsed command line: a command and its options, or an error to print with usage.
+struct CommandLine
+{
+    enum class Command { None, PrintScenario, Run, Help, Version } command = Command::None;
+    RunOptions run;
+    QString error;
+    ExitCode errorCode = ExitUsage; ///< ExitUsage for syntax, ExitBadInput for a bad value
+    QString usage;
+};
+
+/// Parses arguments (without the program name's special handling: args[0] is the program).
+/// Output paths must lie inside the workspace directory (--workspace, default: the current
+/// directory); an error names the option and the path.
+CommandLine parseCommandLine(const QStringList &args);
+
+} // namespace learnid::cli

@@ -1,0 +1,114 @@
+#include "cli/ResultTable.h"
+
+#include <QCoreApplication>
+#include <QStringList>
+#include <cmath>
+
+namespace learnid::cli {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("learnid-cli", text);
+}
+
+QString cell(const QString &text, int width)
+{
+    return text.rightJustified(width);
+}
+
+QString number(double v, int decimals, int width)
+{
+    return cell(std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("-"), width);
+}
+
+// Largest |x_i - ref_i| / |ref_i| in percent, signed by that entry.
+double maxRelativePercent(const Eigen::VectorXd &x, const Eigen::VectorXd &ref)
+{
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+        const double r = ref[i] != 0.0 ? (x[i] - ref[i]) / std::abs(ref[i]) * 100.0 : 0.0;
+        if (std::abs(r) > std::abs(worst))
+            worst = r;
+    }
+    return worst;
+}
+
+} // namespace
+
+QString resultTable(const CommissioningSession &session)
+{
+    const RobotModel &model = session.model();
+    const auto truth = session.robot().trueParameters();
+    const int n = model.dof();
+    const QList<ParameterInfo> params = model.parameters();
+
+    QStringList header{cell(tr("trial"), 5)};
+    for (const ParameterInfo &p : params)
+        header << cell(QStringLiteral("%1 [%2]").arg(p.name, p.unit), 12);
+    header << cell(tr("change %"), 9);
+    for (int j = 0; j < n; ++j)
+        header << cell(tr("max|e|%1 deg").arg(j + 1), 12);
+    header << cell(tr("T s"), 6) << cell(tr("cond"), 7);
+    if (truth)
+        header << cell(tr("vs truth %"), 10);
+    QStringList lines{header.join(QLatin1Char(' '))};
+
+    const QVector<Eigen::VectorXd> &estimates = session.estimates();
+    const QVector<TrialResult> &history = session.history();
+    // Row k pairs estimate k with the trial that ran with it: the k-th trial that was learned
+    // from or, for the last row, the trial that ran with the final estimate if any.
+    QVector<const TrialResult *> runWith(estimates.size(), nullptr);
+    int k = 0;
+    for (const TrialResult &t : history) {
+        if (k < runWith.size())
+            runWith[k] = &t;
+        if (t.learned())
+            ++k;
+    }
+    for (int row = 0; row < estimates.size(); ++row) {
+        const Eigen::VectorXd &phi = estimates.at(row);
+        QStringList cells{cell(QString::number(row), 5)};
+        for (Eigen::Index i = 0; i < phi.size(); ++i)
+            cells << number(phi[i], 4, 12);
+        cells << (row == 0 ? cell(QStringLiteral("-"), 9)
+                           : number(maxRelativePercent(phi, estimates.at(row - 1)), 3, 9));
+        const TrialResult *t = runWith.at(row);
+        for (int j = 0; j < n; ++j)
+            cells << (t && t->maxTrackingErrorDeg.size() == n
+                          ? number(t->maxTrackingErrorDeg[j], 5, 12)
+                          : cell(QStringLiteral("-"), 12));
+        cells << (t ? number(t->check.rule.duration, 3, 6) : cell(QStringLiteral("-"), 6));
+        cells << (t && t->update ? number(t->update->condition, 2, 7) : cell(QStringLiteral("-"), 7));
+        if (truth)
+            cells << number(maxRelativePercent(phi, *truth), 3, 10);
+        QString line = cells.join(QLatin1Char(' '));
+        if (t && !t->record.completed())
+            line += QStringLiteral("  ") + trialStatusName(t->status());
+        if (t && t->update && t->update->rank < phi.size())
+            line += QStringLiteral("  ") + tr("(rank %1: unobservable kept)").arg(t->update->rank);
+        lines << line;
+    }
+    return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+}
+
+QString trialSummary(const TrialResult &result)
+{
+    if (result.status() == TrialStatus::Refused)
+        return result.message;
+    QStringList errors;
+    for (Eigen::Index j = 0; j < result.maxTrackingErrorDeg.size(); ++j)
+        errors << QString::number(result.maxTrackingErrorDeg[j], 'f', 5);
+    QString line = tr("trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg")
+                       .arg(result.index)
+                       .arg(trialStatusName(result.status()))
+                       .arg(result.check.rule.duration, 0, 'f', 3)
+                       .arg(result.record.samples())
+                       .arg(errors.join(QStringLiteral(" / ")));
+    if (!result.message.isEmpty())
+        line += QStringLiteral(": ") + result.message;
+    return line;
+}
+
+} // namespace learnid::cli

@@ -1,0 +1,157 @@
+#include "cli/RunCommand.h"
+
+#include "cli/ResultTable.h"
+#include "io/AtomicFile.h"
+#include "io/ParameterFile.h"
+#include "io/ScenarioFile.h"
+#include "io/SessionReport.h"
+#include "io/TrialCsv.h"
+#include "model/Error.h"
+#include "model/ModelFactory.h"
+#include "robot/SimulatedRobot.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <atomic>
+#include <csignal>
+
+namespace learnid::cli {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("learnid-cli", text);
+}
+
+// Ctrl-C stops the running trial at its next sample instead of killing the process.
+CommissioningSession *g_session = nullptr;
+extern "C" void onInterrupt(int)
+{
+    if (g_session)
+        g_session->requestCancel(); // an atomic store: async-signal-safe
+}
+
+Scenario loadScenario(const RunOptions &options)
+{
+    Scenario scenario = options.scenarioPath.isEmpty() ? Scenario{}
+                                                       : readScenarioFile(options.scenarioPath);
+    if (options.law)
+        scenario.law = *options.law;
+    if (options.iterations)
+        scenario.iterations = *options.iterations;
+    if (!knownLearningLaws().contains(scenario.law)) {
+        throw Error(tr("--estimator: unknown law '%1' (known: %2)")
+                        .arg(scenario.law, knownLearningLaws().join(QStringLiteral(", "))));
+    }
+    validateScenario(scenario);
+    return scenario;
+}
+
+// Every output of the run, built in memory so that nothing is written unless all can be.
+QList<QPair<QString, QByteArray>> buildOutputs(const RunOptions &options,
+                                               const CommissioningSession &session)
+{
+    QList<QPair<QString, QByteArray>> files;
+    if (!options.reportPath.isEmpty())
+        files.append({options.reportPath, sessionReportJson(session)});
+    if (!options.exportPath.isEmpty()) {
+        const int last = int(session.estimates().size()) - 1;
+        const ParameterFileContent content = parameterFileContent(session, last, {});
+        files.append({options.exportPath, parameterFileToJson(content)});
+        const QFileInfo info(options.exportPath);
+        files.append({info.dir().filePath(info.completeBaseName() + QStringLiteral(".dcf")),
+                      parameterDcfFragment(content)});
+    }
+    if (!options.trialCsvDir.isEmpty()) {
+        const QDir dir(options.trialCsvDir);
+        for (const TrialResult &t : session.history()) {
+            const QString name = QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
+            files.append({dir.filePath(name), trialCsv(t.plan(), t.record)});
+        }
+    }
+    return files;
+}
+
+} // namespace
+
+ExitCode printScenarioCommand(QTextStream &out)
+{
+    out << QString::fromUtf8(scenarioToJson(Scenario{}));
+    return ExitOk;
+}
+
+ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &err)
+{
+    Scenario scenario;
+    std::unique_ptr<CommissioningSession> session;
+    try {
+        scenario = loadScenario(options);
+        const auto model = makeRobotModel(scenario.model);
+        MeasurementOptions measurement;
+        measurement.encoderCounts = scenario.encoderCounts;
+        measurement.torqueNoise = scenario.torqueNoise;
+        measurement.seed = scenario.seed;
+        measurement.substeps = scenario.substeps;
+        auto robot = std::make_shared<SimulatedRobot>(model, scenario.trueParameters, measurement);
+        session = std::make_unique<CommissioningSession>(scenario, model, robot);
+    } catch (const Error &e) {
+        err << tr("learnid-cli: error: %1").arg(e.message()) << Qt::endl;
+        return ExitBadInput;
+    }
+
+    if (!options.quiet) {
+        err << tr("learnid-cli: %1, law %2, %3 learning trials")
+                   .arg(session->robot().description(), scenario.law)
+                   .arg(scenario.iterations)
+            << Qt::endl;
+        QObject::connect(session.get(), &CommissioningSession::trialFinished,
+                         [&err](const TrialResult &t) { err << trialSummary(t) << Qt::endl; });
+    }
+    g_session = session.get();
+    const auto previous = std::signal(SIGINT, onInterrupt);
+    const bool completed = session->runTrials(scenario.iterations);
+    std::signal(SIGINT, previous);
+    g_session = nullptr;
+
+    out << resultTable(*session);
+    out.flush();
+    if (!completed) {
+        const TrialResult &last = session->history().constLast();
+        err << tr("learnid-cli: error: %1").arg(last.message.isEmpty() ? trialStatusName(last.status())
+                                                                        : last.message)
+            << Qt::endl
+            << tr("learnid-cli: no files written") << Qt::endl;
+        return ExitTrialFailed;
+    }
+
+    if (options.apply) {
+        const int last = int(session->estimates().size()) - 1;
+        QString error = session->accept(last);
+        if (error.isEmpty())
+            error = session->apply();
+        if (!error.isEmpty()) {
+            err << tr("learnid-cli: error: apply failed: %1").arg(error) << Qt::endl;
+            return ExitTrialFailed;
+        }
+        if (!options.quiet)
+            err << tr("learnid-cli: estimate %1 applied to the robot").arg(last) << Qt::endl;
+    }
+
+    try {
+        const auto files = buildOutputs(options, *session);
+        if (!options.trialCsvDir.isEmpty() && !QDir().mkpath(options.trialCsvDir))
+            throw Error(tr("--trial-csv: cannot create the folder %1").arg(options.trialCsvDir));
+        writeFilesAtomically(files);
+        if (!options.quiet)
+            for (const auto &f : files)
+                err << tr("learnid-cli: wrote %1").arg(QDir::toNativeSeparators(f.first)) << Qt::endl;
+    } catch (const Error &e) {
+        err << tr("learnid-cli: error: %1").arg(e.message()) << Qt::endl;
+        return ExitWriteFailed;
+    }
+    return ExitOk;
+}
+
+} // namespace learnid::cli

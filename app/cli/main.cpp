@@ -1,0 +1,37 @@
+#include "cli/CliOptions.h"
+#include "cli/RunCommand.h"
+
+#include <QCoreApplication>
+#include <QTextStream>
+#include <cstdio>
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("learnid-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(LEARNID_VERSION));
+
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    using namespace learnid::cli;
+    const CommandLine cl = parseCommandLine(QCoreApplication::arguments());
+    switch (cl.command) {
+    case CommandLine::Command::Help:
+        out << cl.usage;
+        return ExitOk;
+    case CommandLine::Command::Version:
+        out << QStringLiteral("learnid-cli %1\n").arg(QStringLiteral(LEARNID_VERSION));
+        return ExitOk;
+    case CommandLine::Command::PrintScenario:
+        return printScenarioCommand(out);
+    case CommandLine::Command::Run:
+        return runCommand(cl.run, out, err);
+    case CommandLine::Command::None:
+        break;
+    }
+    err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(cl.error)
+        << Qt::endl;
+    if (cl.errorCode == ExitUsage)
+        err << cl.usage;
+    return cl.errorCode;
+}

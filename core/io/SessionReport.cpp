@@ -1,0 +1,128 @@
+#include "io/SessionReport.h"
+
+#include "model/Error.h"
+
+#include <QCoreApplication>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <cmath>
+
+namespace learnid {
+
+namespace {
+
+QJsonValue finiteOrNull(double v)
+{
+    return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
+}
+
+QJsonArray toArray(const Eigen::VectorXd &v)
+{
+    QJsonArray a;
+    for (Eigen::Index i = 0; i < v.size(); ++i)
+        a.append(finiteOrNull(v[i]));
+    return a;
+}
+
+// The trial that ran with estimate k (the k-th learned trial), or nullptr.
+const TrialResult *trialRunWith(const CommissioningSession &session, int k)
+{
+    int learned = 0;
+    for (const TrialResult &t : session.history()) {
+        if (learned == k)
+            return &t;
+        if (t.learned())
+            ++learned;
+    }
+    return nullptr;
+}
+
+} // namespace
+
+QByteArray sessionReportJson(const CommissioningSession &session)
+{
+    QJsonObject root;
+    root.insert(QStringLiteral("schema"), QStringLiteral("learnid-report/1"));
+    root.insert(QStringLiteral("robot"), session.robot().description());
+    root.insert(QStringLiteral("model"), session.model().id());
+    root.insert(QStringLiteral("estimator"), session.law().id());
+    QJsonArray names;
+    for (const ParameterInfo &p : session.model().parameters())
+        names.append(p.name);
+    root.insert(QStringLiteral("parameters"), names);
+    if (const auto truth = session.robot().trueParameters())
+        root.insert(QStringLiteral("truth"), toArray(*truth));
+
+    QJsonArray trials;
+    const QVector<Eigen::VectorXd> &estimates = session.estimates();
+    for (int k = 0; k < estimates.size(); ++k) {
+        const TrialResult *t = trialRunWith(session, k);
+        if (!t)
+            break; // the final estimate has not been run; it is in "final"
+        QJsonObject o;
+        o.insert(QStringLiteral("index"), k);
+        o.insert(QStringLiteral("phi"), toArray(estimates.at(k)));
+        o.insert(QStringLiteral("status"), trialStatusName(t->status()));
+        o.insert(QStringLiteral("maxTrackingErrorDeg"), toArray(t->maxTrackingErrorDeg));
+        o.insert(QStringLiteral("rmsTrackingErrorDeg"), toArray(t->rmsTrackingErrorDeg));
+        o.insert(QStringLiteral("durationS"), finiteOrNull(t->check.rule.duration));
+        o.insert(QStringLiteral("samples"), t->record.samples());
+        if (t->update) {
+            o.insert(QStringLiteral("condition"), finiteOrNull(t->update->condition));
+            o.insert(QStringLiteral("rank"), t->update->rank);
+            o.insert(QStringLiteral("residualRms"), toArray(t->update->residualRms));
+            o.insert(QStringLiteral("phiStd"), toArray(t->update->phiStd));
+        }
+        if (!t->message.isEmpty())
+            o.insert(QStringLiteral("message"), t->message);
+        trials.append(o);
+    }
+    root.insert(QStringLiteral("trials"), trials);
+    QJsonObject finalEstimate;
+    finalEstimate.insert(QStringLiteral("phi"), toArray(session.currentEstimate()));
+    finalEstimate.insert(QStringLiteral("learningSteps"), int(estimates.size()) - 1);
+    root.insert(QStringLiteral("final"), finalEstimate);
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+ParameterFileContent parameterFileContent(const CommissioningSession &session, int estimateIndex,
+                                          const QList<SdoWriteDescription> &canWrites)
+{
+    const QVector<Eigen::VectorXd> &estimates = session.estimates();
+    if (estimateIndex < 1 || estimateIndex >= estimates.size()) {
+        throw Error(QCoreApplication::translate("SessionReport",
+                                                "estimate %1 does not exist in this session")
+                        .arg(estimateIndex));
+    }
+    // Estimate k was learned from the (k-1)-th learned trial; the figures of the trial run with
+    // it (if any) tell how well it tracks.
+    const TrialResult *source = trialRunWith(session, estimateIndex - 1);
+    const TrialResult *verified = trialRunWith(session, estimateIndex);
+
+    ParameterFileContent c;
+    c.robotModel = session.model().id();
+    c.robotDescription = session.robot().description();
+    c.controller = session.scenario().controller;
+    c.created = QDateTime::currentDateTimeUtc();
+    c.toolVersion = QStringLiteral(LEARNID_VERSION);
+    c.law = session.law().id();
+    c.sourceTrial = source ? source->index : -1;
+    c.parameters = session.model().parameters();
+    c.values = estimates.at(estimateIndex);
+    if (source && source->update) {
+        c.standardDeviations = source->update->phiStd;
+        c.residualRms = source->update->residualRms;
+        c.condition = source->update->condition;
+        c.rank = source->update->rank;
+    }
+    const TrialResult *tracking = verified ? verified : source;
+    if (tracking) {
+        c.maxTrackingErrorDeg = tracking->maxTrackingErrorDeg;
+        c.rmsTrackingErrorDeg = tracking->rmsTrackingErrorDeg;
+    }
+    c.canWrites = canWrites;
+    return c;
+}
+
+} // namespace learnid

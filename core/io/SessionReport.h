@@ -1,0 +1,22 @@
+#pragma once
+
+#include "io/ParameterFile.h"
+#include "session/CommissioningSession.h"
+
+#include <QByteArray>
+
+namespace learnid {
+
+/// The session report (docs/file-formats.md): robot, estimator, truth (simulated robot only),
+/// one entry per trial run with estimate k (phi = estimate after k learnings, the trial's
+/// tracking error, duration and samples, and the figures of the fit made from that trial:
+/// condition, rank, residualRms, phiStd), and the final estimate. Non-finite figures (the
+/// standard deviation of a parameter the path does not observe) are written as null.
+QByteArray sessionReportJson(const CommissioningSession &session);
+
+/// The parameter file content for estimate k of a session (k >= 1), with the quality figures of
+/// the trials that produced it and the SDO writes that apply performs.
+ParameterFileContent parameterFileContent(const CommissioningSession &session, int estimateIndex,
+                                          const QList<SdoWriteDescription> &canWrites);
+
+} // namespace learnid

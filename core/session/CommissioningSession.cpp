@@ -1,0 +1,194 @@
+#include "session/CommissioningSession.h"
+
+#include "model/Error.h"
+
+#include <QLoggingCategory>
+
+Q_LOGGING_CATEGORY(lcSession, "learnid.session")
+
+namespace learnid {
+
+CommissioningSession::CommissioningSession(const Scenario &scenario,
+                                           std::shared_ptr<const RobotModel> model,
+                                           std::shared_ptr<Robot> robot, QObject *parent)
+    : QObject(parent)
+    , m_scenario(scenario)
+    , m_model(std::move(model))
+    , m_robot(std::move(robot))
+    , m_law(makeLearningLaw(scenario.law))
+    , m_planner(scenario, m_model)
+{
+    if (!m_law)
+        throw Error(tr("unknown estimator law '%1' (known: %2)")
+                        .arg(scenario.law, knownLearningLaws().join(QStringLiteral(", "))));
+    if (scenario.initialParameters.size() != m_model->parameterCount()
+        || scenario.torqueLimits.size() != m_model->dof()
+        || scenario.controller.dof() != m_model->dof()) {
+        throw Error(tr("scenario does not fit the %1 model: it needs %2 parameters and %3 "
+                       "joint limits and gains")
+                        .arg(m_model->id())
+                        .arg(m_model->parameterCount())
+                        .arg(m_model->dof()));
+    }
+    m_estimates.append(scenario.initialParameters);
+    qRegisterMetaType<learnid::TrialResult>();
+}
+
+CommissioningSession::~CommissioningSession() = default;
+
+PreTrialCheck CommissioningSession::checkNextTrial() const
+{
+    PreTrialCheck check;
+    try {
+        check.plan = m_planner.plan(currentEstimate(), &check.rule);
+        check.verdict = checkTrial(*m_model, currentEstimate(), check.plan,
+                                   m_scenario.stabilityMargin);
+    } catch (const Error &e) {
+        check.planningError = e.message();
+    }
+    return check;
+}
+
+const TrialResult &CommissioningSession::runTrial()
+{
+    m_cancel.store(false);
+    TrialResult result;
+    result.index = int(m_history.size());
+    result.phiUsed = currentEstimate();
+    result.check = checkNextTrial();
+    result.repetitions = std::max(1, m_scenario.repetitions);
+
+    if (!result.check.passed()) {
+        result.record.status = TrialStatus::Refused;
+        result.record.samplePeriod = m_scenario.controller.samplePeriod;
+        result.message = tr("trial %1 refused before motion: %2")
+                             .arg(result.index)
+                             .arg(result.check.reason());
+        qCWarning(lcSession).noquote() << result.message;
+    } else {
+        emit trialStarted(result.index, result.plan().samples());
+        result.record = runRepetitions(result.plan(), result.index, &result.message);
+        trackingErrorFigures(result.plan(), result.record, result.maxTrackingErrorDeg,
+                             result.rmsTrackingErrorDeg);
+        if (result.record.completed())
+            learnFrom(result);
+    }
+    m_history.append(result);
+    emit trialFinished(m_history.constLast());
+    return m_history.constLast();
+}
+
+TrialRecord CommissioningSession::runRepetitions(const TrialPlan &plan, int index,
+                                                 QString *message)
+{
+    const int reps = std::max(1, m_scenario.repetitions);
+    const int total = plan.samples() * reps;
+    TrialRecord sum;
+    for (int r = 0; r < reps; ++r) {
+        TrialMonitor monitor;
+        monitor.cancel = &m_cancel;
+        monitor.progress = [this, index, r, &plan, total](int done, int) {
+            emit progress(index, r * plan.samples() + done, total);
+        };
+        TrialRecord record = m_robot->runTrial(plan, monitor);
+        if (!record.completed()) {
+            *message = reps > 1 ? tr("repetition %1 of %2: %3").arg(r + 1).arg(reps).arg(record.message)
+                                : record.message;
+            return record; // the partial record of the run that failed is kept
+        }
+        if (r == 0) {
+            sum = std::move(record);
+        } else {
+            sum.q += record.q;
+            sum.tau += record.tau;
+        }
+    }
+    sum.q /= double(reps);
+    sum.tau /= double(reps);
+    return sum;
+}
+
+void CommissioningSession::learnFrom(TrialResult &result)
+{
+    std::vector<TrialData> trials;
+    for (const TrialResult &earlier : m_history)
+        if (earlier.learned())
+            trials.push_back({&earlier.plan(), &earlier.record});
+    trials.push_back({&result.plan(), &result.record});
+    try {
+        ParameterUpdate update =
+            m_law->update(*m_model, trials, result.phiUsed, m_scenario.estimator);
+        if (!update.phi.allFinite())
+            throw Error(tr("the update produced non-finite parameters"));
+        m_estimates.append(update.phi);
+        result.update = std::move(update);
+    } catch (const Error &e) {
+        result.message = tr("trial %1 not learned from: %2").arg(result.index).arg(e.message());
+        qCWarning(lcSession).noquote() << result.message;
+    }
+}
+
+bool CommissioningSession::runTrials(int count)
+{
+    m_cancel.store(false);
+    for (int i = 0; i < count; ++i) {
+        if (m_cancel.load())
+            return false;
+        if (!runTrial().learned())
+            return false;
+    }
+    return true;
+}
+
+void CommissioningSession::requestCancel()
+{
+    m_cancel.store(true);
+}
+
+QString CommissioningSession::accept(int estimateIndex)
+{
+    if (estimateIndex < 1 || estimateIndex >= m_estimates.size()) {
+        return m_estimates.size() < 2
+                   ? tr("there is no learned estimate to accept yet: run a trial first")
+                   : tr("estimate %1 does not exist: choose 1 to %2")
+                         .arg(estimateIndex)
+                         .arg(m_estimates.size() - 1);
+    }
+    m_accepted = estimateIndex;
+    emit estimateAccepted(estimateIndex);
+    return {};
+}
+
+QString CommissioningSession::apply()
+{
+    if (!m_accepted)
+        return tr("nothing accepted: accept an estimate before applying it");
+    const Eigen::VectorXd before = m_robot->storedParameters();
+    const Eigen::VectorXd &phi = m_estimates.at(*m_accepted);
+    const QString error = m_robot->applyParameters(phi);
+    if (!error.isEmpty())
+        return error;
+    m_storedBeforeApply.append(before);
+    m_applied.append(phi);
+    emit parametersApplied(phi);
+    return {};
+}
+
+QString CommissioningSession::revert()
+{
+    if (m_storedBeforeApply.isEmpty())
+        return tr("nothing to revert: no parameter set has been applied in this session");
+    const Eigen::VectorXd previous = m_storedBeforeApply.constLast();
+    if (previous.size() == 0)
+        return tr("the robot held no parameter set before the first apply; there is nothing "
+                  "to restore");
+    const QString error = m_robot->applyParameters(previous);
+    if (!error.isEmpty())
+        return error;
+    m_storedBeforeApply.removeLast();
+    m_applied.append(previous);
+    emit parametersApplied(previous);
+    return {};
+}
+
+} // namespace learnid

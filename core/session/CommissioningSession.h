@@ -1,0 +1,91 @@
+#pragma once
+
+#include "identify/LearningLaw.h"
+#include "model/RobotModel.h"
+#include "robot/Robot.h"
+#include "session/Scenario.h"
+#include "session/TrialPlanner.h"
+#include "session/TrialResult.h"
+
+#include <QObject>
+#include <QVector>
+#include <atomic>
+#include <memory>
+#include <optional>
+
+namespace learnid {
+
+/// A commissioning session: runs trials of one scenario on one robot, learns after each, keeps
+/// the whole history, and applies an accepted estimate to the robot. It does not know whether
+/// the robot is simulated or on a bus.
+///
+/// Calls are synchronous and belong to one thread (a worker thread in the GUI, the main thread
+/// in the CLI); requestCancel() may be called from any thread. Signals carry value types.
+class CommissioningSession : public QObject
+{
+    Q_OBJECT
+
+public:
+    /// Throws Error when the scenario does not fit the model (sizes, unknown law).
+    CommissioningSession(const Scenario &scenario, std::shared_ptr<const RobotModel> model,
+                         std::shared_ptr<Robot> robot, QObject *parent = nullptr);
+    ~CommissioningSession() override;
+
+    const Scenario &scenario() const { return m_scenario; }
+    const RobotModel &model() const { return *m_model; }
+    Robot &robot() { return *m_robot; }
+    const Robot &robot() const { return *m_robot; }
+    const LearningLaw &law() const { return *m_law; }
+
+    /// Trials run so far, in order (refused and failed ones included).
+    const QVector<TrialResult> &history() const { return m_history; }
+    /// estimates()[0] is phi_0; estimates()[k] the estimate after k learning steps.
+    const QVector<Eigen::VectorXd> &estimates() const { return m_estimates; }
+    const Eigen::VectorXd &currentEstimate() const { return m_estimates.constLast(); }
+
+    /// Plans the next trial with the current estimate and checks it, without moving the robot.
+    PreTrialCheck checkNextTrial() const;
+
+    /// Checks, runs and learns from one trial. A refused, aborted or faulted trial is kept in
+    /// the history, marked, and leaves the estimate unchanged.
+    const TrialResult &runTrial();
+    /// Runs trials until `count` more have completed or one did not; returns whether all did.
+    bool runTrials(int count);
+    /// Asks a running trial (and series) to stop at the next sample; thread-safe.
+    void requestCancel();
+
+    /// Accepts estimate k (1 .. estimates().size()-1) for apply. Returns an error or empty.
+    QString accept(int estimateIndex);
+    std::optional<int> acceptedIndex() const { return m_accepted; }
+    /// Writes the accepted estimate to the robot (all or nothing). Returns an error or empty.
+    QString apply();
+    /// Restores the set the robot held before the last apply. Returns an error or empty.
+    QString revert();
+    /// Parameter sets applied so far, oldest first.
+    const QVector<Eigen::VectorXd> &appliedHistory() const { return m_applied; }
+
+signals:
+    void trialStarted(int index, int samples);
+    void progress(int index, int samplesDone, int samplesTotal);
+    void trialFinished(const learnid::TrialResult &result);
+    void estimateAccepted(int estimateIndex);
+    void parametersApplied(const Eigen::VectorXd &phi);
+
+private:
+    TrialRecord runRepetitions(const TrialPlan &plan, int index, QString *message);
+    void learnFrom(TrialResult &result);
+
+    Scenario m_scenario;
+    std::shared_ptr<const RobotModel> m_model;
+    std::shared_ptr<Robot> m_robot;
+    std::unique_ptr<LearningLaw> m_law;
+    TrialPlanner m_planner;
+    QVector<TrialResult> m_history;
+    QVector<Eigen::VectorXd> m_estimates;
+    std::optional<int> m_accepted;
+    QVector<Eigen::VectorXd> m_applied;
+    QVector<Eigen::VectorXd> m_storedBeforeApply;
+    std::atomic_bool m_cancel{false};
+};
+
+} // namespace learnid
