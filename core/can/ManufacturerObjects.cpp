@@ -1,0 +1,95 @@
+#include "can/ManufacturerObjects.h"
+
+#include "model/Error.h"
+
+#include <QCoreApplication>
+#include <QSet>
+#include <cmath>
+
+namespace learnid::objects {
+
+using canopen::DataType;
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("ManufacturerObjects", text);
+}
+
+} // namespace
+
+QList<ObjectDescription> manufacturerObjects(int parameterCount)
+{
+    // Names are not translated: DCF files are read by machines and drive vendors.
+    const auto s = [](const char *text) {
+        return QString::fromLatin1(text);
+    };
+    QList<ObjectDescription> list = {
+        {gains, gainKp, DataType::Real32, s("Gain kp"), s("N m/rad")},
+        {gains, gainKi, DataType::Real32, s("Gain ki"), s("N m/(rad s)")},
+        {gains, gainKd, DataType::Real32, s("Gain kd"), s("N m s/rad")},
+        {gains, gainLambda, DataType::Real32, s("Derivative filter lambda"), s("1/s")},
+        {identifiedParameters, 0, DataType::Unsigned8, s("Identified parameter count"), {}},
+    };
+    for (int i = 1; i <= qBound(0, parameterCount, maxIdentifiedParameters); ++i) {
+        list.append({identifiedParameters, quint8(i), DataType::Real32,
+                     s("Identified parameter %1").arg(i), s("SI")});
+    }
+    list.append({torqueLimit, 0, DataType::Real32, s("Torque limit"), s("N m")});
+    return list;
+}
+
+PdoMapping trialRpdoMapping()
+{
+    return PdoMapping({{targetPosition, 0, DataType::Integer32},
+                       {torqueOffset, 0, DataType::Integer16},
+                       {controlword, 0, DataType::Unsigned16}});
+}
+
+PdoMapping trialTpdoMapping()
+{
+    return PdoMapping({{positionActual, 0, DataType::Integer32},
+                       {torqueActual, 0, DataType::Integer16},
+                       {statusword, 0, DataType::Unsigned16}});
+}
+
+SdoWriteSequence parameterWriteSequence(const QList<int> &nodes, const Eigen::VectorXd &phi)
+{
+    if (nodes.isEmpty())
+        throw Error(tr("No node to write the parameters to."));
+    if (phi.size() == 0 || phi.size() > maxIdentifiedParameters) {
+        throw Error(tr("A parameter set holds 1 to %1 parameters, not %2.")
+                        .arg(maxIdentifiedParameters)
+                        .arg(phi.size()));
+    }
+    QSet<int> seen;
+    for (const int node : nodes) {
+        if (!canopen::isValidNodeId(node))
+            throw Error(tr("%1 is not a valid CANopen node id (1 to 127).").arg(node));
+        if (seen.contains(node))
+            throw Error(tr("Node %1 is listed twice.").arg(node));
+        seen.insert(node);
+    }
+    for (Eigen::Index i = 0; i < phi.size(); ++i) {
+        if (!canopen::fitsType(DataType::Real32, phi[i])) {
+            throw Error(tr("Parameter %1 (%2) cannot be sent as REAL32.").arg(i + 1).arg(phi[i]));
+        }
+    }
+    SdoWriteSequence writes;
+    for (const int node : nodes) {
+        const quint8 id = quint8(node);
+        writes << SdoWrite::make(id, identifiedParameters, 0, DataType::Unsigned8,
+                                 double(phi.size()));
+        for (Eigen::Index i = 0; i < phi.size(); ++i)
+            writes << SdoWrite::make(id, identifiedParameters, quint8(i + 1), DataType::Real32,
+                                     phi[i]);
+    }
+    for (const int node : nodes) {
+        writes << SdoWrite::make(quint8(node), storeParameters, storeAll, DataType::Unsigned32,
+                                 double(saveSignature));
+    }
+    return writes;
+}
+
+} // namespace learnid::objects
