@@ -1,0 +1,86 @@
+// Speed benchmark: CPU time of a 6-trial paper-scenario session (simulation at RK4 0.2 ms,
+// planning, safety checks and identification included) and of one identification update over
+// 10^6 samples. Prints Markdown. Usage: learnid-bench-speed [repeats]
+#include "BenchSupport.h"
+#include "identify/LearningLaw.h"
+#include "session/TrialPlanner.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+using namespace learnid;
+
+namespace {
+
+// A long trial: the paper line driven forward and back until `samples` samples.
+TrialPlan longPlan(const Scenario &s, int samples)
+{
+    const auto model = makeRobotModel(s.model);
+    const TrialPlan one = TrialPlanner(s, model).plan(s.trueParameters);
+    TrialPlan plan = one;
+    const int n = one.samples();
+    for (Eigen::MatrixXd *m : {&plan.desired.q, &plan.desired.qd, &plan.desired.qdd})
+        m->resize(2, samples);
+    for (int k = 0; k < samples; ++k) {
+        const int period = k / n;
+        const int i = k % n;
+        const bool back = period % 2 == 1;
+        const int src = back ? n - 1 - i : i;
+        plan.desired.q.col(k) = one.desired.q.col(src);
+        plan.desired.qd.col(k) = (back ? -1.0 : 1.0) * one.desired.qd.col(src);
+        plan.desired.qdd.col(k) = one.desired.qdd.col(src);
+    }
+    plan.feedforward = feedforwardTorque(*model, plan.desired, s.trueParameters);
+    return plan;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 15;
+    std::printf("| measurement | law | median CPU time | repeats |\n|---|---|---|---|\n");
+    for (const char *law : {"paper", "improved"}) {
+        std::vector<double> times;
+        for (int r = 0; r < repeats; ++r) {
+            Scenario s;
+            s.law = QString::fromLatin1(law);
+            const double t0 = bench::cpuSeconds();
+            auto session = bench::makeSession(s);
+            const bool ok = session->runTrials(6);
+            times.push_back(bench::cpuSeconds() - t0);
+            if (!ok)
+                return 1;
+        }
+        std::printf("| 6-trial paper-scenario session, simulation included | %s | %.1f ms | %d |\n",
+                    law, 1e3 * bench::median(times), repeats);
+    }
+
+    const Scenario s;
+    const int samples = 1000000;
+    const TrialPlan plan = longPlan(s, samples);
+    const auto model = makeRobotModel(s.model);
+    SimulatedRobot robot(model, s.trueParameters);
+    const double simStart = bench::cpuSeconds();
+    const TrialRecord record = robot.runTrial(plan, {});
+    const double simTime = bench::cpuSeconds() - simStart;
+    if (!record.completed())
+        return 1;
+    for (const char *name : {"paper", "improved"}) {
+        const auto law = makeLearningLaw(QString::fromLatin1(name));
+        std::vector<double> times;
+        for (int r = 0; r < 3; ++r) {
+            const double t0 = bench::cpuSeconds();
+            const ParameterUpdate up = law->update(*model, {{&plan, &record}}, s.initialParameters,
+                                                   s.estimator);
+            times.push_back(bench::cpuSeconds() - t0);
+            if (!up.phi.allFinite())
+                return 1;
+        }
+        std::printf("| one identification update over %d samples (2 joints) | %s | %.0f ms | 3 |\n",
+                    samples, name, 1e3 * bench::median(times));
+    }
+    std::printf("| simulating those %d samples (RK4, 10 steps per sample) | - | %.0f ms | 1 |\n",
+                samples, 1e3 * simTime);
+    return 0;
+}

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages learnid needs, only those that are missing.
+# Sourced by scripts/run and scripts/test; needs root (or sudo) when something is missing.
+set -euo pipefail
+
+LEARNID_PACKAGES=(
+    build-essential cmake ninja-build pkg-config
+    qt6-base-dev qt6-charts-dev qt6-serialbus-dev qt6-tools-dev qt6-l10n-tools
+    qt6-tools-dev-tools qt6-qpa-plugins libgl-dev libeigen3-dev
+    xvfb xauth qt6-svg-dev
+)
+
+learnid_install_deps() {
+    local missing=()
+    for p in "${LEARNID_PACKAGES[@]}"; do
+        if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+            missing+=("$p")
+        fi
+    done
+    if [ ${#missing[@]} -eq 0 ]; then
+        return 0
+    fi
+    echo "learnid: installing missing Debian packages: ${missing[*]}" >&2
+    local sudo=""
+    if [ "$(id -u)" -ne 0 ]; then
+        if command -v sudo >/dev/null 2>&1; then
+            sudo="sudo"
+        else
+            echo "learnid: run as root (or install sudo) to install: ${missing[*]}" >&2
+            return 1
+        fi
+    fi
+    $sudo apt-get update -q
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+# Configures and builds into $1 (default: build) with extra CMake arguments after it.
+learnid_build() {
+    local dir="${1:-build}"
+    shift || true
+    cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@"
+    cmake --build "$dir" -j "$(nproc)"
+}

@@ -1,0 +1,220 @@
+// End-to-end tests of the learnid-cli executable: what a user types, what it prints and writes.
+#include "io/ParameterFile.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+class TestCli : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void printedScenario_runsLikeTheDefault();
+    void run_writesReportParameterFileAndTrialCsv();
+    void paperEstimator_showsTableOneShape();
+    void badInput_exitsWithMessageAndWritesNothing_data();
+    void badInput_exitsWithMessageAndWritesNothing();
+    void unstableController_isRefusedAndWritesNothing();
+    void unknownOption_printsUsage();
+
+private:
+    struct Result
+    {
+        int exitCode = -1;
+        QString out;
+        QString err;
+    };
+    Result cli(const QStringList &args, const QString &dir) const
+    {
+        QProcess p;
+        p.setWorkingDirectory(dir);
+        p.start(QStringLiteral(LEARNID_CLI_PATH), args);
+        if (!p.waitForFinished(120000))
+            return {};
+        return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
+                QString::fromUtf8(p.readAllStandardOutput()),
+                QString::fromUtf8(p.readAllStandardError())};
+    }
+    static QJsonObject readJson(const QString &path)
+    {
+        QFile f(path);
+        if (!f.open(QIODevice::ReadOnly))
+            return {};
+        return QJsonDocument::fromJson(f.readAll()).object();
+    }
+    static void write(const QString &path, const QByteArray &data)
+    {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(data);
+    }
+    static QList<double> numbers(const QJsonValue &v)
+    {
+        QList<double> out;
+        for (const QJsonValue &x : v.toArray())
+            out << x.toDouble();
+        return out;
+    }
+};
+
+void TestCli::printedScenario_runsLikeTheDefault()
+{
+    QTemporaryDir dir;
+    const Result printed = cli({QStringLiteral("scenario"), QStringLiteral("--print")}, dir.path());
+    QCOMPARE(printed.exitCode, 0);
+    QJsonParseError error;
+    QJsonDocument::fromJson(printed.out.toUtf8(), &error);
+    QCOMPARE(error.error, QJsonParseError::NoError);
+    write(dir.filePath(QStringLiteral("paper.json")), printed.out.toUtf8());
+
+    const Result a = cli({QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("2"),
+                          QStringLiteral("--report"), QStringLiteral("a.json"), QStringLiteral("--quiet")},
+                         dir.path());
+    const Result b = cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("paper.json"),
+                          QStringLiteral("--iterations"), QStringLiteral("2"), QStringLiteral("--report"),
+                          QStringLiteral("b.json"), QStringLiteral("--quiet")},
+                         dir.path());
+    QCOMPARE(a.exitCode, 0);
+    QCOMPARE(b.exitCode, 0);
+    QCOMPARE(a.out, b.out);
+    QCOMPARE(readJson(dir.filePath(QStringLiteral("a.json"))).value(QStringLiteral("final")),
+             readJson(dir.filePath(QStringLiteral("b.json"))).value(QStringLiteral("final")));
+}
+
+void TestCli::run_writesReportParameterFileAndTrialCsv()
+{
+    QTemporaryDir dir;
+    const Result r = cli({QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("3"),
+                          QStringLiteral("--report"), QStringLiteral("out/report.json"),
+                          QStringLiteral("--export"), QStringLiteral("out/params.json"),
+                          QStringLiteral("--trial-csv"), QStringLiteral("out/trials"),
+                          QStringLiteral("--apply")},
+                         dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY(r.err.contains(QStringLiteral("trial 2")));  // progress on stderr
+    QVERIFY(r.out.contains(QStringLiteral("trial")));    // the table on stdout
+
+    const QJsonObject report = readJson(dir.filePath(QStringLiteral("out/report.json")));
+    QCOMPARE(report.value(QStringLiteral("estimator")).toString(), QStringLiteral("improved"));
+    QCOMPARE(numbers(report.value(QStringLiteral("truth"))), (QList<double>{20, 5, 8}));
+    const QJsonArray trials = report.value(QStringLiteral("trials")).toArray();
+    QCOMPARE(trials.size(), 3);
+    QCOMPARE(numbers(trials.at(0).toObject().value(QStringLiteral("phi"))), (QList<double>{40, 20, 30}));
+    for (int k = 0; k < 3; ++k) {
+        const QJsonObject t = trials.at(k).toObject();
+        QCOMPARE(t.value(QStringLiteral("index")).toInt(), k);
+        QCOMPARE(t.value(QStringLiteral("maxTrackingErrorDeg")).toArray().size(), 2);
+        QCOMPARE(t.value(QStringLiteral("rank")).toInt(), 3);
+        QVERIFY(t.value(QStringLiteral("samples")).toInt() > 1000);
+        QVERIFY(t.value(QStringLiteral("durationS")).toDouble() > 3.0);
+        QCOMPARE(t.value(QStringLiteral("phiStd")).toArray().size(), 3);
+    }
+    const QList<double> final = numbers(report.value(QStringLiteral("final")).toObject().value(QStringLiteral("phi")));
+    const QList<double> truth{20, 5, 8};
+    for (int i = 0; i < 3; ++i)
+        QVERIFY2(std::abs(final[i] / truth[i] - 1.0) < 5e-4, qPrintable(QString::number(final[i])));
+
+    QFile params(dir.filePath(QStringLiteral("out/params.json")));
+    QVERIFY(params.open(QIODevice::ReadOnly));
+    const learnid::ParameterFileContent content =
+        learnid::parameterFileFromJson(params.readAll(), QStringLiteral("params.json"));
+    for (int i = 0; i < 3; ++i)
+        QCOMPARE(content.values[i], final[i]);
+    QVERIFY(QFile::exists(dir.filePath(QStringLiteral("out/params.dcf"))));
+
+    for (int k = 0; k < 3; ++k) {
+        QFile csv(dir.filePath(QStringLiteral("out/trials/trial-%1.csv").arg(k, 3, 10, QLatin1Char('0'))));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const int lines = csv.readAll().count('\n');
+        QCOMPARE(lines, trials.at(k).toObject().value(QStringLiteral("samples")).toInt() + 1);
+    }
+}
+
+// DESIGN.md §1.2 and paper Table 1: after one learning, a within ~1 %, b about -25 %, c about -10 %.
+void TestCli::paperEstimator_showsTableOneShape()
+{
+    QTemporaryDir dir;
+    const Result r = cli({QStringLiteral("run"), QStringLiteral("--estimator"), QStringLiteral("paper"),
+                          QStringLiteral("--iterations"), QStringLiteral("1"), QStringLiteral("--report"),
+                          QStringLiteral("r.json"), QStringLiteral("--quiet")},
+                         dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const QJsonObject report = readJson(dir.filePath(QStringLiteral("r.json")));
+    QCOMPARE(report.value(QStringLiteral("estimator")).toString(), QStringLiteral("paper"));
+    const QList<double> phi = numbers(report.value(QStringLiteral("final")).toObject().value(QStringLiteral("phi")));
+    QVERIFY(std::abs(phi[0] / 20.0 - 1.0) < 0.02);
+    QVERIFY(phi[1] / 5.0 - 1.0 > -0.30 && phi[1] / 5.0 - 1.0 < -0.20);
+    QVERIFY(phi[2] / 8.0 - 1.0 > -0.14 && phi[2] / 8.0 - 1.0 < -0.06);
+    // The table's last row is estimate 1 with its error against the truth.
+    QVERIFY(r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts).size() == 3);
+}
+
+void TestCli::badInput_exitsWithMessageAndWritesNothing_data()
+{
+    QTest::addColumn<QByteArray>("scenario"); // written to s.json when not empty
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("expected");    // must appear in the error message
+    const QStringList run{QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("s.json")};
+    QTest::newRow("missing file") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("nope.json")} << QStringLiteral("nope.json");
+    QTest::newRow("malformed json") << QByteArray("{\n  \"robot\": {\n    \"model\": \n}\n") << run << QStringLiteral("line");
+    QTest::newRow("unknown key") << QByteArray(R"({"controller": {"kpp": [1, 2]}})") << run << QStringLiteral("controller.kpp");
+    QTest::newRow("wrong array length") << QByteArray(R"({"robot": {"torqueLimits": [8]}})") << run << QStringLiteral("robot.torqueLimits");
+    // Qt's JSON parser itself rejects an overflowing number, naming line and column.
+    QTest::newRow("infinite gain") << QByteArray(R"({"controller": {"kp": [1e999, 5000]}})") << run << QStringLiteral("line 1, column 29");
+    QTest::newRow("negative gain") << QByteArray(R"({"controller": {"kp": [4500, -5]}})") << run << QStringLiteral("controller.kp[1]");
+    QTest::newRow("non-positive limit") << QByteArray(R"({"robot": {"torqueLimits": [8, 0]}})") << run << QStringLiteral("robot.torqueLimits[1]");
+    QTest::newRow("string for number") << QByteArray(R"({"controller": {"lambda": "nan"}})") << run << QStringLiteral("controller.lambda");
+    QTest::newRow("unknown law") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--estimator"), QStringLiteral("magic")} << QStringLiteral("magic");
+    QTest::newRow("zero iterations") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("0")} << QStringLiteral("--iterations");
+    QTest::newRow("report outside workspace") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--report"), QStringLiteral("../escape.json")} << QStringLiteral("--report");
+}
+
+void TestCli::badInput_exitsWithMessageAndWritesNothing()
+{
+    QFETCH(QByteArray, scenario);
+    QFETCH(QStringList, args);
+    QFETCH(QString, expected);
+    QTemporaryDir parent;
+    const QString ws = parent.filePath(QStringLiteral("ws"));
+    QVERIFY(QDir().mkpath(ws));
+    if (!scenario.isEmpty())
+        write(QDir(ws).filePath(QStringLiteral("s.json")), scenario);
+    const Result r = cli(args + QStringList{QStringLiteral("--export"), QStringLiteral("p.json")}, ws);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(expected), qPrintable(r.err));
+    QVERIFY(!QFile::exists(QDir(ws).filePath(QStringLiteral("p.json"))));
+    QVERIFY(!QFile::exists(parent.filePath(QStringLiteral("escape.json"))));
+}
+
+// The paper's lambda = 40 is unstable for the true inertia (DESIGN.md §1.4): the session
+// refuses the trial once the estimate nears the truth, exits non-zero and writes nothing.
+void TestCli::unstableController_isRefusedAndWritesNothing()
+{
+    QTemporaryDir dir;
+    write(dir.filePath(QStringLiteral("s.json")), R"({"controller": {"lambda": 40}})");
+    const Result r = cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("s.json"),
+                          QStringLiteral("--report"), QStringLiteral("r.json")},
+                         dir.path());
+    QCOMPARE(r.exitCode, 3);
+    QVERIFY2(r.err.contains(QStringLiteral("unstable")), qPrintable(r.err));
+    QVERIFY(r.err.contains(QStringLiteral("no files written")));
+    QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("r.json"))));
+}
+
+void TestCli::unknownOption_printsUsage()
+{
+    QTemporaryDir dir;
+    const Result r = cli({QStringLiteral("run"), QStringLiteral("--frobnicate")}, dir.path());
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY(r.err.contains(QStringLiteral("frobnicate")));
+    QVERIFY(r.err.contains(QStringLiteral("Usage")));
+}
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"
