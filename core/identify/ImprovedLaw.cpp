@@ -9,15 +9,20 @@ namespace learnid {
 
 namespace {
 
-/// Stacked rows F[W_k+1/2] phi = F[tau_k] of one trial (steps 1-3 of the class comment).
-struct Regression
+/// Stacked rows F[W_k+1/2] phi = F[tau_k] of one trial (steps 1-3 of the class comment), the
+/// weight of each row (step 4) and H^T A for the covariance. Kept in the trial's cache.
+struct Regression final : LawCache
 {
+    double rho = 0.0;
     Eigen::MatrixXd a;
     Eigen::VectorXd b;
+    Eigen::VectorXd weight;
+    Eigen::MatrixXd shaped;
 };
 
 Regression filteredRegression(const RobotModel &model, const TrialPlan &plan,
-                              const TrialRecord &record, const EstimatorSettings &settings)
+                              const TrialRecord &record, const EstimatorSettings &settings,
+                              const Eigen::VectorXd &phiPrev)
 {
     validateRecord(model, plan, record);
     const int n = model.dof();
@@ -59,12 +64,39 @@ Regression filteredRegression(const RobotModel &model, const TrialPlan &plan,
         tauf.row(j) = filter.zeroPhaseLowPass(record.tau.row(j).head(rows));
 
     Regression out;
+    out.rho = settings.rho;
     out.a.resize(Eigen::Index(rows) * n, m);
     for (int k = 0; k < rows; ++k)
         out.a.middleRows(Eigen::Index(k) * n, n) =
             Eigen::Map<const Eigen::MatrixXd>(wf.col(k).data(), n, m);
     out.b = Eigen::Map<const Eigen::VectorXd>(tauf.data(), tauf.size());
+
+    // 4. OLS gives each joint's residual level in this trial; its rows get the inverse weight.
+    const ParameterUpdate ols = observableUpdate(out.a, out.b, n, phiPrev, settings.rankTolerance);
+    const double floor = 1e-9 * (out.b.cwiseAbs().maxCoeff() + 1.0);
+    out.weight = ols.residualRms.cwiseMax(floor).cwiseInverse().replicate(rows, 1);
+    // Torque noise reaches b through F(s)F(-s), a symmetric operator (H^T = H).
+    out.shaped = filterJointSignals(out.a, n, [&filter](const Eigen::RowVectorXd &x) {
+        return filter.zeroPhaseLowPass(x);
+    });
     return out;
+}
+
+// The trial's regression from its cache, computed and cached on first use.
+std::shared_ptr<const Regression> regressionOf(const RobotModel &model, const TrialData &trial,
+                                               const EstimatorSettings &settings,
+                                               const Eigen::VectorXd &phiPrev)
+{
+    if (trial.cache) {
+        if (auto cached = std::dynamic_pointer_cast<const Regression>(*trial.cache);
+            cached && cached->rho == settings.rho)
+            return cached;
+    }
+    auto r = std::make_shared<Regression>(
+        filteredRegression(model, *trial.plan, *trial.record, settings, phiPrev));
+    if (trial.cache)
+        *trial.cache = r;
+    return r;
 }
 
 } // namespace
@@ -78,41 +110,33 @@ ParameterUpdate ImprovedLaw::update(const RobotModel &model, const std::vector<T
     const int n = model.dof();
     const size_t first = settings.accumulate ? 0 : trials.size() - 1;
 
-    // 4. Per trial, OLS gives each joint's residual level; rows are weighted by its inverse so
-    // that joints and trials count by their noise, then all trials are solved together.
-    std::vector<Regression> parts;
-    std::vector<Eigen::VectorXd> weights;
+    // 4. All trials solved together, each row weighted by its joint's noise in its trial: the
+    // estimate is consistent whatever feedforward a trial ran with, so every trial adds.
+    std::vector<std::shared_ptr<const Regression>> parts;
     Eigen::Index rows = 0;
     for (size_t i = first; i < trials.size(); ++i) {
-        parts.push_back(filteredRegression(model, *trials[i].plan, *trials[i].record, settings));
-        const Regression &r = parts.back();
-        const ParameterUpdate ols = observableUpdate(r.a, r.b, n, phiPrev, settings.rankTolerance);
-        const double floor = 1e-9 * (r.b.cwiseAbs().maxCoeff() + 1.0);
-        const Eigen::VectorXd jointWeight = ols.residualRms.cwiseMax(floor).cwiseInverse();
-        weights.push_back(jointWeight.replicate(r.a.rows() / n, 1));
-        rows += r.a.rows();
+        parts.push_back(regressionOf(model, trials[i], settings, phiPrev));
+        rows += parts.back()->a.rows();
     }
-    // Torque noise reaches b through F(s)F(-s), a symmetric operator (H^T = H).
-    const FilteringEstimator filter(settings.rho, trials.back().record->samplePeriod);
     NoiseShaping noise;
-    noise.varianceGain = filter.zeroPhaseNoiseGain();
-    const auto shape = [&filter](const Eigen::RowVectorXd &x) { return filter.zeroPhaseLowPass(x); };
+    noise.varianceGain =
+        FilteringEstimator(settings.rho, trials.back().record->samplePeriod).zeroPhaseNoiseGain();
     if (parts.size() == 1) {
-        noise.transposedApplied = filterJointSignals(parts[0].a, n, shape);
-        return observableUpdate(parts[0].a, parts[0].b, n, phiPrev, settings.rankTolerance,
-                                weights[0], noise);
+        noise.transposedApplied = parts[0]->shaped;
+        return observableUpdate(parts[0]->a, parts[0]->b, n, phiPrev, settings.rankTolerance,
+                                parts[0]->weight, noise);
     }
 
     Eigen::MatrixXd a(rows, model.parameterCount());
     Eigen::VectorXd b(rows), weight(rows);
     noise.transposedApplied.resize(rows, model.parameterCount());
     Eigen::Index at = 0;
-    for (size_t i = 0; i < parts.size(); ++i) {
-        const Eigen::Index r = parts[i].a.rows();
-        a.middleRows(at, r) = parts[i].a;
-        b.segment(at, r) = parts[i].b;
-        weight.segment(at, r) = weights[i];
-        noise.transposedApplied.middleRows(at, r) = filterJointSignals(parts[i].a, n, shape);
+    for (const auto &part : parts) {
+        const Eigen::Index r = part->a.rows();
+        a.middleRows(at, r) = part->a;
+        b.segment(at, r) = part->b;
+        weight.segment(at, r) = part->weight;
+        noise.transposedApplied.middleRows(at, r) = part->shaped;
         at += r;
     }
     return observableUpdate(a, b, n, phiPrev, settings.rankTolerance, weight, noise);

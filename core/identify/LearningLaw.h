@@ -20,11 +20,19 @@ struct EstimatorSettings
     bool accumulate = true;         ///< improved law: fit all valid trials so far, not the last
 };
 
+/// Work a law may keep per trial between updates, e.g. the filtered regression of a trial, which
+/// later trials do not change. Owned with the trial by whoever keeps the trials.
+struct LawCache
+{
+    virtual ~LawCache() = default;
+};
+
 /// One trial as a learning law sees it.
 struct TrialData
 {
     const TrialPlan *plan = nullptr;
     const TrialRecord *record = nullptr;
+    std::shared_ptr<LawCache> *cache = nullptr; ///< optional slot the law may fill and reuse
 };
 
 /// One learning step (paper eq. 13): from a trial's plan and record and the estimate it ran

@@ -2,8 +2,8 @@
 
 #include "model/Error.h"
 
-#include <Eigen/QR>
-#include <Eigen/SVD>
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <QCoreApplication>
 #include <cmath>
 #include <limits>
@@ -11,14 +11,6 @@
 namespace learnid {
 
 namespace {
-
-// Singular values and right singular vectors of a tall matrix, through the R of a QR.
-Eigen::JacobiSVD<Eigen::MatrixXd> tallSvd(const Eigen::MatrixXd &a)
-{
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a);
-    const Eigen::MatrixXd r = qr.matrixQR().topRows(a.cols()).triangularView<Eigen::Upper>();
-    return Eigen::JacobiSVD<Eigen::MatrixXd>(r, Eigen::ComputeFullV);
-}
 
 void checkSizes(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int n,
                 const Eigen::VectorXd &phiPrev, const Eigen::VectorXd &rowWeight)
@@ -43,15 +35,17 @@ void checkSizes(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int n,
     }
 }
 
-// cond(W^T W) with the columns of W scaled to unit norm.
-double unitColumnCondition(const Eigen::MatrixXd &a, const Eigen::VectorXd &colNorm)
+// Eigen-decomposition of a symmetric Gram matrix, largest eigenvalue first.
+struct SortedEigen
 {
-    Eigen::VectorXd unit = colNorm;
-    for (Eigen::Index i = 0; i < unit.size(); ++i)
-        unit[i] = colNorm[i] > 0.0 ? 1.0 / colNorm[i] : 1.0;
-    const Eigen::VectorXd sv = tallSvd(a * unit.asDiagonal()).singularValues();
-    const double minSv = sv[sv.size() - 1];
-    return minSv > 0.0 ? (sv[0] / minSv) * (sv[0] / minSv) : std::numeric_limits<double>::infinity();
+    Eigen::VectorXd values;
+    Eigen::MatrixXd vectors;
+};
+
+SortedEigen sortedEigen(const Eigen::MatrixXd &gram)
+{
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(gram);
+    return {es.eigenvalues().reverse().cwiseMax(0.0), es.eigenvectors().rowwise().reverse()};
 }
 
 } // namespace
@@ -63,26 +57,34 @@ ParameterUpdate observableUpdate(const Eigen::MatrixXd &a, const Eigen::VectorXd
     checkSizes(a, b, n, phiPrev, rowWeightIn);
     const Eigen::Index rows = a.rows();
     const Eigen::Index m = a.cols();
-    const Eigen::VectorXd rowWeight =
-        rowWeightIn.size() == rows ? rowWeightIn : Eigen::VectorXd::Ones(rows);
+    const bool weighted = rowWeightIn.size() == rows;
+    const Eigen::VectorXd w2 = weighted ? rowWeightIn.cwiseAbs2() : Eigen::VectorXd();
+
+    // Gram matrices in one pass each. Columns are scaled before any decision, which keeps the
+    // conditioning of the scaled Gram matrix near that of the problem (cond(W^T W) ~ 10-100 on
+    // a line, DESIGN.md §1.6); rankTolerance >= 1e-6 keeps sigma^2 ratios far above rounding.
+    const Eigen::MatrixXd gram = a.transpose() * a;
+    const Eigen::MatrixXd gramW = weighted ? Eigen::MatrixXd(a.transpose() * w2.asDiagonal() * a)
+                                           : gram;
+    const Eigen::VectorXd residualPrev = b - a * phiPrev;
+    const Eigen::VectorXd rhs = weighted ? Eigen::VectorXd(a.transpose() * w2.cwiseProduct(residualPrev))
+                                         : Eigen::VectorXd(a.transpose() * residualPrev);
 
     // Parameter scaling: a column times its parameter is the torque it explains.
-    const Eigen::VectorXd colNorm = a.colwise().norm().transpose();
+    const Eigen::VectorXd colNorm = gram.diagonal().cwiseSqrt();
     Eigen::VectorXd scale = phiPrev.cwiseAbs();
     for (Eigen::Index i = 0; i < m; ++i)
         if (!(scale[i] > 0.0))
             scale[i] = colNorm[i] > 0.0 ? 1.0 / colNorm[i] : 1.0;
-    const Eigen::MatrixXd scaled = a * scale.asDiagonal();
 
     // Observability is a property of the trajectory: decided on the unweighted scaled regressor.
-    const auto svd = tallSvd(scaled);
-    const Eigen::VectorXd sigma = svd.singularValues();
-    const double sigmaMax = sigma.size() > 0 ? sigma[0] : 0.0;
+    const SortedEigen eig = sortedEigen(scale.asDiagonal() * gram * scale.asDiagonal());
+    const double lambdaMax = eig.values.size() > 0 ? eig.values[0] : 0.0;
     int rank = 0;
-    while (rank < m && sigmaMax > 0.0 && sigma[rank] > tolerance * sigmaMax)
+    while (rank < m && lambdaMax > 0.0 && eig.values[rank] > tolerance * tolerance * lambdaMax)
         ++rank;
-    const Eigen::MatrixXd vr = svd.matrixV().leftCols(rank);
-    const Eigen::MatrixXd kept = svd.matrixV().rightCols(m - rank);
+    const Eigen::MatrixXd vr = eig.vectors.leftCols(rank);
+    const Eigen::MatrixXd kept = eig.vectors.rightCols(m - rank);
 
     // Weighted least squares inside the observable subspace: phi = phiPrev + D V_r x.
     ParameterUpdate out;
@@ -90,35 +92,31 @@ ParameterUpdate observableUpdate(const Eigen::MatrixXd &a, const Eigen::VectorXd
     out.phi = phiPrev;
     Eigen::MatrixXd covX = Eigen::MatrixXd::Zero(rank, rank);
     if (rank > 0) {
-        const Eigen::MatrixXd bw = rowWeight.asDiagonal() * (scaled * vr);
-        const Eigen::VectorXd rw = rowWeight.cwiseProduct(b - a * phiPrev);
-        const Eigen::HouseholderQR<Eigen::MatrixXd> qr(bw);
-        const Eigen::MatrixXd r = qr.matrixQR().topRows(rank).triangularView<Eigen::Upper>();
-        const Eigen::VectorXd qtr = (qr.householderQ().adjoint() * rw).head(rank);
-        const Eigen::VectorXd x = r.triangularView<Eigen::Upper>().solve(qtr);
-        out.phi += scale.cwiseProduct(vr * x);
-        const Eigen::MatrixXd rInv =
-            r.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(rank, rank));
-        covX = rInv * rInv.transpose(); // (B^T B)^-1
+        const Eigen::MatrixXd dv = scale.asDiagonal() * vr;
+        const Eigen::MatrixXd btb = dv.transpose() * gramW * dv;
+        const Eigen::LDLT<Eigen::MatrixXd> ldlt(btb);
+        out.phi += dv * ldlt.solve(dv.transpose() * rhs);
+        covX = ldlt.solve(Eigen::MatrixXd::Identity(rank, rank)); // (B^T B)^-1
         if (noise.transposedApplied.rows() == rows && noise.transposedApplied.cols() == m) {
             // Row weights are constant per joint signal, so they commute with H.
-            const Eigen::MatrixXd hb =
-                rowWeight.asDiagonal() * (noise.transposedApplied * scale.asDiagonal() * vr);
-            covX = covX * (hb.transpose() * hb) * covX;
+            const Eigen::MatrixXd &h = noise.transposedApplied;
+            const Eigen::MatrixXd gramH = weighted
+                                              ? Eigen::MatrixXd(h.transpose() * w2.asDiagonal() * h)
+                                              : Eigen::MatrixXd(h.transpose() * h);
+            covX = covX * (dv.transpose() * gramH * dv) * covX;
         }
     }
 
     const Eigen::VectorXd residual = b - a * out.phi;
     const Eigen::Index samples = rows / n;
-    out.residualRms =
-        Eigen::Map<const Eigen::MatrixXd>(residual.data(), n, samples).rowwise().squaredNorm();
-    out.residualRms = (out.residualRms / double(samples)).cwiseSqrt();
+    const Eigen::Map<const Eigen::MatrixXd> perJoint(residual.data(), n, samples);
+    out.residualRms = (perJoint.rowwise().squaredNorm() / double(samples)).cwiseSqrt();
 
     // Var(phi) = sigma_w^2 D V_r covX V_r^T D, with sigma_w^2 the weighted residual variance
     // before the rows were filtered.
     const double dofLeft = double(std::max<Eigen::Index>(1, rows - rank));
-    const double s2 = rowWeight.cwiseProduct(residual).squaredNorm() / dofLeft
-                      / std::max(noise.varianceGain, 1e-300);
+    const double weightedSquares = weighted ? residual.cwiseAbs2().dot(w2) : residual.squaredNorm();
+    const double s2 = weightedSquares / dofLeft / std::max(noise.varianceGain, 1e-300);
     const Eigen::MatrixXd cov = vr * covX * vr.transpose();
     out.phiStd = (s2 * cov.diagonal()).cwiseMax(0.0).cwiseSqrt().cwiseProduct(scale);
     out.observable.assign(size_t(m), true);
@@ -129,7 +127,13 @@ ParameterUpdate observableUpdate(const Eigen::MatrixXd &a, const Eigen::VectorXd
             out.phiStd[i] = std::numeric_limits<double>::infinity();
         }
     }
-    out.condition = unitColumnCondition(a, colNorm);
+
+    // Conditioning as usually quoted: cond(W^T W) with unit-norm columns.
+    Eigen::VectorXd unit = colNorm;
+    for (Eigen::Index i = 0; i < m; ++i)
+        unit[i] = colNorm[i] > 0.0 ? 1.0 / colNorm[i] : 1.0;
+    const Eigen::VectorXd ev = sortedEigen(unit.asDiagonal() * gram * unit.asDiagonal()).values;
+    out.condition = ev[m - 1] > 0.0 ? ev[0] / ev[m - 1] : std::numeric_limits<double>::infinity();
     return out;
 }
 

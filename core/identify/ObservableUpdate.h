@@ -36,7 +36,7 @@ struct NoiseShaping
 /// b: stacked targets [N m] (N n). n: joints. rowWeight: a weight per row (N n), e.g. the
 /// inverse of the residual noise of the row's joint and trial; empty means 1.
 /// noise: how the torque noise reached b, for the standard deviations (see NoiseShaping).
-/// Tall systems are reduced by a Householder QR before the SVD of the m x m factor.
+/// Works on column-scaled Gram matrices (one pass over the rows); tolerance must be >= 1e-6.
 ParameterUpdate observableUpdate(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int n,
                                  const Eigen::VectorXd &phiPrev, double tolerance,
                                  const Eigen::VectorXd &rowWeight = {},

@@ -15,8 +15,9 @@ Eigen::Vector2d CartesianLine::direction() const
     return {std::cos(a), std::sin(a)};
 }
 
-JointState lineStateAt(const Kinematics &kinematics, const CartesianLine &line, double T, double t,
-                       const Eigen::VectorXd &near)
+void lineStateInto(const Kinematics &kinematics, const CartesianLine &line, double T, double t,
+                   const Eigen::Ref<const Eigen::VectorXd> &near, Eigen::Ref<Eigen::VectorXd> q,
+                   Eigen::Ref<Eigen::VectorXd> qd, Eigen::Ref<Eigen::VectorXd> qdd)
 {
     const double u = std::clamp(t / T, 0.0, 1.0);
     const double u2 = u * u;
@@ -25,17 +26,23 @@ JointState lineStateAt(const Kinematics &kinematics, const CartesianLine &line, 
     const double sdd = 60.0 * u * (1.0 - 3.0 * u + 2.0 * u2) / (T * T);
 
     const Eigen::Vector2d dir = line.direction();
-    const Eigen::VectorXd x = line.start + s * line.length * dir;
-    const Eigen::VectorXd xd = sd * line.length * dir;
-    const Eigen::VectorXd xdd = sdd * line.length * dir;
-
-    JointState state;
-    state.q = kinematics.inverse(x, near);
-    const Eigen::MatrixXd j = kinematics.jacobian(state.q);
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(j);
-    state.qd = lu.solve(xd);
+    const Eigen::Vector2d x = line.start + s * line.length * dir;
+    kinematics.inverseInto(x, near, q);
+    Eigen::Matrix2d j;
+    kinematics.jacobianInto(q, j);
+    const Eigen::Matrix2d jInv = j.inverse(); // non-singular: inverseInto keeps off singularities
+    qd = jInv * (sd * line.length * dir);
+    Eigen::Vector2d jdotQd;
+    kinematics.jacobianDotTimesQdInto(q, qd, jdotQd);
     // xdd = J qdd + Jdot qd
-    state.qdd = lu.solve(xdd - kinematics.jacobianDotTimesQd(state.q, state.qd));
+    qdd = jInv * (sdd * line.length * dir - jdotQd);
+}
+
+JointState lineStateAt(const Kinematics &kinematics, const CartesianLine &line, double T, double t,
+                       const Eigen::VectorXd &near)
+{
+    JointState state{Eigen::VectorXd(2), Eigen::VectorXd(2), Eigen::VectorXd(2)};
+    lineStateInto(kinematics, line, T, t, near, state.q, state.qd, state.qdd);
     return state;
 }
 
@@ -58,17 +65,20 @@ JointTrajectory planLine(const Kinematics &kinematics, const CartesianLine &line
     traj.qd.resize(dof, n);
     traj.qdd.resize(dof, n);
 
-    Eigen::VectorXd near;
+    if (dof != 2)
+        throw Error(QCoreApplication::translate("CartesianLine", "a planar line needs 2 joints"));
+    Eigen::Vector2d near = kinematics.inverse(line.start, Eigen::VectorXd());
     for (int k = 0; k < n; ++k) {
         const double t = k * timing.samplePeriod - timing.restBefore;
-        const JointState st = lineStateAt(kinematics, line, timing.motionDuration,
-                                          std::clamp(t, 0.0, timing.motionDuration), near);
-        traj.q.col(k) = st.q;
+        lineStateInto(kinematics, line, timing.motionDuration,
+                      std::clamp(t, 0.0, timing.motionDuration), near, traj.q.col(k),
+                      traj.qd.col(k), traj.qdd.col(k));
         // At rest the time scaling is exactly zero; clamping t makes that so without rounding.
-        const bool moving = t > 0.0 && t < timing.motionDuration;
-        traj.qd.col(k) = moving ? st.qd : Eigen::VectorXd::Zero(dof);
-        traj.qdd.col(k) = moving ? st.qdd : Eigen::VectorXd::Zero(dof);
-        near = st.q;
+        if (!(t > 0.0 && t < timing.motionDuration)) {
+            traj.qd.col(k).setZero();
+            traj.qdd.col(k).setZero();
+        }
+        near = traj.q.col(k);
     }
     return traj;
 }

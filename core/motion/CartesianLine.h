@@ -31,6 +31,11 @@ struct JointState
 JointState lineStateAt(const Kinematics &kinematics, const CartesianLine &line, double T, double t,
                        const Eigen::VectorXd &near);
 
+/// The same into caller storage (no allocation); the kinematics must have 2 joints.
+void lineStateInto(const Kinematics &kinematics, const CartesianLine &line, double T, double t,
+                   const Eigen::Ref<const Eigen::VectorXd> &near, Eigen::Ref<Eigen::VectorXd> q,
+                   Eigen::Ref<Eigen::VectorXd> qd, Eigen::Ref<Eigen::VectorXd> qdd);
+
 /// Timing of a trial: rest, motion of duration T, rest; sampled every samplePeriod.
 struct MotionTiming
 {

@@ -14,14 +14,24 @@ public:
 
     virtual ~Kinematics() = default;
     virtual int dof() const = 0;
-    virtual Eigen::VectorXd forward(const VectorRef &q) const = 0;
-    /// Joint angles reaching x on the configured branch (elbow); throws Error when out of reach.
-    /// near: a previous solution whose 2 pi branch the result keeps (for continuous paths).
-    virtual Eigen::VectorXd inverse(const VectorRef &x, const VectorRef &near) const = 0;
-    /// dx/dq (n x n).
-    virtual Eigen::MatrixXd jacobian(const VectorRef &q) const = 0;
-    /// dJ/dt * qd (n): the velocity product term of xdd = J qdd + Jdot qd.
-    virtual Eigen::VectorXd jacobianDotTimesQd(const VectorRef &q, const VectorRef &qd) const = 0;
+
+    /// x(q) into out (n).
+    virtual void forwardInto(const VectorRef &q, Eigen::Ref<Eigen::VectorXd> out) const = 0;
+    /// Joint angles reaching x on the configured branch (elbow) into out; throws Error when out
+    /// of reach. near: a previous solution whose 2 pi branch the result keeps (may be empty).
+    virtual void inverseInto(const VectorRef &x, const VectorRef &near,
+                             Eigen::Ref<Eigen::VectorXd> out) const = 0;
+    /// dx/dq into out (n x n).
+    virtual void jacobianInto(const VectorRef &q, Eigen::Ref<Eigen::MatrixXd> out) const = 0;
+    /// dJ/dt * qd into out (n): the velocity product term of xdd = J qdd + Jdot qd.
+    virtual void jacobianDotTimesQdInto(const VectorRef &q, const VectorRef &qd,
+                                        Eigen::Ref<Eigen::VectorXd> out) const = 0;
+
+    /// Allocating conveniences of the above, for code outside hot loops.
+    Eigen::VectorXd forward(const VectorRef &q) const;
+    Eigen::VectorXd inverse(const VectorRef &x, const VectorRef &near) const;
+    Eigen::MatrixXd jacobian(const VectorRef &q) const;
+    Eigen::VectorXd jacobianDotTimesQd(const VectorRef &q, const VectorRef &qd) const;
 };
 
 } // namespace learnid

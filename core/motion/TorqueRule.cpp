@@ -35,15 +35,14 @@ TorqueRuleResult shortestDuration(const RobotModel &model, const Eigen::VectorXd
     Eigen::MatrixXd a(n, gridPoints);
     Eigen::MatrixXd g(n, gridPoints);
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd near;
-    Eigen::VectorXd tau(n);
+    Eigen::VectorXd near = kinematics.inverse(line.start, Eigen::VectorXd());
+    Eigen::VectorXd q(n), qd(n), qdd(n), tau(n);
     for (int i = 0; i < gridPoints; ++i) {
         const double u = double(i) / (gridPoints - 1);
-        const JointState st = lineStateAt(kinematics, line, 1.0, u, near);
-        near = st.q;
-        model.inverseDynamics(st.q, zero, zero, phi, tau);
-        g.col(i) = tau;
-        model.inverseDynamics(st.q, st.qd, st.qdd, phi, tau);
+        lineStateInto(kinematics, line, 1.0, u, near, q, qd, qdd);
+        near = q;
+        model.inverseDynamics(q, zero, zero, phi, g.col(i));
+        model.inverseDynamics(q, qd, qdd, phi, tau);
         a.col(i) = tau - g.col(i);
     }
 

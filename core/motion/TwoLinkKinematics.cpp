@@ -22,13 +22,14 @@ TwoLinkKinematics::TwoLinkKinematics(double l1, double l2, int elbowSign)
     , m_elbowSign(elbowSign >= 0 ? 1 : -1)
 {}
 
-Eigen::VectorXd TwoLinkKinematics::forward(const VectorRef &q) const
+void TwoLinkKinematics::forwardInto(const VectorRef &q, Eigen::Ref<Eigen::VectorXd> out) const
 {
-    return Eigen::Vector2d(m_l1 * std::cos(q[0]) + m_l2 * std::cos(q[1]),
-                           m_l1 * std::sin(q[0]) + m_l2 * std::sin(q[1]));
+    out[0] = m_l1 * std::cos(q[0]) + m_l2 * std::cos(q[1]);
+    out[1] = m_l1 * std::sin(q[0]) + m_l2 * std::sin(q[1]);
 }
 
-Eigen::VectorXd TwoLinkKinematics::inverse(const VectorRef &x, const VectorRef &near) const
+void TwoLinkKinematics::inverseInto(const VectorRef &x, const VectorRef &near,
+                                    Eigen::Ref<Eigen::VectorXd> out) const
 {
     const double r2 = x.squaredNorm();
     const double cosRel = (r2 - m_l1 * m_l1 - m_l2 * m_l2) / (2.0 * m_l1 * m_l2);
@@ -47,28 +48,25 @@ Eigen::VectorXd TwoLinkKinematics::inverse(const VectorRef &x, const VectorRef &
     const double rel = m_elbowSign * std::acos(cosRel);
     const double t1 = std::atan2(x[1], x[0])
                       - std::atan2(m_l2 * std::sin(rel), m_l1 + m_l2 * std::cos(rel));
-    Eigen::Vector2d q(t1, t1 + rel);
-    if (near.size() == 2) {
-        q[0] = unwrapNear(q[0], near[0]);
-        q[1] = q[0] + rel;
-    }
-    return q;
+    out[0] = near.size() == 2 ? unwrapNear(t1, near[0]) : t1;
+    out[1] = out[0] + rel;
 }
 
-Eigen::MatrixXd TwoLinkKinematics::jacobian(const VectorRef &q) const
+void TwoLinkKinematics::jacobianInto(const VectorRef &q, Eigen::Ref<Eigen::MatrixXd> out) const
 {
-    Eigen::Matrix2d j;
-    j << -m_l1 * std::sin(q[0]), -m_l2 * std::sin(q[1]), m_l1 * std::cos(q[0]),
-        m_l2 * std::cos(q[1]);
-    return j;
+    out(0, 0) = -m_l1 * std::sin(q[0]);
+    out(0, 1) = -m_l2 * std::sin(q[1]);
+    out(1, 0) = m_l1 * std::cos(q[0]);
+    out(1, 1) = m_l2 * std::cos(q[1]);
 }
 
-Eigen::VectorXd TwoLinkKinematics::jacobianDotTimesQd(const VectorRef &q, const VectorRef &qd) const
+void TwoLinkKinematics::jacobianDotTimesQdInto(const VectorRef &q, const VectorRef &qd,
+                                               Eigen::Ref<Eigen::VectorXd> out) const
 {
     const double w1 = qd[0] * qd[0];
     const double w2 = qd[1] * qd[1];
-    return Eigen::Vector2d(-m_l1 * std::cos(q[0]) * w1 - m_l2 * std::cos(q[1]) * w2,
-                           -m_l1 * std::sin(q[0]) * w1 - m_l2 * std::sin(q[1]) * w2);
+    out[0] = -m_l1 * std::cos(q[0]) * w1 - m_l2 * std::cos(q[1]) * w2;
+    out[1] = -m_l1 * std::sin(q[0]) * w1 - m_l2 * std::sin(q[1]) * w2;
 }
 
 } // namespace learnid

@@ -13,10 +13,12 @@ public:
     TwoLinkKinematics(double l1, double l2, int elbowSign = +1);
 
     int dof() const override { return 2; }
-    Eigen::VectorXd forward(const VectorRef &q) const override;
-    Eigen::VectorXd inverse(const VectorRef &x, const VectorRef &near) const override;
-    Eigen::MatrixXd jacobian(const VectorRef &q) const override;
-    Eigen::VectorXd jacobianDotTimesQd(const VectorRef &q, const VectorRef &qd) const override;
+    void forwardInto(const VectorRef &q, Eigen::Ref<Eigen::VectorXd> out) const override;
+    void inverseInto(const VectorRef &x, const VectorRef &near,
+                     Eigen::Ref<Eigen::VectorXd> out) const override;
+    void jacobianInto(const VectorRef &q, Eigen::Ref<Eigen::MatrixXd> out) const override;
+    void jacobianDotTimesQdInto(const VectorRef &q, const VectorRef &qd,
+                                Eigen::Ref<Eigen::VectorXd> out) const override;
 
 private:
     double m_l1;

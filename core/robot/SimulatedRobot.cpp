@@ -13,20 +13,24 @@ namespace {
 constexpr double kRadToDeg = 180.0 / M_PI;
 
 /// RK4 integration of qdd = forwardDynamics(q, qd, tau) over one step h with tau held.
-/// Working vectors are members so the inner loop does not allocate.
+/// N: the joint count at compile time (Eigen::Dynamic for any), so the 2-joint arm's inner loop
+/// runs on fixed-size vectors.
+template <int N>
 class Rk4Integrator
 {
 public:
+    using Vector = Eigen::Matrix<double, N, 1>;
+
     Rk4Integrator(const RobotModel &model, const Eigen::VectorXd &phi)
         : m_model(model)
         , m_phi(phi)
     {
         const int n = model.dof();
-        for (Eigen::VectorXd *v : {&m_q, &m_v, &m_a1, &m_a2, &m_a3, &m_a4, &m_v2, &m_v3, &m_v4})
+        for (Vector *v : {&m_q, &m_a1, &m_a2, &m_a3, &m_a4, &m_v2, &m_v3, &m_v4})
             v->resize(n);
     }
 
-    void step(Eigen::VectorXd &q, Eigen::VectorXd &qd, const Eigen::VectorXd &tau, double h)
+    void step(Vector &q, Vector &qd, const Vector &tau, double h)
     {
         m_model.forwardDynamics(q, qd, tau, m_phi, m_a1);
         m_q = q + 0.5 * h * qd;
@@ -45,7 +49,7 @@ public:
 private:
     const RobotModel &m_model;
     const Eigen::VectorXd &m_phi;
-    Eigen::VectorXd m_q, m_v, m_a1, m_a2, m_a3, m_a4, m_v2, m_v3, m_v4;
+    Vector m_q, m_a1, m_a2, m_a3, m_a4, m_v2, m_v3, m_v4;
 };
 
 QString tr(const char *text)
@@ -69,14 +73,23 @@ QString SimulatedRobot::description() const
 
 TrialRecord SimulatedRobot::runTrial(const TrialPlan &plan, const TrialMonitor &monitor)
 {
+    std::seed_seq seq{quint64(m_options.seed), quint64(m_trialCount++)};
+    std::mt19937_64 rng(seq);
+    if (m_model->dof() == 2)
+        return simulate<2>(plan, monitor, rng);
+    return simulate<Eigen::Dynamic>(plan, monitor, rng);
+}
+
+template <int N>
+TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &monitor,
+                                     std::mt19937_64 &rng) const
+{
+    using Vector = Eigen::Matrix<double, N, 1>;
     const int n = m_model->dof();
     const int samples = plan.samples();
     const double ts = plan.desired.samplePeriod;
     const int substeps = std::max(1, m_options.substeps);
     const double h = ts / substeps;
-
-    std::seed_seq seq{quint64(m_options.seed), quint64(m_trialCount++)};
-    std::mt19937_64 rng(seq);
     std::normal_distribution<double> normal(0.0, 1.0);
     const double countAngle = m_options.encoderCounts > 0
                                   ? 2.0 * M_PI / double(m_options.encoderCounts)
@@ -88,10 +101,13 @@ TrialRecord SimulatedRobot::runTrial(const TrialPlan &plan, const TrialMonitor &
     record.tau.resize(n, samples);
 
     PidController pid(plan.controller);
-    Rk4Integrator rk4(*m_model, m_truePhi);
-    Eigen::VectorXd q = plan.desired.q.col(0); // the robot starts at rest at the path start
-    Eigen::VectorXd qd = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd qMeasured(n), e(n), u(n), tauCommand(n), tauPlant(n);
+    Rk4Integrator<N> rk4(*m_model, m_truePhi);
+    Vector q = plan.desired.q.col(0); // the robot starts at rest at the path start
+    Vector qd = Vector::Zero(n);
+    Vector qMeasured(n), e(n), u(n), tauCommand(n), tauPlant(n), disturbance = Vector::Zero(n);
+    if (m_faults.disturbanceTorque.size() == n)
+        disturbance = m_faults.disturbanceTorque;
+    const Vector limit = plan.torqueLimit;
 
     int recorded = 0;
     for (int k = 0; k < samples; ++k) {
@@ -102,7 +118,7 @@ TrialRecord SimulatedRobot::runTrial(const TrialPlan &plan, const TrialMonitor &
         e = plan.desired.q.col(k) - qMeasured;
 
         pid.step(e, u);
-        tauCommand = (plan.feedforward.col(k) + u).cwiseMax(-plan.torqueLimit).cwiseMin(plan.torqueLimit);
+        tauCommand = (plan.feedforward.col(k) + u).cwiseMax(-limit).cwiseMin(limit);
         record.q.col(k) = qMeasured;
         for (int j = 0; j < n; ++j)
             record.tau(j, k) = tauCommand[j]
@@ -136,9 +152,8 @@ TrialRecord SimulatedRobot::runTrial(const TrialPlan &plan, const TrialMonitor &
         }
 
         tauPlant = tauCommand;
-        if (m_faults.disturbanceFromSample >= 0 && k >= m_faults.disturbanceFromSample
-            && m_faults.disturbanceTorque.size() == n)
-            tauPlant += m_faults.disturbanceTorque;
+        if (m_faults.disturbanceFromSample >= 0 && k >= m_faults.disturbanceFromSample)
+            tauPlant += disturbance;
         for (int s = 0; s < substeps; ++s)
             rk4.step(q, qd, tauPlant, h);
 

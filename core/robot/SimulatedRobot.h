@@ -45,6 +45,10 @@ public:
     std::optional<Eigen::VectorXd> trueParameters() const override { return m_truePhi; }
 
 private:
+    template <int N>
+    TrialRecord simulate(const TrialPlan &plan, const TrialMonitor &monitor,
+                         std::mt19937_64 &rng) const;
+
     std::shared_ptr<const RobotModel> m_model;
     Eigen::VectorXd m_truePhi;
     MeasurementOptions m_options;

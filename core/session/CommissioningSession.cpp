@@ -111,10 +111,10 @@ TrialRecord CommissioningSession::runRepetitions(const TrialPlan &plan, int inde
 void CommissioningSession::learnFrom(TrialResult &result)
 {
     std::vector<TrialData> trials;
-    for (const TrialResult &earlier : m_history)
+    for (TrialResult &earlier : m_history)
         if (earlier.learned())
-            trials.push_back({&earlier.plan(), &earlier.record});
-    trials.push_back({&result.plan(), &result.record});
+            trials.push_back({&earlier.plan(), &earlier.record, &earlier.lawCache});
+    trials.push_back({&result.plan(), &result.record, &result.lawCache});
     try {
         ParameterUpdate update =
             m_law->update(*m_model, trials, result.phiUsed, m_scenario.estimator);
