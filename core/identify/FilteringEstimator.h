@@ -28,7 +28,8 @@ public:
     /// derivative outputs, i.e. F(s) F(-s) x and its first two time derivatives (3 x N).
     Eigen::MatrixXd zeroPhase(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
 
-    /// F applied backward in time, F(-s) x (1 x N): the transpose of lowPass() as a matrix.
+    /// F applied backward in time, F(-s) x (1 x N): the transpose of lowPass() as a matrix in
+    /// the interior (both start at rest at their first sample, so the edges differ slightly).
     Eigen::RowVectorXd anticausalLowPass(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
 
     /// F(s) F(-s) x alone (1 x N).

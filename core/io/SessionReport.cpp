@@ -87,7 +87,7 @@ QByteArray sessionReportJson(const CommissioningSession &session)
 }
 
 ParameterFileContent parameterFileContent(const CommissioningSession &session, int estimateIndex,
-                                          const QList<SdoWriteDescription> &canWrites)
+                                          const QList<SdoWrite> &canWrites)
 {
     const QVector<Eigen::VectorXd> &estimates = session.estimates();
     if (estimateIndex < 1 || estimateIndex >= estimates.size()) {

@@ -17,6 +17,6 @@ QByteArray sessionReportJson(const CommissioningSession &session);
 /// The parameter file content for estimate k of a session (k >= 1), with the quality figures of
 /// the trials that produced it and the SDO writes that apply performs.
 ParameterFileContent parameterFileContent(const CommissioningSession &session, int estimateIndex,
-                                          const QList<SdoWriteDescription> &canWrites);
+                                          const QList<SdoWrite> &canWrites);
 
 } // namespace learnid

@@ -19,33 +19,46 @@ Eigen::VectorXd peakRatio(const Eigen::MatrixXd &a, const Eigen::MatrixXd &g,
 
 } // namespace
 
-TorqueRuleResult shortestDuration(const RobotModel &model, const Eigen::VectorXd &phi,
-                                  const Kinematics &kinematics, const CartesianLine &line,
-                                  const Eigen::VectorXd &torqueLimit, double fraction,
-                                  int gridPoints)
+TorqueRuleGrid torqueRuleGrid(const RobotModel &model, const Kinematics &kinematics,
+                              const CartesianLine &line, int gridPoints)
 {
     const int n = model.dof();
+    const int m = model.parameterCount();
+    if (gridPoints < 2)
+        throw Error(QCoreApplication::translate("TorqueRule", "torque rule needs 2 grid points"));
+    TorqueRuleGrid grid;
+    grid.dof = n;
+    grid.inertial.resize(Eigen::Index(n) * gridPoints, m);
+    grid.gravity.resize(Eigen::Index(n) * gridPoints, m);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd near = kinematics.inverse(line.start, Eigen::VectorXd());
+    Eigen::VectorXd q(n), qd(n), qdd(n);
+    for (int i = 0; i < gridPoints; ++i) {
+        lineStateInto(kinematics, line, 1.0, double(i) / (gridPoints - 1), near, q, qd, qdd);
+        near = q;
+        const Eigen::Index row = Eigen::Index(i) * n;
+        model.regressor(q, zero, zero, grid.gravity.middleRows(row, n));
+        model.regressor(q, qd, qdd, grid.inertial.middleRows(row, n));
+        grid.inertial.middleRows(row, n) -= grid.gravity.middleRows(row, n);
+    }
+    return grid;
+}
+
+TorqueRuleResult shortestDuration(const TorqueRuleGrid &grid, const Eigen::VectorXd &phi,
+                                  const Eigen::VectorXd &torqueLimit, double fraction)
+{
+    const int n = grid.dof;
     if (torqueLimit.size() != n || (torqueLimit.array() <= 0.0).any() || !(fraction > 0.0)
-        || gridPoints < 2) {
+        || phi.size() != grid.inertial.cols()) {
         throw Error(QCoreApplication::translate(
             "TorqueRule", "torque rule needs one positive limit per joint and a positive fraction"));
     }
-
-    // A(u): inertial and velocity torque at T = 1; g(u): the T-independent gravity torque.
-    Eigen::MatrixXd a(n, gridPoints);
-    Eigen::MatrixXd g(n, gridPoints);
-    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd near = kinematics.inverse(line.start, Eigen::VectorXd());
-    Eigen::VectorXd q(n), qd(n), qdd(n), tau(n);
-    for (int i = 0; i < gridPoints; ++i) {
-        const double u = double(i) / (gridPoints - 1);
-        lineStateInto(kinematics, line, 1.0, u, near, q, qd, qdd);
-        near = q;
-        model.inverseDynamics(q, zero, zero, phi, g.col(i));
-        model.inverseDynamics(q, qd, qdd, phi, tau);
-        a.col(i) = tau - g.col(i);
-    }
-
+    // A(u): inertial and velocity torque at T = 1, columns per grid point; g(u): gravity.
+    const Eigen::Index points = grid.inertial.rows() / n;
+    const Eigen::VectorXd av = grid.inertial * phi;
+    const Eigen::VectorXd gv = grid.gravity * phi;
+    const Eigen::Map<const Eigen::MatrixXd> a(av.data(), n, points);
+    const Eigen::Map<const Eigen::MatrixXd> g(gv.data(), n, points);
     const Eigen::VectorXd limit = fraction * torqueLimit;
     const Eigen::VectorXd staticRatio = g.cwiseAbs().rowwise().maxCoeff().cwiseQuotient(limit);
     if ((staticRatio.array() >= 1.0).any()) {
@@ -76,6 +89,15 @@ TorqueRuleResult shortestDuration(const RobotModel &model, const Eigen::VectorXd
     ratio.maxCoeff(&result.limitingJoint);
     result.peakTorque = ratio.cwiseProduct(limit);
     return result;
+}
+
+TorqueRuleResult shortestDuration(const RobotModel &model, const Eigen::VectorXd &phi,
+                                  const Kinematics &kinematics, const CartesianLine &line,
+                                  const Eigen::VectorXd &torqueLimit, double fraction,
+                                  int gridPoints)
+{
+    return shortestDuration(torqueRuleGrid(model, kinematics, line, gridPoints), phi, torqueLimit,
+                            fraction);
 }
 
 } // namespace learnid

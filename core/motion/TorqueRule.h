@@ -14,6 +14,23 @@ struct TorqueRuleResult
     int limitingJoint = 0;       ///< the joint whose peak reaches fraction * limit
 };
 
+/// The line's geometry for the torque rule, independent of the parameters: regressor rows on a
+/// grid of normalised time u in [0, 1] at T = 1. Torque is linear in phi, so the rule for any
+/// estimate is a product with these rows.
+struct TorqueRuleGrid
+{
+    int dof = 0;
+    Eigen::MatrixXd inertial; ///< W(q, q', q'') - W(q, 0, 0), block i*dof.. of each grid point
+    Eigen::MatrixXd gravity;  ///< W(q, 0, 0)
+};
+
+TorqueRuleGrid torqueRuleGrid(const RobotModel &model, const Kinematics &kinematics,
+                              const CartesianLine &line, int gridPoints = 2001);
+
+/// The torque rule over a precomputed grid (see shortestDuration below).
+TorqueRuleResult shortestDuration(const TorqueRuleGrid &grid, const Eigen::VectorXd &phi,
+                                  const Eigen::VectorXd &torqueLimit, double fraction);
+
 /// Shortest duration T of the line such that max_t |tau_j(t)| <= fraction * limit_j for all j,
 /// with tau computed from the model and the estimate phi.
 /// Without gravity tau scales exactly as 1/T^2 (qd ~ 1/T, qdd ~ 1/T^2, Coriolis ~ qd^2), so T

@@ -120,9 +120,10 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
         pid.step(e, u);
         tauCommand = (plan.feedforward.col(k) + u).cwiseMax(-limit).cwiseMin(limit);
         record.q.col(k) = qMeasured;
-        for (int j = 0; j < n; ++j)
-            record.tau(j, k) = tauCommand[j]
-                               + m_options.torqueNoise * plan.torqueLimit[j] * normal(rng);
+        record.tau.col(k) = tauCommand;
+        if (m_options.torqueNoise > 0.0)
+            for (int j = 0; j < n; ++j)
+                record.tau(j, k) += m_options.torqueNoise * limit[j] * normal(rng);
         if (k == m_faults.nanTorqueAtSample)
             record.tau(0, k) = std::numeric_limits<double>::quiet_NaN();
         recorded = k + 1;

@@ -17,12 +17,12 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
     }
     m_kinematics = std::make_unique<TwoLinkKinematics>(scenario.linkLengths[0],
                                                        scenario.linkLengths[1], scenario.elbowSign);
+    m_ruleGrid = torqueRuleGrid(*m_model, *m_kinematics, scenario.line);
 }
 
 TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ruleOut) const
 {
-    const TorqueRuleResult rule = shortestDuration(*m_model, phiHat, *m_kinematics, m_scenario.line,
-                                                   m_scenario.torqueLimits,
+    const TorqueRuleResult rule = shortestDuration(m_ruleGrid, phiHat, m_scenario.torqueLimits,
                                                    m_scenario.planningFraction);
     if (ruleOut)
         *ruleOut = rule;

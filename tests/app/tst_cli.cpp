@@ -165,8 +165,7 @@ void TestCli::badInput_exitsWithMessageAndWritesNothing_data()
     QTest::newRow("malformed json") << QByteArray("{\n  \"robot\": {\n    \"model\": \n}\n") << run << QStringLiteral("line");
     QTest::newRow("unknown key") << QByteArray(R"({"controller": {"kpp": [1, 2]}})") << run << QStringLiteral("controller.kpp");
     QTest::newRow("wrong array length") << QByteArray(R"({"robot": {"torqueLimits": [8]}})") << run << QStringLiteral("robot.torqueLimits");
-    // Qt's JSON parser itself rejects an overflowing number, naming line and column.
-    QTest::newRow("infinite gain") << QByteArray(R"({"controller": {"kp": [1e999, 5000]}})") << run << QStringLiteral("line 1, column 29");
+    QTest::newRow("infinite gain") << QByteArray(R"({"controller": {"kp": [1e999, 5000]}})") << run << QStringLiteral("controller.kp[0]");
     QTest::newRow("negative gain") << QByteArray(R"({"controller": {"kp": [4500, -5]}})") << run << QStringLiteral("controller.kp[1]");
     QTest::newRow("non-positive limit") << QByteArray(R"({"robot": {"torqueLimits": [8, 0]}})") << run << QStringLiteral("robot.torqueLimits[1]");
     QTest::newRow("string for number") << QByteArray(R"({"controller": {"lambda": "nan"}})") << run << QStringLiteral("controller.lambda");

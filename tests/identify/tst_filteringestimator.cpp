@@ -13,15 +13,15 @@ namespace {
 
 using Complex = std::complex<double>;
 
-constexpr double rho = 40.0;  // DESIGN.md §2
+constexpr double rho = 40.0; // DESIGN.md §2
 constexpr double ts = 0.002;
 
 Eigen::MatrixXcd transferAt(const StateSpace &sys, Complex s)
 {
     const int n = sys.states();
     const Eigen::MatrixXcd sIminusA = s * Eigen::MatrixXcd::Identity(n, n) - sys.a.cast<Complex>();
-    return sys.c.cast<Complex>() * sIminusA.partialPivLu().solve(sys.b.cast<Complex>())
-           + sys.d.cast<Complex>();
+    return sys.c.cast<Complex>() * sIminusA.partialPivLu().solve(sys.b.cast<Complex>()) +
+           sys.d.cast<Complex>();
 }
 
 // (j w')^i F(j w') at the prewarped frequency w' = (2/Ts) tan(w Ts/2): output i of the exact
@@ -104,8 +104,8 @@ void TestFilteringEstimator::discreteFilter_hasExactPrewarpedResponseForAllOutpu
         const Eigen::MatrixXcd h = transferAt(f.discrete(), std::polar(1.0, w * ts));
         for (int i = 0; i < 3; ++i) {
             const Complex expected = prewarpedOutput(i, w, rho, ts);
-            QVERIFY2(std::abs(h(i, 0) - expected)
-                         <= 1e-9 * std::abs(expected) + 1e-14 * std::pow(rho, i),
+            QVERIFY2(std::abs(h(i, 0) - expected) <=
+                         1e-9 * std::abs(expected) + 1e-14 * std::pow(rho, i),
                      qPrintable(QStringLiteral("output %1 at w = %2").arg(i).arg(w)));
         }
     }

@@ -64,9 +64,8 @@ void TestTrialPlanner::unreachablePath_throwsNamingThePoint()
 {
     Scenario s;
     s.line.length = 2.0; // leaves the 1.5 m reach
-    const TrialPlanner planner(s, m_model);
     try {
-        planner.plan(s.initialParameters);
+        const TrialPlanner planner(s, m_model); // refused before any trial is planned
         QFAIL("an unreachable path must not be planned");
     } catch (const Error &e) {
         QVERIFY2(e.message().contains(QStringLiteral("out of reach")), qPrintable(e.message()));

@@ -32,13 +32,13 @@ inline double maxAbsDifference(const Eigen::MatrixXd &a, const Eigen::MatrixXd &
         const double actual_ = (actual);                                                           \
         const double expected_ = (expected);                                                       \
         const double tolerance_ = (tolerance);                                                     \
-        QVERIFY2(std::abs(actual_ - expected_) <= tolerance_,                                      \
-                 qPrintable(QStringLiteral("%1 = %2, expected %3 +- %4 (difference %5)")          \
-                                .arg(QStringLiteral(#actual),                                      \
-                                     learnid::test::formatNumber(actual_),                         \
-                                     learnid::test::formatNumber(expected_),                       \
-                                     learnid::test::formatNumber(tolerance_),                      \
-                                     learnid::test::formatNumber(actual_ - expected_))));          \
+        QVERIFY2(                                                                                  \
+            std::abs(actual_ - expected_) <= tolerance_,                                           \
+            qPrintable(QStringLiteral("%1 = %2, expected %3 +- %4 (difference %5)")                \
+                           .arg(QStringLiteral(#actual), learnid::test::formatNumber(actual_),     \
+                                learnid::test::formatNumber(expected_),                            \
+                                learnid::test::formatNumber(tolerance_),                           \
+                                learnid::test::formatNumber(actual_ - expected_))));               \
     } while (0)
 
 /// max |actual - expected| <= tolerance over all entries (fails on shape mismatch or NaN).
@@ -49,7 +49,7 @@ inline double maxAbsDifference(const Eigen::MatrixXd &a, const Eigen::MatrixXd &
         const double tolerance_ = (tolerance);                                                     \
         const double diff_ = learnid::test::maxAbsDifference(actual_, expected_);                  \
         QVERIFY2(diff_ <= tolerance_,                                                              \
-                 qPrintable(QStringLiteral("%1: max difference %2 > %3 (%4x%5 vs %6x%7)")         \
+                 qPrintable(QStringLiteral("%1: max difference %2 > %3 (%4x%5 vs %6x%7)")          \
                                 .arg(QStringLiteral(#actual), learnid::test::formatNumber(diff_),  \
                                      learnid::test::formatNumber(tolerance_))                      \
                                 .arg(actual_.rows())                                               \

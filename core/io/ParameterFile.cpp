@@ -1,0 +1,286 @@
+#include "io/ParameterFile.h"
+
+#include "io/AtomicFile.h"
+#include "io/JsonReader.h"
+#include "io/JsonTree.h"
+#include "model/Error.h"
+
+#include <QCoreApplication>
+#include <QCryptographicHash>
+#include <QDir>
+#include <QJsonDocument>
+#include <QRegularExpression>
+#include <limits>
+
+namespace learnid {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("ParameterFile", text);
+}
+
+QString key(const char *name)
+{
+    return QString::fromLatin1(name);
+}
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+QString indexText(quint16 index)
+{
+    return QStringLiteral("0x") +
+           QString::number(index, 16).rightJustified(4, QLatin1Char('0')).toUpper();
+}
+
+JsonTree controllerTree(const ControllerSettings &c)
+{
+    JsonTree t = JsonTree::object();
+    t.insert(key("samplePeriod"), c.samplePeriod)
+        .insert(key("kp"), JsonTree::numbers(c.kp))
+        .insert(key("ki"), JsonTree::numbers(c.ki))
+        .insert(key("kd"), JsonTree::numbers(c.kd))
+        .insert(key("lambda"), c.lambda);
+    return t;
+}
+
+JsonTree contentTree(const ParameterFileContent &c)
+{
+    JsonTree nodes = JsonTree::array();
+    for (int node : c.nodes())
+        nodes.append(node);
+    JsonTree robot = JsonTree::object();
+    robot.insert(key("model"), c.robotModel)
+        .insert(key("description"), c.robotDescription)
+        .insert(key("jointNodes"), nodes);
+    JsonTree identification = JsonTree::object();
+    identification.insert(key("law"), c.law).insert(key("sourceTrial"), c.sourceTrial);
+    JsonTree parameters = JsonTree::array();
+    for (int i = 0; i < int(c.parameters.size()); ++i) {
+        const ParameterInfo &p = c.parameters.at(i);
+        JsonTree o = JsonTree::object();
+        o.insert(key("name"), p.name)
+            .insert(key("unit"), p.unit)
+            .insert(key("description"), p.description)
+            .insert(key("value"), c.values[i]);
+        if (c.standardDeviations.size() > 0)
+            o.insert(key("standardDeviation"), c.standardDeviations[i]); // +inf -> null
+        parameters.append(o);
+    }
+    JsonTree quality = JsonTree::object();
+    quality.insert(key("maxTrackingErrorDeg"), JsonTree::numbers(c.maxTrackingErrorDeg))
+        .insert(key("rmsTrackingErrorDeg"), JsonTree::numbers(c.rmsTrackingErrorDeg))
+        .insert(key("residualRms"), JsonTree::numbers(c.residualRms))
+        .insert(key("condition"), c.condition)
+        .insert(key("rank"), c.rank);
+    JsonTree writes = JsonTree::array();
+    for (const SdoWrite &w : c.canWrites) {
+        JsonTree o = JsonTree::object();
+        o.insert(key("node"), w.node)
+            .insert(key("index"), indexText(w.index))
+            .insert(key("subindex"), int(w.subIndex))
+            .insert(key("type"), w.dataType)
+            .insert(key("value"), w.value)
+            .insert(key("raw"), QString::fromLatin1(w.raw.toHex()));
+        writes.append(o);
+    }
+    JsonTree root = JsonTree::object();
+    root.insert(key("schema"), QString::fromLatin1(parameterFileSchema))
+        .insert(key("created"), c.created.toUTC().toString(Qt::ISODateWithMs))
+        .insert(key("toolVersion"), c.toolVersion)
+        .insert(key("robot"), robot)
+        .insert(key("controller"), controllerTree(c.controller))
+        .insert(key("identification"), identification)
+        .insert(key("parameters"), parameters)
+        .insert(key("quality"), quality)
+        .insert(key("canWrites"), writes);
+    return root;
+}
+
+ControllerSettings readController(JsonObjectReader r)
+{
+    ControllerSettings c;
+    c.samplePeriod = jsonNumber(r.require(key("samplePeriod")), r.keyPath(key("samplePeriod")));
+    c.kp = jsonNumbers(r.require(key("kp")), r.keyPath(key("kp")));
+    c.ki = jsonNumbers(r.require(key("ki")), r.keyPath(key("ki")));
+    c.kd = jsonNumbers(r.require(key("kd")), r.keyPath(key("kd")));
+    c.lambda = jsonNumber(r.require(key("lambda")), r.keyPath(key("lambda")));
+    r.rejectUnknownKeys();
+    return c;
+}
+
+void readParameters(const QJsonValue &value, const QString &path, ParameterFileContent &c)
+{
+    const QJsonArray list = jsonArray(value, path);
+    const int m = int(list.size());
+    c.values.resize(m);
+    c.standardDeviations.resize(m);
+    int withStd = 0;
+    for (int i = 0; i < m; ++i) {
+        JsonObjectReader p(list.at(i), jsonIndexPath(path, i));
+        ParameterInfo info;
+        info.name = jsonString(p.require(key("name")), p.keyPath(key("name")));
+        info.unit = jsonString(p.require(key("unit")), p.keyPath(key("unit")));
+        info.description = jsonString(p.require(key("description")), p.keyPath(key("description")));
+        c.parameters.append(info);
+        c.values[i] = jsonNumber(p.require(key("value")), p.keyPath(key("value")));
+        const QJsonValue sd = p.value(key("standardDeviation"));
+        if (i > 0 && sd.isUndefined() != (withStd == 0))
+            throwAtKey(p.keyPath(key("standardDeviation")),
+                       tr("must be given for every parameter or for none"));
+        if (!sd.isUndefined()) {
+            ++withStd;
+            c.standardDeviations[i] =
+                sd.isNull() ? infinity : jsonNumber(sd, p.keyPath(key("standardDeviation")));
+        }
+        p.rejectUnknownKeys();
+    }
+    if (withStd == 0)
+        c.standardDeviations.resize(0);
+}
+
+SdoWrite readWrite(JsonObjectReader r)
+{
+    static const QRegularExpression indexPattern(QStringLiteral("^0x[0-9A-Fa-f]{4}$"));
+    static const QRegularExpression hexPattern(QStringLiteral("^([0-9A-Fa-f]{2})+$"));
+    SdoWrite w;
+    w.node = quint8(jsonInteger(r.require(key("node")), r.keyPath(key("node")), 1, 127));
+    const QString index = jsonString(r.require(key("index")), r.keyPath(key("index")));
+    if (!indexPattern.match(index).hasMatch()) {
+        throwAtKey(r.keyPath(key("index")),
+                   tr("must be an object index written as \"0x\" and four hex digits, got \"%1\"")
+                       .arg(index));
+    }
+    w.index = quint16(index.mid(2).toUInt(nullptr, 16));
+    w.subIndex =
+        quint8(jsonInteger(r.require(key("subindex")), r.keyPath(key("subindex")), 0, 255));
+    w.dataType = jsonString(r.require(key("type")), r.keyPath(key("type")));
+    w.value = jsonNumber(r.require(key("value")), r.keyPath(key("value")));
+    const QString raw = jsonString(r.require(key("raw")), r.keyPath(key("raw")));
+    if (!hexPattern.match(raw).hasMatch()) {
+        throwAtKey(r.keyPath(key("raw")),
+                   tr("must be the bytes written as pairs of hex digits, got \"%1\"").arg(raw));
+    }
+    w.raw = QByteArray::fromHex(raw.toLatin1());
+    r.rejectUnknownKeys();
+    return w;
+}
+
+ParameterFileContent readContent(const QJsonObject &root)
+{
+    ParameterFileContent c;
+    JsonObjectReader r(root, QString());
+    r.value(key("schema"));   // checked before
+    r.value(key("checksum")); // checked before
+    const QString created = jsonString(r.require(key("created")), key("created"));
+    c.created = QDateTime::fromString(created, Qt::ISODateWithMs);
+    if (!c.created.isValid()) {
+        throwAtKey(key("created"), tr("must be a date and time as in 2024-05-01T12:00:00.000Z, "
+                                      "got \"%1\"")
+                                       .arg(created));
+    }
+    c.toolVersion = jsonString(r.require(key("toolVersion")), key("toolVersion"));
+
+    JsonObjectReader robot = r.object(key("robot"));
+    c.robotModel = jsonString(robot.require(key("model")), robot.keyPath(key("model")));
+    c.robotDescription =
+        jsonString(robot.require(key("description")), robot.keyPath(key("description")));
+    const QString nodesPath = robot.keyPath(key("jointNodes"));
+    const QJsonArray nodes = jsonArray(robot.require(key("jointNodes")), nodesPath);
+    for (int i = 0; i < int(nodes.size()); ++i)
+        c.jointNodes.append(int(jsonInteger(nodes.at(i), jsonIndexPath(nodesPath, i), 1, 127)));
+    robot.rejectUnknownKeys();
+
+    c.controller = readController(r.object(key("controller")));
+
+    JsonObjectReader identification = r.object(key("identification"));
+    c.law = jsonString(identification.require(key("law")), identification.keyPath(key("law")));
+    c.sourceTrial = int(jsonInteger(identification.require(key("sourceTrial")),
+                                    identification.keyPath(key("sourceTrial")), -1, 1 << 30));
+    identification.rejectUnknownKeys();
+
+    readParameters(r.require(key("parameters")), key("parameters"), c);
+
+    JsonObjectReader q = r.object(key("quality"));
+    const auto figures = [&q](const char *name) {
+        return jsonNumbers(q.require(key(name)), q.keyPath(key(name)), infinity);
+    };
+    c.maxTrackingErrorDeg = figures("maxTrackingErrorDeg");
+    c.rmsTrackingErrorDeg = figures("rmsTrackingErrorDeg");
+    c.residualRms = figures("residualRms");
+    const QJsonValue condition = q.require(key("condition"));
+    c.condition =
+        condition.isNull() ? infinity : jsonNumber(condition, q.keyPath(key("condition")));
+    c.rank = int(jsonInteger(q.require(key("rank")), q.keyPath(key("rank")), 0, 1 << 30));
+    q.rejectUnknownKeys();
+
+    const QJsonArray writes = jsonArray(r.require(key("canWrites")), key("canWrites"));
+    for (int i = 0; i < int(writes.size()); ++i)
+        c.canWrites.append(
+            readWrite(JsonObjectReader(writes.at(i), jsonIndexPath(key("canWrites"), i))));
+    r.rejectUnknownKeys();
+    return c;
+}
+
+void checkSchemaAndChecksum(QJsonObject root)
+{
+    const QJsonValue schema = root.value(key("schema"));
+    if (schema.isUndefined())
+        throwAtKey(key("schema"), tr("is missing; this is not a learnid parameter file"));
+    if (jsonString(schema, key("schema")) != QLatin1String(parameterFileSchema)) {
+        throwAtKey(key("schema"),
+                   tr("this version of learnid reads \"%1\", got %2")
+                       .arg(QLatin1String(parameterFileSchema), describeJsonValue(schema)));
+    }
+    const QJsonValue stored = root.value(key("checksum"));
+    if (stored.isUndefined())
+        throwAtKey(key("checksum"), tr("is missing; this key is required"));
+    const QString storedHex = jsonString(stored, key("checksum"));
+    root.remove(key("checksum"));
+    if (storedHex.compare(QString::fromLatin1(parameterFileChecksum(root)), Qt::CaseInsensitive) !=
+        0) {
+        throwAtKey(key("checksum"), tr("does not match the content: the file was changed after "
+                                       "learnid wrote it, or is damaged"));
+    }
+}
+
+} // namespace
+
+QByteArray parameterFileChecksum(const QJsonObject &withoutChecksum)
+{
+    const QByteArray canonical = QJsonDocument(withoutChecksum).toJson(QJsonDocument::Compact);
+    return QCryptographicHash::hash(canonical, QCryptographicHash::Sha256).toHex();
+}
+
+QByteArray parameterFileToJson(const ParameterFileContent &content)
+{
+    validateParameterFileContent(content);
+    JsonTree root = contentTree(content);
+    // The checksum covers the file as a reader parses it: Qt's parser turns integral numbers
+    // into integers (1e+17 reads back as 100000000000000000), so hash the parsed text, not the
+    // values that went in.
+    const QJsonObject parsed = QJsonDocument::fromJson(root.toJson()).object();
+    root.insert(key("checksum"), QString::fromLatin1(parameterFileChecksum(parsed)));
+    return root.toJson();
+}
+
+ParameterFileContent parameterFileFromJson(const QByteArray &json, const QString &sourceName)
+{
+    const QJsonObject root = parseJsonObject(json, sourceName);
+    try {
+        checkSchemaAndChecksum(root);
+        const ParameterFileContent c = readContent(root);
+        validateParameterFileContent(c);
+        return c;
+    } catch (const Error &e) {
+        throw Error(tr("%1: %2").arg(sourceName, e.message()));
+    }
+}
+
+ParameterFileContent readParameterFile(const QString &path)
+{
+    return parameterFileFromJson(readFile(path), QDir::toNativeSeparators(path));
+}
+
+} // namespace learnid

@@ -1,0 +1,123 @@
+#include "identify/LearningLaw.h"
+#include "io/JsonReader.h"
+#include "io/ParameterFile.h"
+#include "io/ScenarioFile.h"
+#include "io/ValueChecks.h"
+#include "model/ModelFactory.h"
+
+#include <QCoreApplication>
+
+namespace learnid {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("ParameterFile", text);
+}
+
+QString key(const char *path)
+{
+    return QString::fromLatin1(path);
+}
+
+// A vector that is either empty (not available) or has expected entries.
+void checkOptionalVector(const QString &path, const Eigen::VectorXd &values, Eigen::Index expected,
+                         const QString &what)
+{
+    if (values.size() > 0)
+        checkVector(path, values, expected, what, EntryRule::NonNegativeOrInfinite);
+}
+
+} // namespace
+
+QList<int> ParameterFileContent::nodes() const
+{
+    if (!jointNodes.isEmpty())
+        return jointNodes;
+    QList<int> n;
+    for (int j = 0; j < controller.dof(); ++j)
+        n.append(j + 1);
+    return n;
+}
+
+void validateParameterFileContent(const ParameterFileContent &c)
+{
+    const auto model = makeRobotModel(c.robotModel);
+    if (!model) {
+        throwAtKey(key("robot.model"),
+                   tr("unknown model \"%1\"; known models: %2")
+                       .arg(c.robotModel, knownRobotModels().join(QStringLiteral(", "))));
+    }
+    const int n = model->dof();
+    const int m = model->parameterCount();
+    const QString perJoint = tr("one per joint of %1").arg(c.robotModel);
+
+    if (!c.jointNodes.isEmpty()) {
+        checkLength(key("robot.jointNodes"), c.jointNodes.size(), n, perJoint);
+        for (int j = 0; j < n; ++j) {
+            const QString path = jsonIndexPath(key("robot.jointNodes"), j);
+            checkIntegerRange(path, c.jointNodes.at(j), 1, 127);
+            if (c.jointNodes.indexOf(c.jointNodes.at(j)) != j)
+                throwAtKey(path, tr("node %1 is given to two joints").arg(c.jointNodes.at(j)));
+        }
+    }
+    validateControllerSettings(c.controller, n, key("controller"));
+    if (!c.created.isValid())
+        throwAtKey(key("created"), tr("must be a valid date and time"));
+    if (c.toolVersion.isEmpty())
+        throwAtKey(key("toolVersion"), tr("must not be empty"));
+    if (!knownLearningLaws().contains(c.law)) {
+        throwAtKey(key("identification.law"),
+                   tr("unknown learning law \"%1\"; known laws: %2")
+                       .arg(c.law, knownLearningLaws().join(QStringLiteral(", "))));
+    }
+    if (c.sourceTrial < -1) {
+        throwAtKey(key("identification.sourceTrial"),
+                   tr("must be a trial index or -1 (not recorded), got %1").arg(c.sourceTrial));
+    }
+
+    const QList<ParameterInfo> modelParameters = model->parameters();
+    const QString perParameter = tr("one per parameter of %1").arg(c.robotModel);
+    checkLength(key("parameters"), c.parameters.size(), m, perParameter);
+    for (int i = 0; i < m; ++i) {
+        const QString path = jsonKeyPath(jsonIndexPath(key("parameters"), i), key("name"));
+        if (c.parameters.at(i).name != modelParameters.at(i).name) {
+            throwAtKey(path, tr("must be \"%1\" (parameter %2 of %3), got \"%4\"")
+                                 .arg(modelParameters.at(i).name)
+                                 .arg(i + 1)
+                                 .arg(c.robotModel, c.parameters.at(i).name));
+        }
+    }
+    checkLength(key("parameters"), c.values.size(), m, tr("values, %1").arg(perParameter));
+    for (int i = 0; i < m; ++i)
+        checkFinite(jsonKeyPath(jsonIndexPath(key("parameters"), i), key("value")), c.values[i]);
+    if (c.standardDeviations.size() > 0) {
+        checkLength(key("parameters"), c.standardDeviations.size(), m,
+                    tr("standard deviations, %1").arg(perParameter));
+        for (int i = 0; i < m; ++i) {
+            checkNonNegativeOrInfinite(
+                jsonKeyPath(jsonIndexPath(key("parameters"), i), key("standardDeviation")),
+                c.standardDeviations[i]);
+        }
+    }
+
+    checkOptionalVector(key("quality.maxTrackingErrorDeg"), c.maxTrackingErrorDeg, n, perJoint);
+    checkOptionalVector(key("quality.rmsTrackingErrorDeg"), c.rmsTrackingErrorDeg, n, perJoint);
+    checkOptionalVector(key("quality.residualRms"), c.residualRms, n, perJoint);
+    checkNonNegativeOrInfinite(key("quality.condition"), c.condition);
+    checkIntegerRange(key("quality.rank"), c.rank, 0, m);
+
+    for (int i = 0; i < int(c.canWrites.size()); ++i) {
+        const SdoWrite &w = c.canWrites.at(i);
+        const QString path = jsonIndexPath(key("canWrites"), i);
+        checkIntegerRange(jsonKeyPath(path, key("node")), w.node, 1, 127);
+        if (w.dataType.isEmpty())
+            throwAtKey(jsonKeyPath(path, key("type")), tr("must name the CANopen data type"));
+        checkFinite(jsonKeyPath(path, key("value")), w.value);
+        if (w.raw.isEmpty())
+            throwAtKey(jsonKeyPath(path, key("raw")), tr("must hold the bytes written"));
+    }
+}
+
+} // namespace learnid

@@ -1,0 +1,200 @@
+#include "io/ScenarioFile.h"
+
+#include "io/AtomicFile.h"
+#include "io/JsonReader.h"
+#include "io/JsonTree.h"
+#include "model/Error.h"
+
+#include <QCoreApplication>
+#include <QDir>
+
+namespace learnid {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("ScenarioFile", text);
+}
+
+QString key(const char *name)
+{
+    return QString::fromLatin1(name);
+}
+
+void readRobot(JsonObjectReader r, Scenario &s)
+{
+    r.read(key("model"), s.model);
+    r.read(key("linkLengths"), s.linkLengths);
+    r.readInteger(key("elbow"), s.elbowSign, -1, 1, tr("1 or -1"));
+    r.read(key("torqueLimits"), s.torqueLimits);
+    r.read(key("initialParameters"), s.initialParameters);
+    r.rejectUnknownKeys();
+}
+
+void readPath(JsonObjectReader r, Scenario &s)
+{
+    Eigen::VectorXd start = s.line.start;
+    r.read(key("start"), start);
+    if (start.size() != 2) {
+        throwAtKey(r.keyPath(key("start")),
+                   tr("must have 2 entries (x and y), got %1").arg(start.size()));
+    }
+    s.line.start = start;
+    r.read(key("length"), s.line.length);
+    r.read(key("directionDeg"), s.line.directionDeg);
+    r.read(key("restBefore"), s.restBefore);
+    r.read(key("restAfter"), s.restAfter);
+    r.read(key("planningFraction"), s.planningFraction);
+    r.rejectUnknownKeys();
+}
+
+void readController(JsonObjectReader r, ControllerSettings &c)
+{
+    r.read(key("samplePeriod"), c.samplePeriod);
+    r.read(key("kp"), c.kp);
+    r.read(key("ki"), c.ki);
+    r.read(key("kd"), c.kd);
+    r.read(key("lambda"), c.lambda);
+    r.rejectUnknownKeys();
+}
+
+void readEstimator(JsonObjectReader r, Scenario &s)
+{
+    r.read(key("law"), s.law);
+    r.read(key("rho"), s.estimator.rho);
+    r.read(key("rankTolerance"), s.estimator.rankTolerance);
+    r.read(key("accumulate"), s.estimator.accumulate);
+    r.readInteger(key("iterations"), s.iterations, 1, scenarioLimits::maxIterations);
+    r.readInteger(key("repetitions"), s.repetitions, 1, scenarioLimits::maxRepetitions);
+    r.rejectUnknownKeys();
+}
+
+void readSimulation(JsonObjectReader r, Scenario &s)
+{
+    r.read(key("trueParameters"), s.trueParameters);
+    // Any integer here; validateScenario() names the allowed set (0 or 16 .. 2^31).
+    r.readInteger(key("encoderCounts"), s.encoderCounts, -scenarioLimits::maxSeed,
+                  scenarioLimits::maxSeed);
+    r.read(key("torqueNoise"), s.torqueNoise);
+    r.readInteger(key("seed"), s.seed, 0, scenarioLimits::maxSeed);
+    r.readInteger(key("substeps"), s.substeps, 1, scenarioLimits::maxSubsteps);
+    r.rejectUnknownKeys();
+}
+
+void readSafety(JsonObjectReader r, Scenario &s)
+{
+    r.read(key("maxTrackingErrorDeg"), s.maxTrackingErrorDeg);
+    r.read(key("stabilityMargin"), s.stabilityMargin);
+    r.rejectUnknownKeys();
+}
+
+Scenario readScenario(const QJsonObject &root)
+{
+    Scenario s;
+    JsonObjectReader r(root, QString());
+    const QJsonValue schema = r.value(key("schema"));
+    if (!schema.isUndefined() &&
+        jsonString(schema, key("schema")) != QLatin1String(scenarioSchema)) {
+        throwAtKey(key("schema"),
+                   tr("this version of learnid reads \"%1\", got %2")
+                       .arg(QLatin1String(scenarioSchema), describeJsonValue(schema)));
+    }
+    if (auto section = r.optionalObject(key("robot")))
+        readRobot(*section, s);
+    if (auto section = r.optionalObject(key("path")))
+        readPath(*section, s);
+    if (auto section = r.optionalObject(key("controller")))
+        readController(*section, s.controller);
+    if (auto section = r.optionalObject(key("estimator")))
+        readEstimator(*section, s);
+    if (auto section = r.optionalObject(key("simulation")))
+        readSimulation(*section, s);
+    if (auto section = r.optionalObject(key("safety")))
+        readSafety(*section, s);
+    r.rejectUnknownKeys();
+    return s;
+}
+
+// Seeds above 2^53 are invalid; written as a double they read back as out of range.
+JsonTree seedValue(quint64 seed)
+{
+    if (seed <= quint64(scenarioLimits::maxSeed))
+        return JsonTree(qint64(seed));
+    return JsonTree(double(seed));
+}
+
+} // namespace
+
+QByteArray scenarioToJson(const Scenario &s)
+{
+    JsonTree robot = JsonTree::object();
+    robot.insert(key("model"), s.model)
+        .insert(key("linkLengths"), JsonTree::numbers(s.linkLengths))
+        .insert(key("elbow"), s.elbowSign)
+        .insert(key("torqueLimits"), JsonTree::numbers(s.torqueLimits))
+        .insert(key("initialParameters"), JsonTree::numbers(s.initialParameters));
+    JsonTree path = JsonTree::object();
+    path.insert(key("start"), JsonTree::numbers(s.line.start))
+        .insert(key("length"), s.line.length)
+        .insert(key("directionDeg"), s.line.directionDeg)
+        .insert(key("restBefore"), s.restBefore)
+        .insert(key("restAfter"), s.restAfter)
+        .insert(key("planningFraction"), s.planningFraction);
+    JsonTree controller = JsonTree::object();
+    controller.insert(key("samplePeriod"), s.controller.samplePeriod)
+        .insert(key("kp"), JsonTree::numbers(s.controller.kp))
+        .insert(key("ki"), JsonTree::numbers(s.controller.ki))
+        .insert(key("kd"), JsonTree::numbers(s.controller.kd))
+        .insert(key("lambda"), s.controller.lambda);
+    JsonTree estimator = JsonTree::object();
+    estimator.insert(key("law"), s.law)
+        .insert(key("rho"), s.estimator.rho)
+        .insert(key("rankTolerance"), s.estimator.rankTolerance)
+        .insert(key("accumulate"), s.estimator.accumulate)
+        .insert(key("iterations"), s.iterations)
+        .insert(key("repetitions"), s.repetitions);
+    JsonTree simulation = JsonTree::object();
+    simulation.insert(key("trueParameters"), JsonTree::numbers(s.trueParameters))
+        .insert(key("encoderCounts"), s.encoderCounts)
+        .insert(key("torqueNoise"), s.torqueNoise)
+        .insert(key("seed"), seedValue(s.seed))
+        .insert(key("substeps"), s.substeps);
+    JsonTree safety = JsonTree::object();
+    safety.insert(key("maxTrackingErrorDeg"), s.maxTrackingErrorDeg)
+        .insert(key("stabilityMargin"), s.stabilityMargin);
+
+    JsonTree root = JsonTree::object();
+    root.insert(key("schema"), QString::fromLatin1(scenarioSchema))
+        .insert(key("robot"), robot)
+        .insert(key("path"), path)
+        .insert(key("controller"), controller)
+        .insert(key("estimator"), estimator)
+        .insert(key("simulation"), simulation)
+        .insert(key("safety"), safety);
+    return root.toJson();
+}
+
+Scenario scenarioFromJson(const QByteArray &json, const QString &sourceName)
+{
+    const QJsonObject root = parseJsonObject(json, sourceName);
+    try {
+        const Scenario s = readScenario(root);
+        validateScenario(s);
+        return s;
+    } catch (const Error &e) {
+        throw Error(tr("%1: %2").arg(sourceName, e.message()));
+    }
+}
+
+Scenario readScenarioFile(const QString &path)
+{
+    return scenarioFromJson(readFile(path), QDir::toNativeSeparators(path));
+}
+
+void writeScenarioFile(const QString &path, const Scenario &scenario)
+{
+    writeFileAtomically(path, scenarioToJson(scenario));
+}
+
+} // namespace learnid

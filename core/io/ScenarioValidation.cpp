@@ -1,0 +1,103 @@
+#include "io/JsonReader.h"
+#include "io/ScenarioFile.h"
+#include "io/ValueChecks.h"
+#include "model/ModelFactory.h"
+
+#include <QCoreApplication>
+
+namespace learnid {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("ScenarioFile", text);
+}
+
+QString key(const char *path)
+{
+    return QString::fromLatin1(path);
+}
+
+} // namespace
+
+void validateControllerSettings(const ControllerSettings &c, int dof, const QString &path)
+{
+    const QString perJoint = tr("one per joint");
+    checkInterval(jsonKeyPath(path, key("samplePeriod")), c.samplePeriod, 0.0,
+                  scenarioLimits::maxSamplePeriod, Bounds::LeftOpen);
+    checkVector(jsonKeyPath(path, key("kp")), c.kp, dof, perJoint, EntryRule::Positive);
+    // Zero integral or derivative gain is a plain PD or PI loop; the pre-trial stability check
+    // decides whether the loop is usable.
+    checkVector(jsonKeyPath(path, key("ki")), c.ki, dof, perJoint, EntryRule::NonNegative);
+    checkVector(jsonKeyPath(path, key("kd")), c.kd, dof, perJoint, EntryRule::NonNegative);
+    checkPositive(jsonKeyPath(path, key("lambda")), c.lambda);
+}
+
+void validateScenario(const Scenario &s)
+{
+    const auto model = makeRobotModel(s.model);
+    if (!model) {
+        throwAtKey(key("robot.model"),
+                   tr("unknown model \"%1\"; known models: %2")
+                       .arg(s.model, knownRobotModels().join(QStringLiteral(", "))));
+    }
+    const int n = model->dof();
+    const int m = model->parameterCount();
+    const QString perJoint = tr("one per joint of %1").arg(s.model);
+    const QString perParameter = tr("one per parameter of %1").arg(s.model);
+
+    checkVector(key("robot.linkLengths"), s.linkLengths, n, perJoint, EntryRule::Positive);
+    if (s.elbowSign != 1 && s.elbowSign != -1)
+        throwAtKey(key("robot.elbow"), tr("must be 1 or -1, got %1").arg(s.elbowSign));
+    checkVector(key("robot.torqueLimits"), s.torqueLimits, n, perJoint, EntryRule::Positive);
+    checkVector(key("robot.initialParameters"), s.initialParameters, m, perParameter,
+                EntryRule::Finite);
+
+    checkFinite(key("path.start[0]"), s.line.start.x());
+    checkFinite(key("path.start[1]"), s.line.start.y());
+    checkPositive(key("path.length"), s.line.length);
+    checkFinite(key("path.directionDeg"), s.line.directionDeg);
+    checkInterval(key("path.restBefore"), s.restBefore, 0.0, scenarioLimits::maxRest,
+                  Bounds::Closed);
+    checkInterval(key("path.restAfter"), s.restAfter, 0.0, scenarioLimits::maxRest, Bounds::Closed);
+    checkInterval(key("path.planningFraction"), s.planningFraction, 0.0, 1.0, Bounds::LeftOpen);
+
+    validateControllerSettings(s.controller, n, key("controller"));
+
+    if (!knownLearningLaws().contains(s.law)) {
+        throwAtKey(key("estimator.law"),
+                   tr("unknown learning law \"%1\"; known laws: %2")
+                       .arg(s.law, knownLearningLaws().join(QStringLiteral(", "))));
+    }
+    checkPositive(key("estimator.rho"), s.estimator.rho);
+    checkInterval(key("estimator.rankTolerance"), s.estimator.rankTolerance, 0.0, 1.0,
+                  Bounds::Open);
+    checkIntegerRange(key("estimator.iterations"), s.iterations, 1, scenarioLimits::maxIterations);
+    checkIntegerRange(key("estimator.repetitions"), s.repetitions, 1,
+                      scenarioLimits::maxRepetitions);
+
+    checkVector(key("simulation.trueParameters"), s.trueParameters, m, perParameter,
+                EntryRule::Finite);
+    if (s.encoderCounts != 0 && (s.encoderCounts < scenarioLimits::minEncoderCounts ||
+                                 s.encoderCounts > scenarioLimits::maxEncoderCounts)) {
+        throwAtKey(key("simulation.encoderCounts"),
+                   tr("must be 0 (an ideal encoder) or an integer from %1 to %2, got %3")
+                       .arg(scenarioLimits::minEncoderCounts)
+                       .arg(scenarioLimits::maxEncoderCounts)
+                       .arg(s.encoderCounts));
+    }
+    checkInterval(key("simulation.torqueNoise"), s.torqueNoise, 0.0, scenarioLimits::maxTorqueNoise,
+                  Bounds::Closed);
+    if (s.seed > quint64(scenarioLimits::maxSeed)) {
+        throwAtKey(
+            key("simulation.seed"),
+            tr("must be %1, got %2").arg(integerRangeText(0, scenarioLimits::maxSeed)).arg(s.seed));
+    }
+    checkIntegerRange(key("simulation.substeps"), s.substeps, 1, scenarioLimits::maxSubsteps);
+
+    checkPositive(key("safety.maxTrackingErrorDeg"), s.maxTrackingErrorDeg);
+    checkNonNegative(key("safety.stabilityMargin"), s.stabilityMargin);
+}
+
+} // namespace learnid

@@ -1,0 +1,110 @@
+#include "io/ValueChecks.h"
+
+#include "io/JsonReader.h"
+
+#include <QCoreApplication>
+#include <cmath>
+
+namespace learnid {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("ValueChecks", text);
+}
+
+} // namespace
+
+void checkFinite(const QString &path, double value)
+{
+    if (!std::isfinite(value))
+        throwAtKey(path, tr("must be a finite number, got %1").arg(describeNumber(value)));
+}
+
+void checkPositive(const QString &path, double value)
+{
+    if (!std::isfinite(value) || !(value > 0.0))
+        throwAtKey(path, tr("must be a positive number, got %1").arg(describeNumber(value)));
+}
+
+void checkNonNegative(const QString &path, double value)
+{
+    if (!std::isfinite(value) || !(value >= 0.0))
+        throwAtKey(path,
+                   tr("must be zero or a positive number, got %1").arg(describeNumber(value)));
+}
+
+void checkNonNegativeOrInfinite(const QString &path, double value)
+{
+    if (!(value >= 0.0)) { // also NaN
+        throwAtKey(path, tr("must be zero, a positive number or unbounded (null), got %1")
+                             .arg(describeNumber(value)));
+    }
+}
+
+void checkInterval(const QString &path, double value, double lo, double hi, Bounds bounds)
+{
+    bool ok = std::isfinite(value) && value <= hi;
+    QString allowed;
+    switch (bounds) {
+    case Bounds::Closed:
+        ok = ok && value >= lo && value <= hi;
+        allowed = tr("must be from %1 to %2");
+        break;
+    case Bounds::LeftOpen:
+        ok = ok && value > lo && value <= hi;
+        allowed = tr("must be greater than %1 and at most %2");
+        break;
+    case Bounds::Open:
+        ok = ok && value > lo && value < hi;
+        allowed = tr("must be greater than %1 and less than %2");
+        break;
+    }
+    if (!ok) {
+        throwAtKey(path, tr("%1, got %2")
+                             .arg(allowed.arg(describeNumber(lo), describeNumber(hi)),
+                                  describeNumber(value)));
+    }
+}
+
+void checkIntegerRange(const QString &path, qint64 value, qint64 lo, qint64 hi)
+{
+    if (value < lo || value > hi)
+        throwAtKey(path, tr("must be %1, got %2").arg(integerRangeText(lo, hi)).arg(value));
+}
+
+void checkLength(const QString &path, Eigen::Index size, Eigen::Index expected, const QString &what)
+{
+    if (size != expected) {
+        throwAtKey(path, tr("must have %1 entries (%2), got %3")
+                             .arg(qint64(expected))
+                             .arg(what)
+                             .arg(qint64(size)));
+    }
+}
+
+void checkVector(const QString &path, const Eigen::VectorXd &values, Eigen::Index expected,
+                 const QString &what, EntryRule rule)
+{
+    checkLength(path, values.size(), expected, what);
+    for (Eigen::Index i = 0; i < values.size(); ++i) {
+        const QString entry = jsonIndexPath(path, int(i));
+        switch (rule) {
+        case EntryRule::Finite:
+            checkFinite(entry, values[i]);
+            break;
+        case EntryRule::Positive:
+            checkPositive(entry, values[i]);
+            break;
+        case EntryRule::NonNegative:
+            checkNonNegative(entry, values[i]);
+            break;
+        case EntryRule::NonNegativeOrInfinite:
+            checkNonNegativeOrInfinite(entry, values[i]);
+            break;
+        }
+    }
+}
+
+} // namespace learnid
