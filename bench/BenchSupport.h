@@ -1,7 +1,7 @@
 #pragma once
 
 #include "model/ModelFactory.h"
-#include "robot/SimulatedRobot.h"
+#include "session/ScenarioRobot.h"
 #include "session/CommissioningSession.h"
 
 #include <algorithm>
@@ -29,13 +29,7 @@ inline double median(std::vector<double> v)
 inline std::unique_ptr<CommissioningSession> makeSession(const Scenario &s)
 {
     const auto model = makeRobotModel(s.model);
-    MeasurementOptions m;
-    m.encoderCounts = s.encoderCounts;
-    m.torqueNoise = s.torqueNoise;
-    m.seed = s.seed;
-    m.substeps = s.substeps;
-    auto robot = std::make_shared<SimulatedRobot>(model, s.trueParameters, m);
-    return std::make_unique<CommissioningSession>(s, model, robot);
+    return std::make_unique<CommissioningSession>(s, model, makeSimulatedRobot(s, model));
 }
 
 } // namespace learnid::bench

@@ -9,7 +9,7 @@
 #include "io/TrialCsv.h"
 #include "model/Error.h"
 #include "model/ModelFactory.h"
-#include "robot/SimulatedRobot.h"
+#include "session/ScenarioRobot.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -95,13 +95,8 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
     try {
         scenario = loadScenario(options);
         const auto model = makeRobotModel(scenario.model);
-        MeasurementOptions measurement;
-        measurement.encoderCounts = scenario.encoderCounts;
-        measurement.torqueNoise = scenario.torqueNoise;
-        measurement.seed = scenario.seed;
-        measurement.substeps = scenario.substeps;
-        auto robot = std::make_shared<SimulatedRobot>(model, scenario.trueParameters, measurement);
-        session = std::make_unique<CommissioningSession>(scenario, model, robot);
+        session = std::make_unique<CommissioningSession>(scenario, model,
+                                                         makeSimulatedRobot(scenario, model));
     } catch (const Error &e) {
         err << tr("learnid-cli: error: %1").arg(e.message()) << Qt::endl;
         return ExitBadInput;

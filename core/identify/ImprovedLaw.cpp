@@ -31,21 +31,13 @@ Regression filteredRegression(const RobotModel &model, const TrialPlan &plan,
     const FilteringEstimator filter(settings.rho, record.samplePeriod);
 
     // 1. Joint states from the zero-phase filtered tracking error.
-    Eigen::MatrixXd qHat(n, samples);
-    Eigen::MatrixXd qdHat(n, samples);
-    Eigen::MatrixXd qddHat(n, samples);
-    for (int j = 0; j < n; ++j) {
-        const Eigen::MatrixXd fe = filter.zeroPhase(plan.desired.q.row(j) - record.q.row(j));
-        qHat.row(j) = plan.desired.q.row(j) - fe.row(0);
-        qdHat.row(j) = plan.desired.qd.row(j) - fe.row(1);
-        qddHat.row(j) = plan.desired.qdd.row(j) - fe.row(2);
-    }
+    const JointStateEstimate hat = estimateJointStates(filter, plan, record, true);
 
     // Regressor entries as signals: row i*n + j of w is W(j, i) over the samples.
     Eigen::MatrixXd w(n * m, samples);
     for (int k = 0; k < samples; ++k) {
         Eigen::Map<Eigen::MatrixXd> wk(w.col(k).data(), n, m);
-        model.regressor(qHat.col(k), qdHat.col(k), qddHat.col(k), wk);
+        model.regressor(hat.q.col(k), hat.qd.col(k), hat.qdd.col(k), wk);
     }
 
     // 2. Mid-sample pairing, 3. zero-phase filtering of both sides.

@@ -1,5 +1,6 @@
 #include "identify/LearningLaw.h"
 
+#include "identify/FilteringEstimator.h"
 #include "identify/ImprovedLaw.h"
 #include "identify/PaperLaw.h"
 #include "model/Error.h"
@@ -20,6 +21,23 @@ std::unique_ptr<LearningLaw> makeLearningLaw(const QString &id)
     if (id == QLatin1String("improved"))
         return std::make_unique<ImprovedLaw>();
     return nullptr;
+}
+
+JointStateEstimate estimateJointStates(const FilteringEstimator &filter, const TrialPlan &plan,
+                                       const TrialRecord &record, bool zeroPhase)
+{
+    const Eigen::Index n = record.q.rows();
+    const Eigen::Index samples = record.samples();
+    JointStateEstimate out{Eigen::MatrixXd(n, samples), Eigen::MatrixXd(n, samples),
+                           Eigen::MatrixXd(n, samples)};
+    for (Eigen::Index j = 0; j < n; ++j) {
+        const Eigen::RowVectorXd e = plan.desired.q.row(j).head(samples) - record.q.row(j);
+        const Eigen::MatrixXd fe = zeroPhase ? filter.zeroPhase(e) : filter.causal(e);
+        out.q.row(j) = plan.desired.q.row(j).head(samples) - fe.row(0);
+        out.qd.row(j) = plan.desired.qd.row(j).head(samples) - fe.row(1);
+        out.qdd.row(j) = plan.desired.qdd.row(j).head(samples) - fe.row(2);
+    }
+    return out;
 }
 
 Eigen::MatrixXd filterJointSignals(

@@ -54,6 +54,19 @@ QStringList knownLearningLaws();
 /// The law with this id ("paper" or "improved"), or nullptr.
 std::unique_ptr<LearningLaw> makeLearningLaw(const QString &id);
 
+/// Joint states estimated from the measured angles alone (paper eq. 15-17):
+/// q_hat = q_d - F e, qd_hat = qd_d - F s e, qdd_hat = qdd_d - F s^2 e, e = q_d - q, with the
+/// filter run causally (as a drive could online) or zero-phase (on recorded data). Each n x N.
+struct JointStateEstimate
+{
+    Eigen::MatrixXd q;
+    Eigen::MatrixXd qd;
+    Eigen::MatrixXd qdd;
+};
+JointStateEstimate estimateJointStates(const class FilteringEstimator &filter,
+                                       const TrialPlan &plan, const TrialRecord &record,
+                                       bool zeroPhase);
+
 /// Applies a filter to each joint's signal in each column of a stacked regressor (row k*n + j is
 /// joint j of sample k): the H^T A of NoiseShaping.
 Eigen::MatrixXd filterJointSignals(

@@ -21,16 +21,14 @@ ParameterUpdate PaperLaw::update(const RobotModel &model, const std::vector<Tria
     const int samples = record.samples();
     const FilteringEstimator filter(settings.rho, record.samplePeriod);
 
-    Eigen::MatrixXd qdHat(n, samples);
-    Eigen::MatrixXd qddHat(n, samples);
+    // The regressor uses the measured angles; velocities and accelerations come through F.
+    const JointStateEstimate hat = estimateJointStates(filter, plan, record, false);
+    const Eigen::MatrixXd &qdHat = hat.qd;
+    const Eigen::MatrixXd &qddHat = hat.qdd;
     Eigen::MatrixXd tauHat(n, samples);
-    for (int j = 0; j < n; ++j) {
-        const Eigen::MatrixXd fe = filter.causal(plan.desired.q.row(j) - record.q.row(j));
-        qdHat.row(j) = plan.desired.qd.row(j) - fe.row(1);
-        qddHat.row(j) = plan.desired.qdd.row(j) - fe.row(2);
+    for (int j = 0; j < n; ++j)
         tauHat.row(j) = plan.feedforward.row(j)
                         + filter.lowPass(record.tau.row(j) - plan.feedforward.row(j));
-    }
 
     // Torque sample k is held over [t_k, t_k + Ts): pair it with the regressor at the interval's
     // mid-point, (W_k + W_k+1) / 2. Online this costs one sample of delay. Pairing it with W_k

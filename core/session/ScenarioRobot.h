@@ -1,0 +1,14 @@
+#pragma once
+
+#include "robot/SimulatedRobot.h"
+#include "session/Scenario.h"
+
+#include <memory>
+
+namespace learnid {
+
+/// The simulated robot a scenario describes: its true parameters and measurement options.
+std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
+                                                   std::shared_ptr<const RobotModel> model);
+
+} // namespace learnid
