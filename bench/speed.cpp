@@ -1,12 +1,14 @@
 // Speed benchmark: CPU time of a 6-trial paper-scenario session (simulation at RK4 0.2 ms,
 // planning, safety checks and identification included) and of one identification update over
-// 10^6 samples. Prints Markdown. Usage: learnid-bench-speed [repeats]
+// 10^6 samples. Prints Markdown. Usage: learnid-bench-speed [repeats] [--session-only]
+// (--session-only skips the 10^6-sample part, e.g. to count instructions under callgrind).
 #include "BenchSupport.h"
 #include "identify/LearningLaw.h"
 #include "session/TrialPlanner.h"
 
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 using namespace learnid;
 
@@ -39,6 +41,7 @@ TrialPlan longPlan(const Scenario &s, int samples)
 int main(int argc, char **argv)
 {
     const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 15;
+    const bool sessionOnly = argc > 2 && std::string(argv[2]) == "--session-only";
     std::printf("| measurement | law | median CPU time | repeats |\n|---|---|---|---|\n");
     for (const char *law : {"paper", "improved"}) {
         std::vector<double> times;
@@ -56,6 +59,8 @@ int main(int argc, char **argv)
                     law, 1e3 * bench::median(times), repeats);
     }
 
+    if (sessionOnly)
+        return 0;
     const Scenario s;
     const int samples = 1000000;
     const TrialPlan plan = longPlan(s, samples);

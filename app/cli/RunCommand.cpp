@@ -1,6 +1,5 @@
 #include "cli/RunCommand.h"
 
-#include "can/ManufacturerObjects.h"
 #include "cli/ResultTable.h"
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
@@ -59,12 +58,7 @@ QList<QPair<QString, QByteArray>> buildOutputs(const RunOptions &options,
         files.append({options.reportPath, sessionReportJson(session)});
     if (!options.exportPath.isEmpty()) {
         const int last = int(session.estimates().size()) - 1;
-        // The SDO writes a CAN robot with one drive per joint (nodes 1..n) receives on apply.
-        QList<int> nodes;
-        for (int j = 1; j <= session.model().dof(); ++j)
-            nodes << j;
-        const ParameterFileContent content = parameterFileContent(
-            session, last, objects::parameterWriteSequence(nodes, session.estimates().at(last)));
+        const ParameterFileContent content = parameterFileContent(session, last);
         files.append({options.exportPath, parameterFileToJson(content)});
         const QFileInfo info(options.exportPath);
         files.append({info.dir().filePath(info.completeBaseName() + QStringLiteral(".dcf")),

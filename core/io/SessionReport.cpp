@@ -1,5 +1,6 @@
 #include "io/SessionReport.h"
 
+#include "can/ManufacturerObjects.h"
 #include "model/Error.h"
 
 #include <QCoreApplication>
@@ -123,6 +124,20 @@ ParameterFileContent parameterFileContent(const CommissioningSession &session, i
     }
     c.canWrites = canWrites;
     return c;
+}
+
+ParameterFileContent parameterFileContent(const CommissioningSession &session, int estimateIndex)
+{
+    QList<int> nodes;
+    for (int j = 1; j <= session.model().dof(); ++j)
+        nodes << j;
+    const QVector<Eigen::VectorXd> &estimates = session.estimates();
+    const Eigen::VectorXd phi = estimateIndex >= 0 && estimateIndex < estimates.size()
+                                    ? estimates.at(estimateIndex)
+                                    : Eigen::VectorXd();
+    return parameterFileContent(session, estimateIndex,
+                                phi.size() > 0 ? objects::parameterWriteSequence(nodes, phi)
+                                               : QList<SdoWrite>());
 }
 
 } // namespace learnid

@@ -19,4 +19,8 @@ QByteArray sessionReportJson(const CommissioningSession &session);
 ParameterFileContent parameterFileContent(const CommissioningSession &session, int estimateIndex,
                                           const QList<SdoWrite> &canWrites);
 
+/// The same with the writes a CAN robot with one drive per joint, nodes 1..n, receives on apply
+/// (can/ManufacturerObjects.h).
+ParameterFileContent parameterFileContent(const CommissioningSession &session, int estimateIndex);
+
 } // namespace learnid

@@ -23,6 +23,22 @@ void RobotModel::forwardDynamics(const VectorRef &q, const VectorRef &qd, const 
     out = m.ldlt().solve(tau - h);
 }
 
+void RobotModel::rk4Step(Eigen::Ref<Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> qd,
+                         const VectorRef &tau, const VectorRef &phi, double h) const
+{
+    const int n = dof();
+    Eigen::VectorXd a1(n), a2(n), a3(n), a4(n);
+    forwardDynamics(q, qd, tau, phi, a1);
+    const Eigen::VectorXd v2 = qd + 0.5 * h * a1;
+    forwardDynamics(q + 0.5 * h * qd, v2, tau, phi, a2);
+    const Eigen::VectorXd v3 = qd + 0.5 * h * a2;
+    forwardDynamics(q + 0.5 * h * v2, v3, tau, phi, a3);
+    const Eigen::VectorXd v4 = qd + h * a3;
+    forwardDynamics(q + h * v3, v4, tau, phi, a4);
+    q += (h / 6.0) * (qd + 2.0 * v2 + 2.0 * v3 + v4);
+    qd += (h / 6.0) * (a1 + 2.0 * a2 + 2.0 * a3 + a4);
+}
+
 bool RobotModel::massMatrixPositiveDefinite(const VectorRef &q, const VectorRef &phi) const
 {
     Eigen::MatrixXd m(dof(), dof());

@@ -50,6 +50,12 @@ public:
     virtual void forwardDynamics(const VectorRef &q, const VectorRef &qd, const VectorRef &tau,
                                  const VectorRef &phi, Eigen::Ref<Eigen::VectorXd> out) const;
 
+    /// One classical Runge-Kutta (RK4) step of length h of q'' = forwardDynamics(q, q', tau)
+    /// with tau held, updating q and qd in place. The default evaluates forwardDynamics four
+    /// times; models override it where they can share work between the stages.
+    virtual void rk4Step(Eigen::Ref<Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> qd,
+                         const VectorRef &tau, const VectorRef &phi, double h) const;
+
     /// True when phi gives a positive definite mass matrix at q (a physically possible robot).
     bool massMatrixPositiveDefinite(const VectorRef &q, const VectorRef &phi) const;
 

@@ -30,6 +30,10 @@ public:
                          const VectorRef &phi, Eigen::Ref<Eigen::VectorXd> out) const override;
     void forwardDynamics(const VectorRef &q, const VectorRef &qd, const VectorRef &tau,
                          const VectorRef &phi, Eigen::Ref<Eigen::VectorXd> out) const override;
+    /// RK4 with one sin/cos of theta2 - theta1 per step: the stages rotate it by their small
+    /// angle increments (the simulator's inner loop).
+    void rk4Step(Eigen::Ref<Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> qd,
+                 const VectorRef &tau, const VectorRef &phi, double h) const override;
 };
 
 } // namespace learnid

@@ -12,46 +12,6 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 
-/// RK4 integration of qdd = forwardDynamics(q, qd, tau) over one step h with tau held.
-/// N: the joint count at compile time (Eigen::Dynamic for any), so the 2-joint arm's inner loop
-/// runs on fixed-size vectors.
-template <int N>
-class Rk4Integrator
-{
-public:
-    using Vector = Eigen::Matrix<double, N, 1>;
-
-    Rk4Integrator(const RobotModel &model, const Eigen::VectorXd &phi)
-        : m_model(model)
-        , m_phi(phi)
-    {
-        const int n = model.dof();
-        for (Vector *v : {&m_q, &m_a1, &m_a2, &m_a3, &m_a4, &m_v2, &m_v3, &m_v4})
-            v->resize(n);
-    }
-
-    void step(Vector &q, Vector &qd, const Vector &tau, double h)
-    {
-        m_model.forwardDynamics(q, qd, tau, m_phi, m_a1);
-        m_q = q + 0.5 * h * qd;
-        m_v2 = qd + 0.5 * h * m_a1;
-        m_model.forwardDynamics(m_q, m_v2, tau, m_phi, m_a2);
-        m_q = q + 0.5 * h * m_v2;
-        m_v3 = qd + 0.5 * h * m_a2;
-        m_model.forwardDynamics(m_q, m_v3, tau, m_phi, m_a3);
-        m_q = q + h * m_v3;
-        m_v4 = qd + h * m_a3;
-        m_model.forwardDynamics(m_q, m_v4, tau, m_phi, m_a4);
-        q += (h / 6.0) * (qd + 2.0 * m_v2 + 2.0 * m_v3 + m_v4);
-        qd += (h / 6.0) * (m_a1 + 2.0 * m_a2 + 2.0 * m_a3 + m_a4);
-    }
-
-private:
-    const RobotModel &m_model;
-    const Eigen::VectorXd &m_phi;
-    Vector m_q, m_a1, m_a2, m_a3, m_a4, m_v2, m_v3, m_v4;
-};
-
 QString tr(const char *text)
 {
     return QCoreApplication::translate("SimulatedRobot", text);
@@ -101,7 +61,6 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
     record.tau.resize(n, samples);
 
     PidController pid(plan.controller);
-    Rk4Integrator<N> rk4(*m_model, m_truePhi);
     Vector q = plan.desired.q.col(0); // the robot starts at rest at the path start
     Vector qd = Vector::Zero(n);
     Vector qMeasured(n), e(n), u(n), tauCommand(n), tauPlant(n), disturbance = Vector::Zero(n);
@@ -156,7 +115,7 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
         if (m_faults.disturbanceFromSample >= 0 && k >= m_faults.disturbanceFromSample)
             tauPlant += disturbance;
         for (int s = 0; s < substeps; ++s)
-            rk4.step(q, qd, tauPlant, h);
+            m_model->rk4Step(q, qd, tauPlant, m_truePhi, h);
 
         if (monitor.progress && ((k + 1) % 100 == 0 || k + 1 == samples))
             monitor.progress(k + 1, samples);

@@ -52,6 +52,11 @@ PreTrialCheck CommissioningSession::checkNextTrial() const
 const TrialResult &CommissioningSession::runTrial()
 {
     m_cancel.store(false);
+    return runNextTrial();
+}
+
+const TrialResult &CommissioningSession::runNextTrial()
+{
     TrialResult result;
     result.index = int(m_history.size());
     result.phiUsed = currentEstimate();
@@ -130,11 +135,12 @@ void CommissioningSession::learnFrom(TrialResult &result)
 
 bool CommissioningSession::runTrials(int count)
 {
+    // Reset once: a Stop that arrives between two trials of the series must end it.
     m_cancel.store(false);
     for (int i = 0; i < count; ++i) {
         if (m_cancel.load())
             return false;
-        if (!runTrial().learned())
+        if (!runNextTrial().learned())
             return false;
     }
     return true;

@@ -72,6 +72,7 @@ signals:
     void parametersApplied(const Eigen::VectorXd &phi);
 
 private:
+    const TrialResult &runNextTrial();
     TrialRecord runRepetitions(const TrialPlan &plan, int index, QString *message);
     void learnFrom(TrialResult &result);
 

@@ -87,6 +87,7 @@ private slots:
     void power_equalsRateOfKineticEnergy();
     void torque_satisfiesLagrangeEquations();
     void factory_createsEveryKnownModelAndRejectsUnknownIds();
+    void rk4StepOverride_equalsGenericRk4();
 };
 
 void TestTwoLinkArm::describesThreeInertiaParameters()
@@ -322,6 +323,30 @@ void TestTwoLinkArm::factory_createsEveryKnownModelAndRejectsUnknownIds()
     QVERIFY(dynamic_cast<const TwoLinkArm *>(arm.get()) != nullptr);
     QVERIFY(!makeRobotModel(QStringLiteral("paper-3link")));
     QVERIFY(!makeRobotModel(QString()));
+}
+
+// The arm's RK4 shares one sin/cos per step between the stages; it must give the generic RK4's
+// result (four full evaluations) to rounding, for slow steps (the rotation series) and fast ones
+// (the direct fallback above 0.01 rad per stage).
+void TestTwoLinkArm::rk4StepOverride_equalsGenericRk4()
+{
+    const TwoLinkArm arm;
+    const Eigen::Vector3d phi(20.0, 5.0, 8.0);
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> angle(-3.0, 3.0), speed(-3.0, 3.0), torque(-8.0, 8.0);
+    for (double h : {2e-4, 2e-3, 0.05}) {
+        for (int i = 0; i < 200; ++i) {
+            const Eigen::Vector2d q0(angle(rng), angle(rng)), qd0(speed(rng), speed(rng));
+            const Eigen::Vector2d tau(torque(rng), torque(rng));
+            Eigen::VectorXd q = q0, qd = qd0, qGeneric = q0, qdGeneric = qd0;
+            arm.rk4Step(q, qd, tau, phi, h);
+            arm.RobotModel::rk4Step(qGeneric, qdGeneric, tau, phi, h);
+            QVERIFY2((q - qGeneric).cwiseAbs().maxCoeff() < 1e-14 * (1.0 + q0.cwiseAbs().maxCoeff()),
+                     qPrintable(QString::number((q - qGeneric).cwiseAbs().maxCoeff())));
+            QVERIFY2((qd - qdGeneric).cwiseAbs().maxCoeff() < 1e-12 * (1.0 + qd0.cwiseAbs().maxCoeff()),
+                     qPrintable(QString::number((qd - qdGeneric).cwiseAbs().maxCoeff())));
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(TestTwoLinkArm)

@@ -19,6 +19,7 @@ private slots:
     void failedApply_leavesRobotAndHistoryUnchanged();
     void revert_restoresPreviouslyStoredSet();
     void cancel_marksTrialAndKeepsEstimate();
+    void cancelBetweenTrials_endsTheSeries();
     void robotFault_stopsSeriesKeepingPartialData();
     void nonFiniteMeasurement_isNotLearnedFrom();
     void repetitions_averageTorqueNoise();
@@ -147,6 +148,19 @@ void TestCommissioningSession::cancel_marksTrialAndKeepsEstimate()
     QVERIFY(!t.learned());
     QVERIFY(t.record.samples() >= 1000 && t.record.samples() < t.plan().samples());
     QCOMPARE(session->estimates().size(), 1);
+}
+
+// A Stop pressed after a trial has finished but before the next starts must not be lost.
+void TestCommissioningSession::cancelBetweenTrials_endsTheSeries()
+{
+    Fixture f = make(Scenario{});
+    CommissioningSession *session = f.session.get();
+    connect(session, &CommissioningSession::trialFinished, session,
+            [session](const TrialResult &) { session->requestCancel(); });
+    QVERIFY(!session->runTrials(3));
+    QCOMPARE(session->history().size(), 1);
+    QCOMPARE(session->history().front().status(), TrialStatus::Completed);
+    QVERIFY(session->history().front().learned());
 }
 
 void TestCommissioningSession::robotFault_stopsSeriesKeepingPartialData()

@@ -1,0 +1,77 @@
+#include "ScreenshotRun.h"
+#include "ui/MainWindow.h"
+#include "ui/UiLogging.h"
+#include "ui/UiSettings.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTranslator>
+#include <memory>
+
+namespace {
+
+// The translator of the chosen language ("" = system locale) from the embedded .qm files, and
+// Qt's own for standard dialogs.
+void installTranslators(QApplication &app, const QString &language)
+{
+    const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
+    QLocale::setDefault(QLocale(locale.language(), locale.territory()));
+    auto *own = new QTranslator(&app);
+    if (own->load(locale, QStringLiteral("learnid"), QStringLiteral("_"), QStringLiteral(":/i18n")))
+        app.installTranslator(own);
+    auto *qt = new QTranslator(&app);
+    if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                 QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        app.installTranslator(qt);
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("learnid"));
+    QApplication::setApplicationName(QStringLiteral("learnid"));
+    QApplication::setApplicationDisplayName(QStringLiteral("learnid"));
+    QApplication::setApplicationVersion(QStringLiteral(LEARNID_VERSION));
+    QApplication::setDesktopFileName(QStringLiteral("learnid"));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QApplication::translate(
+        "main", "Commissioning tool: learning identification of robot dynamics."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
+        QApplication::translate("main", "Run a simulated session, save the window as PNG to <file> and exit."),
+        QStringLiteral("file"));
+    const QCommandLineOption language(
+        QStringLiteral("language"),
+        QApplication::translate("main", "User interface language, e.g. de or zh_CN (default: as chosen in the app, else the system's)."),
+        QStringLiteral("locale"));
+    parser.addOptions({screenshot, language});
+    parser.process(app);
+
+    // A screenshot must not depend on (or change) the technician's remembered settings.
+    QTemporaryDir scratch;
+    std::unique_ptr<QSettings> settings =
+        parser.isSet(screenshot)
+            ? std::make_unique<QSettings>(scratch.filePath(QStringLiteral("learnid.ini")), QSettings::IniFormat)
+            : std::make_unique<QSettings>();
+    const QString lang = parser.isSet(language) ? parser.value(language)
+                                                : learnid::UiSettings(settings.get()).language();
+    installTranslators(app, lang);
+
+    learnid::MainWindow window(settings.get());
+    if (parser.isSet(screenshot)) {
+        auto *run = new learnid::ScreenshotRun(&window, parser.value(screenshot));
+        run->start();
+    } else {
+        window.show();
+    }
+    return app.exec();
+}

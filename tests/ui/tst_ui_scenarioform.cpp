@@ -1,0 +1,73 @@
+#include "ui/ScenarioForm.h"
+
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace learnid;
+
+class TestScenarioForm : public QObject
+{
+    Q_OBJECT
+
+private:
+    static void type(ScenarioForm &form, const QString &key, const QString &text)
+    {
+        auto *edit = form.findChild<QLineEdit *>(key);
+        QVERIFY2(edit, qPrintable(key));
+        edit->selectAll();
+        QTest::keyClicks(edit, text);
+    }
+
+private slots:
+    void defaults_areValidAndRoundTrip()
+    {
+        ScenarioForm form;
+        QVERIFY(form.isValid());
+        Scenario s;
+        s.controller.lambda = 123;
+        s.initialParameters = Eigen::Vector3d(1, 2, 3);
+        s.seed = 77; // not on the form: kept
+        form.setScenario(s);
+        QCOMPARE(form.scenario()->controller.lambda, 123.0);
+        QCOMPARE(form.scenario()->initialParameters, s.initialParameters);
+        QCOMPARE(form.scenario()->seed, quint64(77));
+    }
+
+    void notANumber_isRefusedAtItsField()
+    {
+        ScenarioForm form;
+        QSignalSpy edited(&form, &ScenarioForm::edited);
+        type(form, QStringLiteral("controller.lambda"), QStringLiteral("2x0"));
+        QVERIFY(!form.isValid());
+        QCOMPARE(edited.constLast().at(0).toBool(), false);
+        QVERIFY(form.reasonFor(QStringLiteral("controller.lambda")).contains(QStringLiteral("2x0")));
+        QVERIFY(form.reasonFor(QStringLiteral("controller.kp")).isEmpty());
+        type(form, QStringLiteral("controller.lambda"), QStringLiteral("200"));
+        QVERIFY(form.isValid());
+        QVERIFY(form.reasonFor(QStringLiteral("controller.lambda")).isEmpty());
+    }
+
+    void outOfRange_showsTheValidationReason()
+    {
+        ScenarioForm form;
+        type(form, QStringLiteral("controller.kp"), QStringLiteral("4500, -5"));
+        QVERIFY(!form.isValid());
+        const QString reason = form.reasonFor(QStringLiteral("controller.kp"));
+        QVERIFY2(reason.contains(QStringLiteral("kp[1]")), qPrintable(reason));
+        QVERIFY(form.firstError().startsWith(QStringLiteral("controller.kp")));
+    }
+
+    void wrongCount_isRefused()
+    {
+        ScenarioForm form;
+        type(form, QStringLiteral("robot.initialParameters"), QStringLiteral("40 20"));
+        QVERIFY(!form.isValid());
+        QVERIFY(!form.reasonFor(QStringLiteral("robot.initialParameters")).isEmpty());
+        type(form, QStringLiteral("estimator.iterations"), QStringLiteral("2.5"));
+        QVERIFY(!form.reasonFor(QStringLiteral("estimator.iterations")).isEmpty());
+    }
+};
+
+QTEST_MAIN(TestScenarioForm)
+#include "tst_ui_scenarioform.moc"

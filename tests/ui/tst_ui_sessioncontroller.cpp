@@ -1,0 +1,79 @@
+#include "ui/SessionController.h"
+
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace learnid;
+
+class TestSessionController : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void open_plansAndChecksTheFirstTrial()
+    {
+        SessionController c;
+        QSignalSpy checked(&c, &SessionController::checkChanged);
+        c.open(Scenario{});
+        QVERIFY(checked.wait(20000));
+        QVERIFY(c.isOpen());
+        QVERIFY(c.lastCheck()->passed());
+        QCOMPARE(c.estimates().size(), 1);
+        QVERIFY(c.info()->truth.has_value());
+        QCOMPARE(c.info()->parameters.size(), 3);
+    }
+
+    void runTrial_deliversValueCopiesOffTheGuiThread()
+    {
+        SessionController c;
+        QSignalSpy checked(&c, &SessionController::checkChanged);
+        c.open(Scenario{});
+        QVERIFY(checked.wait(20000));
+        QSignalSpy finished(&c, &SessionController::runFinished);
+        QSignalSpy progress(&c, &SessionController::progress);
+        c.runTrial();
+        QVERIFY(c.isBusy());
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(finished.constFirst().at(0).toBool(), true);
+        QVERIFY(!c.isBusy());
+        QVERIFY(!progress.isEmpty());
+        QCOMPARE(c.history().size(), 1);
+        QCOMPARE(c.estimates().size(), 2);
+        QVERIFY(!c.history().constFirst().lawCache); // the law's memory stays in the worker
+    }
+
+    void faultedTrial_isKeptAndLeavesTheEstimate()
+    {
+        SessionController c;
+        QSignalSpy checked(&c, &SessionController::checkChanged);
+        SimulatedFaults faults;
+        faults.driveFaultAtSample = 300;
+        c.setSimulatedFaults(faults);
+        c.open(Scenario{});
+        QVERIFY(checked.wait(20000));
+        QSignalSpy finished(&c, &SessionController::runFinished);
+        c.runTrial();
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(finished.constFirst().at(0).toBool(), false);
+        QCOMPARE(c.history().constFirst().status(), TrialStatus::Faulted);
+        QCOMPARE(c.history().constFirst().record.samples(), 301);
+        QCOMPARE(c.estimates().size(), 1);
+    }
+
+    void applyWithoutAccept_isRefused()
+    {
+        SessionController c;
+        QSignalSpy checked(&c, &SessionController::checkChanged);
+        c.open(Scenario{});
+        QVERIFY(checked.wait(20000));
+        QSignalSpy failed(&c, &SessionController::operationFailed);
+        c.apply();
+        QVERIFY(failed.wait(20000));
+        QCOMPARE(failed.constFirst().at(0).toString(), QStringLiteral("apply"));
+        QVERIFY(!c.isBusy());
+        QCOMPARE(c.storedParameters().size(), 0);
+    }
+};
+
+QTEST_MAIN(TestSessionController)
+#include "tst_ui_sessioncontroller.moc"

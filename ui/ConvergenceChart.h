@@ -1,0 +1,34 @@
+#pragma once
+
+#include "model/RobotModel.h"
+
+#include <Eigen/Core>
+#include <QVector>
+#include <QWidget>
+#include <optional>
+
+class QChart;
+class QChartView;
+
+namespace learnid {
+
+/// A small chart beside the convergence table: per parameter, |error against the truth| [%]
+/// over the estimate index when the truth is known (simulated robot), else the relative change
+/// from the previous estimate [%]; logarithmic, floored at 0.001 %.
+class ConvergenceChart : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit ConvergenceChart(QWidget *parent = nullptr);
+
+    void setData(const QList<ParameterInfo> &parameters, const QVector<Eigen::VectorXd> &estimates,
+                 const std::optional<Eigen::VectorXd> &truth);
+    QChartView *chartView() const { return m_view; }
+
+private:
+    QChartView *m_view;
+    QChart *m_chart;
+};
+
+} // namespace learnid

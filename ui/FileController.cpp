@@ -1,0 +1,262 @@
+#include "ui/FileController.h"
+
+#include "io/AtomicFile.h"
+#include "io/ScenarioFile.h"
+#include "io/TrialCsv.h"
+#include "model/Error.h"
+#include "ui/ApplyPanel.h"
+#include "ui/ConvergenceChart.h"
+#include "ui/ConvergenceTableModel.h"
+#include "ui/PlotImage.h"
+#include "ui/ReportWriter.h"
+#include "ui/ScenarioForm.h"
+#include "ui/SessionController.h"
+#include "ui/TrackingErrorPlot.h"
+#include "ui/UiLogging.h"
+#include "ui/UiSettings.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QtCharts/QChartView>
+
+namespace learnid {
+
+FileController::FileController(SessionController *session, Views views, UiSettings *settings,
+                               QWidget *dialogParent)
+    : QObject(dialogParent)
+    , m_session(session)
+    , m_views(views)
+    , m_settings(settings)
+    , m_dialogParent(dialogParent)
+{
+    connect(m_session, &SessionController::parameterFileExported, this,
+            [this](const QStringList &paths, const QString &error) {
+                if (error.isEmpty())
+                    emit finished(tr("Parameter file written: %1")
+                                      .arg(QDir::toNativeSeparators(paths.join(QStringLiteral(", ")))),
+                                  true);
+                else
+                    emit finished(tr("Parameter file not written: %1").arg(error), false);
+            });
+}
+
+QString FileController::choose(Purpose purpose, const QString &suggested)
+{
+    const QString dir = m_settings->lastDirectory();
+    const QString path = QDir(dir).filePath(suggested);
+    return m_chooser ? m_chooser(purpose, path) : dialogPath(purpose, path);
+}
+
+QString FileController::dialogPath(Purpose purpose, const QString &suggested)
+{
+    switch (purpose) {
+    case Purpose::OpenScenario:
+        return QFileDialog::getOpenFileName(m_dialogParent, tr("Open scenario"), suggested,
+                                            tr("Scenario files (*.json);;All files (*)"));
+    case Purpose::SaveScenario:
+        return QFileDialog::getSaveFileName(m_dialogParent, tr("Save scenario"), suggested,
+                                            tr("Scenario files (*.json)"));
+    case Purpose::ParameterFile:
+        return QFileDialog::getSaveFileName(m_dialogParent, tr("Export parameter file"), suggested,
+                                            tr("Parameter files (*.json)"));
+    case Purpose::TrialCsvFolder:
+        return QFileDialog::getExistingDirectory(m_dialogParent, tr("Folder for the trial CSV files"),
+                                                 QFileInfo(suggested).path());
+    case Purpose::Plot:
+        return QFileDialog::getSaveFileName(
+            m_dialogParent, tr("Export plot"), suggested,
+            svgExportAvailable() ? tr("PNG image (*.png);;SVG drawing (*.svg)")
+                                 : tr("PNG image (*.png)"));
+    case Purpose::Report:
+        return QFileDialog::getSaveFileName(m_dialogParent, tr("Export commissioning report"),
+                                            suggested, tr("PDF (*.pdf)"));
+    }
+    return {};
+}
+
+void FileController::remember(const QString &path)
+{
+    m_settings->setLastDirectory(QFileInfo(path).absolutePath());
+}
+
+void FileController::openScenario()
+{
+    const QString path = choose(Purpose::OpenScenario, QString());
+    if (!path.isEmpty())
+        openScenarioFrom(path);
+}
+
+void FileController::saveScenario()
+{
+    const QString path = choose(Purpose::SaveScenario, QStringLiteral("scenario.json"));
+    if (!path.isEmpty())
+        saveScenarioTo(path);
+}
+
+void FileController::exportParameterFile()
+{
+    const QString path = choose(Purpose::ParameterFile, QStringLiteral("parameters.json"));
+    if (!path.isEmpty())
+        exportParameterFileTo(path);
+}
+
+void FileController::exportTrialCsv()
+{
+    const QString path = choose(Purpose::TrialCsvFolder, QStringLiteral("trials"));
+    if (!path.isEmpty())
+        exportTrialCsvTo(path);
+}
+
+void FileController::exportPlot()
+{
+    const QString path = choose(Purpose::Plot, QStringLiteral("tracking-error.png"));
+    if (!path.isEmpty())
+        exportPlotTo(path);
+}
+
+void FileController::exportReport()
+{
+    const QString path = choose(Purpose::Report, QStringLiteral("commissioning-report.pdf"));
+    if (!path.isEmpty())
+        exportReportTo(path);
+}
+
+void FileController::openScenarioFrom(const QString &path)
+{
+    try {
+        const Scenario scenario = readScenarioFile(path);
+        validateScenario(scenario);
+        remember(path);
+        emit scenarioLoaded(scenario);
+        emit finished(tr("Scenario loaded: %1").arg(QDir::toNativeSeparators(path)), true);
+    } catch (const Error &e) {
+        emit finished(tr("Scenario not loaded: %1").arg(e.message()), false);
+    }
+}
+
+void FileController::saveScenarioTo(const QString &path)
+{
+    const auto scenario = m_views.form->scenario();
+    if (!scenario) {
+        emit finished(tr("Scenario not saved: %1").arg(m_views.form->firstError()), false);
+        return;
+    }
+    try {
+        writeScenarioFile(path, *scenario);
+        remember(path);
+        emit finished(tr("Scenario saved: %1").arg(QDir::toNativeSeparators(path)), true);
+    } catch (const Error &e) {
+        emit finished(tr("Scenario not saved: %1").arg(e.message()), false);
+    }
+}
+
+void FileController::exportParameterFileTo(const QString &jsonPath)
+{
+    if (!m_session->acceptedIndex()) {
+        emit finished(tr("Parameter file not written: accept an estimate first"), false);
+        return;
+    }
+    remember(jsonPath);
+    m_session->exportParameterFile(jsonPath, *m_session->acceptedIndex());
+}
+
+void FileController::exportTrialCsvTo(const QString &folder)
+{
+    if (m_session->history().isEmpty()) {
+        emit finished(tr("No trial CSV written: no trial has run yet"), false);
+        return;
+    }
+    try {
+        if (!QDir().mkpath(folder))
+            throw Error(tr("cannot create the folder %1").arg(QDir::toNativeSeparators(folder)));
+        QList<QPair<QString, QByteArray>> files;
+        for (const TrialResult &t : m_session->history()) {
+            if (t.status() == TrialStatus::Refused)
+                continue; // nothing was measured
+            const QString name = QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
+            files.append({QDir(folder).filePath(name), trialCsv(t.plan(), t.record)});
+        }
+        writeFilesAtomically(files);
+        remember(QDir(folder).filePath(QStringLiteral("x")));
+        emit finished(tr("%n trial CSV file(s) written to %1", nullptr, int(files.size()))
+                          .arg(QDir::toNativeSeparators(folder)),
+                      true);
+    } catch (const Error &e) {
+        emit finished(tr("Trial CSV not written: %1").arg(e.message()), false);
+    }
+}
+
+void FileController::exportPlotTo(const QString &path)
+{
+    const bool svg = path.endsWith(QStringLiteral(".svg"), Qt::CaseInsensitive);
+    if (svg && !svgExportAvailable()) {
+        emit finished(tr("Plot not written: this build has no SVG support (Qt6::Svg); "
+                         "export as PNG instead"),
+                      false);
+        return;
+    }
+    QWidget *view = m_views.plot->chartView();
+    const QSize size(1200, 700);
+    const QByteArray bytes = svg ? widgetSvg(view, tr("Tracking error"), size) : widgetPng(view, size);
+    try {
+        writeFileAtomically(path, bytes);
+        remember(path);
+        emit finished(tr("Plot written: %1").arg(QDir::toNativeSeparators(path)), true);
+    } catch (const Error &e) {
+        emit finished(tr("Plot not written: %1").arg(e.message()), false);
+    }
+}
+
+void FileController::exportReportTo(const QString &path)
+{
+    if (!m_session->info()) {
+        emit finished(tr("Report not written: no session"), false);
+        return;
+    }
+    const SessionInfo &info = *m_session->info();
+    const Scenario &s = info.scenario;
+    auto list = [](const Eigen::VectorXd &v) {
+        QStringList parts;
+        for (Eigen::Index i = 0; i < v.size(); ++i)
+            parts << QString::number(v[i], 'g', 6);
+        return parts.join(QStringLiteral(", "));
+    };
+    ReportContent c;
+    c.created = QDateTime::currentDateTime();
+    c.toolVersion = QStringLiteral(LEARNID_VERSION);
+    c.robot = info.robotDescription;
+    c.scenario = {
+        tr("Path: from (%1, %2) m, %3 m at %4 deg")
+            .arg(s.line.start.x()).arg(s.line.start.y()).arg(s.line.length).arg(s.line.directionDeg),
+        tr("Torque limits: %1 N m, planning fraction %2").arg(list(s.torqueLimits)).arg(s.planningFraction),
+        tr("kp: %1 N m/rad; ki: %2").arg(list(s.controller.kp), list(s.controller.ki)),
+        tr("kd: %1 N m s/rad; lambda %2 rad/s").arg(list(s.controller.kd)).arg(s.controller.lambda),
+        tr("Estimator: %1, rho %2 rad/s, %3 trials").arg(s.law).arg(s.estimator.rho).arg(s.iterations),
+        tr("Initial parameters: %1").arg(list(s.initialParameters)),
+    };
+    const ConvergenceTableModel *table = m_views.table;
+    for (int col = 0; col < table->columnCount(); ++col)
+        c.tableHeader << table->headerData(col, Qt::Horizontal, Qt::DisplayRole).toString();
+    for (int row = 0; row < table->rowCount(); ++row) {
+        QStringList cells;
+        for (int col = 0; col < table->columnCount(); ++col)
+            cells << table->index(row, col).data().toString();
+        c.tableRows << cells;
+    }
+    c.trackingPlot = widgetImage(m_views.plot->chartView(), QSize(900, 560));
+    c.convergencePlot = widgetImage(m_views.chart->chartView(), QSize(600, 560));
+    const int stored = m_session->storedEstimateIndex();
+    c.appliedSet = m_session->storedParameters().size() == 0
+                       ? tr("none (nothing applied in this session)")
+                       : tr("%1 (estimate %2)").arg(list(m_session->storedParameters())).arg(stored);
+    try {
+        writeFileAtomically(path, commissioningReportPdf(c));
+        remember(path);
+        emit finished(tr("Report written: %1").arg(QDir::toNativeSeparators(path)), true);
+    } catch (const Error &e) {
+        emit finished(tr("Report not written: %1").arg(e.message()), false);
+    }
+}
+
+} // namespace learnid

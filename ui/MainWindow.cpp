@@ -1,0 +1,268 @@
+#include "ui/MainWindow.h"
+
+#include "ui/ApplyConfirmDialog.h"
+#include "ui/ApplyPanel.h"
+#include "ui/ConvergenceChart.h"
+#include "ui/ConvergenceTableModel.h"
+#include "ui/FileController.h"
+#include "ui/MainActions.h"
+#include "ui/MessageBar.h"
+#include "ui/PreTrialCheckView.h"
+#include "ui/RobotPanel.h"
+#include "ui/RunPanel.h"
+#include "ui/ScenarioForm.h"
+#include "ui/SessionController.h"
+#include "ui/SessionPresenter.h"
+#include "ui/TrackingErrorPlot.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTableView>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace learnid {
+
+namespace {
+
+QGroupBox *group(const QString &title, QWidget *content)
+{
+    auto *box = new QGroupBox(title);
+    auto *layout = new QVBoxLayout(box);
+    layout->setContentsMargins(6, 6, 6, 6);
+    layout->addWidget(content);
+    return box;
+}
+
+QDockWidget *dock(const QString &title, const QString &name, QWidget *content, QWidget *parent)
+{
+    auto *d = new QDockWidget(title, parent);
+    d->setObjectName(name);
+    d->setWidget(content);
+    d->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+    return d;
+}
+
+} // namespace
+
+MainWindow::MainWindow(QSettings *settings, QWidget *parent)
+    : QMainWindow(parent)
+    , m_settings(settings)
+    , m_controller(new SessionController(this))
+    , m_actions(new MainActions(this))
+    , m_message(new MessageBar)
+    , m_robot(new RobotPanel)
+    , m_form(new ScenarioForm)
+    , m_check(new PreTrialCheckView)
+    , m_run(new RunPanel(m_actions->runTrial, m_actions->runAll, m_actions->stop))
+    , m_apply(new ApplyPanel(m_actions->accept, m_actions->apply, m_actions->revert))
+    , m_plot(new TrackingErrorPlot)
+    , m_table(new ConvergenceTableModel(this))
+    , m_chart(new ConvergenceChart)
+    , m_statusRobot(new QLabel)
+    , m_confirm([this](const ApplyPreview &preview) {
+        return ApplyConfirmDialog(preview, this).exec() == QDialog::Accepted;
+    })
+{
+    setWindowTitle(tr("learnid \u2013 commissioning"));
+    setWindowIcon(QIcon(QStringLiteral(":/icons/learnid.svg")));
+    m_files = new FileController(m_controller, {m_form, m_table, m_plot, m_chart, m_apply},
+                                 &m_settings, this);
+    m_form->setScenario(m_settings.scenario());
+    m_plot->setAutoScale(m_settings.plotAutoScale());
+    m_actions->setLanguage(m_settings.language());
+    buildLayout();
+    connectViews();
+    m_presenter = new SessionPresenter(m_controller, {m_robot, m_form, m_check, m_run, m_apply, m_plot, m_table, m_chart, m_message}, this);
+    connect(m_controller, &SessionController::stateChanged, this, &MainWindow::updateActions);
+    statusBar()->addPermanentWidget(m_statusRobot);
+    restoreGeometry(m_settings.windowGeometry());
+    restoreState(m_settings.windowState());
+    updateActions();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildLayout()
+{
+    m_actions->populate(menuBar(), addToolBar(tr("Main")));
+    auto *table = new QTableView;
+    table->setObjectName(QStringLiteral("convergenceTable"));
+    table->setModel(m_table);
+    table->setAlternatingRowColors(true);
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table->verticalHeader()->hide();
+    connect(m_table, &QAbstractItemModel::modelReset, table, &QTableView::resizeColumnsToContents);
+    auto *convergence = new QSplitter(Qt::Horizontal);
+    convergence->addWidget(table);
+    convergence->addWidget(m_chart);
+    convergence->setStretchFactor(0, 3);
+    convergence->setStretchFactor(1, 1);
+
+    auto *controls = new QHBoxLayout;
+    controls->addWidget(group(tr("Pre-trial check"), m_check), 3);
+    controls->addWidget(group(tr("Run"), m_run), 2);
+    controls->addWidget(group(tr("Accept / apply"), m_apply), 2);
+    auto *central = new QWidget;
+    auto *layout = new QVBoxLayout(central);
+    layout->addWidget(m_message);
+    layout->addLayout(controls);
+    layout->addWidget(m_plot, 1);
+    setCentralWidget(central);
+
+    auto *setup = new QWidget;
+    setup->setMinimumWidth(440);
+    auto *setupLayout = new QVBoxLayout(setup);
+    setupLayout->addWidget(group(tr("Robot"), m_robot));
+    auto *scroll = new QScrollArea;
+    scroll->setWidget(m_form);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setFrameShape(QFrame::NoFrame);
+    setupLayout->addWidget(group(tr("Scenario"), scroll), 1);
+    QDockWidget *setupDock = dock(tr("Setup"), QStringLiteral("setupDock"), setup, this);
+    QDockWidget *convergenceDock =
+        dock(tr("Parameter convergence"), QStringLiteral("convergenceDock"), convergence, this);
+    addDockWidget(Qt::LeftDockWidgetArea, setupDock);
+    addDockWidget(Qt::BottomDockWidgetArea, convergenceDock);
+    resize(1600, 1000);
+    resizeDocks({setupDock}, {400}, Qt::Horizontal);
+    resizeDocks({convergenceDock}, {300}, Qt::Vertical);
+}
+
+void MainWindow::connectViews()
+{
+    const MainActions *a = m_actions;
+    connect(m_robot, &RobotPanel::connectRequested, this, &MainWindow::connectOrDisconnect);
+    connect(m_robot, &RobotPanel::disconnectRequested, m_controller, &SessionController::close);
+    connect(a->connectRobot, &QAction::triggered, this, &MainWindow::connectOrDisconnect);
+    connect(a->newSession, &QAction::triggered, this, [this] {
+        if (const auto s = m_form->scenario())
+            m_controller->open(*s);
+    });
+    connect(a->runTrial, &QAction::triggered, this, [this] {
+        m_run->startSeries(1);
+        m_controller->runTrial();
+    });
+    connect(a->runAll, &QAction::triggered, this, [this] {
+        const int n = m_controller->info()->scenario.iterations;
+        m_run->startSeries(n);
+        m_controller->runTrials(n);
+    });
+    connect(a->stop, &QAction::triggered, m_controller, &SessionController::stop);
+    connect(a->accept, &QAction::triggered, this, [this] { m_controller->accept(m_apply->chosenEstimate()); });
+    connect(a->apply, &QAction::triggered, this, &MainWindow::requestApply);
+    connect(a->revert, &QAction::triggered, m_controller, &SessionController::revert);
+    connect(a->openScenario, &QAction::triggered, m_files, &FileController::openScenario);
+    connect(a->saveScenario, &QAction::triggered, m_files, &FileController::saveScenario);
+    connect(a->exportParameters, &QAction::triggered, m_files, &FileController::exportParameterFile);
+    connect(a->exportTrialCsv, &QAction::triggered, m_files, &FileController::exportTrialCsv);
+    connect(a->exportPlot, &QAction::triggered, m_files, &FileController::exportPlot);
+    connect(a->exportReport, &QAction::triggered, m_files, &FileController::exportReport);
+    connect(a->quit, &QAction::triggered, this, &QWidget::close);
+    connect(a->about, &QAction::triggered, this, &MainWindow::showAbout);
+    connect(a->aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
+    connect(a, &MainActions::languageChosen, this, [this](const QString &language) {
+        m_settings.setLanguage(language);
+        m_message->showMessage(tr("The language changes when learnid is started again."),
+                               MessageBar::Severity::Info);
+    });
+    connect(m_plot, &TrackingErrorPlot::autoScaleChanged, this,
+            [this](bool on) { m_settings.setPlotAutoScale(on); });
+    connect(m_files, &FileController::scenarioLoaded, m_form, &ScenarioForm::setScenario);
+    connect(m_files, &FileController::finished, this, [this](const QString &text, bool ok) {
+        m_message->showMessage(text, ok ? MessageBar::Severity::Success : MessageBar::Severity::Error);
+    });
+    connect(m_form, &ScenarioForm::edited, this, [this](bool valid) {
+        if (!valid)
+            return updateActions();
+        m_settings.setScenario(*m_form->scenario());
+        // Before the first trial the new settings replace the session, so the check is current.
+        if (m_controller->isOpen() && !m_controller->isBusy() && m_controller->history().isEmpty())
+            m_controller->open(*m_form->scenario());
+        updateActions();
+    });
+}
+
+void MainWindow::updateActions()
+{
+    const SessionController *c = m_controller;
+    const bool open = c->isOpen(), busy = c->isBusy();
+    const bool learned = c->estimates().size() > 1, ran = !c->history().isEmpty();
+    MainActions *a = m_actions;
+    a->connectRobot->setEnabled(!busy);
+    a->connectRobot->setText(open ? tr("Dis&connect robot") : tr("&Connect robot"));
+    a->newSession->setEnabled(open && !busy && m_form->isValid());
+    a->runTrial->setEnabled(c->canRun());
+    a->runAll->setEnabled(c->canRun());
+    a->stop->setEnabled(busy);
+    a->accept->setEnabled(open && !busy && learned);
+    a->apply->setEnabled(open && !busy && c->acceptedIndex().has_value());
+    a->revert->setEnabled(open && !busy && c->appliedCount() > 0);
+    a->exportParameters->setEnabled(open && c->acceptedIndex().has_value());
+    a->exportTrialCsv->setEnabled(ran);
+    a->exportPlot->setEnabled(ran);
+    a->exportReport->setEnabled(open);
+    a->openScenario->setEnabled(!busy);
+    m_form->setEditable(!busy);
+    m_robot->setBusy(busy);
+    if (open && !busy && c->lastCheck() && !c->lastCheck()->passed())
+        m_run->setStatus(tr("Run disabled: %1").arg(c->lastCheck()->reason()));
+    const QString robot = open ? c->info()->robotDescription : tr("no robot");
+    m_statusRobot->setText(tr("Robot: %1 \u2013 %2").arg(robot, busy ? tr("busy") : open ? tr("idle") : tr("not connected")));
+}
+
+void MainWindow::connectOrDisconnect()
+{
+    if (m_controller->isOpen())
+        return m_controller->close();
+    if (const auto s = m_form->scenario())
+        m_controller->open(*s);
+    else
+        m_message->showMessage(tr("Correct the scenario first: %1").arg(m_form->firstError()),
+                               MessageBar::Severity::Error);
+}
+
+void MainWindow::requestApply()
+{
+    const SessionController *c = m_controller;
+    if (!c->acceptedIndex() || !c->info())
+        return;
+    ApplyPreview preview;
+    preview.estimateIndex = *c->acceptedIndex();
+    preview.parameters = c->info()->parameters;
+    preview.oldValues = c->storedParameters();
+    preview.newValues = c->estimates().at(preview.estimateIndex);
+    if (m_confirm(preview))
+        m_controller->apply();
+    else
+        m_message->showMessage(tr("Apply cancelled; the robot is unchanged."), MessageBar::Severity::Info);
+}
+
+void MainWindow::showAbout()
+{
+    QMessageBox::about(this, tr("About learnid"),
+                       tr("<h3>learnid %1</h3><p>Learning identification of robot dynamics: "
+                          "a commissioning tool.</p><p>Built with Qt %2.</p>")
+                           .arg(QStringLiteral(LEARNID_VERSION), QString::fromLatin1(qVersion())));
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    m_controller->stop();
+    m_settings.setWindow(saveGeometry(), saveState());
+    event->accept();
+}
+
+} // namespace learnid

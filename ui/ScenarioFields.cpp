@@ -1,0 +1,147 @@
+#include "ui/ScenarioFields.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+#include <cmath>
+
+namespace learnid {
+
+namespace {
+
+using Kind = ScenarioField::Kind;
+
+Eigen::VectorXd one(double v)
+{
+    return Eigen::VectorXd::Constant(1, v);
+}
+
+ScenarioField number(QString key, QString label, QString unit,
+                     std::function<double &(Scenario &)> ref)
+{
+    ScenarioField f;
+    f.key = std::move(key);
+    f.label = std::move(label);
+    f.unit = std::move(unit);
+    f.read = [ref](const Scenario &s) { return one(ref(const_cast<Scenario &>(s))); };
+    f.write = [ref](Scenario &s, const Eigen::VectorXd &v) { ref(s) = v[0]; };
+    return f;
+}
+
+ScenarioField vector(QString key, QString label, QString unit,
+                     std::function<Eigen::VectorXd &(Scenario &)> ref)
+{
+    ScenarioField f;
+    f.key = std::move(key);
+    f.label = std::move(label);
+    f.unit = std::move(unit);
+    f.kind = Kind::Vector;
+    f.expectedCount = 0;
+    f.read = [ref](const Scenario &s) { return ref(const_cast<Scenario &>(s)); };
+    f.write = [ref](Scenario &s, const Eigen::VectorXd &v) { ref(s) = v; };
+    return f;
+}
+
+} // namespace
+
+QList<ScenarioFieldGroup> scenarioFieldGroups()
+{
+    ScenarioField start;
+    start.key = QStringLiteral("path.start");
+    start.label = QCoreApplication::translate("learnid::ScenarioFields", "Start (x, y)");
+    start.unit = QStringLiteral("m");
+    start.kind = Kind::Vector;
+    start.expectedCount = 2;
+    start.read = [](const Scenario &s) { return Eigen::VectorXd(s.line.start); };
+    start.write = [](Scenario &s, const Eigen::VectorXd &v) { s.line.start = v.head<2>(); };
+
+    ScenarioField trials;
+    trials.key = QStringLiteral("estimator.iterations");
+    trials.label = QCoreApplication::translate("learnid::ScenarioFields", "Number of trials");
+    trials.kind = Kind::Integer;
+    trials.read = [](const Scenario &s) { return one(s.iterations); };
+    trials.write = [](Scenario &s, const Eigen::VectorXd &v) { s.iterations = int(v[0]); };
+
+    return {
+        {QCoreApplication::translate("learnid::ScenarioFields", "Path (straight line)"),
+         {start,
+          number(QStringLiteral("path.length"),
+                 QCoreApplication::translate("learnid::ScenarioFields", "Length"),
+                 QStringLiteral("m"), [](Scenario &s) -> double & { return s.line.length; }),
+          number(QStringLiteral("path.directionDeg"),
+                 QCoreApplication::translate("learnid::ScenarioFields", "Direction"),
+                 QStringLiteral("deg"),
+                 [](Scenario &s) -> double & { return s.line.directionDeg; })}},
+        {QCoreApplication::translate("learnid::ScenarioFields", "Torque limits"),
+         {vector(QStringLiteral("robot.torqueLimits"),
+                 QCoreApplication::translate("learnid::ScenarioFields", "Limit per joint"),
+                 QStringLiteral("N m"),
+                 [](Scenario &s) -> Eigen::VectorXd & { return s.torqueLimits; }),
+          number(QStringLiteral("path.planningFraction"),
+                 QCoreApplication::translate("learnid::ScenarioFields", "Planning fraction"),
+                 QString(), [](Scenario &s) -> double & { return s.planningFraction; })}},
+        {QCoreApplication::translate("learnid::ScenarioFields", "Controller"),
+         {vector(QStringLiteral("controller.kp"), QStringLiteral("kp"), QStringLiteral("N m/rad"),
+                 [](Scenario &s) -> Eigen::VectorXd & { return s.controller.kp; }),
+          vector(QStringLiteral("controller.ki"), QStringLiteral("ki"),
+                 QStringLiteral("N m/(rad s)"),
+                 [](Scenario &s) -> Eigen::VectorXd & { return s.controller.ki; }),
+          vector(QStringLiteral("controller.kd"), QStringLiteral("kd"),
+                 QStringLiteral("N m s/rad"),
+                 [](Scenario &s) -> Eigen::VectorXd & { return s.controller.kd; }),
+          number(QStringLiteral("controller.lambda"),
+                 QCoreApplication::translate("learnid::ScenarioFields", "lambda (derivative filter)"),
+                 QStringLiteral("rad/s"),
+                 [](Scenario &s) -> double & { return s.controller.lambda; })}},
+        {QCoreApplication::translate("learnid::ScenarioFields", "Estimator"),
+         {number(QStringLiteral("estimator.rho"),
+                 QCoreApplication::translate("learnid::ScenarioFields", "rho (filter F)"),
+                 QStringLiteral("rad/s"),
+                 [](Scenario &s) -> double & { return s.estimator.rho; }),
+          trials,
+          vector(QStringLiteral("robot.initialParameters"),
+                 QCoreApplication::translate("learnid::ScenarioFields", "Initial parameters"),
+                 QString(),
+                 [](Scenario &s) -> Eigen::VectorXd & { return s.initialParameters; })}},
+    };
+}
+
+std::optional<Eigen::VectorXd> parseNumberList(const QString &text, QString *error)
+{
+    static const QRegularExpression separator(QStringLiteral("[,;\\s]+"));
+    const QStringList parts = text.trimmed().split(separator, Qt::SkipEmptyParts);
+    if (parts.isEmpty()) {
+        *error = QCoreApplication::translate("learnid::ScenarioFields", "enter a value");
+        return std::nullopt;
+    }
+    Eigen::VectorXd values(parts.size());
+    for (int i = 0; i < parts.size(); ++i) {
+        bool ok = false;
+        const double v = parts.at(i).toDouble(&ok); // QString::toDouble uses the C locale
+        if (!ok || !std::isfinite(v)) {
+            *error = QCoreApplication::translate("learnid::ScenarioFields", "\"%1\" is not a number").arg(parts.at(i));
+            return std::nullopt;
+        }
+        values[i] = v;
+    }
+    return values;
+}
+
+QString formatNumberList(const Eigen::VectorXd &values)
+{
+    QStringList parts;
+    for (Eigen::Index i = 0; i < values.size(); ++i)
+        parts << QString::number(values[i], 'g', 12);
+    return parts.join(QStringLiteral(", "));
+}
+
+bool keyBelongsTo(const QString &errorKey, const QString &fieldKey)
+{
+    if (!errorKey.startsWith(fieldKey))
+        return false;
+    if (errorKey.size() == fieldKey.size())
+        return true;
+    const QChar next = errorKey.at(fieldKey.size());
+    return next == QLatin1Char('[') || next == QLatin1Char('.');
+}
+
+} // namespace learnid

@@ -1,0 +1,63 @@
+#pragma once
+
+#include "session/Scenario.h"
+#include "ui/ScenarioFields.h"
+
+#include <QWidget>
+#include <optional>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+
+namespace learnid {
+
+/// The scenario as a form: path, torque limits and planning fraction, gains with lambda, rho,
+/// the estimator law, the number of trials and the initial parameters. Every edit is parsed and
+/// validated at once (validateScenario()); the reason a value is refused is shown next to its
+/// field. Settings the form does not show are kept from the last setScenario().
+class ScenarioForm : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit ScenarioForm(QWidget *parent = nullptr);
+
+    void setScenario(const Scenario &scenario);
+    /// The edited scenario, or nullopt while a field is refused.
+    std::optional<Scenario> scenario() const { return m_valid ? std::optional(m_current) : std::nullopt; }
+    bool isValid() const { return m_valid; }
+    /// The first refused field's key and reason ("controller.lambda: must be positive"), or "".
+    QString firstError() const { return m_firstError; }
+    /// The reason shown next to a field (key as in the scenario file), "" when it is accepted.
+    QString reasonFor(const QString &key) const;
+    /// Names parameters in the label of the initial parameters, e.g. {"a", "b", "c"}.
+    void setParameterNames(const QStringList &names);
+    void setEditable(bool editable);
+
+signals:
+    /// After every edit; scenario() holds the result when valid.
+    void edited(bool valid);
+
+private:
+    struct Row
+    {
+        ScenarioField field;
+        QLineEdit *edit = nullptr;
+        QLabel *label = nullptr;
+        QLabel *reason = nullptr;
+    };
+
+    void revalidate();
+    void showReason(Row &row, const QString &reason);
+
+    QList<Row> m_rows;
+    QComboBox *m_law;
+    QLabel *m_otherError;
+    Scenario m_base;
+    Scenario m_current;
+    bool m_valid = true;
+    QString m_firstError;
+};
+
+} // namespace learnid

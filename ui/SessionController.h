@@ -1,0 +1,90 @@
+#pragma once
+
+#include "robot/SimulatedRobot.h"
+#include "session/TrialResult.h"
+#include "ui/SessionInfo.h"
+
+#include <QObject>
+#include <QThread>
+#include <QVector>
+#include <optional>
+
+namespace learnid {
+
+class SessionWorker;
+
+/// The GUI thread's front of the session. It starts a SessionWorker in its own QThread, forwards
+/// requests to it by queued calls, and keeps value copies of what the views show (history,
+/// estimates, the last pre-trial check). stop() reaches the running trial directly: cancelling
+/// is thread-safe.
+class SessionController : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit SessionController(QObject *parent = nullptr);
+    ~SessionController() override;
+
+    bool isOpen() const { return m_info.has_value(); }
+    /// True from a run/apply request until the worker answers.
+    bool isBusy() const { return m_busy; }
+    const std::optional<SessionInfo> &info() const { return m_info; }
+    const QVector<TrialResult> &history() const { return m_history; }
+    /// estimates()[0] is phi_0, [k] the estimate after k learning steps.
+    const QVector<Eigen::VectorXd> &estimates() const { return m_estimates; }
+    const std::optional<PreTrialCheck> &lastCheck() const { return m_check; }
+    std::optional<int> acceptedIndex() const { return m_accepted; }
+    /// What the robot controller holds now (empty before the first apply).
+    const Eigen::VectorXd &storedParameters() const { return m_stored; }
+    int appliedCount() const { return m_appliedCount; }
+    /// Index of the estimate that equals the stored set, or -1.
+    int storedEstimateIndex() const;
+
+    bool canRun() const;
+
+public slots:
+    void open(const learnid::Scenario &scenario);
+    void close();
+    void setSimulatedFaults(const learnid::SimulatedFaults &faults);
+    void runTrial();
+    void runTrials(int count);
+    void stop();
+    void accept(int estimateIndex);
+    void apply();
+    void revert();
+    void exportParameterFile(const QString &jsonPath, int estimateIndex);
+
+signals:
+    void opened();
+    void openFailed(const QString &message);
+    void closed();
+    void stateChanged();
+    void checkChanged();
+    void trialStarted(int index, int samples);
+    void progress(int index, int samplesDone, int samplesTotal);
+    void trialFinished(const learnid::TrialResult &result);
+    void historyChanged();
+    void runFinished(bool allCompleted);
+    void acceptedChanged(int estimateIndex);
+    void applied(const Eigen::VectorXd &stored);
+    void operationFailed(const QString &operation, const QString &message);
+    void parameterFileExported(const QStringList &paths, const QString &error);
+
+private:
+    void setBusy(bool busy);
+    template <typename F>
+    void post(F &&call);
+
+    QThread m_thread;
+    SessionWorker *m_worker = nullptr;
+    std::optional<SessionInfo> m_info;
+    QVector<TrialResult> m_history;
+    QVector<Eigen::VectorXd> m_estimates;
+    std::optional<PreTrialCheck> m_check;
+    std::optional<int> m_accepted;
+    Eigen::VectorXd m_stored;
+    int m_appliedCount = 0;
+    bool m_busy = false;
+};
+
+} // namespace learnid

@@ -1,0 +1,17 @@
+#include "ui/SessionInfo.h"
+
+#include "robot/SimulatedRobot.h"
+#include "session/TrialResult.h"
+
+namespace learnid {
+
+void registerSessionMetaTypes()
+{
+    qRegisterMetaType<learnid::SessionInfo>();
+    qRegisterMetaType<learnid::TrialResult>();
+    qRegisterMetaType<learnid::PreTrialCheck>();
+    qRegisterMetaType<Eigen::VectorXd>();
+    qRegisterMetaType<QVector<Eigen::VectorXd>>();
+}
+
+} // namespace learnid

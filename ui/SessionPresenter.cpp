@@ -1,0 +1,94 @@
+#include "ui/SessionPresenter.h"
+
+#include "ui/ApplyPanel.h"
+#include "ui/ConvergenceChart.h"
+#include "ui/ConvergenceTableModel.h"
+#include "ui/MessageBar.h"
+#include "ui/PreTrialCheckView.h"
+#include "ui/RobotPanel.h"
+#include "ui/RunPanel.h"
+#include "ui/ScenarioForm.h"
+#include "ui/SessionController.h"
+#include "ui/TrackingErrorPlot.h"
+
+namespace learnid {
+
+SessionPresenter::SessionPresenter(SessionController *controller, Views views, QObject *parent)
+    : QObject(parent)
+    , m_controller(controller)
+    , m_views(views)
+{
+    SessionController *c = m_controller;
+    connect(c, &SessionController::opened, this, [this] {
+        const SessionInfo &info = *m_controller->info();
+        QStringList names;
+        for (const ParameterInfo &p : info.parameters)
+            names << p.name;
+        m_views.form->setParameterNames(names);
+        m_views.table->setParameters(info.parameters, info.truth);
+        m_views.plot->clear();
+        m_views.robot->setConnected(true, tr("connected: %1").arg(info.robotDescription));
+    });
+    connect(c, &SessionController::openFailed, this, [this](const QString &message) {
+        m_views.robot->setConnected(false, tr("not connected"));
+        m_views.message->showMessage(tr("Cannot start the session: %1").arg(message), MessageBar::Severity::Error);
+    });
+    connect(c, &SessionController::closed, this, [this] {
+        m_views.robot->setConnected(false, tr("not connected"));
+        m_views.check->clear(tr("Connect a robot to plan the first trial."));
+    });
+    connect(c, &SessionController::checkChanged, this, [this] {
+        m_views.check->setCheck(*m_controller->lastCheck(), int(m_controller->history().size()));
+    });
+    connect(c, &SessionController::trialStarted, this, [this](int index, int) {
+        m_views.run->setStatus(tr("Trial %1 running\u2026").arg(index));
+    });
+    connect(c, &SessionController::progress, this, [this](int index, int done, int total) {
+        m_views.run->setTrialProgress(index, done, total);
+    });
+    connect(c, &SessionController::trialFinished, this, [this](const TrialResult &t) {
+        if (t.status() != TrialStatus::Refused)
+            m_views.plot->setTrialCurves(t.index, trackingErrorCurves(t));
+        if (t.learned())
+            m_views.run->trialDone(int(m_controller->estimates().size()) - 1);
+        else
+            m_views.message->showMessage(tr("Trial %1 %2: %3. Its data are kept.")
+                                       .arg(t.index).arg(trialStatusName(t.status()), t.message),
+                                   MessageBar::Severity::Error);
+    });
+    connect(c, &SessionController::historyChanged, this, &SessionPresenter::refreshTables);
+    connect(c, &SessionController::runFinished, this, [this](bool all) {
+        m_views.run->setStatus(all ? tr("Finished; %1 estimate(s) learned.").arg(m_controller->estimates().size() - 1)
+                             : tr("Stopped; see the message above."));
+    });
+    connect(c, &SessionController::acceptedChanged, this, [this](int k) {
+        m_views.apply->setAccepted(k);
+        m_views.message->showMessage(tr("Estimate %1 accepted.").arg(k), MessageBar::Severity::Info);
+    });
+    connect(c, &SessionController::applied, this, [this](const Eigen::VectorXd &) {
+        m_views.message->showMessage(tr("Parameters written to the robot and read back."), MessageBar::Severity::Success);
+    });
+    connect(c, &SessionController::operationFailed, this, [this](const QString &, const QString &text) {
+        m_views.message->showMessage(text, MessageBar::Severity::Error);
+    });
+}
+
+void SessionPresenter::refreshTables()
+{
+    const SessionController *c = m_controller;
+    m_views.table->setHistory(c->history(), c->estimates());
+    m_views.table->setAccepted(c->acceptedIndex());
+    m_views.table->setApplied(c->storedEstimateIndex());
+    if (c->info())
+        m_views.chart->setData(c->info()->parameters, c->estimates(), c->info()->truth);
+    m_views.apply->setEstimateCount(int(c->estimates().size()));
+    const Eigen::VectorXd &stored = c->storedParameters();
+    QStringList values;
+    for (Eigen::Index i = 0; i < stored.size(); ++i)
+        values << QString::number(stored[i], 'g', 6);
+    m_views.apply->setStored(stored.size() == 0 ? tr("nothing applied yet")
+                                          : tr("%1 (estimate %2)").arg(values.join(QStringLiteral(", ")))
+                                                .arg(c->storedEstimateIndex()));
+}
+
+} // namespace learnid

@@ -1,0 +1,192 @@
+#include "ui/SessionWorker.h"
+
+#include "session/ScenarioRobot.h"
+
+#include "io/AtomicFile.h"
+#include "io/ParameterFile.h"
+#include "io/SessionReport.h"
+#include "model/Error.h"
+#include "model/ModelFactory.h"
+#include "ui/UiLogging.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QMutexLocker>
+
+namespace learnid {
+
+SessionWorker::SessionWorker(QObject *parent)
+    : QObject(parent)
+{}
+
+SessionWorker::~SessionWorker() = default;
+
+void SessionWorker::requestCancel()
+{
+    QMutexLocker lock(&m_sessionMutex);
+    if (m_session)
+        m_session->requestCancel();
+}
+
+void SessionWorker::open(const Scenario &scenario)
+{
+    close();
+    try {
+        const auto model = makeRobotModel(scenario.model);
+        if (!model)
+            throw Error(tr("unknown robot model \"%1\"").arg(scenario.model));
+        auto robot = makeSimulatedRobot(scenario, model);
+        robot->setFaults(m_faults);
+        auto session = std::make_unique<CommissioningSession>(scenario, model, robot);
+        QMutexLocker lock(&m_sessionMutex);
+        m_robot = robot;
+        m_session = std::move(session);
+    } catch (const Error &e) {
+        qCWarning(lcUi).noquote() << "opening the session failed:" << e.message();
+        emit openFailed(e.message());
+        return;
+    }
+    connectSession();
+    SessionInfo info;
+    info.scenario = scenario;
+    info.robotDescription = m_session->robot().description();
+    info.modelId = m_session->model().id();
+    info.parameters = m_session->model().parameters();
+    info.dof = m_session->model().dof();
+    info.truth = m_session->robot().trueParameters();
+    info.storedParameters = m_session->robot().storedParameters();
+    emit opened(info);
+    emitCheck();
+}
+
+void SessionWorker::close()
+{
+    std::unique_ptr<CommissioningSession> old;
+    {
+        QMutexLocker lock(&m_sessionMutex);
+        old = std::move(m_session);
+        m_robot.reset();
+    }
+    if (old)
+        emit closed();
+}
+
+void SessionWorker::connectSession()
+{
+    connect(m_session.get(), &CommissioningSession::trialStarted, this,
+            [this](int index, int samples) {
+                m_lastProgressPercent = -1;
+                emit trialStarted(index, samples);
+            });
+    // The session reports every 100 samples; forward whole percents only, so the GUI's event
+    // queue stays short however long the trial.
+    connect(m_session.get(), &CommissioningSession::progress, this,
+            [this](int index, int done, int total) {
+                const int percent = total > 0 ? int(100LL * done / total) : 0;
+                if (percent == m_lastProgressPercent)
+                    return;
+                m_lastProgressPercent = percent;
+                emit progress(index, done, total);
+            });
+    connect(m_session.get(), &CommissioningSession::trialFinished, this,
+            [this](const TrialResult &result) {
+                TrialResult copy = result;
+                copy.lawCache.reset(); // the law's working memory stays with the session
+                emit trialFinished(copy, m_session->estimates());
+            });
+}
+
+void SessionWorker::setFaults(const SimulatedFaults &faults)
+{
+    m_faults = faults;
+    if (m_robot)
+        m_robot->setFaults(faults);
+}
+
+void SessionWorker::emitCheck()
+{
+    if (m_session)
+        emit checked(m_session->checkNextTrial());
+}
+
+void SessionWorker::check()
+{
+    emitCheck();
+}
+
+void SessionWorker::runTrial()
+{
+    runTrials(1);
+}
+
+void SessionWorker::runTrials(int count)
+{
+    if (!m_session) {
+        emit operationFailed(QStringLiteral("run"), tr("no robot connected"));
+        emit runFinished(false);
+        return;
+    }
+    bool all = true;
+    if (count == 1) {
+        const TrialResult &t = m_session->runTrial();
+        all = t.learned();
+    } else {
+        all = m_session->runTrials(count);
+    }
+    emit runFinished(all);
+    emitCheck();
+}
+
+void SessionWorker::accept(int estimateIndex)
+{
+    if (!m_session)
+        return;
+    const QString error = m_session->accept(estimateIndex);
+    if (error.isEmpty())
+        emit accepted(estimateIndex);
+    else
+        emit operationFailed(QStringLiteral("accept"), error);
+}
+
+void SessionWorker::apply()
+{
+    if (!m_session)
+        return;
+    const QString error = m_session->apply();
+    if (error.isEmpty())
+        emit applied(m_session->robot().storedParameters());
+    else
+        emit operationFailed(QStringLiteral("apply"), error);
+}
+
+void SessionWorker::revert()
+{
+    if (!m_session)
+        return;
+    const QString error = m_session->revert();
+    if (error.isEmpty())
+        emit applied(m_session->robot().storedParameters());
+    else
+        emit operationFailed(QStringLiteral("revert"), error);
+}
+
+void SessionWorker::exportParameterFile(const QString &jsonPath, int estimateIndex)
+{
+    if (!m_session) {
+        emit parameterFileExported({}, tr("no session to export"));
+        return;
+    }
+    const QFileInfo info(jsonPath);
+    const QString dcfPath = info.dir().filePath(info.completeBaseName() + QStringLiteral(".dcf"));
+    try {
+        const ParameterFileContent content = parameterFileContent(*m_session, estimateIndex);
+        writeFilesAtomically({{jsonPath, parameterFileToJson(content)},
+                              {dcfPath, parameterDcfFragment(content)}});
+    } catch (const Error &e) {
+        emit parameterFileExported({}, e.message());
+        return;
+    }
+    emit parameterFileExported({jsonPath, dcfPath}, {});
+}
+
+} // namespace learnid

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "session/TrialResult.h"
+
+#include <QList>
+#include <QPointF>
+#include <QVector>
+
+namespace learnid {
+
+/// One curve of a tracking-error plot: e_j(t) = q_d - q of one joint of one trial [deg] over
+/// t [s], possibly decimated for display.
+struct TrackingErrorCurve
+{
+    int trial = 0;
+    int joint = 0;          ///< 0-based
+    TrialStatus status = TrialStatus::Completed;
+    QList<QPointF> points;  ///< (t [s], e [deg])
+    double maxAbsDeg = 0.0; ///< over all recorded samples, not only the displayed ones
+};
+
+/// The curves of one trial, one per joint, each with at most maxPoints points: min/max
+/// decimation keeps every bucket's extremes, so peaks survive (maxPoints >= 4; 0 = all).
+QList<TrackingErrorCurve> trackingErrorCurves(const TrialResult &trial, int maxPoints = 2000);
+
+/// Min/max decimation of a sampled curve to at most maxPoints points, in time order.
+QList<QPointF> decimateMinMax(const QList<QPointF> &points, int maxPoints);
+
+/// The axis of a tracking-error plot [deg]: symmetric about 0, a multiple of `grid`, with at
+/// most maxTicks grid intervals (the interval becomes a multiple of grid when needed).
+struct ErrorAxisRange
+{
+    double limit = 0.02;    ///< the axis spans [-limit, limit]
+    double interval = 0.02; ///< grid spacing
+};
+ErrorAxisRange errorAxisRange(double maxAbsDeg, double grid = 0.02, int maxTicks = 12);
+
+} // namespace learnid
