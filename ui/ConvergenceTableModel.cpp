@@ -1,5 +1,7 @@
 #include "ui/ConvergenceTableModel.h"
 
+#include "session/ConvergenceFigures.h"
+
 #include <QBrush>
 #include <QFont>
 #include <cmath>
@@ -122,7 +124,7 @@ QVariant ConvergenceTableModel::number(int k, Column kind, int p) const
     case Column::RelativeChange:
         if (k == 0)
             return {};
-        return 100.0 * (phi - m_estimates.at(k - 1)).norm() / m_estimates.at(k - 1).norm();
+        return largestRelativeDifferencePercent(phi, m_estimates.at(k - 1));
     case Column::MaxError:
         for (auto it = m_trialsWith.at(k).crbegin(); it != m_trialsWith.at(k).crend(); ++it) {
             const TrialResult &t = m_history.at(*it);

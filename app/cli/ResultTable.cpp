@@ -1,5 +1,7 @@
 #include "cli/ResultTable.h"
 
+#include "session/ConvergenceFigures.h"
+
 #include <QCoreApplication>
 #include <QStringList>
 #include <cmath>
@@ -21,18 +23,6 @@ QString cell(const QString &text, int width)
 QString number(double v, int decimals, int width)
 {
     return cell(std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("-"), width);
-}
-
-// Largest |x_i - ref_i| / |ref_i| in percent, signed by that entry.
-double maxRelativePercent(const Eigen::VectorXd &x, const Eigen::VectorXd &ref)
-{
-    double worst = 0.0;
-    for (Eigen::Index i = 0; i < x.size(); ++i) {
-        const double r = ref[i] != 0.0 ? (x[i] - ref[i]) / std::abs(ref[i]) * 100.0 : 0.0;
-        if (std::abs(r) > std::abs(worst))
-            worst = r;
-    }
-    return worst;
 }
 
 } // namespace
@@ -73,7 +63,7 @@ QString resultTable(const CommissioningSession &session)
         for (Eigen::Index i = 0; i < phi.size(); ++i)
             cells << number(phi[i], 4, 12);
         cells << (row == 0 ? cell(QStringLiteral("-"), 9)
-                           : number(maxRelativePercent(phi, estimates.at(row - 1)), 3, 9));
+                           : number(largestRelativeDifferencePercent(phi, estimates.at(row - 1)), 3, 9));
         const TrialResult *t = runWith.at(row);
         for (int j = 0; j < n; ++j)
             cells << (t && t->maxTrackingErrorDeg.size() == n
@@ -82,7 +72,7 @@ QString resultTable(const CommissioningSession &session)
         cells << (t ? number(t->check.rule.duration, 3, 6) : cell(QStringLiteral("-"), 6));
         cells << (t && t->update ? number(t->update->condition, 2, 7) : cell(QStringLiteral("-"), 7));
         if (truth)
-            cells << number(maxRelativePercent(phi, *truth), 3, 10);
+            cells << number(largestRelativeDifferencePercent(phi, *truth), 3, 10);
         QString line = cells.join(QLatin1Char(' '));
         if (t && !t->record.completed())
             line += QStringLiteral("  ") + trialStatusName(t->status());
