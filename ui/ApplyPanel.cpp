@@ -1,5 +1,7 @@
 #include "ui/ApplyPanel.h"
 
+#include "ui/ActionButton.h"
+
 #include <QAction>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -8,22 +10,6 @@
 #include <QToolButton>
 
 namespace learnid {
-
-namespace {
-
-QToolButton *button(QAction *action, const QString &name, QWidget *parent)
-{
-    auto *b = new QToolButton(parent);
-    b->setDefaultAction(action);
-    b->setObjectName(name);
-    b->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    b->setIconSize(QSize(20, 20));
-    b->setMinimumHeight(32);
-    b->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    return b;
-}
-
-} // namespace
 
 ApplyPanel::ApplyPanel(QAction *accept, QAction *apply, QAction *revert, QWidget *parent)
     : QWidget(parent)
@@ -38,9 +24,9 @@ ApplyPanel::ApplyPanel(QAction *accept, QAction *apply, QAction *revert, QWidget
     m_accepted->setObjectName(QStringLiteral("acceptedLabel"));
     m_stored->setObjectName(QStringLiteral("storedLabel"));
     auto *buttons = new QHBoxLayout;
-    buttons->addWidget(button(accept, QStringLiteral("acceptButton"), this));
-    buttons->addWidget(button(apply, QStringLiteral("applyButton"), this));
-    buttons->addWidget(button(revert, QStringLiteral("revertButton"), this));
+    buttons->addWidget(actionButton(accept, QStringLiteral("acceptButton"), this));
+    buttons->addWidget(actionButton(apply, QStringLiteral("applyButton"), this));
+    buttons->addWidget(actionButton(revert, QStringLiteral("revertButton"), this));
     auto *form = new QFormLayout(this);
     form->addRow(tr("Choose:"), m_estimate);
     form->addRow(buttons);

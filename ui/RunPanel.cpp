@@ -1,5 +1,7 @@
 #include "ui/RunPanel.h"
 
+#include "ui/ActionButton.h"
+
 #include <QAction>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -10,22 +12,6 @@
 
 namespace learnid {
 
-namespace {
-
-QToolButton *button(QAction *action, const QString &name, QWidget *parent)
-{
-    auto *b = new QToolButton(parent);
-    b->setDefaultAction(action);
-    b->setObjectName(name);
-    b->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    b->setIconSize(QSize(20, 20));
-    b->setMinimumHeight(32);
-    b->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    return b;
-}
-
-} // namespace
-
 RunPanel::RunPanel(QAction *runTrial, QAction *runAll, QAction *stop, QWidget *parent)
     : QWidget(parent)
     , m_trial(new QProgressBar(this))
@@ -33,9 +19,9 @@ RunPanel::RunPanel(QAction *runTrial, QAction *runAll, QAction *stop, QWidget *p
     , m_status(new QLabel(this))
 {
     auto *buttons = new QHBoxLayout;
-    buttons->addWidget(button(runTrial, QStringLiteral("runTrialButton"), this));
-    buttons->addWidget(button(runAll, QStringLiteral("runAllButton"), this));
-    buttons->addWidget(button(stop, QStringLiteral("stopButton"), this));
+    buttons->addWidget(actionButton(runTrial, QStringLiteral("runTrialButton"), this));
+    buttons->addWidget(actionButton(runAll, QStringLiteral("runAllButton"), this));
+    buttons->addWidget(actionButton(stop, QStringLiteral("stopButton"), this));
     m_trial->setObjectName(QStringLiteral("trialProgress"));
     m_series->setObjectName(QStringLiteral("seriesProgress"));
     m_trial->setFormat(tr("%p %"));

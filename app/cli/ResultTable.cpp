@@ -46,17 +46,6 @@ QString resultTable(const CommissioningSession &session)
     QStringList lines{header.join(QLatin1Char(' '))};
 
     const QVector<Eigen::VectorXd> &estimates = session.estimates();
-    const QVector<TrialResult> &history = session.history();
-    // Row k pairs estimate k with the trial that ran with it: the k-th trial that was learned
-    // from or, for the last row, the trial that ran with the final estimate if any.
-    QVector<const TrialResult *> runWith(estimates.size(), nullptr);
-    int k = 0;
-    for (const TrialResult &t : history) {
-        if (k < runWith.size())
-            runWith[k] = &t;
-        if (t.learned())
-            ++k;
-    }
     for (int row = 0; row < estimates.size(); ++row) {
         const Eigen::VectorXd &phi = estimates.at(row);
         QStringList cells{cell(QString::number(row), 5)};
@@ -64,7 +53,7 @@ QString resultTable(const CommissioningSession &session)
             cells << number(phi[i], 4, 12);
         cells << (row == 0 ? cell(QStringLiteral("-"), 9)
                            : number(largestRelativeDifferencePercent(phi, estimates.at(row - 1)), 3, 9));
-        const TrialResult *t = runWith.at(row);
+        const TrialResult *t = session.trialRunWith(row); // the trial run with estimate k
         for (int j = 0; j < n; ++j)
             cells << (t && t->maxTrackingErrorDeg.size() == n
                           ? number(t->maxTrackingErrorDeg[j], 5, 12)

@@ -26,19 +26,6 @@ QJsonArray toArray(const Eigen::VectorXd &v)
     return a;
 }
 
-// The trial that ran with estimate k (the k-th learned trial), or nullptr.
-const TrialResult *trialRunWith(const CommissioningSession &session, int k)
-{
-    int learned = 0;
-    for (const TrialResult &t : session.history()) {
-        if (learned == k)
-            return &t;
-        if (t.learned())
-            ++learned;
-    }
-    return nullptr;
-}
-
 } // namespace
 
 QByteArray sessionReportJson(const CommissioningSession &session)
@@ -58,7 +45,7 @@ QByteArray sessionReportJson(const CommissioningSession &session)
     QJsonArray trials;
     const QVector<Eigen::VectorXd> &estimates = session.estimates();
     for (int k = 0; k < estimates.size(); ++k) {
-        const TrialResult *t = trialRunWith(session, k);
+        const TrialResult *t = session.trialRunWith(k);
         if (!t)
             break; // the final estimate has not been run; it is in "final"
         QJsonObject o;
@@ -98,8 +85,8 @@ ParameterFileContent parameterFileContent(const CommissioningSession &session, i
     }
     // Estimate k was learned from the (k-1)-th learned trial; the figures of the trial run with
     // it (if any) tell how well it tracks.
-    const TrialResult *source = trialRunWith(session, estimateIndex - 1);
-    const TrialResult *verified = trialRunWith(session, estimateIndex);
+    const TrialResult *source = session.trialRunWith(estimateIndex - 1);
+    const TrialResult *verified = session.trialRunWith(estimateIndex);
 
     ParameterFileContent c;
     c.robotModel = session.model().id();

@@ -36,6 +36,20 @@ CommissioningSession::CommissioningSession(const Scenario &scenario,
 
 CommissioningSession::~CommissioningSession() = default;
 
+const TrialResult *CommissioningSession::trialRunWith(int estimateIndex) const
+{
+    // Trials that were not learned from leave the estimate unchanged: the next one runs with it.
+    const TrialResult *found = nullptr;
+    int estimate = 0;
+    for (const TrialResult &t : m_history) {
+        if (estimate == estimateIndex)
+            found = &t;
+        if (t.learned())
+            ++estimate;
+    }
+    return found;
+}
+
 PreTrialCheck CommissioningSession::checkNextTrial() const
 {
     PreTrialCheck check;

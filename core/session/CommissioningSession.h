@@ -42,6 +42,8 @@ public:
     /// estimates()[0] is phi_0; estimates()[k] the estimate after k learning steps.
     const QVector<Eigen::VectorXd> &estimates() const { return m_estimates; }
     const Eigen::VectorXd &currentEstimate() const { return m_estimates.constLast(); }
+    /// The latest trial run with estimate k (its feedforward), or nullptr if none ran with it.
+    const TrialResult *trialRunWith(int estimateIndex) const;
 
     /// Plans the next trial with the current estimate and checks it, without moving the robot.
     PreTrialCheck checkNextTrial() const;

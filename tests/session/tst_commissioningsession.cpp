@@ -177,6 +177,10 @@ void TestCommissioningSession::robotFault_stopsSeriesKeepingPartialData()
     QCOMPARE(t.record.samples(), 778);
     QVERIFY(t.maxTrackingErrorDeg.allFinite());
     QCOMPARE(f.session->estimates().size(), 2);
+    // The faulted trial ran with estimate 1; nothing has run with estimate 2 (none exists).
+    QCOMPARE(f.session->trialRunWith(0), &f.session->history().at(0));
+    QCOMPARE(f.session->trialRunWith(1), &t);
+    QCOMPARE(f.session->trialRunWith(2), nullptr);
 }
 
 void TestCommissioningSession::nonFiniteMeasurement_isNotLearnedFrom()
