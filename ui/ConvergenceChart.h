@@ -9,6 +9,9 @@
 
 class QChart;
 class QChartView;
+class QLineSeries;
+class QLogValueAxis;
+class QValueAxis;
 
 namespace learnid {
 
@@ -27,8 +30,13 @@ public:
     QChartView *chartView() const { return m_view; }
 
 private:
+    QLineSeries *seriesAt(int p);
+
     QChartView *m_view;
     QChart *m_chart;
+    QValueAxis *m_x;
+    QLogValueAxis *m_y;
+    QList<QLineSeries *> m_series; ///< one per parameter, reused from one update to the next
 };
 
 } // namespace learnid

@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QRegularExpression>
 #include <cmath>
+#include <limits>
 
 namespace learnid {
 
@@ -22,8 +23,12 @@ ScenarioField number(QString key, QString label, QString unit,
     f.key = std::move(key);
     f.label = std::move(label);
     f.unit = std::move(unit);
-    f.read = [ref](const Scenario &s) { return one(ref(const_cast<Scenario &>(s))); };
-    f.write = [ref](Scenario &s, const Eigen::VectorXd &v) { ref(s) = v[0]; };
+    f.read = [ref](const Scenario &s) {
+        return one(ref(const_cast<Scenario &>(s)));
+    };
+    f.write = [ref](Scenario &s, const Eigen::VectorXd &v) {
+        ref(s) = v[0];
+    };
     return f;
 }
 
@@ -36,9 +41,36 @@ ScenarioField vector(QString key, QString label, QString unit,
     f.unit = std::move(unit);
     f.kind = Kind::Vector;
     f.expectedCount = 0;
-    f.read = [ref](const Scenario &s) { return ref(const_cast<Scenario &>(s)); };
-    f.write = [ref](Scenario &s, const Eigen::VectorXd &v) { ref(s) = v; };
+    f.read = [ref](const Scenario &s) {
+        return ref(const_cast<Scenario &>(s));
+    };
+    f.write = [ref](Scenario &s, const Eigen::VectorXd &v) {
+        ref(s) = v;
+    };
     return f;
+}
+
+template <typename T>
+ScenarioField integer(QString key, QString label, std::function<T &(Scenario &)> ref)
+{
+    ScenarioField f;
+    f.key = std::move(key);
+    f.label = std::move(label);
+    f.kind = Kind::Integer;
+    f.minimum = std::max(f.minimum, double(std::numeric_limits<T>::min()));
+    f.maximum = std::min(f.maximum, double(std::numeric_limits<T>::max()));
+    f.read = [ref](const Scenario &s) {
+        return one(double(ref(const_cast<Scenario &>(s))));
+    };
+    f.write = [ref](Scenario &s, const Eigen::VectorXd &v) {
+        ref(s) = T(v[0]);
+    };
+    return f;
+}
+
+QString label(const char *text)
+{
+    return QCoreApplication::translate("learnid::ScenarioFields", text);
 }
 
 } // namespace
@@ -51,15 +83,17 @@ QList<ScenarioFieldGroup> scenarioFieldGroups()
     start.unit = QStringLiteral("m");
     start.kind = Kind::Vector;
     start.expectedCount = 2;
-    start.read = [](const Scenario &s) { return Eigen::VectorXd(s.line.start); };
-    start.write = [](Scenario &s, const Eigen::VectorXd &v) { s.line.start = v.head<2>(); };
+    start.read = [](const Scenario &s) {
+        return Eigen::VectorXd(s.line.start);
+    };
+    start.write = [](Scenario &s, const Eigen::VectorXd &v) {
+        s.line.start = v.head<2>();
+    };
 
-    ScenarioField trials;
-    trials.key = QStringLiteral("estimator.iterations");
-    trials.label = QCoreApplication::translate("learnid::ScenarioFields", "Number of trials");
-    trials.kind = Kind::Integer;
-    trials.read = [](const Scenario &s) { return one(s.iterations); };
-    trials.write = [](Scenario &s, const Eigen::VectorXd &v) { s.iterations = int(v[0]); };
+    const ScenarioField trials =
+        integer<int>(QStringLiteral("estimator.iterations"),
+                     label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Number of trials")),
+                     [](Scenario &s) -> int & { return s.iterations; });
 
     return {
         {QCoreApplication::translate("learnid::ScenarioFields", "Path (straight line)"),
@@ -70,7 +104,13 @@ QList<ScenarioFieldGroup> scenarioFieldGroups()
           number(QStringLiteral("path.directionDeg"),
                  QCoreApplication::translate("learnid::ScenarioFields", "Direction"),
                  QStringLiteral("deg"),
-                 [](Scenario &s) -> double & { return s.line.directionDeg; })}},
+                 [](Scenario &s) -> double & { return s.line.directionDeg; }),
+          number(QStringLiteral("path.restBefore"),
+                 label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Rest before the motion")),
+                 QStringLiteral("s"), [](Scenario &s) -> double & { return s.restBefore; }),
+          number(QStringLiteral("path.restAfter"),
+                 label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Rest after the motion")),
+                 QStringLiteral("s"), [](Scenario &s) -> double & { return s.restAfter; })}},
         {QCoreApplication::translate("learnid::ScenarioFields", "Torque limits"),
          {vector(QStringLiteral("robot.torqueLimits"),
                  QCoreApplication::translate("learnid::ScenarioFields", "Limit per joint"),
@@ -85,23 +125,54 @@ QList<ScenarioFieldGroup> scenarioFieldGroups()
           vector(QStringLiteral("controller.ki"), QStringLiteral("ki"),
                  QStringLiteral("N m/(rad s)"),
                  [](Scenario &s) -> Eigen::VectorXd & { return s.controller.ki; }),
-          vector(QStringLiteral("controller.kd"), QStringLiteral("kd"),
-                 QStringLiteral("N m s/rad"),
+          vector(QStringLiteral("controller.kd"), QStringLiteral("kd"), QStringLiteral("N m s/rad"),
                  [](Scenario &s) -> Eigen::VectorXd & { return s.controller.kd; }),
-          number(QStringLiteral("controller.lambda"),
-                 QCoreApplication::translate("learnid::ScenarioFields", "lambda (derivative filter)"),
-                 QStringLiteral("rad/s"),
-                 [](Scenario &s) -> double & { return s.controller.lambda; })}},
+          number(
+              QStringLiteral("controller.lambda"),
+              QCoreApplication::translate("learnid::ScenarioFields", "lambda (derivative filter)"),
+              QStringLiteral("rad/s"),
+              [](Scenario &s) -> double & { return s.controller.lambda; })}},
         {QCoreApplication::translate("learnid::ScenarioFields", "Estimator"),
          {number(QStringLiteral("estimator.rho"),
                  QCoreApplication::translate("learnid::ScenarioFields", "rho (filter F)"),
-                 QStringLiteral("rad/s"),
-                 [](Scenario &s) -> double & { return s.estimator.rho; }),
+                 QStringLiteral("rad/s"), [](Scenario &s) -> double & { return s.estimator.rho; }),
+          number(QStringLiteral("estimator.rankTolerance"),
+                 label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Rank tolerance")), QString(),
+                 [](Scenario &s) -> double & { return s.estimator.rankTolerance; }),
           trials,
+          integer<int>(QStringLiteral("estimator.repetitions"),
+                       label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Repetitions per trial")),
+                       [](Scenario &s) -> int & { return s.repetitions; }),
           vector(QStringLiteral("robot.initialParameters"),
                  QCoreApplication::translate("learnid::ScenarioFields", "Initial parameters"),
-                 QString(),
-                 [](Scenario &s) -> Eigen::VectorXd & { return s.initialParameters; })}},
+                 QString(), [](Scenario &s) -> Eigen::VectorXd & { return s.initialParameters; })}},
+        {label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Safety")),
+         {number(QStringLiteral("safety.maxTrackingErrorDeg"),
+                 label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Abort at tracking error")),
+                 QStringLiteral("deg"),
+                 [](Scenario &s) -> double & { return s.maxTrackingErrorDeg; }),
+          number(QStringLiteral("safety.stabilityMargin"),
+                 label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Required stability margin")),
+                 QStringLiteral("1/s"),
+                 [](Scenario &s) -> double & { return s.stabilityMargin; })}},
+        {label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Simulated robot")),
+         {vector(QStringLiteral("simulation.trueParameters"),
+                 label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "True parameters")), QString(),
+                 [](Scenario &s) -> Eigen::VectorXd & { return s.trueParameters; }),
+          integer<qint64>(QStringLiteral("simulation.encoderCounts"),
+                          label(QT_TRANSLATE_NOOP("learnid::ScenarioFields",
+                                                  "Encoder counts per revolution (0: ideal)")),
+                          [](Scenario &s) -> qint64 & { return s.encoderCounts; }),
+          number(QStringLiteral("simulation.torqueNoise"),
+                 label(QT_TRANSLATE_NOOP("learnid::ScenarioFields",
+                                         "Torque noise (fraction of limit)")),
+                 QString(), [](Scenario &s) -> double & { return s.torqueNoise; }),
+          integer<quint64>(QStringLiteral("simulation.seed"),
+                           label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Noise seed")),
+                           [](Scenario &s) -> quint64 & { return s.seed; }),
+          integer<int>(QStringLiteral("simulation.substeps"),
+                       label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "RK4 steps per sample")),
+                       [](Scenario &s) -> int & { return s.substeps; })}},
     };
 }
 
@@ -118,7 +189,9 @@ std::optional<Eigen::VectorXd> parseNumberList(const QString &text, QString *err
         bool ok = false;
         const double v = parts.at(i).toDouble(&ok); // QString::toDouble uses the C locale
         if (!ok || !std::isfinite(v)) {
-            *error = QCoreApplication::translate("learnid::ScenarioFields", "\"%1\" is not a number").arg(parts.at(i));
+            *error =
+                QCoreApplication::translate("learnid::ScenarioFields", "\"%1\" is not a number")
+                    .arg(parts.at(i));
             return std::nullopt;
         }
         values[i] = v;

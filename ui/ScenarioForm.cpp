@@ -130,11 +130,17 @@ void ScenarioForm::revalidate()
         const auto values = parseNumberList(row.edit->text(), &error);
         const int expected = row.field.expectedCount;
         if (values && expected > 0 && values->size() != expected) {
-            error = expected == 1 ? tr("enter one number")
-                                  : tr("enter %1 numbers, got %2").arg(expected).arg(values->size());
-        } else if (values && row.field.kind == ScenarioField::Kind::Integer
-                   && (*values)[0] != std::floor((*values)[0])) {
+            error = expected == 1
+                        ? tr("enter one number")
+                        : tr("enter %1 numbers, got %2").arg(expected).arg(values->size());
+        } else if (values && row.field.kind == ScenarioField::Kind::Integer &&
+                   (*values)[0] != std::floor((*values)[0])) {
             error = tr("enter a whole number");
+        } else if (values && row.field.kind == ScenarioField::Kind::Integer &&
+                   ((*values)[0] < row.field.minimum || (*values)[0] > row.field.maximum)) {
+            error = tr("enter a whole number from %1 to %2")
+                        .arg(row.field.minimum, 0, 'f', 0)
+                        .arg(row.field.maximum, 0, 'f', 0);
         }
         showReason(row, error);
         if (!error.isEmpty())
@@ -154,7 +160,8 @@ void ScenarioForm::revalidate()
             bool shown = false;
             for (Row &row : m_rows) {
                 if (keyBelongsTo(key, row.field.key)) {
-                    showReason(row, key == row.field.key ? problem : key + QStringLiteral(": ") + problem);
+                    showReason(row, key == row.field.key ? problem
+                                                         : key + QStringLiteral(": ") + problem);
                     shown = true;
                     break;
                 }

@@ -51,7 +51,12 @@ SessionPresenter::SessionPresenter(SessionController *controller, Views views, Q
             m_views.plot->setTrialCurves(t.index, trackingErrorCurves(t));
         if (t.learned())
             m_views.run->trialDone(int(m_controller->estimates().size()) - 1);
-        else
+        else if (t.status() == TrialStatus::Refused) { // nothing moved, nothing recorded
+            QString text = t.message;
+            if (!text.isEmpty())
+                text[0] = text[0].toUpper();
+            m_views.message->showMessage(text, MessageBar::Severity::Error);
+        } else
             m_views.message->showMessage(tr("Trial %1 %2: %3. Its data are kept.")
                                        .arg(t.index).arg(trialStatusName(t.status()), t.message),
                                    MessageBar::Severity::Error);

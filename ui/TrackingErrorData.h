@@ -20,8 +20,9 @@ struct TrackingErrorCurve
 };
 
 /// The curves of one trial, one per joint, each with at most maxPoints points: min/max
-/// decimation keeps every bucket's extremes, so peaks survive (maxPoints >= 4; 0 = all).
-QList<TrackingErrorCurve> trackingErrorCurves(const TrialResult &trial, int maxPoints = 2000);
+/// decimation keeps every bucket's extremes, so peaks survive (maxPoints >= 4; 0 = all). The
+/// default, 400 buckets, is about the width of the plot in pixels: more points draw no more.
+QList<TrackingErrorCurve> trackingErrorCurves(const TrialResult &trial, int maxPoints = 800);
 
 /// Min/max decimation of a sampled curve to at most maxPoints points, in time order.
 QList<QPointF> decimateMinMax(const QList<QPointF> &points, int maxPoints);

@@ -46,7 +46,10 @@ TrackingErrorPlot::TrackingErrorPlot(QWidget *parent)
     m_error->setLabelFormat(QStringLiteral("%.2f"));
     m_chart->addAxis(m_time, Qt::AlignBottom);
     m_chart->addAxis(m_error, Qt::AlignLeft);
+    // QChartView(QWidget *) makes a chart of its own, and setChart() only releases it.
+    QChart *placeholder = m_view->chart();
     m_view->setChart(m_chart);
+    delete placeholder;
     m_view->setRenderHint(QPainter::Antialiasing);
     m_view->setMinimumSize(360, 240);
 
@@ -147,23 +150,38 @@ double TrackingErrorPlot::axisInterval() const
     return m_error->tickInterval();
 }
 
+QLineSeries *TrackingErrorPlot::seriesAt(int i)
+{
+    // Series are reused from one redraw to the next: re-creating them made QtCharts lay the
+    // chart out again for every trial, the largest part of an update.
+    while (m_series.size() <= i) {
+        auto *series = new QLineSeries;
+        m_chart->addSeries(series);
+        series->attachAxis(m_time);
+        series->attachAxis(m_error);
+        m_series.append(series);
+    }
+    return m_series.at(i);
+}
+
 void TrackingErrorPlot::redraw()
 {
-    m_chart->removeAllSeries();
     const int selected = selectedTrial();
     QList<int> shown;
     if (selected < 0) {
         for (int i = 0; i < m_trials.size(); ++i)
             shown.append(i);
-        m_chart->setTitle(tr("Tracking error, all trials (solid: joint 1, dashed: joint 2; darker: later)"));
+        m_chart->setTitle(
+            tr("Tracking error, all trials (solid: joint 1, dashed: joint 2; darker: later)"));
     } else {
         shown.append(selected);
         m_chart->setTitle(tr("Tracking error, %1").arg(trialLabel(selected)));
     }
     double maxAbs = 0.0, tMax = 0.0, yMin = 0.0, yMax = 0.0;
+    int used = 0;
     for (int order = 0; order < shown.size(); ++order) {
         for (const TrackingErrorCurve &curve : m_trials.at(shown.at(order))) {
-            auto *series = new QLineSeries;
+            QLineSeries *series = seriesAt(used++);
             series->replace(curve.points);
             QPen pen(selected < 0 ? trialColor(order, int(shown.size()))
                                   : kJointColors[curve.joint % 4]);
@@ -171,11 +189,9 @@ void TrackingErrorPlot::redraw()
             if (selected < 0 && curve.joint > 0)
                 pen.setStyle(Qt::DashLine);
             series->setPen(pen);
-            series->setName(selected < 0 ? tr("trial %1, joint %2").arg(curve.trial).arg(curve.joint + 1)
-                                         : tr("joint %1").arg(curve.joint + 1));
-            m_chart->addSeries(series);
-            series->attachAxis(m_time);
-            series->attachAxis(m_error);
+            series->setName(selected < 0
+                                ? tr("trial %1, joint %2").arg(curve.trial).arg(curve.joint + 1)
+                                : tr("joint %1").arg(curve.joint + 1));
             maxAbs = std::max(maxAbs, curve.maxAbsDeg);
             for (const QPointF &p : curve.points) {
                 yMin = std::min(yMin, p.y());
@@ -184,6 +200,11 @@ void TrackingErrorPlot::redraw()
             if (!curve.points.isEmpty())
                 tMax = std::max(tMax, curve.points.constLast().x());
         }
+    }
+    while (m_series.size() > used) {
+        QLineSeries *series = m_series.takeLast();
+        m_chart->removeSeries(series);
+        delete series;
     }
     // Many overlaid trials make an unreadable legend: name joints by line style instead.
     m_chart->legend()->setVisible(selected >= 0 || shown.size() <= 4);

@@ -8,6 +8,7 @@ class QCheckBox;
 class QComboBox;
 class QChart;
 class QChartView;
+class QLineSeries;
 class QValueAxis;
 
 namespace learnid {
@@ -45,6 +46,7 @@ signals:
 
 private:
     void redraw();
+    QLineSeries *seriesAt(int i);
     QString trialLabel(int trial) const;
 
     QComboBox *m_selection;
@@ -54,6 +56,7 @@ private:
     QValueAxis *m_time;
     QValueAxis *m_error;
     QList<QList<TrackingErrorCurve>> m_trials; ///< by trial index
+    QList<QLineSeries *> m_series;             ///< in the chart, in drawing order
     bool m_followNewest = true;
 };
 

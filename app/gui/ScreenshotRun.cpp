@@ -1,10 +1,13 @@
 #include "ScreenshotRun.h"
 
+#include "ui/ApplyConfirmDialog.h"
+#include "ui/ApplyPreview.h"
 #include "ui/MainActions.h"
 #include "ui/MainWindow.h"
-#include "ui/TrackingErrorPlot.h"
 #include "ui/RobotPanel.h"
+#include "ui/ScenarioForm.h"
 #include "ui/SessionController.h"
+#include "ui/TrackingErrorPlot.h"
 
 #include <QAction>
 #include <QApplication>
@@ -14,16 +17,43 @@
 
 namespace learnid {
 
-ScreenshotRun::ScreenshotRun(MainWindow *window, QString path)
+namespace {
+
+const QStringList kViewNames = {QStringLiteral("main"), QStringLiteral("apply-dialog"),
+                                QStringLiteral("refused-check")};
+
+} // namespace
+
+ScreenshotRun::ScreenshotRun(MainWindow *window, QString path, View view)
     : QObject(window)
     , m_window(window)
     , m_path(std::move(path))
+    , m_view(view)
 {}
+
+std::optional<ScreenshotRun::View> ScreenshotRun::viewNamed(const QString &name)
+{
+    const int i = int(kViewNames.indexOf(name));
+    return i < 0 ? std::nullopt : std::optional<View>(View(i));
+}
+
+QStringList ScreenshotRun::viewNames()
+{
+    return kViewNames;
+}
 
 void ScreenshotRun::start()
 {
     SessionController *c = m_window->controller();
-    m_window->setApplyConfirmation([](const ApplyPreview &) { return true; });
+    m_window->setApplyConfirmation(
+        [this](const ApplyPreview &preview) { return confirmByScreenshot(preview); });
+    if (m_view == View::RefusedCheck) {
+        // The paper's derivative filter: stable for the initial estimate, not for the truth.
+        if (auto s = m_window->form()->scenario()) {
+            s->controller.lambda = 40.0;
+            m_window->form()->setScenario(*s);
+        }
+    }
     // stateChanged reaches the window first, so the actions are enabled when this runs.
     connect(c, &SessionController::stateChanged, this, [this, c] {
         if (!m_started && c->canRun() && c->history().isEmpty()) {
@@ -32,23 +62,51 @@ void ScreenshotRun::start()
         }
     });
     connect(c, &SessionController::runFinished, this, [this, c](bool all) {
+        if (m_view == View::RefusedCheck) {
+            if (all || c->history().isEmpty() ||
+                c->history().constLast().status() != TrialStatus::Refused)
+                return finish(QStringLiteral("the pre-trial check refused no trial"));
+            return grabWindowLater();
+        }
         if (!all)
             return finish(QStringLiteral("the simulated session did not complete"));
         c->accept(int(c->estimates().size()) - 1);
     });
-    connect(c, &SessionController::acceptedChanged, this, [this, c] { c->apply(); });
-    connect(c, &SessionController::applied, this, [this] {
-        // Let the views lay out the final data before grabbing.
-        m_window->plot()->setSelectedTrial(-1); // all trials overlaid, like the paper's figures
-        QTimer::singleShot(300, this, [this] {
-            const bool ok = m_window->grab().save(m_path, "PNG");
-            finish(ok ? QString() : QStringLiteral("cannot write %1").arg(m_path));
+    connect(c, &SessionController::acceptedChanged, this, [this] {
+        // The window's Apply action, so the confirmation (the dialog view) is asked for.
+        QTimer::singleShot(0, this, [this] {
+            QAction *apply = m_window->actions()->apply;
+            if (!apply->isEnabled())
+                return finish(QStringLiteral("Apply is not enabled after Accept"));
+            apply->trigger();
         });
     });
+    connect(c, &SessionController::applied, this, [this] { grabWindowLater(); });
     connect(c, &SessionController::openFailed, this, [this](const QString &e) { finish(e); });
     QTimer::singleShot(180000, this, [this] { finish(QStringLiteral("timed out")); });
     m_window->show();
     m_window->robotPanel()->connectButton()->click();
+}
+
+void ScreenshotRun::grabWindowLater()
+{
+    m_window->plot()->setSelectedTrial(-1); // all trials overlaid, like the paper's figures
+    // Let the views lay out the final data before grabbing.
+    QTimer::singleShot(300, this, [this] {
+        const bool ok = m_window->grab().save(m_path, "PNG");
+        finish(ok ? QString() : QStringLiteral("cannot write %1").arg(m_path));
+    });
+}
+
+bool ScreenshotRun::confirmByScreenshot(const ApplyPreview &preview)
+{
+    if (m_view != View::ApplyDialog)
+        return true;
+    ApplyConfirmDialog dialog(preview, m_window);
+    dialog.show();
+    const bool ok = dialog.grab().save(m_path, "PNG");
+    finish(ok ? QString() : QStringLiteral("cannot write %1").arg(m_path));
+    return false; // the dialog view applies nothing
 }
 
 void ScreenshotRun::finish(const QString &error)

@@ -2,27 +2,43 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
+#include <optional>
 
 namespace learnid {
 
 class MainWindow;
+struct ApplyPreview;
 
-/// `learnid --screenshot FILE.png`: connects the simulated robot, runs the scenario's trials,
-/// accepts and applies the last estimate, saves the window as PNG and quits the application
-/// (exit code 0, or 1 with a message on stderr).
+/// `learnid --screenshot FILE.png [--screenshot-view VIEW]`: connects the simulated robot, runs
+/// the scenario's trials and saves a PNG, then quits the application (exit code 0, or 1 with a
+/// message on stderr). The views:
+/// - `main` (default): the window after the session, the last estimate accepted and applied;
+/// - `apply-dialog`: the confirmation dialog of applying the last estimate (nothing is applied);
+/// - `refused-check`: the window after a session with the paper's lambda = 40, whose pre-trial
+///   check refuses the second trial.
 class ScreenshotRun : public QObject
 {
     Q_OBJECT
 
 public:
-    ScreenshotRun(MainWindow *window, QString path);
+    enum class View { Main, ApplyDialog, RefusedCheck };
+
+    ScreenshotRun(MainWindow *window, QString path, View view = View::Main);
     void start();
 
+    /// The view of a `--screenshot-view` value, nullopt when unknown.
+    static std::optional<View> viewNamed(const QString &name);
+    static QStringList viewNames();
+
 private:
+    void grabWindowLater();
+    bool confirmByScreenshot(const ApplyPreview &preview);
     void finish(const QString &error);
 
     MainWindow *m_window;
     QString m_path;
+    View m_view;
     bool m_started = false;
     bool m_done = false;
 };

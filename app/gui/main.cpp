@@ -10,6 +10,7 @@
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTranslator>
+#include <cstdio>
 #include <memory>
 
 namespace {
@@ -53,8 +54,21 @@ int main(int argc, char **argv)
         QStringLiteral("language"),
         QApplication::translate("main", "User interface language, e.g. de or zh_CN (default: as chosen in the app, else the system's)."),
         QStringLiteral("locale"));
-    parser.addOptions({screenshot, language});
+    const QCommandLineOption screenshotView(
+        QStringLiteral("screenshot-view"),
+        QApplication::translate("main", "What --screenshot shows: %1 (default: main).")
+            .arg(learnid::ScreenshotRun::viewNames().join(QStringLiteral(", "))),
+        QStringLiteral("view"), QStringLiteral("main"));
+    parser.addOptions({screenshot, screenshotView, language});
     parser.process(app);
+    const auto view = learnid::ScreenshotRun::viewNamed(parser.value(screenshotView));
+    if (!view) {
+        const QString known = learnid::ScreenshotRun::viewNames().join(QStringLiteral(", "));
+        const QString error = QApplication::translate(
+            "main", "learnid: unknown --screenshot-view '%1'; known: %2");
+        std::fprintf(stderr, "%s\n", qPrintable(error.arg(parser.value(screenshotView), known)));
+        return 1;
+    }
 
     // A screenshot must not depend on (or change) the technician's remembered settings.
     QTemporaryDir scratch;
@@ -68,7 +82,7 @@ int main(int argc, char **argv)
 
     learnid::MainWindow window(settings.get());
     if (parser.isSet(screenshot)) {
-        auto *run = new learnid::ScreenshotRun(&window, parser.value(screenshot));
+        auto *run = new learnid::ScreenshotRun(&window, parser.value(screenshot), *view);
         run->start();
     } else {
         window.show();

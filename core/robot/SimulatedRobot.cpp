@@ -33,27 +33,21 @@ QString SimulatedRobot::description() const
 
 TrialRecord SimulatedRobot::runTrial(const TrialPlan &plan, const TrialMonitor &monitor)
 {
-    std::seed_seq seq{quint64(m_options.seed), quint64(m_trialCount++)};
-    std::mt19937_64 rng(seq);
+    const quint64 noiseStream = m_trialCount++;
     if (m_model->dof() == 2)
-        return simulate<2>(plan, monitor, rng);
-    return simulate<Eigen::Dynamic>(plan, monitor, rng);
+        return simulate<2>(plan, monitor, noiseStream);
+    return simulate<Eigen::Dynamic>(plan, monitor, noiseStream);
 }
 
 template <int N>
 TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &monitor,
-                                     std::mt19937_64 &rng) const
+                                     quint64 noiseStream) const
 {
-    using Vector = Eigen::Matrix<double, N, 1>;
+    using Vector = typename ArmSimulation<N>::Vector;
     const int n = m_model->dof();
     const int samples = plan.samples();
     const double ts = plan.desired.samplePeriod;
-    const int substeps = std::max(1, m_options.substeps);
-    const double h = ts / substeps;
-    std::normal_distribution<double> normal(0.0, 1.0);
-    const double countAngle = m_options.encoderCounts > 0
-                                  ? 2.0 * M_PI / double(m_options.encoderCounts)
-                                  : 0.0;
+    ArmSimulation<N> arm(m_model, m_truePhi, m_options, ts, noiseStream);
 
     TrialRecord record;
     record.samplePeriod = ts;
@@ -61,8 +55,7 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
     record.tau.resize(n, samples);
 
     PidController pid(plan.controller);
-    Vector q = plan.desired.q.col(0); // the robot starts at rest at the path start
-    Vector qd = Vector::Zero(n);
+    arm.reset(plan.desired.q.col(0)); // the robot starts at rest at the path start
     Vector qMeasured(n), e(n), u(n), tauCommand(n), tauPlant(n), disturbance = Vector::Zero(n);
     if (m_faults.disturbanceTorque.size() == n)
         disturbance = m_faults.disturbanceTorque;
@@ -70,19 +63,14 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
 
     int recorded = 0;
     for (int k = 0; k < samples; ++k) {
-        if (countAngle > 0.0)
-            qMeasured = (q / countAngle).array().round() * countAngle;
-        else
-            qMeasured = q;
+        arm.measureAngles(qMeasured);
         e = plan.desired.q.col(k) - qMeasured;
 
         pid.step(e, u);
         tauCommand = (plan.feedforward.col(k) + u).cwiseMax(-limit).cwiseMin(limit);
         record.q.col(k) = qMeasured;
         record.tau.col(k) = tauCommand;
-        if (m_options.torqueNoise > 0.0)
-            for (int j = 0; j < n; ++j)
-                record.tau(j, k) += m_options.torqueNoise * limit[j] * normal(rng);
+        arm.addTorqueNoise(record.tau.col(k), limit);
         if (k == m_faults.nanTorqueAtSample)
             record.tau(0, k) = std::numeric_limits<double>::quiet_NaN();
         recorded = k + 1;
@@ -114,8 +102,7 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
         tauPlant = tauCommand;
         if (m_faults.disturbanceFromSample >= 0 && k >= m_faults.disturbanceFromSample)
             tauPlant += disturbance;
-        for (int s = 0; s < substeps; ++s)
-            m_model->rk4Step(q, qd, tauPlant, m_truePhi, h);
+        arm.integrate(tauPlant);
 
         if (monitor.progress && ((k + 1) % 100 == 0 || k + 1 == samples))
             monitor.progress(k + 1, samples);

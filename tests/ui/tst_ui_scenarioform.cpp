@@ -27,11 +27,15 @@ private slots:
         Scenario s;
         s.controller.lambda = 123;
         s.initialParameters = Eigen::Vector3d(1, 2, 3);
-        s.seed = 77; // not on the form: kept
+        s.seed = 77;
+        s.maxTrackingErrorDeg = 0.5;
+        s.estimator.accumulate = false; // not on the form: kept
         form.setScenario(s);
         QCOMPARE(form.scenario()->controller.lambda, 123.0);
         QCOMPARE(form.scenario()->initialParameters, s.initialParameters);
         QCOMPARE(form.scenario()->seed, quint64(77));
+        QCOMPARE(form.scenario()->maxTrackingErrorDeg, 0.5);
+        QCOMPARE(form.scenario()->estimator.accumulate, false);
     }
 
     void notANumber_isRefusedAtItsField()
@@ -66,6 +70,41 @@ private slots:
         QVERIFY(!form.reasonFor(QStringLiteral("robot.initialParameters")).isEmpty());
         type(form, QStringLiteral("estimator.iterations"), QStringLiteral("2.5"));
         QVERIFY(!form.reasonFor(QStringLiteral("estimator.iterations")).isEmpty());
+    }
+
+    void everyScenarioSection_isOnTheForm()
+    {
+        ScenarioForm form;
+        for (const char *key : {"path.restBefore", "path.restAfter", "estimator.rankTolerance",
+                                "estimator.repetitions", "safety.maxTrackingErrorDeg",
+                                "safety.stabilityMargin", "simulation.trueParameters",
+                                "simulation.encoderCounts", "simulation.torqueNoise",
+                                "simulation.seed", "simulation.substeps"})
+            QVERIFY2(form.findChild<QLineEdit *>(QLatin1String(key)), key);
+        type(form, QStringLiteral("simulation.encoderCounts"), QStringLiteral("65536"));
+        type(form, QStringLiteral("safety.maxTrackingErrorDeg"), QStringLiteral("0.25"));
+        QVERIFY(form.isValid());
+        QCOMPARE(form.scenario()->encoderCounts, qint64(65536));
+        QCOMPARE(form.scenario()->maxTrackingErrorDeg, 0.25);
+    }
+
+    void integerOutsideItsType_isRefusedNotWrapped()
+    {
+        ScenarioForm form;
+        type(form, QStringLiteral("simulation.seed"), QStringLiteral("-1"));
+        QVERIFY(!form.isValid());
+        const QString reason = form.reasonFor(QStringLiteral("simulation.seed"));
+        QVERIFY2(reason.contains(QStringLiteral("from 0")), qPrintable(reason));
+        type(form, QStringLiteral("estimator.iterations"), QStringLiteral("1e12"));
+        QVERIFY(!form.reasonFor(QStringLiteral("estimator.iterations")).isEmpty());
+    }
+
+    void safetyKey_isValidatedAtItsField()
+    {
+        ScenarioForm form;
+        type(form, QStringLiteral("safety.maxTrackingErrorDeg"), QStringLiteral("0"));
+        QVERIFY(!form.isValid());
+        QVERIFY(!form.reasonFor(QStringLiteral("safety.maxTrackingErrorDeg")).isEmpty());
     }
 };
 

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <QObject>
+#include <QSocketNotifier>
+#include <memory>
+
+namespace learnid::robotsim {
+
+/// Turns SIGINT, SIGTERM and the end of stdin into a queued stopRequested() in the Qt event loop
+/// (a signal handler only writes one byte to a socket pair, which is async-signal-safe).
+/// stdin is watched only when it is a pipe or a socket: a terminal or /dev/null never ends a run.
+/// One instance per process.
+class StopRequests : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit StopRequests(QObject *parent = nullptr);
+    ~StopRequests() override;
+
+signals:
+    void stopRequested(const QString &reason);
+
+private:
+    void readSignal();
+    void readStdin();
+
+    std::unique_ptr<QSocketNotifier> m_signalNotifier;
+    std::unique_ptr<QSocketNotifier> m_stdinNotifier;
+};
+
+} // namespace learnid::robotsim

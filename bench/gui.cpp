@@ -1,0 +1,189 @@
+// GUI benchmark (issue 3 targets): start-up to the first painted window, the update of the plots,
+// table and chart after each of 10 trials, and memory over 100 trials. Prints Markdown.
+// Usage: learnid-bench-gui [startups] (QT_QPA_PLATFORM=offscreen without a display).
+// Internally it starts copies of itself: `--startup-child` and `--memory-child gui|headless`.
+#include "BenchSupport.h"
+#include "ui/ConvergenceChart.h"
+#include "ui/ConvergenceTableModel.h"
+#include "ui/MainWindow.h"
+#include "ui/SessionController.h"
+#include "ui/SessionInfo.h"
+#include "ui/TrackingErrorData.h"
+#include "ui/TrackingErrorPlot.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <cstdio>
+#include <unistd.h>
+
+using namespace learnid;
+
+namespace {
+
+/// Resident set size of this process [MiB] (/proc/self/statm).
+double rssMiB()
+{
+    QFile f(QStringLiteral("/proc/self/statm"));
+    if (!f.open(QIODevice::ReadOnly))
+        return 0.0;
+    const QList<QByteArray> fields = f.readAll().split(' ');
+    return fields.size() > 1 ? fields[1].toDouble() * double(sysconf(_SC_PAGESIZE)) / 1048576.0
+                             : 0.0;
+}
+
+/// Child: shows the main window and prints when its first paint is done.
+int startupChild(QApplication &app)
+{
+    QTemporaryDir dir;
+    QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+    MainWindow window(&settings);
+    window.show();
+    QTimer::singleShot(0, &app, [&] {
+        window.repaint(); // the first frame, synchronously
+        std::printf("shown\n");
+        std::fflush(stdout);
+        app.quit();
+    });
+    return app.exec();
+}
+
+/// Wall time from QProcess::start to the child's "shown" [ms], median of `runs`.
+double startupMs(const QString &self, int runs)
+{
+    std::vector<double> ms;
+    for (int r = 0; r < runs; ++r) {
+        QProcess child;
+        QElapsedTimer timer;
+        timer.start();
+        child.start(self, {QStringLiteral("--startup-child")});
+        while (child.waitForReadyRead(10000))
+            if (child.readAll().contains("shown"))
+                break;
+        ms.push_back(double(timer.nsecsElapsed()) / 1e6);
+        child.waitForFinished(10000);
+    }
+    return bench::median(ms);
+}
+
+/// The presenter's work after trial k of a 10-trial session, timed with the repaint.
+void updateTimes()
+{
+    Scenario s;
+    auto session = bench::makeSession(s);
+    session->runTrials(10);
+    const QVector<TrialResult> history(session->history().begin(), session->history().end());
+    const QVector<Eigen::VectorXd> estimates(session->estimates().begin(),
+                                             session->estimates().end());
+    QList<ParameterInfo> parameters;
+    for (int i = 0; i < int(s.trueParameters.size()); ++i)
+        parameters << makeRobotModel(s.model)->parameters()[i];
+
+    QTemporaryDir dir;
+    QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+    MainWindow window(&settings);
+    window.resize(1400, 900);
+    window.show();
+    QCoreApplication::processEvents();
+    window.tableModel()->setParameters(parameters, s.trueParameters);
+    auto *chart = window.findChild<ConvergenceChart *>();
+    std::printf("| trial | samples | plot [ms] | table [ms] | chart [ms] | repaint [ms] | "
+                "total [ms] |\n|---|---|---|---|---|---|---|\n");
+    double worst = 0.0;
+    for (int k = 0; k < history.size(); ++k) {
+        QElapsedTimer t;
+        t.start();
+        window.plot()->setTrialCurves(history[k].index, trackingErrorCurves(history[k]));
+        QCoreApplication::processEvents();
+        const double a = double(t.nsecsElapsed()) / 1e6;
+        window.tableModel()->setHistory(history.mid(0, k + 1), estimates.mid(0, k + 2));
+        QCoreApplication::processEvents();
+        const double b = double(t.nsecsElapsed()) / 1e6;
+        chart->setData(parameters, estimates.mid(0, k + 2), s.trueParameters);
+        QCoreApplication::processEvents();
+        const double d = double(t.nsecsElapsed()) / 1e6;
+        window.repaint();
+        const double ms = double(t.nsecsElapsed()) / 1e6;
+        worst = std::max(worst, ms);
+        std::printf("| %d | %d | %.1f | %.1f | %.1f | %.1f | %.1f |\n", history[k].index,
+                    history[k].record.samples(), a, b - a, d - b, ms - d, ms);
+    }
+    std::printf("\nWorst update: %.1f ms (target < 50 ms).\n\n", worst);
+}
+
+/// Child: 100 trials through the window's controller (gui) or a bare session (headless);
+/// prints "trials rss" every 10 trials.
+int memoryChild(QApplication &app, bool gui)
+{
+    Scenario s;
+    if (!gui) {
+        auto session = bench::makeSession(s);
+        for (int k = 10; k <= 100; k += 10) {
+            session->runTrials(10);
+            std::printf("%d %.1f\n", k, rssMiB());
+        }
+        return 0;
+    }
+    QTemporaryDir dir;
+    QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+    MainWindow window(&settings);
+    window.show();
+    SessionController *c = window.controller();
+    QObject::connect(c, &SessionController::opened, c, [c] { c->runTrials(100); });
+    QObject::connect(c, &SessionController::historyChanged, c, [c] {
+        if (c->history().size() % 10 == 0 && !c->history().isEmpty())
+            std::printf("%d %.1f\n", int(c->history().size()), rssMiB());
+        std::fflush(stdout);
+    });
+    QObject::connect(c, &SessionController::runFinished, &app, &QApplication::quit);
+    QObject::connect(c, &SessionController::openFailed, &app, [&app] { app.exit(1); });
+    c->open(s);
+    return app.exec();
+}
+
+void memory(const QString &self)
+{
+    std::printf(
+        "| trials | RSS with the GUI [MiB] | RSS headless session [MiB] |\n|---|---|---|\n");
+    QProcess gui, headless;
+    gui.start(self, {QStringLiteral("--memory-child"), QStringLiteral("gui")});
+    headless.start(self, {QStringLiteral("--memory-child"), QStringLiteral("headless")});
+    gui.waitForFinished(600000);
+    headless.waitForFinished(600000);
+    const QList<QByteArray> a = gui.readAllStandardOutput().trimmed().split('\n');
+    const QList<QByteArray> b = headless.readAllStandardOutput().trimmed().split('\n');
+    for (int i = 0; i < std::min(a.size(), b.size()); ++i) {
+        const QList<QByteArray> x = a[i].split(' '), y = b[i].split(' ');
+        if (x.size() == 2 && y.size() == 2)
+            std::printf("| %s | %s | %s |\n", x[0].constData(), x[1].constData(), y[1].constData());
+    }
+    std::printf("\n");
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QApplication app(argc, argv);
+    registerSessionMetaTypes();
+    const QStringList args = app.arguments();
+    if (args.contains(QStringLiteral("--startup-child")))
+        return startupChild(app);
+    const int mem = int(args.indexOf(QStringLiteral("--memory-child")));
+    if (mem > 0 && mem + 1 < args.size())
+        return memoryChild(app, args[mem + 1] == QStringLiteral("gui"));
+
+    const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 7;
+    const QString self = QCoreApplication::applicationFilePath();
+    std::printf("Platform: %s\n\n", qPrintable(QGuiApplication::platformName()));
+    std::printf("Start-up to the first painted main window: median %.0f ms over %d runs "
+                "(target < 1000 ms).\n\n",
+                startupMs(self, runs), runs);
+    updateTimes();
+    memory(self);
+    return 0;
+}

@@ -1,0 +1,51 @@
+#include "cansim/StoredParameterSet.h"
+
+#include "can/ManufacturerObjects.h"
+
+namespace learnid {
+
+namespace ob = objects;
+
+void StoredParameterSet::store(const ObjectDictionary &dictionary)
+{
+    m_raw.clear();
+    for (quint8 sub = ob::gainKp; sub <= ob::gainLambda; ++sub)
+        m_raw[key(ob::gains, sub)] = dictionary.bytes(ob::gains, sub);
+    const int count = int(dictionary.value(ob::identifiedParameters, 0));
+    for (int sub = 0; sub <= count; ++sub) {
+        m_raw[key(ob::identifiedParameters, quint8(sub))] =
+            dictionary.bytes(ob::identifiedParameters, quint8(sub));
+    }
+    m_raw[key(ob::torqueLimit, 0)] = dictionary.bytes(ob::torqueLimit, 0);
+}
+
+Eigen::VectorXd StoredParameterSet::parameters() const
+{
+    const auto count = m_raw.find(key(ob::identifiedParameters, 0));
+    if (count == m_raw.end())
+        return {};
+    Eigen::VectorXd phi(quint8(count->second.at(0)));
+    for (int i = 0; i < phi.size(); ++i) {
+        phi[i] = canopen::decodeValue(canopen::DataType::Real32,
+                                      m_raw.at(key(ob::identifiedParameters, quint8(i + 1))));
+    }
+    return phi;
+}
+
+void StoredParameterSet::restore(ObjectDictionary &dictionary,
+                                 const DriveNodeSettings &settings) const
+{
+    if (!isEmpty()) {
+        for (const auto &[k, raw] : m_raw)
+            dictionary.setBytes(quint16(k >> 8), quint8(k & 0xFF), raw);
+        return;
+    }
+    dictionary.setValue(ob::gains, ob::gainKp, settings.kp);
+    dictionary.setValue(ob::gains, ob::gainKi, settings.ki);
+    dictionary.setValue(ob::gains, ob::gainKd, settings.kd);
+    dictionary.setValue(ob::gains, ob::gainLambda, settings.lambda);
+    dictionary.setValue(ob::identifiedParameters, 0, 0);
+    dictionary.setValue(ob::torqueLimit, 0, settings.torqueLimit);
+}
+
+} // namespace learnid

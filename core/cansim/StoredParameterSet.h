@@ -1,0 +1,31 @@
+#pragma once
+
+#include "can/ObjectDictionary.h"
+#include "cansim/DriveSettings.h"
+
+#include <Eigen/Core>
+#include <map>
+
+namespace learnid {
+
+/// The non-volatile memory of a simulated drive: the controller objects 0x2100:1..4, the
+/// identified parameters 0x2200:0..count and the torque limit 0x2300 as they were at the last
+/// "save" (0x1010:1), restored by NMT reset node.
+class StoredParameterSet
+{
+public:
+    bool isEmpty() const { return m_raw.empty(); }
+    /// Copies the objects from the dictionary.
+    void store(const ObjectDictionary &dictionary);
+    /// The identified parameters of the set (0x2200:1..count); empty when nothing was stored.
+    Eigen::VectorXd parameters() const;
+    /// Writes the set back into the dictionary, or the defaults of settings when nothing was
+    /// stored (gains, torque limit, parameter count 0).
+    void restore(ObjectDictionary &dictionary, const DriveNodeSettings &settings) const;
+
+private:
+    static quint32 key(quint16 index, quint8 sub) { return (quint32(index) << 8) | sub; }
+    std::map<quint32, QByteArray> m_raw; ///< (index << 8 | sub) -> raw value
+};
+
+} // namespace learnid
