@@ -27,7 +27,64 @@ QString usageText()
               "      Run a commissioning session on the simulated robot. The table goes to\n"
               "      stdout, progress to stderr. Output paths must lie inside the workspace\n"
               "      (default: the current directory). Files are written only when every\n"
-              "      trial completed.\n");
+              "      trial completed.\n"
+              "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
+              "      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);\n"
+              "      --can-log writes every trial's frames as a candump log into DIR.\n"
+              "  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]\n"
+              "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
+              "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
+              "      Re-identify from recorded trials: the session runs again with each log\n"
+              "      (one per trial, in order) answering in place of the robot.\n");
+}
+
+// --robot and the CAN options; returns the error naming the option and value. An empty
+// run->robot on return marks a usage error (an option that does not belong to the robot).
+QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOption &robot,
+                        const QCommandLineOption &plugin, const QCommandLineOption &interface,
+                        const QCommandLineOption &nodes, bool replay, RunOptions *run)
+{
+    run->robot = replay ? QStringLiteral("replay")
+                        : (parser.isSet(robot) ? parser.value(robot) : QStringLiteral("sim"));
+    if (run->robot != QLatin1String("sim") && run->robot != QLatin1String("can") && !replay)
+        return tr("--robot: must be 'sim' or 'can', got '%1'").arg(run->robot);
+    const bool can = run->robot == QLatin1String("can");
+    if (!replay && !can) {
+        for (const QCommandLineOption *o : {&plugin, &interface, &nodes}) {
+            if (parser.isSet(*o)) {
+                const QString name = o->names().constFirst();
+                run->robot.clear();
+                return tr("--%1 needs --robot can").arg(name);
+            }
+        }
+        if (parser.isSet(QStringLiteral("can-log"))) {
+            run->robot.clear();
+            return tr("--can-log needs --robot can");
+        }
+        return {};
+    }
+    if (can) {
+        if (!parser.isSet(plugin) || parser.value(plugin).isEmpty())
+            return tr("--robot can needs --can-plugin (e.g. socketcan, virtualcan)");
+        if (!parser.isSet(interface) || parser.value(interface).isEmpty())
+            return tr("--robot can needs --can-interface (e.g. can0)");
+        run->can.plugin = parser.value(plugin);
+        run->can.interface = parser.value(interface);
+    } else {
+        run->can.plugin = QStringLiteral("candump");
+        run->can.interface = QStringLiteral("replay");
+    }
+    if (parser.isSet(nodes)) {
+        QString error;
+        run->can.nodes = parseNodeList(parser.value(nodes), &error);
+        if (run->can.nodes.isEmpty())
+            return tr("--nodes: %1 in '%2'").arg(error, parser.value(nodes));
+    }
+    const QString invalid = canRobotOptionsError(run->can);
+    if (!invalid.isEmpty())
+        return parser.isSet(nodes) ? tr("--nodes %1: %2").arg(parser.value(nodes), invalid)
+                                   : tr("--robot %1: %2").arg(run->robot, invalid);
+    return {};
 }
 
 } // namespace
@@ -37,8 +94,8 @@ CommandLine parseCommandLine(const QStringList &args)
     CommandLine cl;
     cl.usage = usageText();
     const QString command = args.size() > 1 ? args.at(1) : QString();
-    if (command == QLatin1String("--help") || command == QLatin1String("-h")
-        || command == QLatin1String("help")) {
+    if (command == QLatin1String("--help") || command == QLatin1String("-h") ||
+        command == QLatin1String("help")) {
         cl.command = CommandLine::Command::Help;
         return cl;
     }
@@ -66,6 +123,17 @@ CommandLine parseCommandLine(const QStringList &args)
     const QCommandLineOption workspace(QStringLiteral("workspace"), tr("Workspace folder."),
                                        QStringLiteral("DIR"));
     const QCommandLineOption quiet(QStringLiteral("quiet"), tr("No progress on stderr."));
+    const QCommandLineOption robot(QStringLiteral("robot"), tr("sim or can."), QStringLiteral("R"));
+    const QCommandLineOption canPlugin(QStringLiteral("can-plugin"), tr("QCanBus plugin."),
+                                       QStringLiteral("P"));
+    const QCommandLineOption canInterface(QStringLiteral("can-interface"), tr("CAN interface."),
+                                          QStringLiteral("I"));
+    const QCommandLineOption nodes(QStringLiteral("nodes"), tr("CANopen node per joint."),
+                                   QStringLiteral("LIST"));
+    const QCommandLineOption canLog(QStringLiteral("can-log"), tr("Candump log folder."),
+                                    QStringLiteral("DIR"));
+    const QCommandLineOption candump(QStringLiteral("candump"), tr("Recorded trial log."),
+                                     QStringLiteral("FILE"));
 
     if (command == QLatin1String("scenario")) {
         parser.addOption(print);
@@ -78,14 +146,20 @@ CommandLine parseCommandLine(const QStringList &args)
         }
         return cl;
     }
-    if (command != QLatin1String("run")) {
-        cl.error = command.isEmpty() ? tr("no command given")
-                                     : tr("unknown command '%1'").arg(command);
+    const bool replay = command == QLatin1String("replay");
+    if (command != QLatin1String("run") && !replay) {
+        cl.error =
+            command.isEmpty() ? tr("no command given") : tr("unknown command '%1'").arg(command);
         return cl;
     }
 
     parser.addOptions(
         {scenario, estimator, iterations, report, exportFile, trialCsv, apply, workspace, quiet});
+    parser.addOption(nodes);
+    if (replay)
+        parser.addOption(candump);
+    else
+        parser.addOptions({robot, canPlugin, canInterface, canLog});
     if (!parser.parse(args.mid(1))) {
         cl.error = parser.errorText();
         return cl;
@@ -109,24 +183,49 @@ CommandLine parseCommandLine(const QStringList &args)
         }
         run.iterations = n;
     }
+    const QString canError =
+        parseCanOptions(parser, robot, canPlugin, canInterface, nodes, replay, &run);
+    if (!canError.isEmpty()) {
+        cl.error = canError;
+        cl.errorCode = run.robot.isEmpty() ? ExitUsage : ExitBadInput;
+        return cl;
+    }
+    if (replay) {
+        run.candumpFiles = parser.values(candump);
+        if (run.candumpFiles.isEmpty()) {
+            cl.error = tr("'replay' needs at least one --candump FILE");
+            return cl;
+        }
+        if (run.iterations && *run.iterations > run.candumpFiles.size()) {
+            cl.error = tr("--iterations: %1 trials need %1 logs, %2 given")
+                           .arg(*run.iterations)
+                           .arg(run.candumpFiles.size());
+            cl.errorCode = ExitBadInput;
+            return cl;
+        }
+    }
     run.apply = parser.isSet(apply);
     run.quiet = parser.isSet(quiet);
     const QString ws = parser.isSet(workspace) ? parser.value(workspace) : QDir::currentPath();
     try {
         if (parser.isSet(report))
-            run.reportPath = resolveInWorkspace(ws, parser.value(report), QStringLiteral("--report"));
+            run.reportPath =
+                resolveInWorkspace(ws, parser.value(report), QStringLiteral("--report"));
         if (parser.isSet(exportFile))
             run.exportPath =
                 resolveInWorkspace(ws, parser.value(exportFile), QStringLiteral("--export"));
         if (parser.isSet(trialCsv))
             run.trialCsvDir =
                 resolveInWorkspace(ws, parser.value(trialCsv), QStringLiteral("--trial-csv"));
+        if (!replay && parser.isSet(canLog))
+            run.can.candumpDir =
+                resolveInWorkspace(ws, parser.value(canLog), QStringLiteral("--can-log"));
     } catch (const Error &e) {
         cl.error = e.message();
         cl.errorCode = ExitBadInput;
         return cl;
     }
-    cl.command = CommandLine::Command::Run;
+    cl.command = replay ? CommandLine::Command::Replay : CommandLine::Command::Run;
     return cl;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "canrobot/CanRobotOptions.h"
+
 #include <QString>
 #include <QStringList>
 #include <optional>
@@ -9,8 +11,8 @@ namespace learnid::cli {
 /// Exit codes of learnid-cli (docs/cli.md).
 enum ExitCode {
     ExitOk = 0,
-    ExitUsage = 1,      ///< unknown command or option
-    ExitBadInput = 2,   ///< a file or value the tool cannot use; nothing was written
+    ExitUsage = 1,       ///< unknown command or option
+    ExitBadInput = 2,    ///< a file or value the tool cannot use; nothing was written
     ExitTrialFailed = 3, ///< a trial was refused, aborted or faulted; nothing was written
     ExitWriteFailed = 4, ///< an output could not be written; no output was left half-written
 };
@@ -26,12 +28,15 @@ struct RunOptions
     QString trialCsvDir;
     bool apply = false;
     bool quiet = false;
+    QString robot = QStringLiteral("sim"); ///< "sim", "can", or "replay" (`learnid-cli replay`)
+    CanRobotOptions can;                   ///< --can-plugin, --can-interface, --nodes, --can-log
+    QStringList candumpFiles;              ///< `replay`: the trial logs, in trial order
 };
 
 /// The parsed command line: a command and its options, or an error to print with usage.
 struct CommandLine
 {
-    enum class Command { None, PrintScenario, Run, Help, Version } command = Command::None;
+    enum class Command { None, PrintScenario, Run, Replay, Help, Version } command = Command::None;
     RunOptions run;
     QString error;
     ExitCode errorCode = ExitUsage; ///< ExitUsage for syntax, ExitBadInput for a bad value

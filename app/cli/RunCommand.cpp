@@ -1,5 +1,8 @@
 #include "cli/RunCommand.h"
 
+#include "can/CandumpLog.h"
+#include "canrobot/CanRobot.h"
+#include "canrobot/CandumpReplayDevice.h"
 #include "cli/ResultTable.h"
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
@@ -35,8 +38,8 @@ extern "C" void onInterrupt(int)
 
 Scenario loadScenario(const RunOptions &options)
 {
-    Scenario scenario = options.scenarioPath.isEmpty() ? Scenario{}
-                                                       : readScenarioFile(options.scenarioPath);
+    Scenario scenario =
+        options.scenarioPath.isEmpty() ? Scenario{} : readScenarioFile(options.scenarioPath);
     if (options.law)
         scenario.law = *options.law;
     if (options.iterations)
@@ -67,11 +70,33 @@ QList<QPair<QString, QByteArray>> buildOutputs(const RunOptions &options,
     if (!options.trialCsvDir.isEmpty()) {
         const QDir dir(options.trialCsvDir);
         for (const TrialResult &t : session.history()) {
-            const QString name = QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
+            const QString name =
+                QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
             files.append({dir.filePath(name), trialCsv(t.plan(), t.record)});
         }
     }
     return files;
+}
+
+// The robot the options ask for. A CAN robot is connected here, so that an unreachable bus is
+// reported before the session starts (connectError set, robot null).
+std::shared_ptr<Robot> makeRobot(const RunOptions &options, const Scenario &scenario,
+                                 std::shared_ptr<const RobotModel> model, QString *connectError)
+{
+    if (options.robot == QLatin1String("sim"))
+        return makeSimulatedRobot(scenario, model);
+    CanDeviceFactory factory;
+    if (options.robot == QLatin1String("replay")) {
+        QList<CandumpEntry> entries;
+        for (const QString &file : options.candumpFiles)
+            entries += candump::readFile(file); // throws Error naming file and line
+        factory = [entries](QString *) {
+            return new CandumpReplayDevice(entries);
+        };
+    }
+    auto robot = std::make_shared<CanRobot>(std::move(model), options.can, std::move(factory));
+    *connectError = robot->connectBus();
+    return connectError->isEmpty() ? robot : nullptr;
 }
 
 } // namespace
@@ -88,9 +113,16 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
     std::unique_ptr<CommissioningSession> session;
     try {
         scenario = loadScenario(options);
+        if (options.robot == QLatin1String("replay") && !options.iterations)
+            scenario.iterations = int(options.candumpFiles.size());
         const auto model = makeRobotModel(scenario.model);
-        session = std::make_unique<CommissioningSession>(scenario, model,
-                                                         makeSimulatedRobot(scenario, model));
+        QString connectError;
+        std::shared_ptr<Robot> robot = makeRobot(options, scenario, model, &connectError);
+        if (!robot) {
+            err << tr("learnid-cli: error: %1").arg(connectError) << Qt::endl;
+            return ExitTrialFailed;
+        }
+        session = std::make_unique<CommissioningSession>(scenario, model, std::move(robot));
     } catch (const Error &e) {
         err << tr("learnid-cli: error: %1").arg(e.message()) << Qt::endl;
         return ExitBadInput;
@@ -114,8 +146,8 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
     out.flush();
     if (!completed) {
         const TrialResult &last = session->history().constLast();
-        err << tr("learnid-cli: error: %1").arg(last.message.isEmpty() ? trialStatusName(last.status())
-                                                                        : last.message)
+        err << tr("learnid-cli: error: %1")
+                   .arg(last.message.isEmpty() ? trialStatusName(last.status()) : last.message)
             << Qt::endl
             << tr("learnid-cli: no files written") << Qt::endl;
         return ExitTrialFailed;
@@ -141,7 +173,8 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
         writeFilesAtomically(files);
         if (!options.quiet)
             for (const auto &f : files)
-                err << tr("learnid-cli: wrote %1").arg(QDir::toNativeSeparators(f.first)) << Qt::endl;
+                err << tr("learnid-cli: wrote %1").arg(QDir::toNativeSeparators(f.first))
+                    << Qt::endl;
     } catch (const Error &e) {
         err << tr("learnid-cli: error: %1").arg(e.message()) << Qt::endl;
         return ExitWriteFailed;

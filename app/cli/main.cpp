@@ -2,6 +2,7 @@
 #include "cli/RunCommand.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 #include <QTextStream>
 #include <cstdio>
 
@@ -25,6 +26,7 @@ int main(int argc, char **argv)
     case CommandLine::Command::PrintScenario:
         return printScenarioCommand(out);
     case CommandLine::Command::Run:
+    case CommandLine::Command::Replay:
         return runCommand(cl.run, out, err);
     case CommandLine::Command::None:
         break;

@@ -103,8 +103,13 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
     const QCommandLineOption refuse(QStringLiteral("refuse-sdo"),
                                     tr("Fault: SDO writes to this object abort with 0x08000020."),
                                     tr("IDX:SUB"));
-    parser.addOptions(
-        {help, version, plugin, interface, nodes, scenario, state, drop, silent, emcy, refuse});
+    const QCommandLineOption setPointTimeout(
+        QStringLiteral("setpoint-timeout"),
+        tr("SYNC periods in Operation enabled without a set-point before a drive faults with "
+           "EMCY 0x8100 (default 3; raise it on a heavily loaded machine)."),
+        tr("N"));
+    parser.addOptions({help, version, plugin, interface, nodes, scenario, state, drop, silent,
+                       emcy, refuse, setPointTimeout});
     cl.usage = parser.helpText();
 
     if (!parser.parse(arguments)) {
@@ -154,6 +159,14 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
         if (error.isEmpty() && k > std::numeric_limits<int>::max())
             error = tr("--emcy-at-sample: '%1' is too large").arg(parser.value(emcy));
         o.faults.emcyAtSample = int(k);
+    }
+    if (error.isEmpty() && parser.isSet(setPointTimeout)) {
+        qint64 n = 0;
+        error = parseInteger(QStringLiteral("setpoint-timeout"), parser.value(setPointTimeout), 1, &n);
+        if (error.isEmpty() && n > 100000)
+            error = tr("--setpoint-timeout: '%1' is too large (at most 100000)")
+                        .arg(parser.value(setPointTimeout));
+        o.setPointTimeoutSyncs = int(n);
     }
     if (error.isEmpty() && parser.isSet(refuse))
         error = parseRefusal(parser.value(refuse), &o.faults);

@@ -24,6 +24,7 @@ struct SimOptions
     QString scenarioPath; ///< empty: the paper scenario
     QString statePath;    ///< empty: no state file
     CanSimFaults faults;
+    int setPointTimeoutSyncs = cansim::missedSetPointLimit;
 };
 
 struct SimCommandLine

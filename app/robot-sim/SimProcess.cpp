@@ -1,6 +1,7 @@
 #include "robot-sim/SimProcess.h"
 
 #include "can/CanLink.h"
+#include "can/TcpLowLatency.h"
 #include "cansim/CanArmSimulator.h"
 #include "cansim/ScenarioCanArm.h"
 #include "io/AtomicFile.h"
@@ -22,6 +23,7 @@ SimProcess::SimProcess(SimOptions options, QTextStream &out, QTextStream &err)
     m_connectTimer.setSingleShot(true);
     m_connectTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_connectTimer, &QTimer::timeout, this, &SimProcess::onConnectTimeout);
+    connect(&m_noDelayTimer, &QTimer::timeout, this, [] { setNoDelayOnAllTcpSockets(); });
 }
 
 SimProcess::~SimProcess()
@@ -68,6 +70,7 @@ int SimProcess::setUp()
         validateScenario(scenario);
         const auto model = makeRobotModel(scenario.model);
         settings = canArmSettings(scenario, model, m_options.nodes);
+        settings.setPointTimeoutSyncs = m_options.setPointTimeoutSyncs;
     } catch (const Error &e) {
         m_err << tr("learnid-robot-sim: error: %1").arg(e.message()) << Qt::endl;
         return ExitUsage;
@@ -113,6 +116,10 @@ void SimProcess::onStateChanged(QCanBusDevice::CanBusDeviceState state)
     if (state == QCanBusDevice::ConnectedState && !m_connected) {
         m_connected = true;
         m_connectTimer.stop();
+        // virtualcan is TCP: without TCP_NODELAY frames of consecutive SYNC periods would be
+        // held back and arrive at once (see TcpLowLatency.h). The master connects later.
+        setNoDelayOnAllTcpSockets();
+        m_noDelayTimer.start(50);
         m_simulator->start();
         m_out << "ready" << Qt::endl;
     } else if (state == QCanBusDevice::UnconnectedState && m_connected) {

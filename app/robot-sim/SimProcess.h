@@ -48,6 +48,7 @@ private:
     std::unique_ptr<CanLink> m_link;
     std::unique_ptr<CanArmSimulator> m_simulator;
     QTimer m_connectTimer;
+    QTimer m_noDelayTimer; ///< TCP_NODELAY on sockets of peers that connected since
     QEventLoop m_loop;
     bool m_connected = false;
     bool m_finished = false;

@@ -79,6 +79,7 @@ CanArmSimulator::CanArmSimulator(CanLink *link, const CanArmSettings &settings,
         d.increments = measurement.encoderCounts;
         d.parameterCount = settings.model->parameterCount();
         d.syncPeriodUs = m_syncPeriodUs;
+        d.setPointTimeoutSyncs = settings.setPointTimeoutSyncs;
         auto *node = new DriveNode(link, d, this);
         connect(node, &DriveNode::parametersStored, this, &CanArmSimulator::parametersStored);
         if (faults.refusedWrite) {

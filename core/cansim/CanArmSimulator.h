@@ -27,6 +27,9 @@ struct CanArmSettings
     Eigen::VectorXd torqueLimits;   ///< default 0x2300 [N m] (n)
     Eigen::VectorXd initialPose;    ///< the arm at rest at start [rad] (n)
     QList<int> nodes = {1, 2};      ///< node id of joint 1, 2, ...
+    /// Consecutive SYNCs in Operation enabled without a fresh set-point before a drive faults
+    /// (EMCY 0x8100). Real drives allow 1-3; a loaded test machine may need more.
+    int setPointTimeoutSyncs = cansim::missedSetPointLimit;
 };
 
 /// Faults the simulator injects on request (learnid-robot-sim's options).

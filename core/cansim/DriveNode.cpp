@@ -183,7 +183,7 @@ DriveSyncOutput DriveNode::sync(double q)
             m_command = m_received;
             m_missed = 0;
             m_followed = true;
-        } else if (++m_missed >= cansim::missedSetPointLimit) {
+        } else if (++m_missed >= m_settings.setPointTimeoutSyncs) {
             fault(cansim::emcyCommunication, cansim::errorRegisterCommunication);
         }
         if (++m_enabledSyncs == m_faultAtEnabledSync && m_drive.state() == State::OperationEnabled)

@@ -43,6 +43,7 @@ struct DriveNodeSettings
     qint64 increments = cansim::idealIncrements; ///< encoder increments per revolution
     int parameterCount = 3;                      ///< entries 0x2200:1..m
     quint32 syncPeriodUs = 2000; ///< 0x1006 and the default interpolation period 0x60C2
+    int setPointTimeoutSyncs = cansim::missedSetPointLimit; ///< SYNCs without one -> fault
 };
 
 } // namespace learnid

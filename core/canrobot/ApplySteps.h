@@ -1,0 +1,17 @@
+#pragma once
+
+#include "canrobot/SdoSequence.h"
+
+#include <Eigen/Core>
+#include <QList>
+
+namespace learnid {
+
+/// The SDO accesses of "apply" (docs/can-protocol.md, "Apply"): objects::parameterWriteSequence
+/// without its stores, then every written object read back and compared bit for bit, then the
+/// stores (0x1010:01 = "save") on each node. Run as one SdoSequence, a refused write or read or
+/// a difference stops it before any store is written. Throws learnid::Error for a set that
+/// cannot be sent (see parameterWriteSequence).
+QList<SdoStep> applySteps(const QList<int> &nodes, const Eigen::VectorXd &phi);
+
+} // namespace learnid

@@ -1,0 +1,173 @@
+#include "canrobot/CanConnection.h"
+
+#include "can/CanLink.h"
+#include "can/CanLogging.h"
+
+#include <QAbstractSocket>
+#ifdef Q_OS_LINUX
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#endif
+#include <QCoreApplication>
+#include <QVariant>
+#include <utility>
+
+namespace learnid {
+
+CanConnection::CanConnection(CanDeviceFactory factory, QString name, int timeoutMs, QObject *parent)
+    : QObject(parent)
+    , m_factory(std::move(factory))
+    , m_name(std::move(name))
+    , m_timeoutMs(timeoutMs)
+    , m_timer(new QTimer(this))
+{
+    m_clock.start();
+    m_timer->setSingleShot(true);
+    m_timer->setTimerType(Qt::PreciseTimer);
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        const QString error = tr("the CAN device %1 did not connect within %2 ms (is the bus or "
+                                 "the robot side running?)")
+                                  .arg(m_name)
+                                  .arg(m_timeoutMs);
+        close();
+        complete(error);
+    });
+}
+
+CanConnection::~CanConnection()
+{
+    close();
+}
+
+void CanConnection::open(Done done)
+{
+    if (m_pending) { // a second caller waits for the same attempt
+        Done first = std::move(m_pending);
+        m_pending = [first = std::move(first), done = std::move(done)](const QString &e) {
+            first(e);
+            done(e);
+        };
+        return;
+    }
+    m_pending = std::move(done);
+    if (isConnected()) {
+        QMetaObject::invokeMethod(
+            this, [this] { complete({}); }, Qt::QueuedConnection);
+        return;
+    }
+    close();
+    QString error;
+    QCanBusDevice *device = m_factory ? m_factory(&error) : nullptr;
+    if (!device) {
+        if (error.isEmpty())
+            error = tr("no CAN device for %1").arg(m_name);
+        QMetaObject::invokeMethod(
+            this, [this, error] { complete(error); }, Qt::QueuedConnection);
+        return;
+    }
+    m_device = device;
+    device->setParent(this);
+    // Connected before the link, so that the arrival time is taken before any unit reads.
+    connect(device, &QCanBusDevice::framesReceived, this, [this] {
+        m_lastArrival = m_clock.nsecsElapsed();
+        acknowledgeQuickly();
+    });
+    m_link = std::make_unique<CanLink>(device);
+    connect(device, &QCanBusDevice::stateChanged, this, &CanConnection::onStateChanged);
+    connect(device, &QCanBusDevice::errorOccurred, this, &CanConnection::onError);
+    m_timer->start(m_timeoutMs);
+    if (!device->connectDevice()) {
+        const QString reason =
+            tr("cannot connect the CAN device %1: %2").arg(m_name, device->errorString());
+        close();
+        QMetaObject::invokeMethod(
+            this, [this, reason] { complete(reason); }, Qt::QueuedConnection);
+        return;
+    }
+    if (device->state() == QCanBusDevice::ConnectedState)
+        onStateChanged(QCanBusDevice::ConnectedState);
+}
+
+void CanConnection::close()
+{
+    m_timer->stop();
+    m_connected = false;
+    m_link.reset();
+    if (m_device) {
+        QCanBusDevice *device = m_device;
+        m_device = nullptr;
+        device->disconnect(this);
+        if (device->state() != QCanBusDevice::UnconnectedState)
+            device->disconnectDevice();
+        device->deleteLater(); // close() may run inside one of the device's signals
+    }
+}
+
+bool CanConnection::isConnected() const
+{
+    return m_connected && m_device && m_device->state() == QCanBusDevice::ConnectedState;
+}
+
+void CanConnection::onStateChanged(QCanBusDevice::CanBusDeviceState state)
+{
+    if (state == QCanBusDevice::ConnectedState && !m_connected) {
+        m_timer->stop();
+        // virtualcan carries frames over TCP without TCP_NODELAY: Nagle's algorithm would hold
+        // a second frame written within one round trip (the RPDO of joint 2) until an ACK.
+        m_sockets.clear();
+        for (QAbstractSocket *socket : m_device->findChildren<QAbstractSocket *>()) {
+            socket->setSocketOption(QAbstractSocket::LowDelayOption, QVariant(1));
+            m_sockets.append(socket);
+        }
+        m_connected = true;
+        qCInfo(lcCan).noquote() << "connected" << m_name;
+        QMetaObject::invokeMethod(
+            this, [this] { complete({}); }, Qt::QueuedConnection);
+    } else if (state == QCanBusDevice::UnconnectedState && m_connected) {
+        m_connected = false;
+        const QString detail = m_device && !m_device->errorString().isEmpty()
+                                   ? m_device->errorString()
+                                   : tr("no error reported (the other side may have exited)");
+        emit lost(tr("the CAN device %1 went unconnected: %2").arg(m_name, detail));
+    }
+}
+
+void CanConnection::onError(QCanBusDevice::CanBusError error)
+{
+    if (error != QCanBusDevice::ConnectionError || !m_device)
+        return;
+    const QString reason = tr("the CAN device %1 reported a connection error: %2")
+                               .arg(m_name, m_device->errorString());
+    if (m_connected) {
+        m_connected = false;
+        emit lost(reason);
+    } else if (m_pending) {
+        close();
+        QMetaObject::invokeMethod(
+            this, [this, reason] { complete(reason); }, Qt::QueuedConnection);
+    }
+}
+
+void CanConnection::acknowledgeQuickly()
+{
+#ifdef Q_OS_LINUX
+    // The virtualcan server writes without TCP_NODELAY: while our delayed ACK of its last frame
+    // is pending, Nagle's algorithm holds its next frame (the next SYNC) for up to 40 ms.
+    // Quick ACKs (Linux) let every frame through at once.
+    for (const QPointer<QAbstractSocket> &socket : std::as_const(m_sockets)) {
+        if (!socket || socket->socketDescriptor() < 0)
+            continue;
+        const int one = 1;
+        ::setsockopt(int(socket->socketDescriptor()), IPPROTO_TCP, TCP_QUICKACK, &one, sizeof(one));
+    }
+#endif
+}
+
+void CanConnection::complete(const QString &error)
+{
+    if (Done done = std::exchange(m_pending, nullptr))
+        done(error);
+}
+
+} // namespace learnid

@@ -1,0 +1,46 @@
+#pragma once
+
+#include "can/BusLoad.h"
+
+#include <QCanBusDevice>
+#include <QList>
+#include <QString>
+#include <functional>
+
+namespace learnid {
+
+/// How the CAN robot reaches its drives and how long it waits for them (docs/can-protocol.md,
+/// "Master side"). One CANopen node per joint, in joint order.
+struct CanRobotOptions
+{
+    QString plugin = QStringLiteral("socketcan"); ///< QCanBus plugin name
+    QString interface = QStringLiteral("can0");   ///< the plugin's interface name
+    QList<int> nodes{1, 2};                       ///< node id of joint 1, 2, ...
+    int connectTimeoutMs = 3000;     ///< virtualcan stays "connecting" on an unreachable host
+    int sdoTimeoutMs = 500;          ///< per SDO request
+    int heartbeatPeriodMs = 100;     ///< written to 0x1017 of every node
+    int heartbeatTimeoutFactor = 3;  ///< heartbeat lost after factor x period
+    int enableTimeoutMs = 500;       ///< CiA 402 enable walk
+    int syncGapPeriods = 10;         ///< no SYNC for this many periods aborts a trial
+    double syncPeriod = 0.002;       ///< the SYNC period the robot side produces [s]
+    double bitrate = 1'000'000.0;    ///< [bit/s]
+    double maxBusLoadPercent = 70.0; ///< refuse to connect above this computed load
+    QString candumpDir;              ///< when set, trial-NNN.log per trial (can-utils format)
+};
+
+/// Creates the (not yet connected) CAN device in the calling thread; on failure returns null
+/// and sets error. The default factory asks QCanBus for plugin and interface.
+using CanDeviceFactory = std::function<QCanBusDevice *(QString *error)>;
+CanDeviceFactory qcanbusDeviceFactory(const QString &plugin, const QString &interface);
+
+/// The cyclic load of the options' configuration (SYNC, one RPDO and one TPDO per node).
+BusLoad configuredBusLoad(const CanRobotOptions &options);
+
+/// Why the options cannot work (invalid or repeated node ids, non-positive times, a bus load
+/// above the limit, with the figures), or empty.
+QString canRobotOptionsError(const CanRobotOptions &options);
+
+/// "1,2,3" -> {1, 2, 3}; on failure returns empty and sets error (naming the bad element).
+QList<int> parseNodeList(const QString &text, QString *error);
+
+} // namespace learnid

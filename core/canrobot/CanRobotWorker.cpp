@@ -1,0 +1,222 @@
+#include "canrobot/CanRobotWorker.h"
+
+#include "can/CanLink.h"
+#include "can/CanLogging.h"
+#include "can/EmcyConsumer.h"
+#include "can/HeartbeatConsumer.h"
+#include "can/Nmt.h"
+#include "can/SdoClient.h"
+#include "canrobot/ApplySteps.h"
+#include "canrobot/CanConnection.h"
+#include "canrobot/CandumpRecorder.h"
+#include "canrobot/NodeConfiguration.h"
+#include "canrobot/SdoSequence.h"
+#include "model/Error.h"
+
+#include <QCoreApplication>
+#include <QDir>
+
+namespace learnid {
+
+namespace {
+
+TrialRecord notStarted(double ts, TrialStatus status, const QString &message)
+{
+    TrialRecord r;
+    r.samplePeriod = ts;
+    r.status = status;
+    r.message = message;
+    return r;
+}
+
+} // namespace
+
+CanRobotWorker::CanRobotWorker(std::shared_ptr<const RobotModel> model, CanRobotOptions options,
+                               CanDeviceFactory factory, QObject *parent)
+    : QObject(parent)
+    , m_model(std::move(model))
+    , m_options(std::move(options))
+{
+    m_connection =
+        new CanConnection(std::move(factory), connectionName(), m_options.connectTimeoutMs, this);
+    connect(m_connection, &CanConnection::lost, this, &CanRobotWorker::onLost);
+}
+
+CanRobotWorker::~CanRobotWorker()
+{
+    shutdown();
+}
+
+QString CanRobotWorker::connectionName() const
+{
+    return QStringLiteral("%1/%2").arg(m_options.plugin, m_options.interface);
+}
+
+void CanRobotWorker::connectBus(std::function<void(const QString &)> done)
+{
+    const QString invalid = canRobotOptionsError(m_options);
+    if (!invalid.isEmpty()) {
+        QMetaObject::invokeMethod(
+            this, [done, invalid] { done(invalid); }, Qt::QueuedConnection);
+        return;
+    }
+    if (m_units && !m_connection->isConnected()) {
+        delete m_units; // built on the link of a connection that was lost
+        m_units = nullptr;
+    }
+    m_connection->open([this, done](const QString &error) {
+        if (error.isEmpty())
+            ensureUnits();
+        done(error);
+    });
+}
+
+void CanRobotWorker::ensureUnits()
+{
+    if (m_units)
+        return;
+    CanLink *link = m_connection->link();
+    m_units = new QObject(this);
+    // The recorder first: it must see each received frame before a unit answers it.
+    m_recorder = new CandumpRecorder(link, m_options.interface, m_units);
+    m_sdo = new SdoClient(link, m_units);
+    m_sdo->setTimeout(m_options.sdoTimeoutMs);
+    m_sequence = new SdoSequence(m_sdo, m_units);
+    m_nmt = new Nmt(link, m_units);
+    m_heartbeat = new HeartbeatConsumer(link, m_units);
+    m_emcy = new EmcyConsumer(link, m_units);
+    m_streamer = new TrialStreamer(link, m_nmt, m_heartbeat, m_emcy, m_units);
+    CanConnection *connection = m_connection;
+    m_streamer->setLatencyClock({[connection] { return connection->lastArrivalNs(); },
+                                 [connection] {
+                                     return connection->nowNs();
+                                 }});
+}
+
+void CanRobotWorker::onLost(const QString &reason)
+{
+    qCWarning(lcCan).noquote() << reason;
+    if (m_sequence && m_sequence->isRunning())
+        m_sequence->cancel(reason);
+    if (m_streamer && m_streamer->isRunning())
+        m_streamer->abort(TrialStatus::Faulted, tr("%1 %2").arg(reason, m_streamer->where()));
+    // The units stay until the next call reconnects and builds new ones (connectBus).
+}
+
+void CanRobotWorker::runTrial(const TrialPlan &plan, const TrialMonitor &monitor,
+                              std::function<void(const TrialRecord &)> done)
+{
+    const double ts = plan.desired.samplePeriod;
+    if (m_model->dof() != m_options.nodes.size() || plan.samples() < 1) {
+        done(notStarted(ts, TrialStatus::Refused,
+                        tr("the model has %1 joints but %2 CAN nodes are configured, or the plan "
+                           "is empty")
+                            .arg(m_model->dof())
+                            .arg(m_options.nodes.size())));
+        return;
+    }
+    m_trialDone = std::move(done);
+    m_samplePeriod = ts;
+    connectBus([this, plan, monitor](const QString &error) {
+        if (!error.isEmpty())
+            return endTrial(notStarted(m_samplePeriod, TrialStatus::Refused, error));
+        if (monitor.cancelled())
+            return endTrial(notStarted(m_samplePeriod, TrialStatus::Cancelled,
+                                       tr("stopped by the operator before the drives moved")));
+        configure(plan, monitor);
+    });
+}
+
+void CanRobotWorker::configure(const TrialPlan &plan, const TrialMonitor &monitor)
+{
+    m_configuration = std::make_shared<NodeConfigurationResult>();
+    QList<SdoStep> steps;
+    try {
+        steps = trialConfigurationSteps(m_options.nodes, plan, m_options, m_configuration);
+    } catch (const Error &e) {
+        return endTrial(notStarted(m_samplePeriod, TrialStatus::Refused, e.message()));
+    }
+    m_recorder->start();
+    m_heartbeat->stopAll();
+    if (!m_nmt->enterPreOperational(0))
+        return endTrial(
+            notStarted(m_samplePeriod, TrialStatus::Faulted, m_connection->link()->lastError()));
+    m_sequence->run(steps, [this, plan, monitor](const QString &error) {
+        if (!error.isEmpty())
+            return endTrial(
+                notStarted(m_samplePeriod, TrialStatus::Faulted,
+                           tr("configuring the drives failed, nothing moved: %1").arg(error)));
+        if (monitor.cancelled())
+            return endTrial(notStarted(m_samplePeriod, TrialStatus::Cancelled,
+                                       tr("stopped by the operator before the drives moved")));
+        m_streamer->start(*m_model, plan, m_options.nodes, m_configuration->scaling, m_options,
+                          monitor, [this](const TrialRecord &record) { endTrial(record); });
+    });
+}
+
+void CanRobotWorker::endTrial(TrialRecord record)
+{
+    if (m_streamer)
+        m_stats = m_streamer->statistics();
+    if (m_recorder && m_recorder->isRecording()) {
+        m_recorder->stop();
+        if (!m_options.candumpDir.isEmpty()) {
+            QDir().mkpath(m_options.candumpDir);
+            const QString file =
+                QDir(m_options.candumpDir)
+                    .filePath(
+                        QStringLiteral("trial-%1.log").arg(m_trials, 3, 10, QLatin1Char('0')));
+            const QString error = m_recorder->save(file);
+            if (!error.isEmpty()) {
+                qCWarning(lcCan).noquote() << error;
+                if (record.completed()) {
+                    record.status = TrialStatus::Aborted;
+                    record.message =
+                        tr("the trial's candump log could not be written: %1").arg(error);
+                }
+            }
+        }
+    }
+    ++m_trials;
+    if (auto done = std::exchange(m_trialDone, nullptr))
+        done(record);
+}
+
+void CanRobotWorker::apply(const Eigen::VectorXd &phi, std::function<void(const QString &)> done)
+{
+    QList<SdoStep> steps;
+    try {
+        steps = applySteps(m_options.nodes, phi);
+    } catch (const Error &e) {
+        done(e.message());
+        return;
+    }
+    connectBus([this, steps, done](const QString &error) {
+        if (!error.isEmpty())
+            return done(tr("%1; the stored parameters are unchanged").arg(error));
+        int stores = 0;
+        for (const SdoStep &s : steps)
+            stores += s.index == 0x1010 ? 1 : 0;
+        const int firstStore = int(steps.size()) - stores;
+        m_sequence->run(steps, [this, done, firstStore](const QString &error) {
+            if (error.isEmpty())
+                return done({});
+            if (m_sequence->stepsDone() < firstStore)
+                return done(tr("%1; nothing was stored (0x1010 not written)").arg(error));
+            done(tr("%1; storing stopped at node %2 of the list")
+                     .arg(error)
+                     .arg(m_sequence->stepsDone() - firstStore + 1));
+        });
+    });
+}
+
+void CanRobotWorker::shutdown()
+{
+    if (m_units) {
+        delete m_units;
+        m_units = nullptr;
+    }
+    m_connection->close();
+}
+
+} // namespace learnid

@@ -1,0 +1,72 @@
+#pragma once
+
+#include "canrobot/CanRobotOptions.h"
+#include "canrobot/TrialStreamer.h"
+#include "model/RobotModel.h"
+#include "robot/Trial.h"
+
+#include <QObject>
+#include <functional>
+#include <memory>
+
+namespace learnid {
+
+class CanConnection;
+class CandumpRecorder;
+class EmcyConsumer;
+class HeartbeatConsumer;
+class Nmt;
+class SdoClient;
+class SdoSequence;
+struct NodeConfigurationResult;
+
+/// The CAN robot's work in its own thread: the connection, the CANopen units on it, the
+/// trial (configure, stream, log) and apply. Everything asynchronous; the results go to the
+/// callbacks, called in this object's thread. CanRobot marshals its blocking calls here.
+class CanRobotWorker : public QObject
+{
+    Q_OBJECT
+
+public:
+    CanRobotWorker(std::shared_ptr<const RobotModel> model, CanRobotOptions options,
+                   CanDeviceFactory factory, QObject *parent = nullptr);
+    ~CanRobotWorker() override;
+
+    void connectBus(std::function<void(const QString &error)> done);
+    void runTrial(const TrialPlan &plan, const TrialMonitor &monitor,
+                  std::function<void(const TrialRecord &)> done);
+    /// done(error): empty when every node stored phi.
+    void apply(const Eigen::VectorXd &phi, std::function<void(const QString &)> done);
+    void shutdown();
+
+    const TrialStreamStatistics &lastStatistics() const { return m_stats; }
+    int trialsRun() const { return m_trials; }
+
+private:
+    void ensureUnits();
+    void onLost(const QString &reason);
+    void configure(const TrialPlan &plan, const TrialMonitor &monitor);
+    void endTrial(TrialRecord record);
+    QString connectionName() const;
+
+    std::shared_ptr<const RobotModel> m_model;
+    CanRobotOptions m_options;
+    CanConnection *m_connection = nullptr;
+    // The units of the current connection (children of unitsParent, rebuilt on reconnect).
+    QObject *m_units = nullptr;
+    SdoClient *m_sdo = nullptr;
+    SdoSequence *m_sequence = nullptr;
+    Nmt *m_nmt = nullptr;
+    HeartbeatConsumer *m_heartbeat = nullptr;
+    EmcyConsumer *m_emcy = nullptr;
+    TrialStreamer *m_streamer = nullptr;
+    CandumpRecorder *m_recorder = nullptr;
+
+    std::function<void(const TrialRecord &)> m_trialDone;
+    std::shared_ptr<NodeConfigurationResult> m_configuration;
+    double m_samplePeriod = 0;
+    TrialStreamStatistics m_stats;
+    int m_trials = 0;
+};
+
+} // namespace learnid

@@ -1,0 +1,127 @@
+// learnid-cli's CAN options without a robot on the bus: bad values name the option and the
+// value, a configuration above the bus limit is refused with its figures, a bus nobody answers
+// on fails quickly with the node and object, a malformed log names file and line.
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QTcpServer>
+#include <QTemporaryDir>
+#include <QTest>
+
+class TestCliCan : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void badOption_exitsNamingOptionAndValue_data();
+    void badOption_exitsNamingOptionAndValue();
+    void silentBus_failsWithinSecondsNamingNodeAndObject();
+    void malformedCandump_namesFileAndLine();
+
+private:
+    struct Result
+    {
+        int exitCode = -1;
+        QString err;
+        qint64 ms = 0;
+    };
+    Result cli(const QStringList &args) const
+    {
+        QProcess p;
+        p.setWorkingDirectory(m_dir.path());
+        QElapsedTimer clock;
+        clock.start();
+        p.start(QStringLiteral(LEARNID_CLI_PATH), args);
+        if (!p.waitForFinished(60000))
+            return {};
+        return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
+                QString::fromUtf8(p.readAllStandardError()), clock.elapsed()};
+    }
+    QTemporaryDir m_dir;
+};
+
+void TestCliCan::badOption_exitsNamingOptionAndValue_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QStringList>("expected");
+    const QString run = QStringLiteral("run");
+    const QStringList can{run,
+                          QStringLiteral("--robot"),
+                          QStringLiteral("can"),
+                          QStringLiteral("--can-plugin"),
+                          QStringLiteral("virtualcan"),
+                          QStringLiteral("--can-interface"),
+                          QStringLiteral("can0")};
+    QTest::newRow("unknown robot")
+        << QStringList{run, QStringLiteral("--robot"), QStringLiteral("ship")} << 2
+        << QStringList{QStringLiteral("--robot"), QStringLiteral("ship")};
+    QTest::newRow("plugin without can")
+        << QStringList{run, QStringLiteral("--can-plugin"), QStringLiteral("x")} << 1
+        << QStringList{QStringLiteral("--can-plugin"), QStringLiteral("--robot can")};
+    QTest::newRow("no plugin") << QStringList{run, QStringLiteral("--robot"), QStringLiteral("can")}
+                               << 2 << QStringList{QStringLiteral("--can-plugin")};
+    QTest::newRow("bad node") << can + QStringList{QStringLiteral("--nodes"), QStringLiteral("1,x")}
+                              << 2 << QStringList{QStringLiteral("--nodes"), QStringLiteral("'x'")};
+    QTest::newRow("node twice") << can +
+                                       QStringList{QStringLiteral("--nodes"), QStringLiteral("3,3")}
+                                << 2
+                                << QStringList{QStringLiteral("--nodes"), QStringLiteral("node 3")};
+    QTest::newRow("bus overloaded")
+        << can + QStringList{QStringLiteral("--nodes"), QStringLiteral("1,2,3,4,5,6")} << 2
+        << QStringList{QStringLiteral("83.8 %"), QStringLiteral("70 %")};
+    QTest::newRow("unknown plugin") << QStringList{run,
+                                                   QStringLiteral("--robot"),
+                                                   QStringLiteral("can"),
+                                                   QStringLiteral("--can-plugin"),
+                                                   QStringLiteral("nosuchplugin"),
+                                                   QStringLiteral("--can-interface"),
+                                                   QStringLiteral("can0")}
+                                    << 3 << QStringList{QStringLiteral("nosuchplugin")};
+    QTest::newRow("replay without log")
+        << QStringList{QStringLiteral("replay")} << 1 << QStringList{QStringLiteral("--candump")};
+}
+
+void TestCliCan::badOption_exitsNamingOptionAndValue()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, exitCode);
+    QFETCH(QStringList, expected);
+    const Result r = cli(args);
+    QVERIFY2(r.exitCode == exitCode, qPrintable(QString::number(r.exitCode) + r.err));
+    for (const QString &e : expected)
+        QVERIFY2(r.err.contains(e), qPrintable(r.err));
+}
+
+void TestCliCan::silentBus_failsWithinSecondsNamingNodeAndObject()
+{
+    // virtualcan on a free port: the tool hosts the bus itself, and no drive answers.
+    QTcpServer probe;
+    QVERIFY(probe.listen(QHostAddress::LocalHost, 0));
+    const quint16 port = probe.serverPort();
+    probe.close();
+    const Result r =
+        cli({QStringLiteral("run"), QStringLiteral("--robot"), QStringLiteral("can"),
+             QStringLiteral("--can-plugin"), QStringLiteral("virtualcan"),
+             QStringLiteral("--can-interface"), QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port),
+             QStringLiteral("--iterations"), QStringLiteral("1")});
+    QVERIFY2(r.exitCode == 3, qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("node 1")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("0x1017:00")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("500 ms")), qPrintable(r.err));
+    QVERIFY2(r.ms < 5000, qPrintable(QString::number(r.ms)));
+}
+
+void TestCliCan::malformedCandump_namesFileAndLine()
+{
+    QFile f(m_dir.filePath(QStringLiteral("bad.log")));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("(1.000000) can0 080#01\n(1.002000) can0 zz#\n");
+    f.close();
+    const Result r = cli({QStringLiteral("replay"), QStringLiteral("--candump"), f.fileName()});
+    QVERIFY2(r.exitCode == 2, qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("bad.log:2")), qPrintable(r.err));
+}
+
+QTEST_GUILESS_MAIN(TestCliCan)
+#include "tst_cli_can.moc"

@@ -1,0 +1,282 @@
+// CanRobotWorker over the memory bus and a scripted robot side: configuration, the trial
+// streamed by SYNC, every abort path, apply.
+#include "ScriptedDrives.h"
+#include "TestPlan.h"
+#include "can/MemoryCanBus.h"
+#include "canrobot/CanRobotWorker.h"
+#include "canrobot/DriveScaling.h"
+
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QPointer>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTimer>
+#include <optional>
+
+using namespace learnid;
+
+namespace {
+
+struct Setup
+{
+    MemoryCanBus bus;
+    MemoryCanDevice *robotDevice = bus.createDevice(QStringLiteral("robot"));
+    test::ScriptedDrives drives{robotDevice, {1, 2}};
+    CanRobotOptions options;
+    std::unique_ptr<CanRobotWorker> worker;
+    QPointer<MemoryCanDevice> master; ///< the master's device, once connected
+
+    explicit Setup(CanRobotOptions o = {})
+        : options(std::move(o))
+    {
+        robotDevice->connectDevice();
+        drives.placeAt({0.3, 1.2}); // at the plan's start: the shortest return move (0.5 s)
+        options.plugin = QStringLiteral("memory");
+        options.interface = QStringLiteral("master");
+        MemoryCanBus *b = &bus;
+        worker = std::make_unique<CanRobotWorker>(test::testModel(), options, [this, b](QString *) {
+            master = new MemoryCanDevice(QStringLiteral("master"), b);
+            return master.data();
+        });
+    }
+
+    TrialRecord run(const TrialPlan &plan, const TrialMonitor &monitor = {})
+    {
+        // A real event loop: QTest::qWaitFor sleeps between its rounds, which would delay the
+        // master's answers behind the next SYNC.
+        std::optional<TrialRecord> result;
+        QEventLoop loop;
+        worker->runTrial(plan, monitor, [&](const TrialRecord &r) {
+            result = r;
+            loop.quit();
+        });
+        QTimer::singleShot(20000, &loop, &QEventLoop::quit);
+        loop.exec();
+        return result.value_or(TrialRecord{});
+    }
+
+    QString apply(const Eigen::VectorXd &phi)
+    {
+        std::optional<QString> result;
+        QEventLoop loop;
+        worker->apply(phi, [&](const QString &e) {
+            result = e;
+            loop.quit();
+        });
+        QTimer::singleShot(10000, &loop, &QEventLoop::quit);
+        loop.exec();
+        return result.value_or(QStringLiteral("timeout"));
+    }
+};
+
+const DriveScaling scaling{1u << 20, 1, 320};
+
+} // namespace
+
+class TestCanRobotWorker : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void trial_collectsSamplesBySyncAcrossCounterWrap();
+    void configurationAbort_namesObjectAndCode_nothingMoves();
+    void missingTpdo_abortsWithQuickStop();
+    void emcy_abortsFaultedWithQuickStop();
+    void heartbeatLoss_aborts();
+    void cancel_stopsAtNextSync();
+    void deviceLost_endsTheTrialNamingTheDevice();
+    void apply_writesReadsBackAndStores();
+    void apply_readBackMismatch_storesNothing();
+    void apply_abort_storesNothing();
+};
+
+void TestCanRobotWorker::trial_collectsSamplesBySyncAcrossCounterWrap()
+{
+    Setup s;
+    s.drives.setCounter(200); // the plan's samples straddle the wrap 240 -> 1
+    s.drives.startSync();
+    const TrialPlan plan = test::testPlan(300);
+    const TrialRecord r = s.run(plan);
+    QVERIFY2(r.completed(), qPrintable(r.message));
+    QCOMPARE(r.samples(), plan.samples());
+    QVERIFY(s.drives.syncs() > 240);
+    // The ideal drive holds exactly the target it was sent for this SYNC: sample k must be
+    // plan sample k in the drive's integer units, and tau the offset sent with it.
+    for (int k = 0; k < r.samples(); ++k) {
+        for (int j = 0; j < 2; ++j) {
+            const double q = scaling.toRad(scaling.toIncrements(plan.desired.q(j, k)));
+            const double tau = scaling.toNewtonMetre(scaling.toPermille(plan.feedforward(j, k)));
+            QCOMPARE(r.q(j, k), q);
+            QCOMPARE(r.tau(j, k), tau);
+        }
+    }
+    // Configuration reached the drives.
+    QCOMPARE(s.drives.node(2).od.value(0x2100, 1), 5000.0);
+    QCOMPARE(s.drives.node(1).od.value(0x2300, 0), 8.0);
+    QCOMPARE(s.drives.node(1).od.value(0x1017, 0), 100.0);
+    QCOMPARE(s.drives.node(1).od.value(0x1A00, 0), 3.0);
+    QTRY_COMPARE(s.drives.node(2).nmt, NmtState::PreOperational); // after the trial
+    QVERIFY(s.drives.controlwords.contains(0x0006));              // shutdown at the end
+    QCOMPARE(s.worker->lastStatistics().lateSetpoints, 0);
+}
+
+void TestCanRobotWorker::configurationAbort_namesObjectAndCode_nothingMoves()
+{
+    Setup s;
+    s.drives.node(2).server->setRefusal([](quint16 index, quint8 sub, bool write) {
+        return write && index == 0x2100 && sub == 3 ? sdoabort::invalidValue : 0u;
+    });
+    s.drives.startSync();
+    const TrialRecord r = s.run(test::testPlan(50));
+    QCOMPARE(r.status, TrialStatus::Faulted);
+    QCOMPARE(r.samples(), 0);
+    QVERIFY2(r.message.contains(QLatin1String("0x2100:03")), qPrintable(r.message));
+    QVERIFY2(r.message.contains(QLatin1String("node 2")), qPrintable(r.message));
+    QVERIFY2(r.message.contains(QLatin1String("0x06090030")), qPrintable(r.message));
+    QVERIFY(s.drives.controlwords.isEmpty()); // no RPDO: nothing moved
+    QCOMPARE(s.drives.node(1).nmt, NmtState::PreOperational);
+}
+
+void TestCanRobotWorker::missingTpdo_abortsWithQuickStop()
+{
+    Setup s;
+    qint64 dropAt = -1;
+    s.drives.dropTpdo = [&](int node, qint64 n) {
+        return node == 2 && n == dropAt;
+    };
+    s.drives.onSync = [&](qint64 n) {
+        if (dropAt < 0 && s.drives.node(1).drive.state() == cia402::State::OperationEnabled)
+            dropAt = n + 300; // during the return move
+    };
+    s.drives.startSync();
+    const TrialRecord r = s.run(test::testPlan(100));
+    QCOMPARE(r.status, TrialStatus::Aborted);
+    QVERIFY2(r.message.contains(QLatin1String("node 2")), qPrintable(r.message));
+    QVERIFY2(r.message.contains(QLatin1String("TPDO")), qPrintable(r.message));
+    QVERIFY2(r.message.contains(QLatin1String("SYNC")), qPrintable(r.message));
+    QVERIFY(s.drives.controlwords.contains(0x0002));
+}
+
+void TestCanRobotWorker::emcy_abortsFaultedWithQuickStop()
+{
+    Setup s;
+    int enabledSyncs = 0;
+    s.drives.onSync = [&](qint64) {
+        if (s.drives.node(1).drive.state() == cia402::State::OperationEnabled &&
+            ++enabledSyncs == 500)
+            s.drives.sendEmcy(1, 0x8611);
+    };
+    s.drives.startSync();
+    const TrialPlan plan = test::testPlan(200);
+    const TrialRecord r = s.run(plan);
+    QCOMPARE(r.status, TrialStatus::Faulted);
+    QVERIFY2(r.message.contains(QLatin1String("0x8611")), qPrintable(r.message));
+    QVERIFY2(r.message.contains(QLatin1String("SYNC")), qPrintable(r.message));
+    QVERIFY2(r.samples() > 0 && r.samples() < plan.samples(), // the partial record is kept
+             qPrintable(QString::number(r.samples())));
+    QVERIFY(s.drives.controlwords.contains(0x0002));
+    QTRY_COMPARE(s.drives.node(2).nmt, NmtState::PreOperational);
+}
+
+void TestCanRobotWorker::heartbeatLoss_aborts()
+{
+    Setup s;
+    bool silenced = false;
+    s.drives.onSync = [&](qint64) {
+        if (!silenced && s.drives.node(1).drive.state() == cia402::State::OperationEnabled) {
+            silenced = true;
+            s.drives.node(2).heartbeat->setSilent(true);
+        }
+    };
+    s.drives.startSync();
+    QElapsedTimer clock;
+    clock.start();
+    const TrialRecord r = s.run(test::testPlan(1000));
+    QCOMPARE(r.status, TrialStatus::Faulted);
+    QVERIFY2(r.message.contains(QLatin1String("heartbeat of node 2")), qPrintable(r.message));
+    QVERIFY(clock.elapsed() < 2000);
+}
+
+void TestCanRobotWorker::cancel_stopsAtNextSync()
+{
+    Setup s;
+    std::atomic_bool cancel{false};
+    TrialMonitor monitor;
+    monitor.cancel = &cancel;
+    int progressCalls = 0;
+    monitor.progress = [&](int done, int) {
+        if (++progressCalls == 2)
+            cancel = true;
+        Q_UNUSED(done)
+    };
+    s.drives.startSync();
+    const TrialRecord r = s.run(test::testPlan(1000), monitor);
+    QCOMPARE(r.status, TrialStatus::Cancelled);
+    QVERIFY(r.samples() >= 200 && r.samples() < 1000);
+    QVERIFY(s.drives.controlwords.contains(0x0002));
+}
+
+void TestCanRobotWorker::deviceLost_endsTheTrialNamingTheDevice()
+{
+    Setup s;
+    int enabledSyncs = 0;
+    s.drives.onSync = [&](qint64) {
+        if (s.drives.node(1).drive.state() == cia402::State::OperationEnabled &&
+            ++enabledSyncs == 100 && s.master)
+            s.master->injectError(QStringLiteral("cable unplugged"), QCanBusDevice::ConnectionError,
+                                  true);
+    };
+    s.drives.startSync();
+    const TrialRecord r = s.run(test::testPlan(200));
+    QCOMPARE(r.status, TrialStatus::Faulted);
+    QVERIFY2(r.message.contains(QLatin1String("memory/master")), qPrintable(r.message));
+    QVERIFY2(r.message.contains(QLatin1String("cable unplugged")), qPrintable(r.message));
+    QVERIFY2(r.message.contains(QLatin1String("SYNC")), qPrintable(r.message));
+    // The next call connects again.
+    s.drives.onSync = nullptr;
+    QCOMPARE(s.apply(Eigen::Vector3d(20, 5, 8)), QString());
+}
+
+void TestCanRobotWorker::apply_writesReadsBackAndStores()
+{
+    Setup s;
+    QCOMPARE(s.apply(Eigen::Vector3d(20.5, 5.25, 8.125)), QString());
+    for (const int node : {1, 2}) {
+        QCOMPARE(s.drives.node(node).od.value(0x2200, 0), 3.0);
+        QCOMPARE(s.drives.node(node).od.value(0x2200, 2), 5.25);
+        QCOMPARE(s.drives.node(node).stores, 1);
+    }
+}
+
+void TestCanRobotWorker::apply_readBackMismatch_storesNothing()
+{
+    Setup s;
+    // Node 2 rounds what it receives (a drive that keeps a different precision).
+    connect(&s.drives.node(2).od, &ObjectDictionary::valueWritten, [&](quint16 index, quint8 sub) {
+        if (index == 0x2200 && sub == 3)
+            s.drives.node(2).od.setValue(0x2200, 3, 8.0);
+    });
+    const QString error = s.apply(Eigen::Vector3d(20, 5, 8.125));
+    QVERIFY2(error.contains(QLatin1String("node 2, object 0x2200:03")), qPrintable(error));
+    QVERIFY2(error.contains(QLatin1String("nothing was stored")), qPrintable(error));
+    QCOMPARE(s.drives.node(1).stores, 0);
+    QCOMPARE(s.drives.node(2).stores, 0);
+}
+
+void TestCanRobotWorker::apply_abort_storesNothing()
+{
+    Setup s;
+    s.drives.node(1).server->setRefusal([](quint16 index, quint8 sub, bool write) {
+        return write && index == 0x2200 && sub == 1 ? sdoabort::cannotStore : 0u;
+    });
+    const QString error = s.apply(Eigen::Vector3d(20, 5, 8));
+    QVERIFY2(error.contains(QLatin1String("0x2200:01")), qPrintable(error));
+    QVERIFY2(error.contains(QLatin1String("0x08000020")), qPrintable(error));
+    QVERIFY2(error.contains(QLatin1String("0x1010 not written")), qPrintable(error));
+    QCOMPARE(s.drives.node(1).stores, 0);
+    QCOMPARE(s.drives.node(2).stores, 0);
+}
+
+QTEST_GUILESS_MAIN(TestCanRobotWorker)
+#include "tst_canrobotworker.moc"
