@@ -7,7 +7,8 @@ LEARNID_PACKAGES=(
     build-essential cmake ninja-build pkg-config
     qt6-base-dev qt6-charts-dev qt6-serialbus-dev qt6-tools-dev qt6-l10n-tools
     qt6-tools-dev-tools qt6-qpa-plugins libgl-dev libeigen3-dev
-    xvfb xauth qt6-svg-dev
+    xvfb xauth qt6-svg-dev dpkg-dev  # dpkg-dev: tst_package (dpkg-shlibdeps)
+    clang libclang-rt-14-dev  # scripts/fuzz: libFuzzer and the sanitizer runtimes of clang
 )
 
 learnid_install_deps() {

@@ -227,6 +227,14 @@ void MainWindow::connectOrDisconnect()
 {
     if (m_controller->isOpen())
         return m_controller->close();
+    QString error;
+    const auto robot = m_robot->choice(&error);
+    if (!robot)
+        return m_message->showMessage(tr("Cannot connect: %1").arg(error), MessageBar::Severity::Error);
+    m_controller->setRobotChoice(*robot);
+    if (robot->can)
+        m_robot->setConnected(false, tr("connecting to %1/%2\u2026")
+                                         .arg(robot->canOptions.plugin, robot->canOptions.interface));
     if (const auto s = m_form->scenario())
         m_controller->open(*s);
     else

@@ -1,36 +1,54 @@
 #include "ui/RobotPanel.h"
 
+#include <QCanBus>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QIcon>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
-#include <QStandardItemModel>
 
 namespace learnid {
 
 RobotPanel::RobotPanel(QWidget *parent)
     : QWidget(parent)
     , m_kind(new QComboBox(this))
+    , m_canFields(new QWidget(this))
+    , m_plugin(new QComboBox(m_canFields))
+    , m_interface(new QLineEdit(QStringLiteral("can0"), m_canFields))
+    , m_nodes(new QLineEdit(QStringLiteral("1,2"), m_canFields))
     , m_connect(new QPushButton(QIcon(QStringLiteral(":/icons/connect.svg")), tr("Connect"), this))
     , m_state(new QLabel(this))
 {
     m_kind->setObjectName(QStringLiteral("robotKind"));
+    m_plugin->setObjectName(QStringLiteral("canPlugin"));
+    m_interface->setObjectName(QStringLiteral("canInterface"));
+    m_nodes->setObjectName(QStringLiteral("canNodes"));
     m_connect->setObjectName(QStringLiteral("connectButton"));
     m_kind->addItem(tr("Simulated (paper 2-link arm)"), int(RobotKind::Simulated));
     m_kind->addItem(tr("CAN (CANopen / CiA 402)"), int(RobotKind::Can));
-    if (auto *model = qobject_cast<QStandardItemModel *>(m_kind->model()))
-        model->item(1)->setEnabled(false);
-    const QString canHint = tr("available when the CAN link lands");
-    m_kind->setItemData(1, canHint, Qt::ToolTipRole);
-    m_kind->setToolTip(tr("Simulated robot; CAN: %1").arg(canHint));
+    m_plugin->addItems(QCanBus::instance()->plugins());
+    m_plugin->setCurrentText(QStringLiteral("socketcan"));
+    m_plugin->setToolTip(tr("QCanBus plugin: socketcan for a CAN adapter on Linux; virtualcan "
+                            "to try learnid-robot-sim first"));
+    m_interface->setToolTip(tr("e.g. can0 (socketcan) or tcp://127.0.0.1:35468/can0 (virtualcan)"));
+    m_nodes->setToolTip(tr("CANopen node id of joint 1, 2, ... (docs/can-protocol.md)"));
+
+    auto *can = new QFormLayout(m_canFields);
+    can->setContentsMargins(0, 0, 0, 0);
+    can->addRow(tr("Plugin:"), m_plugin);
+    can->addRow(tr("Interface:"), m_interface);
+    can->addRow(tr("Nodes:"), m_nodes);
 
     auto *layout = new QFormLayout(this);
     layout->addRow(tr("Robot:"), m_kind);
+    layout->addRow(m_canFields);
     layout->addRow(QString(), m_connect);
     layout->addRow(tr("State:"), m_state);
     setConnected(false, tr("not connected"));
+    updateCanFields();
 
+    connect(m_kind, &QComboBox::currentIndexChanged, this, &RobotPanel::updateCanFields);
     connect(m_connect, &QPushButton::clicked, this, [this] {
         if (m_connected)
             emit disconnectRequested();
@@ -44,11 +62,38 @@ RobotPanel::RobotKind RobotPanel::robotKind() const
     return RobotKind(m_kind->currentData().toInt());
 }
 
+std::optional<RobotChoice> RobotPanel::choice(QString *error) const
+{
+    RobotChoice c;
+    c.can = robotKind() == RobotKind::Can;
+    if (!c.can)
+        return c;
+    c.canOptions.plugin = m_plugin->currentText();
+    c.canOptions.interface = m_interface->text().trimmed();
+    QString why;
+    c.canOptions.nodes = parseNodeList(m_nodes->text(), &why);
+    if (c.canOptions.nodes.isEmpty())
+        *error = tr("CAN nodes: %1").arg(why);
+    else if (c.canOptions.interface.isEmpty())
+        *error = tr("CAN interface: enter one, e.g. can0");
+    else
+        *error = canRobotOptionsError(c.canOptions);
+    if (!error->isEmpty())
+        return std::nullopt;
+    return c;
+}
+
+void RobotPanel::updateCanFields()
+{
+    m_canFields->setVisible(robotKind() == RobotKind::Can);
+}
+
 void RobotPanel::setConnected(bool connected, const QString &state)
 {
     m_connected = connected;
     m_connect->setText(connected ? tr("Disconnect") : tr("Connect"));
     m_kind->setEnabled(!connected);
+    m_canFields->setEnabled(!connected);
     m_state->setText(state);
 }
 

@@ -1,14 +1,20 @@
 #pragma once
 
+#include "ui/RobotChoice.h"
+
 #include <QWidget>
+#include <optional>
 
 class QComboBox;
 class QLabel;
+class QLineEdit;
 class QPushButton;
+class QWidget;
 
 namespace learnid {
 
-/// Robot choice and connection: Simulated (the default) or CAN (shown, not yet available).
+/// Robot choice and connection: Simulated (the default) or CAN (plugin, interface, the node
+/// of each joint), the Connect button and the robot's state.
 class RobotPanel : public QWidget
 {
     Q_OBJECT
@@ -19,6 +25,8 @@ public:
     explicit RobotPanel(QWidget *parent = nullptr);
 
     RobotKind robotKind() const;
+    /// The chosen robot, or nullopt with error saying which CAN setting is wrong.
+    std::optional<RobotChoice> choice(QString *error) const;
     /// connected: the button offers Disconnect; state: one line such as "simulated paper-2link".
     void setConnected(bool connected, const QString &state);
     void setBusy(bool busy);
@@ -30,7 +38,13 @@ signals:
     void disconnectRequested();
 
 private:
+    void updateCanFields();
+
     QComboBox *m_kind;
+    QWidget *m_canFields;
+    QComboBox *m_plugin;
+    QLineEdit *m_interface;
+    QLineEdit *m_nodes;
     QPushButton *m_connect;
     QLabel *m_state;
     bool m_connected = false;

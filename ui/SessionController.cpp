@@ -123,6 +123,12 @@ void SessionController::open(const Scenario &scenario)
     post([w, scenario] { w->open(scenario); });
 }
 
+void SessionController::setRobotChoice(const RobotChoice &choice)
+{
+    SessionWorker *w = m_worker;
+    post([w, choice] { w->setRobotChoice(choice); });
+}
+
 void SessionController::close()
 {
     if (m_busy)

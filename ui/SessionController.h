@@ -2,6 +2,7 @@
 
 #include "robot/SimulatedRobot.h"
 #include "session/TrialResult.h"
+#include "ui/RobotChoice.h"
 #include "ui/SessionInfo.h"
 
 #include <QObject>
@@ -44,6 +45,8 @@ public:
 
 public slots:
     void open(const learnid::Scenario &scenario);
+    /// The robot the next open() connects (default: the simulated robot).
+    void setRobotChoice(const learnid::RobotChoice &choice);
     void close();
     void setSimulatedFaults(const learnid::SimulatedFaults &faults);
     void runTrial();

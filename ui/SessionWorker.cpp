@@ -2,6 +2,8 @@
 
 #include "session/ScenarioRobot.h"
 
+#include "canrobot/CanRobot.h"
+
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
 #include "io/SessionReport.h"
@@ -35,11 +37,22 @@ void SessionWorker::open(const Scenario &scenario)
         const auto model = makeRobotModel(scenario.model);
         if (!model)
             throw Error(tr("unknown robot model \"%1\"").arg(scenario.model));
-        auto robot = makeSimulatedRobot(scenario, model);
-        robot->setFaults(m_faults);
+        std::shared_ptr<SimulatedRobot> simulated;
+        std::shared_ptr<Robot> robot;
+        if (m_choice.can) {
+            auto can = std::make_shared<CanRobot>(model, m_choice.canOptions);
+            const QString error = can->connectBus();
+            if (!error.isEmpty())
+                throw Error(error);
+            robot = can;
+        } else {
+            simulated = makeSimulatedRobot(scenario, model);
+            simulated->setFaults(m_faults);
+            robot = simulated;
+        }
         auto session = std::make_unique<CommissioningSession>(scenario, model, robot);
         QMutexLocker lock(&m_sessionMutex);
-        m_robot = robot;
+        m_robot = simulated;
         m_session = std::move(session);
     } catch (const Error &e) {
         qCWarning(lcUi).noquote() << "opening the session failed:" << e.message();

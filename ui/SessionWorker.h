@@ -2,6 +2,7 @@
 
 #include "robot/SimulatedRobot.h"
 #include "session/CommissioningSession.h"
+#include "ui/RobotChoice.h"
 #include "ui/SessionInfo.h"
 
 #include <QMutex>
@@ -26,8 +27,11 @@ public:
     void requestCancel();
 
 public slots:
-    /// Builds the simulated robot and a new session of the scenario (history discarded).
+    /// Builds the chosen robot (a CAN robot is connected here, which may take its connect
+    /// timeout) and a new session of the scenario (history discarded).
     void open(const learnid::Scenario &scenario);
+    /// The robot the next open() builds.
+    void setRobotChoice(const learnid::RobotChoice &choice) { m_choice = choice; }
     void close();
     /// Faults the simulated robot injects from now on.
     void setFaults(const learnid::SimulatedFaults &faults);
@@ -62,7 +66,8 @@ private:
     void emitCheck();
 
     QMutex m_sessionMutex; // guards m_session's lifetime against requestCancel() from the GUI
-    std::shared_ptr<SimulatedRobot> m_robot;
+    RobotChoice m_choice;
+    std::shared_ptr<SimulatedRobot> m_robot; ///< the simulated robot (null for a CAN robot)
     std::unique_ptr<CommissioningSession> m_session;
     SimulatedFaults m_faults;
     int m_lastProgressPercent = -1;

@@ -19,10 +19,18 @@ QString tr(const char *text)
 constexpr quint32 errorFlag = 0x20000000u; // CAN_ERR_FLAG of linux/can.h
 constexpr quint32 extendedMask = 0x1FFFFFFFu;
 
+// ASCII only: QChar::isDigit() also accepts other scripts' digits (U+0663), which the number
+// conversions then read as 0 or skip, so a malformed line would become a wrong frame.
+bool isAsciiDigit(QChar c)
+{
+    return c >= QLatin1Char('0') && c <= QLatin1Char('9');
+}
+
 bool isHex(const QString &s)
 {
     for (const QChar c : s) {
-        if (!c.isDigit() && !(c.toLower() >= QLatin1Char('a') && c.toLower() <= QLatin1Char('f')))
+        if (!isAsciiDigit(c) && !(c >= QLatin1Char('a') && c <= QLatin1Char('f')) &&
+            !(c >= QLatin1Char('A') && c <= QLatin1Char('F')))
             return false;
     }
     return !s.isEmpty();
@@ -31,7 +39,7 @@ bool isHex(const QString &s)
 bool allDigits(const QString &s)
 {
     for (const QChar c : s) {
-        if (!c.isDigit())
+        if (!isAsciiDigit(c))
             return false;
     }
     return !s.isEmpty();

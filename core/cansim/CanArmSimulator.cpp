@@ -97,7 +97,15 @@ CanArmSimulator::CanArmSimulator(CanLink *link, const CanArmSettings &settings,
     m_tau.resize(n);
     m_tauMeasured.resize(n);
     m_limits.resize(n);
-    connect(&m_sync, &SyncProducer::due, this, &CanArmSimulator::syncCycle);
+    connect(&m_sync, &SyncProducer::due, this, [this] {
+        // Frames that reached this process before the SYNC is due belong to this period: when
+        // the process was descheduled, the timer and the sockets become ready together and
+        // the timer may be served first. The sockets (virtualcan relays through its server,
+        // which may live in this process: two hops) are served before the SYNC goes out.
+        for (int hop = 0; hop < 2; ++hop)
+            QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+        syncCycle();
+    });
     connect(link, &CanLink::frameSent, this, &CanArmSimulator::countSentFrame);
     if (faults.silentAfterFrames == 0)
         silence();

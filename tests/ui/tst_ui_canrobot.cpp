@@ -1,0 +1,117 @@
+#include "UiTestSupport.h"
+
+#include "ui/ConvergenceTableModel.h"
+#include "ui/MessageBar.h"
+#include "ui/SessionController.h"
+
+#include <QComboBox>
+#include <QLineEdit>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QTcpServer>
+#include <QtTest>
+
+using namespace learnid;
+using namespace learnid::test;
+
+namespace {
+
+// A port nobody listens on right now (virtualcan's server is hosted by the simulator).
+quint16 freePort()
+{
+    QTcpServer server;
+    return server.listen(QHostAddress::LocalHost, 0) ? server.serverPort() : 0;
+}
+
+} // namespace
+
+/// The window's CAN robot choice: against learnid-robot-sim over virtualcan on a loopback port,
+/// and the settings a technician can get wrong.
+class TestCanRobotChoice : public QObject
+{
+    Q_OBJECT
+
+private:
+    static void chooseCan(WindowFixture &f, const QString &plugin, const QString &interface,
+                          const QString &nodes)
+    {
+        auto *kind = f.window->findChild<QComboBox *>(QStringLiteral("robotKind"));
+        kind->setCurrentIndex(kind->findData(1));
+        f.window->findChild<QComboBox *>(QStringLiteral("canPlugin"))->setCurrentText(plugin);
+        f.window->findChild<QLineEdit *>(QStringLiteral("canInterface"))->setText(interface);
+        f.window->findChild<QLineEdit *>(QStringLiteral("canNodes"))->setText(nodes);
+    }
+
+private slots:
+    void badNodeList_isRefusedBeforeConnecting()
+    {
+        WindowFixture f;
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        chooseCan(f, QStringLiteral("virtualcan"), QStringLiteral("tcp://127.0.0.1:1/can0"),
+                  QStringLiteral("1,200"));
+        QVERIFY(f.click("connectButton"));
+        QVERIFY(!f.window->controller()->isOpen());
+        const QString text = f.window->messageBar()->text();
+        QVERIFY2(text.contains(QStringLiteral("200")), qPrintable(text));
+    }
+
+    void missingInterface_failsWithAClearMessage()
+    {
+        WindowFixture f;
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        SessionController *c = f.window->controller();
+        QSignalSpy failed(c, &SessionController::openFailed);
+        chooseCan(f, QStringLiteral("socketcan"), QStringLiteral("learnidnoif0"), QStringLiteral("1,2"));
+        QVERIFY(f.click("connectButton"));
+        QVERIFY(failed.wait(10000));
+        const QString message = failed.constFirst().at(0).toString();
+        QVERIFY2(message.contains(QStringLiteral("learnidnoif0")), qPrintable(message));
+        QVERIFY(!c->isOpen());
+        QVERIFY(f.button("connectButton")->isEnabled()); // usable again
+        QVERIFY(f.window->messageBar()->text().contains(QStringLiteral("learnidnoif0")));
+    }
+
+    void sessionOnTheSimulatorOverVirtualcan()
+    {
+        const quint16 port = freePort();
+        QVERIFY(port > 0);
+        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
+        QProcess sim;
+        sim.start(QStringLiteral(LEARNID_ROBOT_SIM_PATH),
+                  {QStringLiteral("--can-plugin"), QStringLiteral("virtualcan"),
+                   QStringLiteral("--can-interface"), interface,
+                   QStringLiteral("--setpoint-timeout"), QStringLiteral("25")});
+        QVERIFY(sim.waitForStarted(5000));
+        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine() || !sim.waitForReadyRead(100), 10000);
+        QCOMPARE(sim.readLine().trimmed(), QByteArray("ready"));
+
+        WindowFixture f;
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        SessionController *c = f.window->controller();
+        chooseCan(f, QStringLiteral("virtualcan"), interface, QStringLiteral("1,2"));
+        QVERIFY(f.click("connectButton"));
+        QTRY_VERIFY_WITH_TIMEOUT(c->lastCheck().has_value(), 20000);
+        QVERIFY(c->info()->robotDescription.contains(QStringLiteral("virtualcan")));
+        QVERIFY(!c->info()->truth.has_value()); // no error-against-truth columns on a real bus
+
+        QSignalSpy finished(c, &SessionController::runFinished);
+        QTRY_VERIFY_WITH_TIMEOUT(f.button("runTrialButton")->isEnabled(), 20000);
+        QVERIFY(f.click("runTrialButton"));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(c->history().size(), 1);
+        QVERIFY2(c->history().constFirst().record.completed(),
+                 qPrintable(c->history().constFirst().record.message));
+        QVERIFY(c->history().constFirst().learned());
+        const ConvergenceTableModel *table = f.window->tableModel();
+        QCOMPARE(table->rowCount(), 2);
+        QCOMPARE(table->columnOf(ConvergenceTableModel::Column::TruthError, 0), -1);
+
+        QVERIFY(f.click("connectButton")); // disconnect
+        QTRY_VERIFY_WITH_TIMEOUT(!c->isOpen(), 10000);
+        sim.terminate();
+        QVERIFY(sim.waitForFinished(5000));
+    }
+};
+
+QTEST_MAIN(TestCanRobotChoice)
+#include "tst_ui_canrobot.moc"
