@@ -39,6 +39,12 @@ learnid_install_deps() {
 learnid_build() {
     local dir="${1:-build}"
     shift || true
-    cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@"
+    local launcher=()
+    if command -v ccache >/dev/null 2>&1; then
+        # Optional: rebuilds (and other clones of the repository) reuse compiled objects.
+        export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
+        launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+    fi
+    cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${launcher[@]}" "$@"
     cmake --build "$dir" -j "$(nproc)"
 }
