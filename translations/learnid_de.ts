@@ -2,13 +2,1581 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>AtomicFile</name>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>no file name given</source>
+        <translation>kein Dateiname angegeben</translation>
+    </message>
+    <message>
+        <source>the same file is to be written twice</source>
+        <translation>dieselbe Datei soll zweimal geschrieben werden</translation>
+    </message>
+    <message>
+        <source>%1 (already written: %2)</source>
+        <translation>%1 (bereits geschrieben: %2)</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>BusLoad</name>
+    <message>
+        <source>Bus load: joints and frames must not be negative, rates must be positive and a frame carries 0 to 8 bytes.</source>
+        <translation>Buslast: Gelenke und Frames dürfen nicht negativ, Raten müssen positiv sein, und ein Frame trägt 0 bis 8 Bytes.</translation>
+    </message>
+    <message>
+        <source>Bus load: the time window and the bitrate must be positive.</source>
+        <translation>Buslast: Zeitfenster und Bitrate müssen positiv sein.</translation>
+    </message>
+    <message>
+        <source>%1 % of %2 kbit/s (%3 frames/s)</source>
+        <translation>%1 % von %2 kbit/s (%3 Frames/s)</translation>
+    </message>
+</context>
+<context>
+    <name>CanArmSimulator</name>
+    <message>
+        <source>The simulated arm has no robot model.</source>
+        <translation>Der simulierte Arm hat kein Robotermodell.</translation>
+    </message>
+    <message>
+        <source>--nodes: the %1 arm has %2 joints, so %2 node ids are needed, not %3.</source>
+        <translation>--nodes: der Arm %1 hat %2 Gelenke, also werden %2 Knoten-IDs gebraucht, nicht %3.</translation>
+    </message>
+    <message>
+        <source>--nodes: %1 is not a CANopen node id (1 to 127).</source>
+        <translation>--nodes: %1 ist keine CANopen-Knoten-ID (1 bis 127).</translation>
+    </message>
+    <message>
+        <source>--nodes: node %1 is listed twice.</source>
+        <translation>--nodes: Knoten %1 ist zweimal aufgeführt.</translation>
+    </message>
+    <message>
+        <source>The simulated arm&apos;s parameters, torque limits, initial pose or gains do not fit the %1 model.</source>
+        <translation>Parameter, Momentengrenzen, Anfangsstellung oder Verstärkungen des simulierten Arms passen nicht zum Modell %1.</translation>
+    </message>
+    <message>
+        <source>The SYNC period must be 1 to 100 ms, not %1 s.</source>
+        <translation>Die SYNC-Periode muss 1 bis 100 ms betragen, nicht %1 s.</translation>
+    </message>
+</context>
+<context>
+    <name>CanOpen</name>
+    <message>
+        <source>Unknown CANopen data type 0x%1.</source>
+        <translation>Unbekannter CANopen-Datentyp 0x%1.</translation>
+    </message>
+    <message>
+        <source>Unknown CANopen data type &quot;%1&quot;.</source>
+        <translation>Unbekannter CANopen-Datentyp „%1“.</translation>
+    </message>
+    <message>
+        <source>%1 is not a numeric type.</source>
+        <translation>%1 ist kein numerischer Typ.</translation>
+    </message>
+    <message>
+        <source>The value %1 does not fit the type %2 (range %3 to %4%5).</source>
+        <translation>Der Wert %1 passt nicht in den Typ %2 (Bereich %3 bis %4%5).</translation>
+    </message>
+    <message>
+        <source>, integers only</source>
+        <translation>, nur ganze Zahlen</translation>
+    </message>
+    <message>
+        <source>%1 needs %2 bytes at offset %3, but only %4 bytes are present.</source>
+        <translation>%1 braucht %2 Bytes ab Offset %3, aber nur %4 Bytes sind vorhanden.</translation>
+    </message>
+</context>
+<context>
+    <name>CanRobot</name>
+    <message>
+        <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
+        <translation>Knoten %1, Objekt %2: nach dem Schreiben von %4 (%5 %6) %3 zurückgelesen: nichts wurde gespeichert</translation>
+    </message>
+    <message>
+        <source>CAN %1/%2, nodes %3</source>
+        <translation>CAN %1/%2, Knoten %3</translation>
+    </message>
+    <message>
+        <source>cannot create the CAN device %1/%2: %3</source>
+        <translation>das CAN-Gerät %1/%2 kann nicht angelegt werden: %3</translation>
+    </message>
+    <message>
+        <source>unknown plugin or interface</source>
+        <translation>unbekanntes Plugin oder unbekannte Schnittstelle</translation>
+    </message>
+    <message>
+        <source>no CAN node given: one node per joint is needed</source>
+        <translation>kein CAN-Knoten angegeben: ein Knoten pro Gelenk ist nötig</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid CANopen node id (1 to 127)</source>
+        <translation>%1 ist keine gültige CANopen-Knoten-ID (1 bis 127)</translation>
+    </message>
+    <message>
+        <source>node %1 is listed twice</source>
+        <translation>Knoten %1 ist zweimal aufgeführt</translation>
+    </message>
+    <message>
+        <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
+        <translation>CAN-Zeitoptionen müssen positiv sein (Heartbeat-Periode höchstens 65535 ms)</translation>
+    </message>
+    <message>
+        <source>the configuration of %1 nodes at %2 Hz needs %3 of the bus, more than the %4 % the tool allows: use fewer nodes per bus or a longer SYNC period</source>
+        <translation>die Konfiguration mit %1 Knoten bei %2 Hz braucht %3 des Busses, mehr als die %4 %, die das Werkzeug zulässt: weniger Knoten pro Bus oder eine längere SYNC-Periode verwenden</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
+        <translation>&apos;%1&apos; ist keine CANopen-Knoten-ID (1 bis 127)</translation>
+    </message>
+    <message>
+        <source>node %1, object %2: the answer holds %3 bytes, UNSIGNED32 needs 4</source>
+        <translation>Knoten %1, Objekt %2: die Antwort enthält %3 Bytes, UNSIGNED32 braucht 4</translation>
+    </message>
+    <message>
+        <source>node %1, object %2 is 0: the drive&apos;s units are unusable</source>
+        <translation>Knoten %1, Objekt %2 ist 0: die Einheiten des Antriebs sind unbrauchbar</translation>
+    </message>
+    <message>
+        <source>the plan is for %1 joints but %2 CAN nodes are configured</source>
+        <translation>der Plan ist für %1 Gelenke, aber %2 CAN-Knoten sind konfiguriert</translation>
+    </message>
+    <message>
+        <source>the sample period %1 ms cannot be sent to 0x60C2 (whole ms, 1 to 255)</source>
+        <translation>die Abtastzeit %1 ms kann nicht an 0x60C2 gesendet werden (ganze ms, 1 bis 255)</translation>
+    </message>
+    <message>
+        <source>node %1, object 0x1006:00: the robot&apos;s SYNC period is %2 us, the plan needs %3 us</source>
+        <translation>Knoten %1, Objekt 0x1006:00: die SYNC-Periode des Roboters ist %2 us, der Plan braucht %3 us</translation>
+    </message>
+    <message>
+        <source>%1: the TPDO answering SYNC %2 (counter %3) did not arrive before the next SYNC: sample missing</source>
+        <translation>%1: das TPDO als Antwort auf SYNC %2 (Zähler %3) kam nicht vor dem nächsten SYNC: Abtastwert fehlt</translation>
+    </message>
+    <message>
+        <source>joint %1</source>
+        <translation>Gelenk %1</translation>
+    </message>
+    <message>
+        <source>SYNC counter jumped from %1 to %2 after SYNC %3: %4 SYNC(s) lost</source>
+        <translation>SYNC-Zähler sprang nach SYNC %3 von %1 auf %2: %4 SYNC verloren</translation>
+    </message>
+    <message>
+        <source>joint %1: TPDO of %2 bytes, the mapping needs %3 (SYNC %4)</source>
+        <translation>Gelenk %1: TPDO mit %2 Bytes, das Mapping braucht %3 (SYNC %4)</translation>
+    </message>
+    <message>
+        <source>at SYNC %1 (counter %2), plan sample %3, t = %4 s</source>
+        <translation>bei SYNC %1 (Zähler %2), Planabtastwert %3, t = %4 s</translation>
+    </message>
+    <message>
+        <source>at SYNC %1 (counter %2), %3 s after NMT start</source>
+        <translation>bei SYNC %1 (Zähler %2), %3 s nach NMT-Start</translation>
+    </message>
+</context>
+<context>
+    <name>CandumpLog</name>
+    <message>
+        <source>the line must start with a timestamp in parentheses, e.g. (1700000000.123456)</source>
+        <translation>die Zeile muss mit einem Zeitstempel in Klammern beginnen, z. B. (1700000000.123456)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a timestamp of the form (seconds.microseconds)</source>
+        <translation>„%1“ ist kein Zeitstempel der Form (Sekunden.Mikrosekunden)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has no &apos;#&apos; between identifier and data</source>
+        <translation>„%1“ hat kein &apos;#&apos; zwischen Identifier und Daten</translation>
+    </message>
+    <message>
+        <source>CAN FD frames are not supported</source>
+        <translation>CAN-FD-Frames werden nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an identifier of 3 (standard) or 8 (extended) hex digits</source>
+        <translation>„%1“ ist kein Identifier aus 3 (Standard) oder 8 (erweitert) Hexadezimalziffern</translation>
+    </message>
+    <message>
+        <source>the standard identifier %1 exceeds 7FF</source>
+        <translation>der Standard-Identifier %1 überschreitet 7FF</translation>
+    </message>
+    <message>
+        <source>the extended identifier %1 exceeds 1FFFFFFF</source>
+        <translation>der erweiterte Identifier %1 überschreitet 1FFFFFFF</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a remote request (R, optionally with a length 0 to 8)</source>
+        <translation>„%1“ ist keine Remote-Anfrage (R, wahlweise mit einer Länge 0 bis 8)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not data of whole bytes in hex digits</source>
+        <translation>„%1“ sind keine Daten aus ganzen Bytes in Hexadezimalziffern</translation>
+    </message>
+    <message>
+        <source>%1 data bytes; a classic CAN frame carries at most 8</source>
+        <translation>%1 Datenbytes; ein klassischer CAN-Frame trägt höchstens 8</translation>
+    </message>
+    <message>
+        <source>expected &quot;(timestamp) interface id#data&quot;, found %1 fields</source>
+        <translation>erwartet „(Zeitstempel) Schnittstelle id#Daten“, gefunden: %1 Felder</translation>
+    </message>
+    <message>
+        <source>unexpected text after the frame: &quot;%1&quot;</source>
+        <translation>unerwarteter Text nach dem Frame: „%1“</translation>
+    </message>
+    <message>
+        <source>Cannot open the candump log %1: %2</source>
+        <translation>Das candump-Log %1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>Writing the candump log failed: %1</source>
+        <translation>Schreiben des candump-Logs fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write the candump log %1: %2</source>
+        <translation>Das candump-Log %1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>CartesianLine</name>
+    <message>
+        <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
+        <translation>ungültiger Zeitablauf: Abtastzeit und Dauer müssen positiv sein, Ruhezeiten nicht negativ</translation>
+    </message>
+    <message>
+        <source>a planar line needs 2 joints</source>
+        <translation>eine ebene Gerade braucht 2 Gelenke</translation>
+    </message>
+</context>
+<context>
+    <name>Cia402</name>
+    <message>
+        <source>Not ready to switch on</source>
+        <translation>Nicht einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation>Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation>Einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation>Eingeschaltet</translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation>Betrieb freigegeben</translation>
+    </message>
+    <message>
+        <source>Quick stop active</source>
+        <translation>Schnellhalt aktiv</translation>
+    </message>
+    <message>
+        <source>Fault reaction active</source>
+        <translation>Fehlerreaktion aktiv</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>Unknown drive state</source>
+        <translation>Unbekannter Antriebszustand</translation>
+    </message>
+</context>
+<context>
+    <name>EmcyConsumer</name>
+    <message>
+        <source>error reset or no error</source>
+        <translation>Fehler zurückgesetzt oder kein Fehler</translation>
+    </message>
+    <message>
+        <source>generic error</source>
+        <translation>allgemeiner Fehler</translation>
+    </message>
+    <message>
+        <source>current</source>
+        <translation>Strom</translation>
+    </message>
+    <message>
+        <source>current, device input side</source>
+        <translation>Strom, Geräteeingangsseite</translation>
+    </message>
+    <message>
+        <source>current inside the device</source>
+        <translation>Strom im Gerät</translation>
+    </message>
+    <message>
+        <source>current, device output side</source>
+        <translation>Strom, Geräteausgangsseite</translation>
+    </message>
+    <message>
+        <source>continuous over-current</source>
+        <translation>Dauerüberstrom</translation>
+    </message>
+    <message>
+        <source>short circuit or earth leakage</source>
+        <translation>Kurzschluss oder Erdschluss</translation>
+    </message>
+    <message>
+        <source>voltage</source>
+        <translation>Spannung</translation>
+    </message>
+    <message>
+        <source>mains voltage</source>
+        <translation>Netzspannung</translation>
+    </message>
+    <message>
+        <source>voltage inside the device</source>
+        <translation>Spannung im Gerät</translation>
+    </message>
+    <message>
+        <source>DC link over-voltage</source>
+        <translation>Zwischenkreisüberspannung</translation>
+    </message>
+    <message>
+        <source>DC link under-voltage</source>
+        <translation>Zwischenkreisunterspannung</translation>
+    </message>
+    <message>
+        <source>output voltage</source>
+        <translation>Ausgangsspannung</translation>
+    </message>
+    <message>
+        <source>temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <source>ambient temperature</source>
+        <translation>Umgebungstemperatur</translation>
+    </message>
+    <message>
+        <source>device temperature</source>
+        <translation>Gerätetemperatur</translation>
+    </message>
+    <message>
+        <source>drive excess temperature</source>
+        <translation>Übertemperatur des Antriebs</translation>
+    </message>
+    <message>
+        <source>device hardware</source>
+        <translation>Gerätehardware</translation>
+    </message>
+    <message>
+        <source>device software</source>
+        <translation>Gerätesoftware</translation>
+    </message>
+    <message>
+        <source>internal software</source>
+        <translation>interne Software</translation>
+    </message>
+    <message>
+        <source>user software</source>
+        <translation>Anwendersoftware</translation>
+    </message>
+    <message>
+        <source>data set</source>
+        <translation>Datensatz</translation>
+    </message>
+    <message>
+        <source>additional modules</source>
+        <translation>Zusatzmodule</translation>
+    </message>
+    <message>
+        <source>sensor</source>
+        <translation>Sensor</translation>
+    </message>
+    <message>
+        <source>incremental sensor 1 fault</source>
+        <translation>Fehler Inkrementalgeber 1</translation>
+    </message>
+    <message>
+        <source>monitoring</source>
+        <translation>Überwachung</translation>
+    </message>
+    <message>
+        <source>communication</source>
+        <translation>Kommunikation</translation>
+    </message>
+    <message>
+        <source>CAN overrun (objects lost)</source>
+        <translation>CAN-Überlauf (Objekte verloren)</translation>
+    </message>
+    <message>
+        <source>CAN in error passive mode</source>
+        <translation>CAN im Zustand Error Passive</translation>
+    </message>
+    <message>
+        <source>life guard or heartbeat error</source>
+        <translation>Life-Guarding- oder Heartbeat-Fehler</translation>
+    </message>
+    <message>
+        <source>recovered from bus off</source>
+        <translation>von Bus-Off erholt</translation>
+    </message>
+    <message>
+        <source>CAN-ID collision</source>
+        <translation>CAN-ID-Kollision</translation>
+    </message>
+    <message>
+        <source>protocol error</source>
+        <translation>Protokollfehler</translation>
+    </message>
+    <message>
+        <source>PDO not processed due to length error</source>
+        <translation>PDO wegen Längenfehler nicht verarbeitet</translation>
+    </message>
+    <message>
+        <source>PDO length exceeded</source>
+        <translation>PDO-Länge überschritten</translation>
+    </message>
+    <message>
+        <source>unexpected SYNC data length</source>
+        <translation>unerwartete SYNC-Datenlänge</translation>
+    </message>
+    <message>
+        <source>RPDO timeout</source>
+        <translation>RPDO-Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <source>positioning controller</source>
+        <translation>Lageregler</translation>
+    </message>
+    <message>
+        <source>following error</source>
+        <translation>Schleppfehler</translation>
+    </message>
+    <message>
+        <source>external error</source>
+        <translation>externer Fehler</translation>
+    </message>
+    <message>
+        <source>additional functions</source>
+        <translation>Zusatzfunktionen</translation>
+    </message>
+    <message>
+        <source>device specific</source>
+        <translation>gerätespezifisch</translation>
+    </message>
+    <message>
+        <source>generic</source>
+        <translation>allgemein</translation>
+    </message>
+    <message>
+        <source>device profile</source>
+        <translation>Geräteprofil</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>reserviert</translation>
+    </message>
+    <message>
+        <source>manufacturer</source>
+        <translation>herstellerspezifisch</translation>
+    </message>
+    <message>
+        <source>unknown error code</source>
+        <translation>unbekannter Fehlercode</translation>
+    </message>
+    <message>
+        <source>no error</source>
+        <translation>kein Fehler</translation>
+    </message>
+    <message>
+        <source>Node %1 emergency %2: %3; error register %4: %5; manufacturer data %6</source>
+        <translation>Knoten %1 EMCY %2: %3; Fehlerregister %4: %5; Herstellerdaten %6</translation>
+    </message>
+</context>
+<context>
+    <name>JsonReader</name>
+    <message>
+        <source>%1 (beyond the range of a double)</source>
+        <translation>%1 (außerhalb des Wertebereichs von double)</translation>
+    </message>
+    <message>
+        <source>an array</source>
+        <translation>ein Array</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>ein Objekt</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nichts</translation>
+    </message>
+    <message>
+        <source>an integer from %1 to %2</source>
+        <translation>eine ganze Zahl von %1 bis %2</translation>
+    </message>
+    <message>
+        <source>%1: the file is empty; expected a JSON object</source>
+        <translation>%1: die Datei ist leer; erwartet wird ein JSON-Objekt</translation>
+    </message>
+    <message>
+        <source>%1: invalid JSON at line %2, column %3 (byte offset %4): %5</source>
+        <translation>%1: ungültiges JSON in Zeile %2, Spalte %3 (Byte-Offset %4): %5</translation>
+    </message>
+    <message>
+        <source>%1: the top level must be a JSON object, got %2</source>
+        <translation>%1: die oberste Ebene muss ein JSON-Objekt sein, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>a single value</source>
+        <translation>ein einzelner Wert</translation>
+    </message>
+    <message>
+        <source>must be a finite number, got %1, which is beyond the range of a double</source>
+        <translation>muss eine endliche Zahl sein, gefunden: %1, außerhalb des Wertebereichs von double</translation>
+    </message>
+    <message>
+        <source>must be a number, got %1</source>
+        <translation>muss eine Zahl sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>must be a finite number, got %1</source>
+        <translation>muss eine endliche Zahl sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>must be %1, got %2</source>
+        <translation>muss %1 sein, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>must be a string, got %1</source>
+        <translation>muss eine Zeichenkette sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>must be true or false, got %1</source>
+        <translation>muss true oder false sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>must be an array, got %1</source>
+        <translation>muss ein Array sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>must be an object, got %1</source>
+        <translation>muss ein Objekt sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>is missing; this key is required</source>
+        <translation>fehlt; dieser Schlüssel ist erforderlich</translation>
+    </message>
+    <message>
+        <source>unknown key; allowed here: %1</source>
+        <translation>unbekannter Schlüssel; hier erlaubt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>LearningLaw</name>
+    <message>
+        <source>no completed trial to learn from</source>
+        <translation>kein abgeschlossener Versuch, aus dem gelernt werden kann</translation>
+    </message>
+    <message>
+        <source>trial record does not match its plan: %1 of %2 samples, %3 joints recorded for a %4-joint model</source>
+        <translation>Versuchsaufzeichnung passt nicht zu ihrem Plan: %1 von %2 Abtastwerten, %3 Gelenke aufgezeichnet für ein Modell mit %4 Gelenken</translation>
+    </message>
+    <message>
+        <source>trial record has only %1 samples</source>
+        <translation>Versuchsaufzeichnung hat nur %1 Abtastwerte</translation>
+    </message>
+    <message>
+        <source>trial record has a non-finite %1 at sample %2, joint %3</source>
+        <translation>Versuchsaufzeichnung hat einen nicht endlichen Wert (%1) bei Abtastwert %2, Gelenk %3</translation>
+    </message>
+    <message>
+        <source>torque</source>
+        <translation>Moment</translation>
+    </message>
+    <message>
+        <source>angle</source>
+        <translation>Winkel</translation>
+    </message>
+</context>
+<context>
+    <name>ManufacturerObjects</name>
+    <message>
+        <source>No node to write the parameters to.</source>
+        <translation>Kein Knoten, in den die Parameter geschrieben werden können.</translation>
+    </message>
+    <message>
+        <source>A parameter set holds 1 to %1 parameters, not %2.</source>
+        <translation>Ein Parametersatz enthält 1 bis %1 Parameter, nicht %2.</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid CANopen node id (1 to 127).</source>
+        <translation>%1 ist keine gültige CANopen-Knoten-ID (1 bis 127).</translation>
+    </message>
+    <message>
+        <source>Node %1 is listed twice.</source>
+        <translation>Knoten %1 ist zweimal aufgeführt.</translation>
+    </message>
+    <message>
+        <source>Parameter %1 (%2) cannot be sent as REAL32.</source>
+        <translation>Parameter %1 (%2) kann nicht als REAL32 gesendet werden.</translation>
+    </message>
+</context>
+<context>
+    <name>Nmt</name>
+    <message>
+        <source>boot-up</source>
+        <translation>Boot-up</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>Stopped</translation>
+    </message>
+    <message>
+        <source>operational</source>
+        <translation>Operational</translation>
+    </message>
+    <message>
+        <source>pre-operational</source>
+        <translation>Pre-Operational</translation>
+    </message>
+</context>
+<context>
+    <name>ObservableUpdate</name>
+    <message>
+        <source>least squares sizes do not match: %1 x %2 regressor, %3 targets, %4 joints, %5 parameters</source>
+        <translation>Größen der kleinsten Quadrate passen nicht: %1 x %2 Regressor, %3 Zielwerte, %4 Gelenke, %5 Parameter</translation>
+    </message>
+    <message>
+        <source>the regressor or the torque contains non-finite values</source>
+        <translation>der Regressor oder das Moment enthält nicht endliche Werte</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterFile</name>
+    <message>
+        <source>does not fit a REAL32 object entry, got %1</source>
+        <translation>passt nicht in einen REAL32-Objekteintrag, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>DCF fragment: joint %1 does not exist; the robot has %2 joints</source>
+        <translation>DCF-Fragment: Gelenk %1 existiert nicht; der Roboter hat %2 Gelenke</translation>
+    </message>
+    <message>
+        <source>must be given for every parameter or for none</source>
+        <translation>muss für jeden Parameter oder für keinen angegeben sein</translation>
+    </message>
+    <message>
+        <source>must be an object index written as &quot;0x&quot; and four hex digits, got &quot;%1&quot;</source>
+        <translation>muss ein Objektindex aus „0x“ und vier Hexadezimalziffern sein, gefunden: „%1“</translation>
+    </message>
+    <message>
+        <source>must be the bytes written as pairs of hex digits, got &quot;%1&quot;</source>
+        <translation>müssen die geschriebenen Bytes als Paare von Hexadezimalziffern sein, gefunden: „%1“</translation>
+    </message>
+    <message>
+        <source>must be a date and time as in 2024-05-01T12:00:00.000Z, got &quot;%1&quot;</source>
+        <translation>muss Datum und Uhrzeit wie 2024-05-01T12:00:00.000Z sein, gefunden: „%1“</translation>
+    </message>
+    <message>
+        <source>is missing; this is not a learnid parameter file</source>
+        <translation>fehlt; dies ist keine learnid-Parameterdatei</translation>
+    </message>
+    <message>
+        <source>this version of learnid reads &quot;%1&quot;, got %2</source>
+        <translation>diese Version von learnid liest „%1“, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>is missing; this key is required</source>
+        <translation>fehlt; dieser Schlüssel ist erforderlich</translation>
+    </message>
+    <message>
+        <source>does not match the content: the file was changed after learnid wrote it, or is damaged</source>
+        <translation>passt nicht zum Inhalt: die Datei wurde nach dem Schreiben durch learnid geändert oder ist beschädigt</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>unknown model &quot;%1&quot;; known models: %2</source>
+        <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
+    </message>
+    <message>
+        <source>one per joint of %1</source>
+        <translation>einer pro Gelenk von %1</translation>
+    </message>
+    <message>
+        <source>node %1 is given to two joints</source>
+        <translation>Knoten %1 ist zwei Gelenken zugeordnet</translation>
+    </message>
+    <message>
+        <source>must be a valid date and time</source>
+        <translation>muss ein gültiges Datum mit Uhrzeit sein</translation>
+    </message>
+    <message>
+        <source>must not be empty</source>
+        <translation>darf nicht leer sein</translation>
+    </message>
+    <message>
+        <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
+        <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
+    </message>
+    <message>
+        <source>must be a trial index or -1 (not recorded), got %1</source>
+        <translation>muss ein Versuchsindex oder -1 (nicht aufgezeichnet) sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>one per parameter of %1</source>
+        <translation>einer pro Parameter von %1</translation>
+    </message>
+    <message>
+        <source>must be &quot;%1&quot; (parameter %2 of %3), got &quot;%4&quot;</source>
+        <translation>muss „%1“ sein (Parameter %2 von %3), gefunden: „%4“</translation>
+    </message>
+    <message>
+        <source>values, %1</source>
+        <translation>Werte, %1</translation>
+    </message>
+    <message>
+        <source>standard deviations, %1</source>
+        <translation>Standardabweichungen, %1</translation>
+    </message>
+    <message>
+        <source>must name the CANopen data type</source>
+        <translation>muss den CANopen-Datentyp nennen</translation>
+    </message>
+    <message>
+        <source>must hold the bytes written</source>
+        <translation>muss die geschriebenen Bytes enthalten</translation>
+    </message>
+</context>
+<context>
+    <name>Pdo</name>
+    <message>
+        <source>PDO %1 does not exist; learnid uses PDO 1 to 4.</source>
+        <translation>PDO %1 existiert nicht; learnid nutzt PDO 1 bis 4.</translation>
+    </message>
+    <message>
+        <source>Object %1 of type %2 cannot be mapped into a PDO.</source>
+        <translation>Objekt %1 vom Typ %2 kann nicht in ein PDO gemappt werden.</translation>
+    </message>
+    <message>
+        <source>The mapped objects need %1 bits; a PDO holds at most %2 bits (8 bytes).</source>
+        <translation>Die gemappten Objekte brauchen %1 Bit; ein PDO fasst höchstens %2 Bit (8 Bytes).</translation>
+    </message>
+    <message>
+        <source>The PDO maps %1 objects but %2 values were given.</source>
+        <translation>Das PDO mappt %1 Objekte, aber %2 Werte wurden angegeben.</translation>
+    </message>
+    <message>
+        <source>PDO object %1: %2</source>
+        <translation>PDO-Objekt %1: %2</translation>
+    </message>
+    <message>
+        <source>The PDO carries %1 bytes; its mapping needs %2.</source>
+        <translation>Das PDO trägt %1 Bytes; sein Mapping braucht %2.</translation>
+    </message>
+</context>
+<context>
+    <name>SafetyCheck</name>
+    <message>
+        <source>the estimate is not a physical robot: its mass matrix is not positive definite at t = %1 s</source>
+        <translation>die Schätzung ist kein physikalischer Roboter: ihre Massenmatrix ist bei t = %1 s nicht positiv definit</translation>
+    </message>
+    <message>
+        <source>the closed loop would be unstable: linearised along the path with the current estimate, a pole has |z| = %1 (growth rate %2 1/s) at t = %3 s. Raise the derivative filter bandwidth lambda or lower the gains</source>
+        <translation>der Regelkreis wäre instabil: entlang der Bahn mit der aktuellen Schätzung linearisiert, hat ein Pol bei t = %3 s |z| = %1 (Wachstumsrate %2 1/s). Die Bandbreite lambda des Differenzierfilters erhöhen oder die Verstärkungen senken</translation>
+    </message>
+    <message>
+        <source>planned torque of joint %1 is %2 N m, above its limit of %3 N m</source>
+        <translation>geplantes Moment von Gelenk %1 ist %2 N m, über seiner Grenze von %3 N m</translation>
+    </message>
+</context>
+<context>
+    <name>ScenarioFile</name>
+    <message>
+        <source>must be %1, got %2</source>
+        <translation>muss %1 sein, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>this version of learnid reads &quot;%1&quot;, got %2</source>
+        <translation>diese Version von learnid liest „%1“, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>unknown model &quot;%1&quot;; known models: %2</source>
+        <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
+    </message>
+    <message>
+        <source>one per joint of %1</source>
+        <translation>einer pro Gelenk von %1</translation>
+    </message>
+    <message>
+        <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
+        <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
+    </message>
+    <message>
+        <source>one per parameter of %1</source>
+        <translation>einer pro Parameter von %1</translation>
+    </message>
+    <message>
+        <source>1 or -1</source>
+        <translation>1 oder -1</translation>
+    </message>
+    <message>
+        <source>must have 2 entries (x and y), got %1</source>
+        <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
+    </message>
+    <message>
+        <source>one per joint</source>
+        <translation>einer pro Gelenk</translation>
+    </message>
+    <message>
+        <source>must be 1 or -1, got %1</source>
+        <translation>muss 1 oder -1 sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
+        <translation>muss 0 (idealer Encoder) oder eine ganze Zahl von %1 bis %2 sein, gefunden: %3</translation>
+    </message>
+</context>
+<context>
+    <name>SdoAbortCode</name>
+    <message>
+        <source>Toggle bit not alternated.</source>
+        <translation>Toggle-Bit nicht gewechselt.</translation>
+    </message>
+    <message>
+        <source>SDO protocol timed out.</source>
+        <translation>Zeitüberschreitung im SDO-Protokoll.</translation>
+    </message>
+    <message>
+        <source>Client/server command specifier not valid or unknown.</source>
+        <translation>Client/Server-Kommandokennung ungültig oder unbekannt.</translation>
+    </message>
+    <message>
+        <source>Invalid block size (block mode only).</source>
+        <translation>Ungültige Blockgröße (nur Blockmodus).</translation>
+    </message>
+    <message>
+        <source>Invalid sequence number (block mode only).</source>
+        <translation>Ungültige Sequenznummer (nur Blockmodus).</translation>
+    </message>
+    <message>
+        <source>CRC error (block mode only).</source>
+        <translation>CRC-Fehler (nur Blockmodus).</translation>
+    </message>
+    <message>
+        <source>Out of memory.</source>
+        <translation>Kein Speicher mehr.</translation>
+    </message>
+    <message>
+        <source>Unsupported access to an object.</source>
+        <translation>Nicht unterstützter Zugriff auf ein Objekt.</translation>
+    </message>
+    <message>
+        <source>Attempt to read a write-only object.</source>
+        <translation>Versuch, ein nur schreibbares Objekt zu lesen.</translation>
+    </message>
+    <message>
+        <source>Attempt to write a read-only object.</source>
+        <translation>Versuch, ein nur lesbares Objekt zu schreiben.</translation>
+    </message>
+    <message>
+        <source>Object does not exist in the object dictionary.</source>
+        <translation>Objekt existiert nicht im Objektverzeichnis.</translation>
+    </message>
+    <message>
+        <source>Object cannot be mapped to the PDO.</source>
+        <translation>Objekt kann nicht in das PDO gemappt werden.</translation>
+    </message>
+    <message>
+        <source>The number and length of the objects to be mapped would exceed the PDO length.</source>
+        <translation>Anzahl und Länge der zu mappenden Objekte würden die PDO-Länge überschreiten.</translation>
+    </message>
+    <message>
+        <source>General parameter incompatibility.</source>
+        <translation>Allgemeine Parameterunverträglichkeit.</translation>
+    </message>
+    <message>
+        <source>General internal incompatibility in the device.</source>
+        <translation>Allgemeine interne Unverträglichkeit im Gerät.</translation>
+    </message>
+    <message>
+        <source>Access failed due to a hardware error.</source>
+        <translation>Zugriff wegen eines Hardwarefehlers fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>Data type does not match: the length of the service parameter does not match.</source>
+        <translation>Datentyp passt nicht: die Länge des Dienstparameters passt nicht.</translation>
+    </message>
+    <message>
+        <source>Data type does not match: the length of the service parameter is too high.</source>
+        <translation>Datentyp passt nicht: die Länge des Dienstparameters ist zu groß.</translation>
+    </message>
+    <message>
+        <source>Data type does not match: the length of the service parameter is too low.</source>
+        <translation>Datentyp passt nicht: die Länge des Dienstparameters ist zu klein.</translation>
+    </message>
+    <message>
+        <source>Sub-index does not exist.</source>
+        <translation>Subindex existiert nicht.</translation>
+    </message>
+    <message>
+        <source>Invalid value for the parameter (download only).</source>
+        <translation>Ungültiger Wert für den Parameter (nur Download).</translation>
+    </message>
+    <message>
+        <source>Value of the parameter written too high (download only).</source>
+        <translation>Geschriebener Parameterwert zu hoch (nur Download).</translation>
+    </message>
+    <message>
+        <source>Value of the parameter written too low (download only).</source>
+        <translation>Geschriebener Parameterwert zu niedrig (nur Download).</translation>
+    </message>
+    <message>
+        <source>Maximum value is less than minimum value.</source>
+        <translation>Maximalwert ist kleiner als Minimalwert.</translation>
+    </message>
+    <message>
+        <source>Resource not available: SDO connection.</source>
+        <translation>Ressource nicht verfügbar: SDO-Verbindung.</translation>
+    </message>
+    <message>
+        <source>General error.</source>
+        <translation>Allgemeiner Fehler.</translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application.</source>
+        <translation>Daten können nicht zur Anwendung übertragen oder dort gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of local control.</source>
+        <translation>Daten können wegen lokaler Steuerung nicht zur Anwendung übertragen oder dort gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of the present device state.</source>
+        <translation>Daten können wegen des aktuellen Gerätezustands nicht zur Anwendung übertragen oder dort gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>Object dictionary dynamic generation failed or no object dictionary is present.</source>
+        <translation>Dynamisches Erzeugen des Objektverzeichnisses fehlgeschlagen oder kein Objektverzeichnis vorhanden.</translation>
+    </message>
+    <message>
+        <source>No data available.</source>
+        <translation>Keine Daten verfügbar.</translation>
+    </message>
+    <message>
+        <source>Unknown abort code %1.</source>
+        <translation>Unbekannter Abbruchcode %1.</translation>
+    </message>
+</context>
+<context>
+    <name>SdoWrite</name>
+    <message>
+        <source>%1 is not a valid CANopen node id (1 to 127).</source>
+        <translation>%1 ist keine gültige CANopen-Knoten-ID (1 bis 127).</translation>
+    </message>
+    <message>
+        <source>Node %1, object %2: %3</source>
+        <translation>Knoten %1, Objekt %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>SessionReport</name>
+    <message>
+        <source>estimate %1 does not exist in this session</source>
+        <translation>Schätzung %1 existiert in dieser Sitzung nicht</translation>
+    </message>
+</context>
+<context>
+    <name>SimulatedRobot</name>
+    <message>
+        <source>simulated %1</source>
+        <translation>Simulation %1</translation>
+    </message>
+    <message>
+        <source>tracking error of joint %1 reached %2 deg at t = %3 s (limit %4 deg): quick stop</source>
+        <translation>Folgefehler von Gelenk %1 erreichte %2° bei t = %3 s (Grenze %4°): Schnellhalt</translation>
+    </message>
+    <message>
+        <source>drive of joint 1 reported a fault at t = %1 s (injected)</source>
+        <translation>Antrieb von Gelenk 1 meldete bei t = %1 s einen Fehler (eingespeist)</translation>
+    </message>
+    <message>
+        <source>stopped by the operator at t = %1 s</source>
+        <translation>vom Bediener gestoppt bei t = %1 s</translation>
+    </message>
+    <message>
+        <source>the simulated controller refused the parameter write (injected fault); its stored parameters are unchanged</source>
+        <translation>die simulierte Steuerung lehnte das Schreiben der Parameter ab (eingespeister Fehler); ihre gespeicherten Parameter sind unverändert</translation>
+    </message>
+    <message>
+        <source>parameter set has %1 values, the model needs %2 finite values</source>
+        <translation>der Parametersatz hat %1 Werte, das Modell braucht %2 endliche Werte</translation>
+    </message>
+</context>
+<context>
+    <name>TorqueRule</name>
+    <message>
+        <source>torque rule needs 2 grid points</source>
+        <translation>die Momentenregel braucht 2 Stützstellen</translation>
+    </message>
+    <message>
+        <source>torque rule needs one positive limit per joint and a positive fraction</source>
+        <translation>die Momentenregel braucht eine positive Grenze pro Gelenk und einen positiven Anteil</translation>
+    </message>
+    <message>
+        <source>gravity alone needs more than %1 % of a joint&apos;s torque limit</source>
+        <translation>die Schwerkraft allein braucht mehr als %1 % der Momentengrenze eines Gelenks</translation>
+    </message>
+    <message>
+        <source>the path needs no torque: check its length and the parameters</source>
+        <translation>die Bahn braucht kein Moment: Länge und Parameter prüfen</translation>
+    </message>
+</context>
+<context>
+    <name>TrialCsv</name>
+    <message>
+        <source>%1: line %2: %3</source>
+        <translation>%1: Zeile %2: %3</translation>
+    </message>
+    <message>
+        <source>trial CSV: the record (%1 joints, %2 samples) does not fit its plan (%3 joints, %4 samples)</source>
+        <translation>Versuchs-CSV: die Aufzeichnung (%1 Gelenke, %2 Abtastwerte) passt nicht zu ihrem Plan (%3 Gelenke, %4 Abtastwerte)</translation>
+    </message>
+    <message>
+        <source>the file is empty; expected the header line</source>
+        <translation>die Datei ist leer; erwartet wird die Kopfzeile</translation>
+    </message>
+    <message>
+        <source>the header must be %1 (for one or more joints), got %2</source>
+        <translation>die Kopfzeile muss %1 lauten (für ein oder mehrere Gelenke), gefunden: %2</translation>
+    </message>
+    <message>
+        <source>expected %1 fields, got %2</source>
+        <translation>%1 Felder erwartet, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a number: &quot;%2&quot;</source>
+        <translation>%1 ist keine Zahl: „%2“</translation>
+    </message>
+    <message>
+        <source>t_s must be finite and increase from line to line, got %1</source>
+        <translation>t_s muss endlich sein und von Zeile zu Zeile zunehmen, gefunden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>TrialPlanner</name>
+    <message>
+        <source>only planar 2-link arms have Cartesian line kinematics</source>
+        <translation>nur ebene Zweigelenkarme haben eine kartesische Geradenkinematik</translation>
+    </message>
+</context>
+<context>
+    <name>TrialStatus</name>
+    <message>
+        <source>completed</source>
+        <translation>abgeschlossen</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>robot fault</source>
+        <translation>Roboterfehler</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>vom Bediener gestoppt</translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <translation>abgelehnt</translation>
+    </message>
+</context>
+<context>
+    <name>TwoLinkArm</name>
+    <message>
+        <source>inertia of the base axis</source>
+        <translation>Trägheit der Basisachse</translation>
+    </message>
+    <message>
+        <source>coupling inertia of the two links</source>
+        <translation>Koppelträgheit der beiden Glieder</translation>
+    </message>
+    <message>
+        <source>inertia of the second link</source>
+        <translation>Trägheit des zweiten Glieds</translation>
+    </message>
+</context>
+<context>
+    <name>TwoLinkKinematics</name>
+    <message>
+        <source>point (%1, %2) m is out of reach or at a singularity of the arm (link lengths %3 m and %4 m)</source>
+        <translation>Punkt (%1, %2) m ist außer Reichweite oder in einer Singularität des Arms (Gliedlängen %3 m und %4 m)</translation>
+    </message>
+</context>
+<context>
+    <name>ValueChecks</name>
+    <message>
+        <source>must be a finite number, got %1</source>
+        <translation>muss eine endliche Zahl sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>must be %1, got %2</source>
+        <translation>muss %1 sein, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>must be a positive number, got %1</source>
+        <translation>muss eine positive Zahl sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>must be zero or a positive number, got %1</source>
+        <translation>muss null oder eine positive Zahl sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>must be zero, a positive number or unbounded (null), got %1</source>
+        <translation>muss null, eine positive Zahl oder unbegrenzt (null) sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>must be from %1 to %2</source>
+        <translation>muss zwischen %1 und %2 liegen</translation>
+    </message>
+    <message>
+        <source>must be greater than %1 and at most %2</source>
+        <translation>muss größer als %1 und höchstens %2 sein</translation>
+    </message>
+    <message>
+        <source>must be greater than %1 and less than %2</source>
+        <translation>muss größer als %1 und kleiner als %2 sein</translation>
+    </message>
+    <message>
+        <source>%1, got %2</source>
+        <translation>%1, gefunden: %2</translation>
+    </message>
+    <message>
+        <source>must have %1 entries (%2), got %3</source>
+        <translation>muss %1 Einträge haben (%2), gefunden: %3</translation>
+    </message>
+</context>
+<context>
+    <name>Workspace</name>
+    <message>
+        <source>%1: %2: too many levels of symbolic links</source>
+        <translation>%1: %2: zu viele Ebenen symbolischer Links</translation>
+    </message>
+    <message>
+        <source>%1: no path given</source>
+        <translation>%1: kein Pfad angegeben</translation>
+    </message>
+    <message>
+        <source>%1: the workspace %2 does not exist or is not a folder</source>
+        <translation>%1: der Arbeitsbereich %2 existiert nicht oder ist kein Ordner</translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the workspace %3 (resolved to %4)</source>
+        <translation>%1: %2 liegt außerhalb des Arbeitsbereichs %3 (aufgelöst zu %4)</translation>
+    </message>
+</context>
+<context>
+    <name>learnid-cli</name>
+    <message>
+        <source>learnid-cli: error: %1</source>
+        <translation>learnid-cli: Fehler: %1</translation>
+    </message>
+    <message>
+        <source>Usage:
+  learnid-cli scenario --print
+      Print the default scenario (the paper scenario) as JSON.
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--workspace DIR] [--quiet]
+      Run a commissioning session on the simulated robot. The table goes to
+      stdout, progress to stderr. Output paths must lie inside the workspace
+      (default: the current directory). Files are written only when every
+      trial completed.
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
+      --can-log writes every trial&apos;s frames as a candump log into DIR.
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      Re-identify from recorded trials: the session runs again with each log
+      (one per trial, in order) answering in place of the robot.
+</source>
+        <translation>Aufruf:
+  learnid-cli scenario --print
+      Gibt das Standardszenario (das Szenario des Artikels) als JSON aus.
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--workspace DIR] [--quiet]
+      Führt eine Inbetriebnahmesitzung am simulierten Roboter aus. Tabelle nach
+      stdout, Fortschritt nach stderr. Ausgabepfade müssen im Arbeitsbereich
+      liegen (Standard: aktuelles Verzeichnis). Dateien werden nur geschrieben,
+      wenn jeder Versuch abgeschlossen wurde.
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);
+      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR.
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      Identifiziert neu aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
+      und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.
+</translation>
+    </message>
+    <message>
+        <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
+        <translation>--robot: muss &apos;sim&apos; oder &apos;can&apos; sein, gefunden: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--%1 needs --robot can</source>
+        <translation>--%1 braucht --robot can</translation>
+    </message>
+    <message>
+        <source>--can-log needs --robot can</source>
+        <translation>--can-log braucht --robot can</translation>
+    </message>
+    <message>
+        <source>--robot can needs --can-plugin (e.g. socketcan, virtualcan)</source>
+        <translation>--robot can braucht --can-plugin (z. B. socketcan, virtualcan)</translation>
+    </message>
+    <message>
+        <source>--robot can needs --can-interface (e.g. can0)</source>
+        <translation>--robot can braucht --can-interface (z. B. can0)</translation>
+    </message>
+    <message>
+        <source>--nodes: %1 in &apos;%2&apos;</source>
+        <translation>--nodes: %1 in &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>--nodes %1: %2</source>
+        <translation>--nodes %1: %2</translation>
+    </message>
+    <message>
+        <source>--robot %1: %2</source>
+        <translation>--robot %1: %2</translation>
+    </message>
+    <message>
+        <source>Print the default scenario.</source>
+        <translation>Standardszenario ausgeben.</translation>
+    </message>
+    <message>
+        <source>Scenario file.</source>
+        <translation>Szenariodatei.</translation>
+    </message>
+    <message>
+        <source>Learning law.</source>
+        <translation>Lerngesetz.</translation>
+    </message>
+    <message>
+        <source>Learning trials.</source>
+        <translation>Lernversuche.</translation>
+    </message>
+    <message>
+        <source>JSON report.</source>
+        <translation>JSON-Bericht.</translation>
+    </message>
+    <message>
+        <source>Parameter file.</source>
+        <translation>Parameterdatei.</translation>
+    </message>
+    <message>
+        <source>Trial CSV folder.</source>
+        <translation>Ordner für Versuchs-CSV.</translation>
+    </message>
+    <message>
+        <source>Apply the final estimate.</source>
+        <translation>Die letzte Schätzung übertragen.</translation>
+    </message>
+    <message>
+        <source>Workspace folder.</source>
+        <translation>Arbeitsbereichsordner.</translation>
+    </message>
+    <message>
+        <source>No progress on stderr.</source>
+        <translation>Kein Fortschritt auf stderr.</translation>
+    </message>
+    <message>
+        <source>sim or can.</source>
+        <translation>sim oder can.</translation>
+    </message>
+    <message>
+        <source>QCanBus plugin.</source>
+        <translation>QCanBus-Plugin.</translation>
+    </message>
+    <message>
+        <source>CAN interface.</source>
+        <translation>CAN-Schnittstelle.</translation>
+    </message>
+    <message>
+        <source>CANopen node per joint.</source>
+        <translation>CANopen-Knoten pro Gelenk.</translation>
+    </message>
+    <message>
+        <source>Candump log folder.</source>
+        <translation>Ordner für candump-Logs.</translation>
+    </message>
+    <message>
+        <source>Recorded trial log.</source>
+        <translation>Aufgezeichnetes Versuchslog.</translation>
+    </message>
+    <message>
+        <source>&apos;scenario&apos; needs --print</source>
+        <translation>&apos;scenario&apos; braucht --print</translation>
+    </message>
+    <message>
+        <source>no command given</source>
+        <translation>kein Befehl angegeben</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unexpected argument &apos;%1&apos;</source>
+        <translation>unerwartetes Argument &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--iterations: must be a whole number from 1 to 100, got &apos;%1&apos;</source>
+        <translation>--iterations: muss eine ganze Zahl von 1 bis 100 sein, gefunden: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;replay&apos; needs at least one --candump FILE</source>
+        <translation>&apos;replay&apos; braucht mindestens ein --candump FILE</translation>
+    </message>
+    <message>
+        <source>--iterations: %1 trials need %1 logs, %2 given</source>
+        <translation>--iterations: %1 Versuche brauchen %1 Logs, %2 angegeben</translation>
+    </message>
+    <message>
+        <source>trial</source>
+        <translation>Vers.</translation>
+    </message>
+    <message>
+        <source>change %</source>
+        <translation>Änd. %</translation>
+    </message>
+    <message>
+        <source>max|e|%1 deg</source>
+        <translation>max|e|%1 °</translation>
+    </message>
+    <message>
+        <source>T s</source>
+        <translation>T s</translation>
+    </message>
+    <message>
+        <source>cond</source>
+        <translation>cond</translation>
+    </message>
+    <message>
+        <source>vs truth %</source>
+        <translation>vs. wahr %</translation>
+    </message>
+    <message>
+        <source>(rank %1: unobservable kept)</source>
+        <translation>(Rang %1: nicht beobachtbare beibehalten)</translation>
+    </message>
+    <message>
+        <source>trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg</source>
+        <translation>Versuch %1: %2, T = %3 s, %4 Abtastwerte, max. Folgefehler %5°</translation>
+    </message>
+    <message>
+        <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
+        <translation>--estimator: unbekanntes Gesetz &apos;%1&apos; (bekannt: %2)</translation>
+    </message>
+    <message>
+        <source>learnid-cli: %1, law %2, %3 learning trials</source>
+        <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
+    </message>
+    <message>
+        <source>learnid-cli: no files written</source>
+        <translation>learnid-cli: keine Dateien geschrieben</translation>
+    </message>
+    <message>
+        <source>learnid-cli: error: apply failed: %1</source>
+        <translation>learnid-cli: Fehler: Übertragen fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>learnid-cli: estimate %1 applied to the robot</source>
+        <translation>learnid-cli: Schätzung %1 auf den Roboter übertragen</translation>
+    </message>
+    <message>
+        <source>--trial-csv: cannot create the folder %1</source>
+        <translation>--trial-csv: Ordner %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>learnid-cli: wrote %1</source>
+        <translation>learnid-cli: %1 geschrieben</translation>
+    </message>
+</context>
+<context>
+    <name>learnid-robot-sim</name>
+    <message>
+        <source>SIGINT</source>
+        <translation>SIGINT</translation>
+    </message>
+    <message>
+        <source>SIGTERM</source>
+        <translation>SIGTERM</translation>
+    </message>
+    <message>
+        <source>stdin closed</source>
+        <translation>stdin geschlossen</translation>
+    </message>
+    <message>
+        <source>learnid-robot-sim: error: %1</source>
+        <translation>learnid-robot-sim: Fehler: %1</translation>
+    </message>
+    <message>
+        <source>Try &apos;learnid-robot-sim --help&apos; for the options.</source>
+        <translation>Die Optionen zeigt &apos;learnid-robot-sim --help&apos;.</translation>
+    </message>
+    <message>
+        <source>--nodes: &apos;%1&apos; is not a CANopen node id (1 to 127) in &apos;%2&apos;</source>
+        <translation>--nodes: &apos;%1&apos; ist keine CANopen-Knoten-ID (1 bis 127) in &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>--nodes: node %1 is listed twice in &apos;%2&apos;</source>
+        <translation>--nodes: Knoten %1 ist in &apos;%2&apos; zweimal aufgeführt</translation>
+    </message>
+    <message>
+        <source>--refuse-sdo: &apos;%1&apos; is not an object address INDEX:SUB such as 0x2200:1 (index in hex, sub-index 0 to 255)</source>
+        <translation>--refuse-sdo: &apos;%1&apos; ist keine Objektadresse INDEX:SUB wie 0x2200:1 (Index hexadezimal, Subindex 0 bis 255)</translation>
+    </message>
+    <message>
+        <source>--%1: &apos;%2&apos; is not a whole number of at least %3</source>
+        <translation>--%1: &apos;%2&apos; ist keine ganze Zahl von mindestens %3</translation>
+    </message>
+    <message>
+        <source>The robot on a CAN bus: one simulated CiA 402 drive per joint, the SYNC producer and the scenario&apos;s simulated arm. Prints &quot;ready&quot; once connected; runs until SIGINT, SIGTERM or stdin closes.</source>
+        <translation>Der Roboter an einem CAN-Bus: ein simulierter CiA-402-Antrieb pro Gelenk, der SYNC-Erzeuger und der simulierte Arm des Szenarios. Gibt „ready“ aus, sobald verbunden; läuft bis SIGINT, SIGTERM oder bis stdin geschlossen wird.</translation>
+    </message>
+    <message>
+        <source>Show this help.</source>
+        <translation>Diese Hilfe anzeigen.</translation>
+    </message>
+    <message>
+        <source>Show the version.</source>
+        <translation>Die Version anzeigen.</translation>
+    </message>
+    <message>
+        <source>QCanBus plugin, e.g. socketcan or virtualcan.</source>
+        <translation>QCanBus-Plugin, z. B. socketcan oder virtualcan.</translation>
+    </message>
+    <message>
+        <source>plugin</source>
+        <translation>Plugin</translation>
+    </message>
+    <message>
+        <source>CAN interface, e.g. can0 or tcp://127.0.0.1:35468/can0.</source>
+        <translation>CAN-Schnittstelle, z. B. can0 oder tcp://127.0.0.1:35468/can0.</translation>
+    </message>
+    <message>
+        <source>interface</source>
+        <translation>Schnittstelle</translation>
+    </message>
+    <message>
+        <source>Node ids of joint 1, 2, ... (default 1,2).</source>
+        <translation>Knoten-IDs von Gelenk 1, 2, ... (Standard 1,2).</translation>
+    </message>
+    <message>
+        <source>ids</source>
+        <translation>IDs</translation>
+    </message>
+    <message>
+        <source>Scenario file (default: the paper scenario).</source>
+        <translation>Szenariodatei (Standard: das Szenario des Artikels).</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>JSON file of the nodes&apos; stored parameters, written at start and after every store.</source>
+        <translation>JSON-Datei der gespeicherten Parameter der Knoten, geschrieben beim Start und nach jedem Speichern.</translation>
+    </message>
+    <message>
+        <source>Fault: lose this fraction (0 to 1) of the TPDOs.</source>
+        <translation>Fehler: diesen Anteil (0 bis 1) der TPDOs verlieren.</translation>
+    </message>
+    <message>
+        <source>F</source>
+        <translation>F</translation>
+    </message>
+    <message>
+        <source>Fault: send nothing at all after N frames.</source>
+        <translation>Fehler: nach N Frames gar nichts mehr senden.</translation>
+    </message>
+    <message>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <source>Fault: the first node faults with EMCY 0x8611 at the K-th SYNC in Operation enabled.</source>
+        <translation>Fehler: der erste Knoten geht beim K-ten SYNC in Betrieb freigegeben mit EMCY 0x8611 in Fehler.</translation>
+    </message>
+    <message>
+        <source>K</source>
+        <translation>K</translation>
+    </message>
+    <message>
+        <source>Fault: SDO writes to this object abort with 0x08000020.</source>
+        <translation>Fehler: SDO-Schreibzugriffe auf dieses Objekt brechen mit 0x08000020 ab.</translation>
+    </message>
+    <message>
+        <source>IDX:SUB</source>
+        <translation>IDX:SUB</translation>
+    </message>
+    <message>
+        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default 3; raise it on a heavily loaded machine).</source>
+        <translation>SYNC-Perioden in Betrieb freigegeben ohne Sollwert, bevor ein Antrieb mit EMCY 0x8100 in Fehler geht (Standard 3; auf einem stark ausgelasteten Rechner erhöhen).</translation>
+    </message>
+    <message>
+        <source>unexpected argument &apos;%1&apos;</source>
+        <translation>unerwartetes Argument &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--can-plugin is required (available: %1)</source>
+        <translation>--can-plugin ist erforderlich (verfügbar: %1)</translation>
+    </message>
+    <message>
+        <source>--can-plugin: unknown plugin &apos;%1&apos; (available: %2)</source>
+        <translation>--can-plugin: unbekanntes Plugin &apos;%1&apos; (verfügbar: %2)</translation>
+    </message>
+    <message>
+        <source>--can-interface is required, e.g. can0 or tcp://127.0.0.1:35468/can0</source>
+        <translation>--can-interface ist erforderlich, z. B. can0 oder tcp://127.0.0.1:35468/can0</translation>
+    </message>
+    <message>
+        <source>--drop-fraction: &apos;%1&apos; is not a fraction from 0 to 1</source>
+        <translation>--drop-fraction: &apos;%1&apos; ist kein Anteil von 0 bis 1</translation>
+    </message>
+    <message>
+        <source>--emcy-at-sample: &apos;%1&apos; is too large</source>
+        <translation>--emcy-at-sample: &apos;%1&apos; ist zu groß</translation>
+    </message>
+    <message>
+        <source>--setpoint-timeout: &apos;%1&apos; is too large (at most 100000)</source>
+        <translation>--setpoint-timeout: &apos;%1&apos; ist zu groß (höchstens 100000)</translation>
+    </message>
+</context>
+<context>
     <name>learnid::ApplyConfirmDialog</name>
     <message>
         <source>Apply parameters to the robot</source>
         <translation>Parameter auf den Roboter übertragen</translation>
     </message>
     <message>
-        <source>Write estimate %1 to the robot controller? The controller's feedforward changes at once.</source>
+        <source>Write estimate %1 to the robot controller? The controller&apos;s feedforward changes at once.</source>
         <translation>Schätzung %1 in die Robotersteuerung schreiben? Die Vorsteuerung der Steuerung ändert sich sofort.</translation>
     </message>
     <message>
@@ -65,6 +1633,145 @@
     <message>
         <source>none</source>
         <translation>keine</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::CanConnection</name>
+    <message>
+        <source>the CAN device %1 did not connect within %2 ms (is the bus or the robot side running?)</source>
+        <translation>das CAN-Gerät %1 hat sich nicht innerhalb von %2 ms verbunden (läuft der Bus oder die Roboterseite?)</translation>
+    </message>
+    <message>
+        <source>no CAN device for %1</source>
+        <translation>kein CAN-Gerät für %1</translation>
+    </message>
+    <message>
+        <source>cannot connect the CAN device %1: %2</source>
+        <translation>das CAN-Gerät %1 kann nicht verbunden werden: %2</translation>
+    </message>
+    <message>
+        <source>no error reported (the other side may have exited)</source>
+        <translation>kein Fehler gemeldet (die Gegenseite wurde vielleicht beendet)</translation>
+    </message>
+    <message>
+        <source>the CAN device %1 went unconnected: %2</source>
+        <translation>das CAN-Gerät %1 ist nicht mehr verbunden: %2</translation>
+    </message>
+    <message>
+        <source>the CAN device %1 reported a connection error: %2</source>
+        <translation>das CAN-Gerät %1 meldete einen Verbindungsfehler: %2</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::CanLink</name>
+    <message>
+        <source>The CAN device no longer exists.</source>
+        <translation>Das CAN-Gerät existiert nicht mehr.</translation>
+    </message>
+    <message>
+        <source>The CAN device %1 is not connected.</source>
+        <translation>Das CAN-Gerät %1 ist nicht verbunden.</translation>
+    </message>
+    <message>
+        <source>The CAN device refused the frame: %1</source>
+        <translation>Das CAN-Gerät hat den Frame abgelehnt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::CanRobotWorker</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>the model has %1 joints but %2 CAN nodes are configured, or the plan is empty</source>
+        <translation>das Modell hat %1 Gelenke, aber %2 CAN-Knoten sind konfiguriert, oder der Plan ist leer</translation>
+    </message>
+    <message>
+        <source>stopped by the operator before the drives moved</source>
+        <translation>vom Bediener gestoppt, bevor sich die Antriebe bewegten</translation>
+    </message>
+    <message>
+        <source>configuring the drives failed, nothing moved: %1</source>
+        <translation>Konfigurieren der Antriebe fehlgeschlagen, nichts hat sich bewegt: %1</translation>
+    </message>
+    <message>
+        <source>the trial&apos;s candump log could not be written: %1</source>
+        <translation>das candump-Log des Versuchs konnte nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>%1; the stored parameters are unchanged</source>
+        <translation>%1; die gespeicherten Parameter sind unverändert</translation>
+    </message>
+    <message>
+        <source>%1; nothing was stored (0x1010 not written)</source>
+        <translation>%1; nichts wurde gespeichert (0x1010 nicht geschrieben)</translation>
+    </message>
+    <message>
+        <source>%1; storing stopped at node %2 of the list</source>
+        <translation>%1; das Speichern stoppte bei Knoten %2 der Liste</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::CandumpReplayDevice</name>
+    <message>
+        <source>Cannot write a frame: the replay is not connected.</source>
+        <translation>Frame kann nicht geschrieben werden: die Wiedergabe ist nicht verbunden.</translation>
+    </message>
+    <message>
+        <source>The master wrote %1 after the end of the log.</source>
+        <translation>Der Master schrieb %1 nach dem Ende des Logs.</translation>
+    </message>
+    <message>
+        <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
+        <translation>Der Master schrieb %1, wo das Log %2 enthält (Log-Frame %3): der wiedergegebene Versuch weicht vom aufgezeichneten ab.</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::CommissioningSession</name>
+    <message>
+        <source>unknown estimator law &apos;%1&apos; (known: %2)</source>
+        <translation>unbekanntes Schätzgesetz &apos;%1&apos; (bekannt: %2)</translation>
+    </message>
+    <message>
+        <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
+        <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
+    </message>
+    <message>
+        <source>trial %1 refused before motion: %2</source>
+        <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>repetition %1 of %2: %3</source>
+        <translation>Wiederholung %1 von %2: %3</translation>
+    </message>
+    <message>
+        <source>the update produced non-finite parameters</source>
+        <translation>die Aktualisierung ergab nicht endliche Parameter</translation>
+    </message>
+    <message>
+        <source>trial %1 not learned from: %2</source>
+        <translation>aus Versuch %1 nicht gelernt: %2</translation>
+    </message>
+    <message>
+        <source>there is no learned estimate to accept yet: run a trial first</source>
+        <translation>es gibt noch keine gelernte Schätzung zum Akzeptieren: zuerst einen Versuch ausführen</translation>
+    </message>
+    <message>
+        <source>estimate %1 does not exist: choose 1 to %2</source>
+        <translation>Schätzung %1 existiert nicht: 1 bis %2 wählen</translation>
+    </message>
+    <message>
+        <source>nothing accepted: accept an estimate before applying it</source>
+        <translation>nichts akzeptiert: eine Schätzung akzeptieren, bevor sie übertragen wird</translation>
+    </message>
+    <message>
+        <source>nothing to revert: no parameter set has been applied in this session</source>
+        <translation>nichts zurückzunehmen: in dieser Sitzung wurde kein Parametersatz übertragen</translation>
+    </message>
+    <message>
+        <source>the robot held no parameter set before the first apply; there is nothing to restore</source>
+        <translation>der Roboter hatte vor dem ersten Übertragen keinen Parametersatz; es gibt nichts wiederherzustellen</translation>
     </message>
 </context>
 <context>
@@ -238,7 +1945,9 @@
     <message numerus="yes">
         <source>%n trial CSV file(s) written to %1</source>
         <translation>
-            <numerusform>%n Versuchs-CSV-Datei nach %1 geschrieben</numerusform><numerusform>%n Versuchs-CSV-Dateien nach %1 geschrieben</numerusform></translation>
+            <numerusform>%n Versuchs-CSV-Datei nach %1 geschrieben</numerusform>
+            <numerusform>%n Versuchs-CSV-Dateien nach %1 geschrieben</numerusform>
+        </translation>
     </message>
     <message>
         <source>Trial CSV not written: %1</source>
@@ -340,7 +2049,7 @@
         <translation>Szenario &amp;speichern...</translation>
     </message>
     <message>
-        <source>Save the form's scenario to a file</source>
+        <source>Save the form&apos;s scenario to a file</source>
         <translation>Das Szenario des Formulars in eine Datei speichern</translation>
     </message>
     <message>
@@ -416,7 +2125,7 @@
         <translation>Ctrl+F5</translation>
     </message>
     <message>
-        <source>Run the scenario's number of trials</source>
+        <source>Run the scenario&apos;s number of trials</source>
         <translation>Die im Szenario festgelegte Zahl von Versuchen fahren</translation>
     </message>
     <message>
@@ -591,6 +2300,14 @@
         <translation>nicht verbunden</translation>
     </message>
     <message>
+        <source>Cannot connect: %1</source>
+        <translation>Verbindung nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>connecting to %1/%2…</source>
+        <translation>verbinde mit %1/%2…</translation>
+    </message>
+    <message>
         <source>Correct the scenario first: %1</source>
         <translation>Zuerst das Szenario korrigieren: %1</translation>
     </message>
@@ -608,10 +2325,64 @@
     </message>
 </context>
 <context>
+    <name>learnid::MemoryCanDevice</name>
+    <message>
+        <source>The memory CAN device %1 is not attached to a bus.</source>
+        <translation>Das Speicher-CAN-Gerät %1 hängt an keinem Bus.</translation>
+    </message>
+    <message>
+        <source>The memory CAN device %1 refused to connect.</source>
+        <translation>Das Speicher-CAN-Gerät %1 hat die Verbindung abgelehnt.</translation>
+    </message>
+    <message>
+        <source>Cannot write a frame: the device %1 is not connected.</source>
+        <translation>Frame kann nicht geschrieben werden: das Gerät %1 ist nicht verbunden.</translation>
+    </message>
+    <message>
+        <source>Cannot write an invalid or CAN FD frame: %1.</source>
+        <translation>Ein ungültiger oder CAN-FD-Frame kann nicht geschrieben werden: %1.</translation>
+    </message>
+    <message>
+        <source>Only data and remote request frames can be written.</source>
+        <translation>Nur Daten- und Remote-Frames können geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>The memory CAN device %1 failed to write the frame.</source>
+        <translation>Das Speicher-CAN-Gerät %1 konnte den Frame nicht schreiben.</translation>
+    </message>
+    <message>
+        <source>CAN error frame, error classes 0x%1.</source>
+        <translation>CAN-Fehlerframe, Fehlerklassen 0x%1.</translation>
+    </message>
+</context>
+<context>
     <name>learnid::MessageBar</name>
     <message>
         <source>Dismiss</source>
         <translation>Schließen</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::ObjectDictionary</name>
+    <message>
+        <source>Object %1: %2 is not numeric; use addBytes().</source>
+        <translation>Objekt %1: %2 ist nicht numerisch; addBytes() verwenden.</translation>
+    </message>
+    <message>
+        <source>Object %1: %2 is numeric; use add().</source>
+        <translation>Objekt %1: %2 ist numerisch; add() verwenden.</translation>
+    </message>
+    <message>
+        <source>Object %1 is defined twice.</source>
+        <translation>Objekt %1 ist zweimal definiert.</translation>
+    </message>
+    <message>
+        <source>Object %1 holds %2 bytes, not %3.</source>
+        <translation>Objekt %1 enthält %2 Bytes, nicht %3.</translation>
+    </message>
+    <message>
+        <source>Object %1 is not in the object dictionary.</source>
+        <translation>Objekt %1 ist nicht im Objektverzeichnis.</translation>
     </message>
 </context>
 <context>
@@ -719,12 +2490,28 @@
         <translation>CAN (CANopen / CiA 402)</translation>
     </message>
     <message>
-        <source>available when the CAN link lands</source>
-        <translation>verfügbar, sobald die CAN-Anbindung fertig ist</translation>
+        <source>QCanBus plugin: socketcan for a CAN adapter on Linux; virtualcan to try learnid-robot-sim first</source>
+        <translation>QCanBus-Plugin: socketcan für einen CAN-Adapter unter Linux; virtualcan, um zuerst learnid-robot-sim auszuprobieren</translation>
     </message>
     <message>
-        <source>Simulated robot; CAN: %1</source>
-        <translation>Simulierter Roboter; CAN: %1</translation>
+        <source>e.g. can0 (socketcan) or tcp://127.0.0.1:35468/can0 (virtualcan)</source>
+        <translation>z. B. can0 (socketcan) oder tcp://127.0.0.1:35468/can0 (virtualcan)</translation>
+    </message>
+    <message>
+        <source>CANopen node id of joint 1, 2, ... (docs/can-protocol.md)</source>
+        <translation>CANopen-Knoten-ID von Gelenk 1, 2, ... (docs/can-protocol.md)</translation>
+    </message>
+    <message>
+        <source>Plugin:</source>
+        <translation>Plugin:</translation>
+    </message>
+    <message>
+        <source>Interface:</source>
+        <translation>Schnittstelle:</translation>
+    </message>
+    <message>
+        <source>Nodes:</source>
+        <translation>Knoten:</translation>
     </message>
     <message>
         <source>Robot:</source>
@@ -737,6 +2524,14 @@
     <message>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <source>CAN nodes: %1</source>
+        <translation>CAN-Knoten: %1</translation>
+    </message>
+    <message>
+        <source>CAN interface: enter one, e.g. can0</source>
+        <translation>CAN-Schnittstelle: bitte eine eingeben, z. B. can0</translation>
     </message>
     <message>
         <source>Disconnect</source>
@@ -789,6 +2584,14 @@
         <translation>Richtung</translation>
     </message>
     <message>
+        <source>Rest before the motion</source>
+        <translation>Ruhezeit vor der Bewegung</translation>
+    </message>
+    <message>
+        <source>Rest after the motion</source>
+        <translation>Ruhezeit nach der Bewegung</translation>
+    </message>
+    <message>
         <source>Torque limits</source>
         <translation>Momentengrenzen</translation>
     </message>
@@ -817,15 +2620,59 @@
         <translation>rho (Filter F)</translation>
     </message>
     <message>
+        <source>Rank tolerance</source>
+        <translation>Rangtoleranz</translation>
+    </message>
+    <message>
+        <source>Repetitions per trial</source>
+        <translation>Wiederholungen pro Versuch</translation>
+    </message>
+    <message>
         <source>Initial parameters</source>
         <translation>Anfangsparameter</translation>
+    </message>
+    <message>
+        <source>Safety</source>
+        <translation>Sicherheit</translation>
+    </message>
+    <message>
+        <source>Abort at tracking error</source>
+        <translation>Abbruch bei Folgefehler</translation>
+    </message>
+    <message>
+        <source>Required stability margin</source>
+        <translation>Geforderte Stabilitätsreserve</translation>
+    </message>
+    <message>
+        <source>Simulated robot</source>
+        <translation>Simulierter Roboter</translation>
+    </message>
+    <message>
+        <source>True parameters</source>
+        <translation>Wahre Parameter</translation>
+    </message>
+    <message>
+        <source>Encoder counts per revolution (0: ideal)</source>
+        <translation>Encoder-Inkremente pro Umdrehung (0: ideal)</translation>
+    </message>
+    <message>
+        <source>Torque noise (fraction of limit)</source>
+        <translation>Momentenrauschen (Anteil der Grenze)</translation>
+    </message>
+    <message>
+        <source>Noise seed</source>
+        <translation>Startwert des Rauschens</translation>
+    </message>
+    <message>
+        <source>RK4 steps per sample</source>
+        <translation>RK4-Schritte pro Abtastwert</translation>
     </message>
     <message>
         <source>enter a value</source>
         <translation>einen Wert eingeben</translation>
     </message>
     <message>
-        <source>"%1" is not a number</source>
+        <source>&quot;%1&quot; is not a number</source>
         <translation>„%1“ ist keine Zahl</translation>
     </message>
 </context>
@@ -866,6 +2713,61 @@
     <message>
         <source>enter a whole number</source>
         <translation>eine ganze Zahl eingeben</translation>
+    </message>
+    <message>
+        <source>enter a whole number from %1 to %2</source>
+        <translation>eine ganze Zahl von %1 bis %2 eingeben</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::SdoClient</name>
+    <message>
+        <source>%1 is not a valid CANopen node id (1 to 127).</source>
+        <translation>%1 ist keine gültige CANopen-Knoten-ID (1 bis 127).</translation>
+    </message>
+    <message>
+        <source>There are no data to write.</source>
+        <translation>Es gibt keine Daten zum Schreiben.</translation>
+    </message>
+    <message>
+        <source>The answer names another object.</source>
+        <translation>Die Antwort nennt ein anderes Objekt.</translation>
+    </message>
+    <message>
+        <source>The node announced %1 bytes but sent %2%3.</source>
+        <translation>Der Knoten kündigte %1 Bytes an, sandte aber %2%3.</translation>
+    </message>
+    <message>
+        <source> or more</source>
+        <translation> oder mehr</translation>
+    </message>
+    <message>
+        <source>SDO read of %1 from node %2</source>
+        <translation>SDO-Lesen von %1 aus Knoten %2</translation>
+    </message>
+    <message>
+        <source>SDO write of %1 to node %2</source>
+        <translation>SDO-Schreiben von %1 in Knoten %2</translation>
+    </message>
+    <message>
+        <source> (abort code %1)</source>
+        <translation> (Abbruchcode %1)</translation>
+    </message>
+    <message>
+        <source>The %1 was refused by the node%2: %3</source>
+        <translation>%1 wurde vom Knoten abgelehnt%2: %3</translation>
+    </message>
+    <message>
+        <source>The %1 was aborted%2: %3</source>
+        <translation>%1 wurde abgebrochen%2: %3</translation>
+    </message>
+    <message>
+        <source>The %1 failed: %2</source>
+        <translation>%1 ist fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>node %1 did not answer within %2 ms.</source>
+        <translation>Knoten %1 hat nicht innerhalb von %2 ms geantwortet.</translation>
     </message>
 </context>
 <context>
@@ -922,7 +2824,7 @@
 <context>
     <name>learnid::SessionWorker</name>
     <message>
-        <source>unknown robot model "%1"</source>
+        <source>unknown robot model &quot;%1&quot;</source>
         <translation>unbekanntes Robotermodell „%1“</translation>
     </message>
     <message>
@@ -983,6 +2885,130 @@
     <message>
         <source>joint %1</source>
         <translation>Gelenk %1</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::TrialStreamer</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
+        <translation>%1 erreichte Betrieb freigegeben nicht innerhalb von %2 ms: meldet %3 (Statuswort 0x%4)</translation>
+    </message>
+    <message>
+        <source>no TPDO</source>
+        <translation>kein TPDO</translation>
+    </message>
+    <message>
+        <source>stopped by the operator %1</source>
+        <translation>vom Bediener gestoppt %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 %3</source>
+        <translation>%1: %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 left Operation enabled: it reports %2 (0x6041 = 0x%3) %4</source>
+        <translation>%1 hat Betrieb freigegeben verlassen: meldet %2 (0x6041 = 0x%3) %4</translation>
+    </message>
+    <message>
+        <source>tracking error of %1 reached %2 deg (limit %3 deg) %4: quick stop</source>
+        <translation>Folgefehler von %1 erreichte %2° (Grenze %3°) %4: Schnellhalt</translation>
+    </message>
+    <message>
+        <source>only %1 of %2 samples were recorded</source>
+        <translation>nur %1 von %2 Abtastwerten wurden aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>an unknown node</source>
+        <translation>ein unbekannter Knoten</translation>
+    </message>
+    <message>
+        <source>node %1 (joint %2)</source>
+        <translation>Knoten %1 (Gelenk %2)</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::TrialWatchdog</name>
+    <message>
+        <source>no SYNC for %1 ms: the robot side stopped sending</source>
+        <translation>kein SYNC seit %1 ms: die Roboterseite sendet nicht mehr</translation>
+    </message>
+    <message>
+        <source>heartbeat of %1 lost: none for %2 ms (timeout %3 ms)</source>
+        <translation>Heartbeat von %1 verloren: keiner seit %2 ms (Zeitgrenze %3 ms)</translation>
+    </message>
+    <message>
+        <source>%1 restarted on its own (boot-up message 0x%2)</source>
+        <translation>%1 hat selbst neu gestartet (Boot-up-Nachricht 0x%2)</translation>
+    </message>
+    <message>
+        <source>node %1 (joint %2)</source>
+        <translation>Knoten %1 (Gelenk %2)</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::robotsim::SimProcess</name>
+    <message>
+        <source>learnid-robot-sim: stopping (%1)</source>
+        <translation>learnid-robot-sim: wird beendet (%1)</translation>
+    </message>
+    <message>
+        <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
+        <translation>die CAN-Schnittstelle %1 mit Plugin %2 kann nicht verbunden werden: %3</translation>
+    </message>
+    <message>
+        <source>learnid-robot-sim: error: %1</source>
+        <translation>learnid-robot-sim: Fehler: %1</translation>
+    </message>
+    <message>
+        <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
+        <translation>learnid-robot-sim: Fehler: das CAN-Gerät %1 mit Plugin %2 kann nicht angelegt werden: %3</translation>
+    </message>
+    <message>
+        <source>learnid-robot-sim: error: --state: %1</source>
+        <translation>learnid-robot-sim: Fehler: --state: %1</translation>
+    </message>
+    <message>
+        <source>learnid-robot-sim: silent after %1 frames (injected fault)</source>
+        <translation>learnid-robot-sim: still nach %1 Frames (eingespeister Fehler)</translation>
+    </message>
+    <message>
+        <source>the CAN device %1 disconnected</source>
+        <translation>das CAN-Gerät %1 hat die Verbindung getrennt</translation>
+    </message>
+    <message>
+        <source>learnid-robot-sim: CAN device error: %1</source>
+        <translation>learnid-robot-sim: Fehler des CAN-Geräts: %1</translation>
+    </message>
+    <message>
+        <source>the CAN interface %1 with plugin %2 did not connect within %3 s</source>
+        <translation>die CAN-Schnittstelle %1 mit Plugin %2 hat sich nicht innerhalb von %3 s verbunden</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Commissioning tool: learning identification of robot dynamics.</source>
+        <translation>Inbetriebnahmewerkzeug: lernende Identifikation der Roboterdynamik.</translation>
+    </message>
+    <message>
+        <source>Run a simulated session, save the window as PNG to &lt;file&gt; and exit.</source>
+        <translation>Eine simulierte Sitzung ausführen, das Fenster als PNG nach &lt;file&gt; speichern und beenden.</translation>
+    </message>
+    <message>
+        <source>User interface language, e.g. de or zh_CN (default: as chosen in the app, else the system&apos;s).</source>
+        <translation>Sprache der Oberfläche, z. B. de oder zh_CN (Standard: wie in der Anwendung gewählt, sonst die des Systems).</translation>
+    </message>
+    <message>
+        <source>What --screenshot shows: %1 (default: main).</source>
+        <translation>Was --screenshot zeigt: %1 (Standard: main).</translation>
+    </message>
+    <message>
+        <source>learnid: unknown --screenshot-view &apos;%1&apos;; known: %2</source>
+        <translation>learnid: unbekannte --screenshot-view &apos;%1&apos;; bekannt: %2</translation>
     </message>
 </context>
 </TS>

@@ -1,5 +1,6 @@
 #include "cli/CliOptions.h"
 #include "cli/RunCommand.h"
+#include "translations/Translations.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -11,6 +12,7 @@ int main(int argc, char **argv)
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("learnid-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(LEARNID_VERSION));
+    learnid::installTranslators(app, QLocale::system()); // messages in the user's language
 
     QTextStream out(stdout);
     QTextStream err(stderr);

@@ -1,33 +1,26 @@
 #include "ScreenshotRun.h"
+#include "translations/Translations.h"
 #include "ui/MainWindow.h"
 #include "ui/UiLogging.h"
 #include "ui/UiSettings.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QLibraryInfo>
 #include <QLocale>
 #include <QSettings>
 #include <QTemporaryDir>
-#include <QTranslator>
 #include <cstdio>
 #include <memory>
 
 namespace {
 
-// The translator of the chosen language ("" = system locale) from the embedded .qm files, and
-// Qt's own for standard dialogs.
+// learnid's and Qt's translators for the chosen language ("" = system locale); numbers and dates
+// follow the same locale.
 void installTranslators(QApplication &app, const QString &language)
 {
     const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
     QLocale::setDefault(QLocale(locale.language(), locale.territory()));
-    auto *own = new QTranslator(&app);
-    if (own->load(locale, QStringLiteral("learnid"), QStringLiteral("_"), QStringLiteral(":/i18n")))
-        app.installTranslator(own);
-    auto *qt = new QTranslator(&app);
-    if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
-                 QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        app.installTranslator(qt);
+    learnid::installTranslators(app, locale);
 }
 
 } // namespace

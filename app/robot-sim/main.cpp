@@ -1,5 +1,6 @@
 #include "robot-sim/SimOptions.h"
 #include "robot-sim/SimProcess.h"
+#include "translations/Translations.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -10,6 +11,7 @@ int main(int argc, char **argv)
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("learnid-robot-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(LEARNID_VERSION));
+    learnid::installTranslators(app, QLocale::system()); // messages in the user's language
 
     QTextStream out(stdout);
     QTextStream err(stderr);

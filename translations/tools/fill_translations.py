@@ -1,268 +1,237 @@
 #!/usr/bin/env python3
-"""Fills translations/learnid_de.ts and learnid_zh_CN.ts from the tables below.
+"""Puts translations/learnid_de.ts and learnid_zh_CN.ts in their final form after lupdate.
 
-Run after `cmake --build <dir> --target update_translations` has added new source texts:
-    python3 translations/tools/fill_translations.py
-Texts without an entry stay unfinished (shown in English)."""
+`cmake --build <dir> --target update_translations` runs lupdate over core/, ui/ and app/ and then
+this script (by hand: python3 translations/tools/fill_translations.py). It
+ 1. files each text under the context the code looks it up in. Most of core/ and the
+    command-line tools translate through a file-local helper,
+        QString tr(const char *text) { return QCoreApplication::translate("ScenarioFile", text); }
+    which lupdate cannot see through: it files the texts under the enclosing namespace or class
+    ("learnid", "learnid::cli") and warns "lacks Q_OBJECT macro". Such a text is moved, by the
+    file lupdate found it in, to the context of that file's helper;
+ 2. drops the source locations (lupdate writes them for step 1 only);
+ 3. fills every translation from the tables in texts_*.py (source -> (German, Chinese)). The
+    tables are where translations live: lupdate forgets those of step 1 on every run.
+The tables are checked first: a translation whose %1, %2 ... (or %n) differ from the source's,
+whose closing punctuation, leading/trailing blanks or line breaks differ, is refused and nothing is
+written. Texts without a table entry stay unfinished and are listed; tests/app/tst_translations
+fails until they are translated. Exit status 1 on a refused entry or a text without context.
+"""
 import os
+import re
+import sys
 import xml.etree.ElementTree as ET
 
-# source: (German, Chinese)
-T = {
- 'Apply parameters to the robot': ('Parameter auf den Roboter übertragen', '将参数写入机器人'),
- "Write estimate %1 to the robot controller? The controller's feedforward changes at once.":
-   ('Schätzung %1 in die Robotersteuerung schreiben? Die Vorsteuerung der Steuerung ändert sich sofort.',
-    '将估计 %1 写入机器人控制器？控制器的前馈将立即改变。'),
- 'Parameter': ('Parameter', '参数'),
- 'On robot': ('Auf dem Roboter', '机器人当前值'),
- 'New': ('Neu', '新值'),
- 'Change': ('Änderung', '变化'),
- 'none': ('keine', '无'),
- 'Apply to robot': ('Auf Roboter übertragen', '写入机器人'),
- 'estimate ': ('Schätzung ', '估计 '),
- 'Choose:': ('Auswahl:', '选择：'),
- 'Accepted:': ('Akzeptiert:', '已接受：'),
- 'Robot holds:': ('Roboter hat:', '机器人参数：'),
- 'nothing applied yet': ('noch nichts übertragen', '尚未写入'),
- 'estimate %1': ('Schätzung %1', '估计 %1'),
- 'Estimate k': ('Schätzung k', '估计 k'),
- '|error| [%]': ('|Fehler| [%]', '|误差| [%]'),
- 'change [%]': ('Änderung [%]', '变化 [%]'),
- 'Convergence to the truth': ('Konvergenz zum wahren Wert', '向真值收敛'),
- 'Convergence': ('Konvergenz', '收敛'),
- 'all (rank %1)': ('alle (Rang %1)', '全部（秩 %1）'),
- '⚠ kept: %1': ('⚠ beibehalten: %1', '⚠ 保留：%1'),
- '%1 (%2)': ('%1 (%2)', '%1（%2）'),
- 'accepted': ('akzeptiert', '已接受'),
- 'on robot': ('auf dem Roboter', '已写入机器人'),
- '%1 = %2 ± %3 (1 sigma)': ('%1 = %2 ± %3 (1 Sigma)', '%1 = %2 ± %3（1 sigma）'),
- 'Estimate': ('Schätzung', '估计'),
- 'Rel. change [%]': ('Rel. Änderung [%]', '相对变化 [%]'),
- 'Max |e| [deg]': ('Max. |e| [°]', '最大 |e| [度]'),
- 'cond(WᵀW)': ('cond(WᵀW)', 'cond(WᵀW)'),
- 'Observable': ('Beobachtbar', '可观测'),
- '%1 vs truth [%]': ('%1 ggü. wahrem Wert [%]', '%1 相对真值 [%]'),
- 'Trials run': ('Versuche', '已运行试验'),
- 'State': ('Status', '状态'),
- 'Parameter file written: %1': ('Parameterdatei geschrieben: %1', '参数文件已写入：%1'),
- 'Parameter file not written: %1': ('Parameterdatei nicht geschrieben: %1', '参数文件未写入：%1'),
- 'Open scenario': ('Szenario öffnen', '打开场景'),
- 'Scenario files (*.json);;All files (*)': ('Szenariodateien (*.json);;Alle Dateien (*)', '场景文件 (*.json);;所有文件 (*)'),
- 'Save scenario': ('Szenario speichern', '保存场景'),
- 'Scenario files (*.json)': ('Szenariodateien (*.json)', '场景文件 (*.json)'),
- 'Export parameter file': ('Parameterdatei exportieren', '导出参数文件'),
- 'Parameter files (*.json)': ('Parameterdateien (*.json)', '参数文件 (*.json)'),
- 'Folder for the trial CSV files': ('Ordner für die CSV-Dateien der Versuche', '试验 CSV 文件的文件夹'),
- 'Export plot': ('Diagramm exportieren', '导出图表'),
- 'PNG image (*.png);;SVG drawing (*.svg)': ('PNG-Bild (*.png);;SVG-Zeichnung (*.svg)', 'PNG 图像 (*.png);;SVG 矢量图 (*.svg)'),
- 'PNG image (*.png)': ('PNG-Bild (*.png)', 'PNG 图像 (*.png)'),
- 'Export commissioning report': ('Inbetriebnahmebericht exportieren', '导出调试报告'),
- 'PDF (*.pdf)': ('PDF (*.pdf)', 'PDF (*.pdf)'),
- 'Scenario loaded: %1': ('Szenario geladen: %1', '场景已加载：%1'),
- 'Scenario not loaded: %1': ('Szenario nicht geladen: %1', '场景未加载：%1'),
- 'Scenario not saved: %1': ('Szenario nicht gespeichert: %1', '场景未保存：%1'),
- 'Scenario saved: %1': ('Szenario gespeichert: %1', '场景已保存：%1'),
- 'Parameter file not written: accept an estimate first': ('Parameterdatei nicht geschrieben: zuerst eine Schätzung akzeptieren', '参数文件未写入：请先接受一个估计'),
- 'No trial CSV written: no trial has run yet': ('Keine Versuchs-CSV geschrieben: noch kein Versuch gelaufen', '未写入试验 CSV：尚未运行任何试验'),
- 'cannot create the folder %1': ('Ordner %1 kann nicht angelegt werden', '无法创建文件夹 %1'),
- 'Trial CSV not written: %1': ('Versuchs-CSV nicht geschrieben: %1', '试验 CSV 未写入：%1'),
- 'Plot not written: this build has no SVG support (Qt6::Svg); export as PNG instead':
-   ('Diagramm nicht geschrieben: diese Version kann kein SVG (Qt6::Svg); bitte als PNG exportieren',
-    '图表未写入：此版本不支持 SVG（Qt6::Svg），请导出为 PNG'),
- 'Tracking error': ('Folgefehler', '跟踪误差'),
- 'Plot written: %1': ('Diagramm geschrieben: %1', '图表已写入：%1'),
- 'Plot not written: %1': ('Diagramm nicht geschrieben: %1', '图表未写入：%1'),
- 'Report not written: no session': ('Bericht nicht geschrieben: keine Sitzung', '报告未写入：没有会话'),
- 'Path: from (%1, %2) m, %3 m at %4 deg': ('Bahn: ab (%1, %2) m, %3 m unter %4°', '路径：从 (%1, %2) m 起，长 %3 m，方向 %4 度'),
- 'Torque limits: %1 N m, planning fraction %2': ('Momentengrenzen: %1 N m, Planungsanteil %2', '力矩限值：%1 N m，规划比例 %2'),
- 'kp: %1 N m/rad; ki: %2': ('kp: %1 N m/rad; ki: %2', 'kp：%1 N m/rad；ki：%2'),
- 'kd: %1 N m s/rad; lambda %2 rad/s': ('kd: %1 N m s/rad; lambda %2 rad/s', 'kd：%1 N m s/rad；lambda %2 rad/s'),
- 'Estimator: %1, rho %2 rad/s, %3 trials': ('Schätzer: %1, rho %2 rad/s, %3 Versuche', '估计器：%1，rho %2 rad/s，%3 次试验'),
- 'Initial parameters: %1': ('Anfangsparameter: %1', '初始参数：%1'),
- 'none (nothing applied in this session)': ('keine (in dieser Sitzung nichts übertragen)', '无（本次会话未写入）'),
- '%1 (estimate %2)': ('%1 (Schätzung %2)', '%1（估计 %2）'),
- 'Report written: %1': ('Bericht geschrieben: %1', '报告已写入：%1'),
- 'Report not written: %1': ('Bericht nicht geschrieben: %1', '报告未写入：%1'),
- '&Connect robot': ('Roboter &verbinden', '连接机器人(&C)'),
- 'Connect to the chosen robot and plan the first trial': ('Mit dem gewählten Roboter verbinden und den ersten Versuch planen', '连接所选机器人并规划第一次试验'),
- '&New session': ('&Neue Sitzung', '新建会话(&N)'),
- 'Start a new session with the settings of the form (the history is discarded)': ('Neue Sitzung mit den Einstellungen des Formulars beginnen (der Verlauf wird verworfen)', '以表单中的设置开始新会话（历史记录将被丢弃）'),
- '&Open scenario...': ('Szenario ö&ffnen...', '打开场景(&O)...'),
- 'Load a scenario file into the form': ('Eine Szenariodatei in das Formular laden', '将场景文件加载到表单'),
- '&Save scenario...': ('Szenario &speichern...', '保存场景(&S)...'),
- "Save the form's scenario to a file": ('Das Szenario des Formulars in eine Datei speichern', '将表单中的场景保存到文件'),
- 'Export &parameter file...': ('&Parameterdatei exportieren...', '导出参数文件(&P)...'),
- 'Write the accepted estimate as a parameter file (JSON and DCF)': ('Die akzeptierte Schätzung als Parameterdatei schreiben (JSON und DCF)', '将已接受的估计写为参数文件（JSON 和 DCF）'),
- 'Export trial &CSV...': ('Versuchs-&CSV exportieren...', '导出试验 CSV(&C)...'),
- 'Write one CSV file per trial': ('Eine CSV-Datei je Versuch schreiben', '每次试验写一个 CSV 文件'),
- 'Export p&lot...': ('&Diagramm exportieren...', '导出图表(&L)...'),
- 'Save the tracking-error plot as PNG or SVG': ('Das Folgefehler-Diagramm als PNG oder SVG speichern', '将跟踪误差图保存为 PNG 或 SVG'),
- 'Save the tracking-error plot as PNG (SVG needs Qt6::Svg)': ('Das Folgefehler-Diagramm als PNG speichern (SVG braucht Qt6::Svg)', '将跟踪误差图保存为 PNG（SVG 需要 Qt6::Svg）'),
- 'Export &report (PDF)...': ('&Bericht exportieren (PDF)...', '导出报告 (PDF)(&R)...'),
- 'Write the one-page commissioning report': ('Den einseitigen Inbetriebnahmebericht schreiben', '写出一页调试报告'),
- '&Quit': ('&Beenden', '退出(&Q)'),
- 'Quit learnid': ('learnid beenden', '退出 learnid'),
- '&Run trial': ('Versuch &starten', '运行试验(&R)'),
- 'Run the next trial and learn from it': ('Den nächsten Versuch fahren und daraus lernen', '运行下一次试验并从中学习'),
- 'Run &all': ('&Alle starten', '全部运行(&A)'),
- "Run the scenario's number of trials": ('Die im Szenario festgelegte Zahl von Versuchen fahren', '运行场景规定次数的试验'),
- '&Stop': ('&Stopp', '停止(&S)'),
- 'Stop the running trial safely at the next sample': ('Den laufenden Versuch beim nächsten Abtastschritt sicher anhalten', '在下一个采样点安全停止当前试验'),
- 'A&ccept': ('A&kzeptieren', '接受(&C)'),
- 'Accept the chosen estimate for apply': ('Die gewählte Schätzung zum Übertragen akzeptieren', '接受所选估计以便写入'),
- 'A&pply...': ('Ü&bertragen...', '写入(&P)...'),
- 'Write the accepted estimate to the robot controller': ('Die akzeptierte Schätzung in die Robotersteuerung schreiben', '将已接受的估计写入机器人控制器'),
- 'Re&vert': ('&Zurücksetzen', '恢复(&V)'),
- 'Restore the parameter set the robot held before the last apply': ('Den Parametersatz vor der letzten Übertragung wiederherstellen', '恢复上次写入前机器人的参数组'),
- '&About learnid': ('Ü&ber learnid', '关于 learnid(&A)'),
- 'Version and licence': ('Version und Lizenz', '版本和许可'),
- 'About &Qt': ('Über &Qt', '关于 &Qt'),
- 'Qt version': ('Qt-Version', 'Qt 版本'),
- 'System language': ('Systemsprache', '系统语言'),
- '&File': ('&Datei', '文件(&F)'),
- '&Robot': ('&Roboter', '机器人(&R)'),
- '&Trials': ('&Versuche', '试验(&T)'),
- '&Parameters': ('&Parameter', '参数(&P)'),
- '&View': ('&Ansicht', '视图(&V)'),
- '&Language': ('&Sprache', '语言(&L)'),
- '&Help': ('&Hilfe', '帮助(&H)'),
- 'learnid – commissioning': ('learnid – Inbetriebnahme', 'learnid – 调试'),
- 'Main': ('Haupt', '主工具栏'),
- 'Pre-trial check': ('Prüfung vor dem Versuch', '试验前检查'),
- 'Run': ('Ausführen', '运行'),
- 'Accept / apply': ('Akzeptieren / übertragen', '接受 / 写入'),
- 'Robot': ('Roboter', '机器人'),
- 'Scenario': ('Szenario', '场景'),
- 'Setup': ('Einrichtung', '设置'),
- 'Parameter convergence': ('Parameterkonvergenz', '参数收敛'),
- 'The language changes when learnid is started again.': ('Die Sprache wechselt beim nächsten Start von learnid.', '语言将在下次启动 learnid 时切换。'),
- 'Dis&connect robot': ('Roboter &trennen', '断开机器人(&C)'),
- 'Run disabled: %1': ('Start gesperrt: %1', '禁止运行：%1'),
- 'no robot': ('kein Roboter', '无机器人'),
- 'Robot: %1 – %2': ('Roboter: %1 – %2', '机器人：%1 – %2'),
- 'busy': ('beschäftigt', '忙'),
- 'idle': ('bereit', '空闲'),
- 'not connected': ('nicht verbunden', '未连接'),
- 'Correct the scenario first: %1': ('Zuerst das Szenario korrigieren: %1', '请先修正场景：%1'),
- 'Apply cancelled; the robot is unchanged.': ('Übertragen abgebrochen; der Roboter ist unverändert.', '已取消写入；机器人未改变。'),
- 'About learnid': ('Über learnid', '关于 learnid'),
- '<h3>learnid %1</h3><p>Learning identification of robot dynamics: a commissioning tool.</p><p>Built with Qt %2.</p>':
-   ('<h3>learnid %1</h3><p>Lernende Identifikation der Roboterdynamik: ein Inbetriebnahmewerkzeug.</p><p>Erstellt mit Qt %2.</p>',
-    '<h3>learnid %1</h3><p>机器人动力学的学习辨识：调试工具。</p><p>基于 Qt %2 构建。</p>'),
- 'Dismiss': ('Schließen', '关闭'),
- 'Joint': ('Gelenk', '关节'),
- 'Peak [N m]': ('Spitze [N m]', '峰值 [N m]'),
- 'Limit [N m]': ('Grenze [N m]', '限值 [N m]'),
- 'Use': ('Auslastung', '占用'),
- 'Planned motion:': ('Geplante Bewegung:', '规划运动：'),
- 'Closed loop:': ('Regelkreis:', '闭环：'),
- 'Connect a robot to plan the first trial.': ('Einen Roboter verbinden, um den ersten Versuch zu planen.', '连接机器人以规划第一次试验。'),
- 'Trial %1: check passed, the trial may run.': ('Versuch %1: Prüfung bestanden, der Versuch darf laufen.', '试验 %1：检查通过，可以运行。'),
- 'Trial %1 refused: %2': ('Versuch %1 abgelehnt: %2', '试验 %1 被拒绝：%2'),
- 'no plan': ('kein Plan', '无规划'),
- '%1 s motion, %2 s with rests, %3 samples': ('%1 s Bewegung, %2 s mit Ruhezeiten, %3 Abtastwerte', '运动 %1 s，含静止 %2 s，%3 个采样'),
- 'estimate not physical (mass matrix not positive definite)': ('Schätzung nicht physikalisch (Massenmatrix nicht positiv definit)', '估计不符合物理（质量矩阵非正定）'),
- 'stable: max |z| = %1, decay rate %2 1/s': ('stabil: max |z| = %1, Abklingrate %2 1/s', '稳定：max |z| = %1，衰减率 %2 1/s'),
- 'UNSTABLE: max |z| = %1 at t = %2 s (growth %3 1/s)': ('INSTABIL: max |z| = %1 bei t = %2 s (Anstieg %3 1/s)', '不稳定：max |z| = %1，t = %2 s（增长 %3 1/s）'),
- 'learnid commissioning report': ('learnid-Inbetriebnahmebericht', 'learnid 调试报告'),
- 'Commissioning report': ('Inbetriebnahmebericht', '调试报告'),
- 'Robot: %1': ('Roboter: %1', '机器人：%1'),
- 'Applied set: %1': ('Übertragener Satz: %1', '已写入参数组：%1'),
- 'learnid %1': ('learnid %1', 'learnid %1'),
- 'Connect': ('Verbinden', '连接'),
- 'Simulated (paper 2-link arm)': ('Simuliert (2-Glied-Arm aus dem Artikel)', '仿真（论文中的两连杆臂）'),
- 'CAN (CANopen / CiA 402)': ('CAN (CANopen / CiA 402)', 'CAN（CANopen / CiA 402）'),
- 'available when the CAN link lands': ('verfügbar, sobald die CAN-Anbindung fertig ist', 'CAN 连接完成后可用'),
- 'Simulated robot; CAN: %1': ('Simulierter Roboter; CAN: %1', '仿真机器人；CAN：%1'),
- 'Robot:': ('Roboter:', '机器人：'),
- 'State:': ('Zustand:', '状态：'),
- 'Disconnect': ('Trennen', '断开'),
- '%p %': ('%p %', '%p %'),
- '%v of %m trials': ('%v von %m Versuchen', '%v / %m 次试验'),
- 'Trial:': ('Versuch:', '试验：'),
- 'Series:': ('Serie:', '系列：'),
- 'trial %1: %p %': ('Versuch %1: %p %', '试验 %1：%p %'),
- 'Start (x, y)': ('Start (x, y)', '起点 (x, y)'),
- 'Number of trials': ('Anzahl Versuche', '试验次数'),
- 'Path (straight line)': ('Bahn (Gerade)', '路径（直线）'),
- 'Length': ('Länge', '长度'),
- 'Direction': ('Richtung', '方向'),
- 'Torque limits': ('Momentengrenzen', '力矩限值'),
- 'Limit per joint': ('Grenze je Gelenk', '各关节限值'),
- 'Planning fraction': ('Planungsanteil', '规划比例'),
- 'Controller': ('Regler', '控制器'),
- 'lambda (derivative filter)': ('lambda (D-Filter)', 'lambda（微分滤波）'),
- 'Estimator': ('Schätzer', '估计器'),
- 'rho (filter F)': ('rho (Filter F)', 'rho（滤波器 F）'),
- 'Initial parameters': ('Anfangsparameter', '初始参数'),
- 'enter a value': ('einen Wert eingeben', '请输入数值'),
- '"%1" is not a number': ('„%1“ ist keine Zahl', '“%1”不是数字'),
- 'Scenario key %1': ('Szenario-Schlüssel %1', '场景键 %1'),
- 'values separated by commas': ('Werte durch Kommas getrennt', '用逗号分隔的数值'),
- 'paper-consistent': ('artikelkonsistent', '与论文一致'),
- 'improved (zero-phase, WLS)': ('verbessert (nullphasig, WLS)', '改进（零相位，WLS）'),
- 'Estimator law': ('Lerngesetz', '学习律'),
- 'Initial parameters (%1)': ('Anfangsparameter (%1)', '初始参数（%1）'),
- 'enter one number': ('eine Zahl eingeben', '请输入一个数'),
- 'enter %1 numbers, got %2': ('%1 Zahlen eingeben, erhalten: %2', '请输入 %1 个数，实际 %2 个'),
- 'enter a whole number': ('eine ganze Zahl eingeben', '请输入整数'),
- 'connected: %1': ('verbunden: %1', '已连接：%1'),
- 'Cannot start the session: %1': ('Sitzung kann nicht gestartet werden: %1', '无法启动会话：%1'),
- 'Trial %1 running…': ('Versuch %1 läuft…', '试验 %1 运行中…'),
- 'Trial %1 %2: %3. Its data are kept.': ('Versuch %1 %2: %3. Seine Daten bleiben erhalten.', '试验 %1 %2：%3。其数据已保留。'),
- 'Finished; %1 estimate(s) learned.': ('Fertig; %1 Schätzung(en) gelernt.', '完成；已学习 %1 个估计。'),
- 'Stopped; see the message above.': ('Angehalten; siehe Meldung oben.', '已停止；请查看上方消息。'),
- 'Estimate %1 accepted.': ('Schätzung %1 akzeptiert.', '已接受估计 %1。'),
- 'Parameters written to the robot and read back.': ('Parameter in den Roboter geschrieben und zurückgelesen.', '参数已写入机器人并回读确认。'),
- 'unknown robot model "%1"': ('unbekanntes Robotermodell „%1“', '未知机器人模型“%1”'),
- 'no robot connected': ('kein Roboter verbunden', '未连接机器人'),
- 'no session to export': ('keine Sitzung zum Exportieren', '没有可导出的会话'),
- 'Auto-scale': ('Automatisch skalieren', '自动缩放'),
- 'Off: symmetric axis on a 0.02 deg grid, as in the paper': ('Aus: symmetrische Achse mit 0,02°-Raster wie im Artikel', '关闭：对称坐标轴，0.02 度网格，与论文相同'),
- 'Time [s]': ('Zeit [s]', '时间 [s]'),
- 'Tracking error [deg]': ('Folgefehler [°]', '跟踪误差 [度]'),
- 'Show:': ('Anzeigen:', '显示：'),
- 'All trials (overlay)': ('Alle Versuche (überlagert)', '所有试验（叠加）'),
- 'Trial %1': ('Versuch %1', '试验 %1'),
- 'Trial %1 (%2)': ('Versuch %1 (%2)', '试验 %1（%2）'),
- 'Tracking error, all trials (solid: joint 1, dashed: joint 2; darker: later)':
-   ('Folgefehler, alle Versuche (durchgezogen: Gelenk 1, gestrichelt: Gelenk 2; dunkler: später)',
-    '跟踪误差，所有试验（实线：关节 1，虚线：关节 2；颜色越深越晚）'),
- 'Tracking error, %1': ('Folgefehler, %1', '跟踪误差，%1'),
- 'trial %1, joint %2': ('Versuch %1, Gelenk %2', '试验 %1，关节 %2'),
- 'joint %1': ('Gelenk %1', '关节 %1'),
-}
-PLURAL = {
- '%n trial CSV file(s) written to %1': (['%n Versuchs-CSV-Datei nach %1 geschrieben', '%n Versuchs-CSV-Dateien nach %1 geschrieben'],
-                                        ['已将 %n 个试验 CSV 文件写入 %1']),
-}
-SHORTCUTS_KEEP = True  # key sequences ("Ctrl+E") are kept as they are in every language
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, '..', '..'))
+sys.path.insert(0, HERE)
+import texts_app  # noqa: E402
+import texts_can  # noqa: E402
+import texts_core  # noqa: E402
+import texts_ui  # noqa: E402
 
-here = os.path.dirname(os.path.abspath(__file__))
-for lang, col in (('de', 0), ('zh_CN', 1)):
-    path = os.path.join(here, '..', f'learnid_{lang}.ts')
-    tree = ET.parse(path)
-    missing = 0
-    for msg in tree.getroot().iter('message'):
-        src = msg.find('source').text or ''
-        tr = msg.find('translation')
-        if msg.get('numerus') == 'yes' and src in PLURAL:
-            for f in list(tr):
-                tr.remove(f)
-            for form in PLURAL[src][col]:
-                ET.SubElement(tr, 'numerusform').text = form
-            tr.attrib.pop('type', None)
-        elif src in T:
-            tr.text = T[src][col]
-            tr.attrib.pop('type', None)
-        elif src.startswith(('Ctrl+', 'Shift+')):
-            tr.text = src
-            tr.attrib.pop('type', None)
-        else:
-            missing += 1
-            print(f'{lang}: no translation for {src!r}')
-    with open(path, 'wb') as f:
-        f.write(b'<?xml version="1.0" encoding="utf-8"?>\n<!DOCTYPE TS>\n')
-        tree.write(f, encoding='utf-8', xml_declaration=False)
-        f.write(b'\n')
-    print(f'{lang}: {missing} missing')
+LANGUAGES = (('de', 0), ('zh_CN', 1))
+TABLES = (texts_ui, texts_core, texts_can, texts_app)
+
+# --- the tables, checked --------------------------------------------------------------------------
+
+FULL_WIDTH = '（）：，。；！？“”'
+CLOSING = {'.': '.。', ':': ':：', '?': '?？', '!': '!！', '…': '…', ';': ';；'}
+
+
+def placeholders(text):
+    return sorted(set(re.findall(r'%L?(\d+|n)', text)))
+
+
+def problems(source, translation):
+    """What the translation fails to keep of the source, as a list of reasons."""
+    found = []
+    if placeholders(source) != placeholders(translation):
+        found.append(f'placeholders {placeholders(source)} became {placeholders(translation)}')
+    last = source.rstrip()[-1:] if source.strip() else ''
+    if last in CLOSING and translation.rstrip()[-1:] not in CLOSING[last]:
+        found.append(f'ends without {last!r}')
+    if source.count('\n') != translation.count('\n'):
+        found.append('line breaks differ')
+    # A blank that joins the text to its neighbour is kept, except next to full-width
+    # punctuation, which brings its own space: ' (abort code %1)' -> '（中止代码 %1）'.
+    lead = lambda s: s[:len(s) - len(s.lstrip())]
+    trail = lambda s: s[len(s.rstrip()):]
+    if lead(source) != lead(translation) and translation[:1] not in FULL_WIDTH:
+        found.append('leading blanks differ')
+    if trail(source) != trail(translation) and translation[-1:] not in FULL_WIDTH:
+        found.append('trailing blanks differ')
+    return found
+
+
+def load_tables():
+    singular, plural, refused = {}, {}, []
+    for table in TABLES:
+        for source, pair in table.T.items():
+            if source in singular and singular[source] != pair:
+                refused.append(f'{source!r}: two different entries ({table.__name__})')
+            singular[source] = pair
+            for (lang, col) in LANGUAGES:
+                for why in problems(source, pair[col]):
+                    refused.append(f'{lang}: {source!r} -> {pair[col]!r}: {why}')
+        for source, forms in getattr(table, 'PLURAL', {}).items():
+            plural[source] = forms
+            for (lang, col) in LANGUAGES:
+                for form in forms[col]:
+                    for why in problems(source, form):
+                        refused.append(f'{lang}: {source!r} -> {form!r}: {why}')
+    return singular, plural, refused
+
+
+# --- step 1: contexts -------------------------------------------------------------------------
+
+HELPER = re.compile(r'translate\(\s*"([^"]+)"\s*,\s*[A-Za-z_]\w*\s*\)')
+LITERAL_CONTEXT = re.compile(r'(?:translate|QT_TRANSLATE_NOOP3?|QT_TRANSLATE_N_NOOP3?)\(\s*"([^"]+)"')
+TR_CLASS = re.compile(r'\b(?:class|struct)\s+(?:\w+\s+)?(\w+)\b[^;{()]*\{(.*?)\n\};', re.S)
+
+
+class Sources:
+    """What the sources say about translation contexts."""
+
+    def __init__(self):
+        self.helper = {}  # file -> the context its tr() helper passes
+        self.literal = set()  # contexts the code names: translate("X", ...), QT_TRANSLATE_NOOP
+        self.classes = set()  # classes with their own tr(): Q_OBJECT, Q_DECLARE_TR_FUNCTIONS
+        for folder in ('core', 'ui', 'app'):
+            for base, _, names in os.walk(os.path.join(ROOT, folder)):
+                for name in names:
+                    if name.endswith(('.cpp', '.h')):
+                        self._read(os.path.join(base, name))
+
+    def _read(self, path):
+        text = open(path, encoding='utf-8').read()
+        helpers = set(HELPER.findall(text))
+        if len(helpers) == 1:
+            self.helper[path] = helpers.pop()
+        self.literal.update(LITERAL_CONTEXT.findall(text))
+        self.literal.update(re.findall(r'Q_DECLARE_TR_FUNCTIONS\((\w+)\)', text))
+        for name, body in TR_CLASS.findall(text):
+            if 'Q_OBJECT' in body:
+                self.classes.add(name)
+
+    def is_real(self, context):
+        # lupdate names a Q_OBJECT class's context with its namespaces: learnid::MainWindow
+        return context in self.literal or context.split('::')[-1] in self.classes
+
+    def target(self, context, files):
+        """The contexts a text found in `files` under `context` is looked up in at run time."""
+        if self.is_real(context):
+            return [context]
+        targets = [self.helper.get(f) for f in files]
+        return None if not files or None in targets else sorted(set(targets))
+
+
+def refile(root, ts_dir, sources):
+    """Step 1 and 2: {context: [message]} with texts under their run-time context, no locations."""
+    contexts, unplaced = {}, []
+    for ctx in root.iter('context'):
+        name = ctx.findtext('name')
+        for msg in ctx.iter('message'):
+            files = [os.path.normpath(os.path.join(ts_dir, loc.get('filename')))
+                     for loc in msg.findall('location') if loc.get('filename')]
+            for loc in msg.findall('location'):
+                msg.remove(loc)
+            targets = sources.target(name, files)
+            if targets is None:
+                unplaced.append(f'{msg.findtext("source")!r} (context {name}, in {files})')
+                targets = [name]
+            for target in targets:
+                into = contexts.setdefault(target, {})
+                key = (msg.findtext('source'), msg.findtext('comment'))
+                if key not in into:
+                    into[key] = msg
+    return contexts, unplaced
+
+
+# --- step 3: translations -----------------------------------------------------------------------
+
+def fill(msg, col, singular, plural):
+    """Fills msg's translation; False if the tables have none."""
+    src = msg.findtext('source') or ''
+    tr = msg.find('translation')
+    if msg.get('numerus') == 'yes':
+        if src not in plural:
+            return False
+        for form in list(tr):
+            tr.remove(form)
+        for text in plural[src][col]:
+            ET.SubElement(tr, 'numerusform').text = text
+        tr.text = None
+    elif src in singular:
+        tr.text = singular[src][col]
+    elif src.startswith(('Ctrl+', 'Shift+')):  # key sequences stay as they are in every language
+        tr.text = src
+    else:
+        return False
+    tr.attrib.pop('type', None)
+    return True
+
+
+# --- writing, in lupdate's layout ---------------------------------------------------------------
+
+def escape(text):
+    return (text.replace('&', '&amp;').replace('<', '&lt;').replace('>', '&gt;')
+            .replace('"', '&quot;').replace("'", '&apos;'))
+
+
+def element(e, indent):
+    attrs = ''.join(f' {k}="{escape(v)}"' for k, v in e.attrib.items())
+    pad = ' ' * indent
+    if len(e) == 0:
+        return f'{pad}<{e.tag}{attrs}>{escape(e.text or "")}</{e.tag}>\n'
+    inner = ''.join(element(child, indent + 4) for child in e)
+    return f'{pad}<{e.tag}{attrs}>\n{inner}{pad}</{e.tag}>\n'
+
+
+def write(path, root, contexts):
+    attrs = ''.join(f' {k}="{v}"' for k, v in root.attrib.items())
+    with open(path, 'w', encoding='utf-8') as f:
+        f.write(f'<?xml version="1.0" encoding="utf-8"?>\n<!DOCTYPE TS>\n<TS{attrs}>\n')
+        for name in sorted(contexts):
+            f.write(f'<context>\n    <name>{escape(name)}</name>\n')
+            for msg in contexts[name].values():
+                f.write(element(msg, 4))
+            f.write('</context>\n')
+        f.write('</TS>\n')
+
+
+def main():
+    singular, plural, refused = load_tables()
+    if refused:
+        print('fill_translations: refused, nothing written:\n  ' + '\n  '.join(refused))
+        return 1
+    sources = Sources()
+    status = 0
+    used = set()
+    for lang, col in LANGUAGES:
+        path = os.path.join(HERE, '..', f'learnid_{lang}.ts')
+        root = ET.parse(path).getroot()
+        contexts, unplaced = refile(root, os.path.dirname(path), sources)
+        for text in unplaced:
+            print(f'{lang}: no translation context for {text}: give the file a tr() helper or a '
+                  'Q_OBJECT / Q_DECLARE_TR_FUNCTIONS class')
+            status = 1
+        missing = total = 0
+        for msgs in contexts.values():
+            for msg in msgs.values():
+                total += 1
+                if fill(msg, col, singular, plural):
+                    used.add(msg.findtext('source'))
+                elif msg.find('translation').get('type') == 'unfinished':
+                    missing += 1
+                    print(f'{lang}: no translation for {msg.findtext("source")!r}')
+        write(path, root, contexts)
+        print(f'{lang}: {total} texts in {len(contexts)} contexts, {missing} unfinished')
+    unused = [s for s in list(singular) + list(plural) if s not in used]
+    if unused:
+        print(f'{len(unused)} table entries no longer used:\n  ' + '\n  '.join(map(repr, unused)))
+    return status
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,13 @@
+#pragma once
+
+class QCoreApplication;
+class QLocale;
+
+namespace learnid {
+
+/// Installs learnid's translator for `locale` (the .qm files embedded under :/i18n, covering
+/// core/, ui/ and app/) and Qt's own qtbase translator (standard dialogs, QCommandLineParser) on
+/// `app`. Returns whether learnid's translation for the locale was found; English needs none.
+bool installTranslators(QCoreApplication &app, const QLocale &locale);
+
+} // namespace learnid
