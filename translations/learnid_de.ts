@@ -1206,7 +1206,8 @@
       trial completed.
       --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
       runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
-      --can-log writes every trial&apos;s frames as a candump log into DIR.
+      --can-log writes every trial&apos;s frames as a candump log into DIR;
+      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
   learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
                      [--estimator paper|improved] [--nodes 1,2] [--report FILE]
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
@@ -1225,7 +1226,8 @@
       wenn jeder Versuch abgeschlossen wurde.
       --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
       führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);
-      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR.
+      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR;
+      --can-sync-timeout MS beendet einen Versuch, wenn MS lang kein SYNC kommt (Standard 20).
   learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
                      [--estimator paper|improved] [--nodes 1,2] [--report FILE]
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
@@ -1242,10 +1244,6 @@
         <translation>--%1 braucht --robot can</translation>
     </message>
     <message>
-        <source>--can-log needs --robot can</source>
-        <translation>--can-log braucht --robot can</translation>
-    </message>
-    <message>
         <source>--robot can needs --can-plugin (e.g. socketcan, virtualcan)</source>
         <translation>--robot can braucht --can-plugin (z. B. socketcan, virtualcan)</translation>
     </message>
@@ -1256,6 +1254,10 @@
     <message>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes: %1 in &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>--can-sync-timeout: must be a whole number of ms from 1 to 60000, got &apos;%1&apos;</source>
+        <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
         <source>--nodes %1: %2</source>
@@ -1320,6 +1322,10 @@
     <message>
         <source>CANopen node per joint.</source>
         <translation>CANopen-Knoten pro Gelenk.</translation>
+    </message>
+    <message>
+        <source>Longest SYNC gap in a trial [ms].</source>
+        <translation>Längste SYNC-Lücke in einem Versuch [ms].</translation>
     </message>
     <message>
         <source>Candump log folder.</source>

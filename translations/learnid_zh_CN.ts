@@ -1206,7 +1206,8 @@
       trial completed.
       --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
       runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
-      --can-log writes every trial&apos;s frames as a candump log into DIR.
+      --can-log writes every trial&apos;s frames as a candump log into DIR;
+      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
   learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
                      [--estimator paper|improved] [--nodes 1,2] [--report FILE]
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
@@ -1225,7 +1226,8 @@
       才写入文件。
       --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
       改为在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）；
-      --can-log 将每次试验的帧以 candump 日志写入 DIR。
+      --can-log 将每次试验的帧以 candump 日志写入 DIR；
+      --can-sync-timeout MS：MS 内无 SYNC 即停止试验（默认 20）。
   learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
                      [--estimator paper|improved] [--nodes 1,2] [--report FILE]
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
@@ -1242,10 +1244,6 @@
         <translation>--%1 需要 --robot can</translation>
     </message>
     <message>
-        <source>--can-log needs --robot can</source>
-        <translation>--can-log 需要 --robot can</translation>
-    </message>
-    <message>
         <source>--robot can needs --can-plugin (e.g. socketcan, virtualcan)</source>
         <translation>--robot can 需要 --can-plugin（例如 socketcan、virtualcan）</translation>
     </message>
@@ -1256,6 +1254,10 @@
     <message>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes：&apos;%2&apos; 中 %1</translation>
+    </message>
+    <message>
+        <source>--can-sync-timeout: must be a whole number of ms from 1 to 60000, got &apos;%1&apos;</source>
+        <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>--nodes %1: %2</source>
@@ -1320,6 +1322,10 @@
     <message>
         <source>CANopen node per joint.</source>
         <translation>每个关节的 CANopen 节点。</translation>
+    </message>
+    <message>
+        <source>Longest SYNC gap in a trial [ms].</source>
+        <translation>试验中最长的 SYNC 间隔 [ms]。</translation>
     </message>
     <message>
         <source>Candump log folder.</source>

@@ -6,6 +6,7 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
+#include <cmath>
 
 namespace learnid::cli {
 
@@ -30,7 +31,8 @@ QString usageText()
               "      trial completed.\n"
               "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
               "      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);\n"
-              "      --can-log writes every trial's frames as a candump log into DIR.\n"
+              "      --can-log writes every trial's frames as a candump log into DIR;\n"
+              "      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).\n"
               "  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]\n"
               "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
               "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
@@ -57,9 +59,11 @@ QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOpti
                 return tr("--%1 needs --robot can").arg(name);
             }
         }
-        if (parser.isSet(QStringLiteral("can-log"))) {
-            run->robot.clear();
-            return tr("--can-log needs --robot can");
+        for (const char *name : {"can-log", "can-sync-timeout"}) {
+            if (parser.isSet(QLatin1String(name))) {
+                run->robot.clear();
+                return tr("--%1 needs --robot can").arg(QLatin1String(name));
+            }
         }
         return {};
     }
@@ -79,6 +83,15 @@ QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOpti
         run->can.nodes = parseNodeList(parser.value(nodes), &error);
         if (run->can.nodes.isEmpty())
             return tr("--nodes: %1 in '%2'").arg(error, parser.value(nodes));
+    }
+    if (!replay && parser.isSet(QStringLiteral("can-sync-timeout"))) {
+        const QString text = parser.value(QStringLiteral("can-sync-timeout"));
+        bool ok = false;
+        const int ms = text.trimmed().toInt(&ok);
+        if (!ok || ms < 1 || ms > 60000)
+            return tr("--can-sync-timeout: must be a whole number of ms from 1 to 60000, got '%1'")
+                .arg(text);
+        run->can.syncGapPeriods = std::max(1, int(std::ceil(ms / (1000.0 * run->can.syncPeriod))));
     }
     const QString invalid = canRobotOptionsError(run->can);
     if (!invalid.isEmpty())
@@ -130,6 +143,9 @@ CommandLine parseCommandLine(const QStringList &args)
                                           QStringLiteral("I"));
     const QCommandLineOption nodes(QStringLiteral("nodes"), tr("CANopen node per joint."),
                                    QStringLiteral("LIST"));
+    const QCommandLineOption canSyncTimeout(QStringLiteral("can-sync-timeout"),
+                                            tr("Longest SYNC gap in a trial [ms]."),
+                                            QStringLiteral("MS"));
     const QCommandLineOption canLog(QStringLiteral("can-log"), tr("Candump log folder."),
                                     QStringLiteral("DIR"));
     const QCommandLineOption candump(QStringLiteral("candump"), tr("Recorded trial log."),
@@ -159,7 +175,7 @@ CommandLine parseCommandLine(const QStringList &args)
     if (replay)
         parser.addOption(candump);
     else
-        parser.addOptions({robot, canPlugin, canInterface, canLog});
+        parser.addOptions({robot, canPlugin, canInterface, canLog, canSyncTimeout});
     if (!parser.parse(args.mid(1))) {
         cl.error = parser.errorText();
         return cl;

@@ -63,6 +63,12 @@ void TestCliCan::badOption_exitsNamingOptionAndValue_data()
                                << 2 << QStringList{QStringLiteral("--can-plugin")};
     QTest::newRow("bad node") << can + QStringList{QStringLiteral("--nodes"), QStringLiteral("1,x")}
                               << 2 << QStringList{QStringLiteral("--nodes"), QStringLiteral("'x'")};
+    QTest::newRow("sync timeout 0")
+        << can + QStringList{QStringLiteral("--can-sync-timeout"), QStringLiteral("0")} << 2
+        << QStringList{QStringLiteral("--can-sync-timeout"), QStringLiteral("'0'")};
+    QTest::newRow("sync timeout without can")
+        << QStringList{run, QStringLiteral("--can-sync-timeout"), QStringLiteral("200")} << 1
+        << QStringList{QStringLiteral("--can-sync-timeout needs --robot can")};
     QTest::newRow("node twice") << can +
                                        QStringList{QStringLiteral("--nodes"), QStringLiteral("3,3")}
                                 << 2

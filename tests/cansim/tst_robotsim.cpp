@@ -5,6 +5,8 @@
 #include "can/Nmt.h"
 #include "can/SdoClient.h"
 
+#include "../support/RobotSimProcess.h"
+
 #include <QCanBus>
 #include <QDir>
 #include <QElapsedTimer>
@@ -38,12 +40,6 @@ private slots:
     void hostThatNeverAccepts_failsAfterTheConnectTimeout();
 
 private:
-    static int freePort()
-    {
-        QTcpServer probe;
-        probe.listen(QHostAddress::LocalHost, 0);
-        return probe.serverPort();
-    }
     static QStringList bus(int port)
     {
         return {QStringLiteral("--can-plugin"), QStringLiteral("virtualcan"),
@@ -123,8 +119,9 @@ void TestRobotSim::virtualcan_printsReady_writesState_andStopsWhenStdinCloses()
     const QString state = dir.filePath(QStringLiteral("state.json"));
     QProcess p;
     p.start(QStringLiteral(LEARNID_ROBOT_SIM_PATH),
-            bus(freePort()) + QStringList{QStringLiteral("--nodes"), QStringLiteral("7,9"),
-                                          QStringLiteral("--state"), state});
+            bus(learnid::test::freeLoopbackPort()) + QStringList{QStringLiteral("--nodes"),
+                                                                 QStringLiteral("7,9"),
+                                                                 QStringLiteral("--state"), state});
     QTRY_VERIFY_WITH_TIMEOUT(p.canReadLine() || p.state() == QProcess::NotRunning, 10000);
     QCOMPARE(p.readLine().trimmed(), QByteArray("ready"));
     QFile f(state);
@@ -141,7 +138,7 @@ void TestRobotSim::virtualcan_printsReady_writesState_andStopsWhenStdinCloses()
 void TestRobotSim::sigterm_stopsCleanly()
 {
     QProcess p;
-    p.start(QStringLiteral(LEARNID_ROBOT_SIM_PATH), bus(freePort()));
+    p.start(QStringLiteral(LEARNID_ROBOT_SIM_PATH), bus(learnid::test::freeLoopbackPort()));
     QTRY_VERIFY_WITH_TIMEOUT(p.canReadLine() || p.state() == QProcess::NotRunning, 10000);
     QCOMPARE(p.readLine().trimmed(), QByteArray("ready"));
     p.terminate(); // SIGTERM
@@ -153,7 +150,7 @@ void TestRobotSim::sigterm_stopsCleanly()
 
 void TestRobotSim::virtualcanClient_getsSdoAnswersSyncsAndTpdos()
 {
-    const QStringList args = bus(freePort());
+    const QStringList args = bus(learnid::test::freeLoopbackPort());
     QProcess p;
     p.start(QStringLiteral(LEARNID_ROBOT_SIM_PATH), args);
     QTRY_VERIFY_WITH_TIMEOUT(p.canReadLine() || p.state() == QProcess::NotRunning, 10000);

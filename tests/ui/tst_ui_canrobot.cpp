@@ -1,3 +1,4 @@
+#include "../support/RobotSimProcess.h"
 #include "UiTestSupport.h"
 
 #include "ui/ConvergenceTableModel.h"
@@ -6,24 +7,11 @@
 
 #include <QComboBox>
 #include <QLineEdit>
-#include <QProcess>
 #include <QSignalSpy>
-#include <QTcpServer>
 #include <QtTest>
 
 using namespace learnid;
 using namespace learnid::test;
-
-namespace {
-
-// A port nobody listens on right now (virtualcan's server is hosted by the simulator).
-quint16 freePort()
-{
-    QTcpServer server;
-    return server.listen(QHostAddress::LocalHost, 0) ? server.serverPort() : 0;
-}
-
-} // namespace
 
 /// The window's CAN robot choice: against learnid-robot-sim over virtualcan on a loopback port,
 /// and the settings a technician can get wrong.
@@ -61,7 +49,8 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         SessionController *c = f.window->controller();
         QSignalSpy failed(c, &SessionController::openFailed);
-        chooseCan(f, QStringLiteral("socketcan"), QStringLiteral("learnidnoif0"), QStringLiteral("1,2"));
+        chooseCan(f, QStringLiteral("socketcan"), QStringLiteral("learnidnoif0"),
+                  QStringLiteral("1,2"));
         QVERIFY(f.click("connectButton"));
         QVERIFY(failed.wait(10000));
         const QString message = failed.constFirst().at(0).toString();
@@ -73,17 +62,11 @@ private slots:
 
     void sessionOnTheSimulatorOverVirtualcan()
     {
-        const quint16 port = freePort();
+        const quint16 port = freeLoopbackPort();
         QVERIFY(port > 0);
         const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
-        QProcess sim;
-        sim.start(QStringLiteral(LEARNID_ROBOT_SIM_PATH),
-                  {QStringLiteral("--can-plugin"), QStringLiteral("virtualcan"),
-                   QStringLiteral("--can-interface"), interface,
-                   QStringLiteral("--setpoint-timeout"), QStringLiteral("25")});
-        QVERIFY(sim.waitForStarted(5000));
-        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine() || !sim.waitForReadyRead(100), 10000);
-        QCOMPARE(sim.readLine().trimmed(), QByteArray("ready"));
+        RobotSimProcess sim(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+        QVERIFY(sim.start(interface));
 
         WindowFixture f;
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
@@ -108,8 +91,6 @@ private slots:
 
         QVERIFY(f.click("connectButton")); // disconnect
         QTRY_VERIFY_WITH_TIMEOUT(!c->isOpen(), 10000);
-        sim.terminate();
-        QVERIFY(sim.waitForFinished(5000));
     }
 };
 

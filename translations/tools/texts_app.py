@@ -15,7 +15,8 @@ USAGE_EN = (
     "      trial completed.\n"
     "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
     "      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);\n"
-    "      --can-log writes every trial's frames as a candump log into DIR.\n"
+    "      --can-log writes every trial's frames as a candump log into DIR;\n"
+    "      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).\n"
     "  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]\n"
     "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
     "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
@@ -34,7 +35,8 @@ USAGE_DE = (
     "      wenn jeder Versuch abgeschlossen wurde.\n"
     "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
     "      führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);\n"
-    "      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR.\n"
+    "      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR;\n"
+    "      --can-sync-timeout MS beendet einen Versuch, wenn MS lang kein SYNC kommt (Standard 20).\n"
     "  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]\n"
     "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
     "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
@@ -53,7 +55,8 @@ USAGE_ZH = (
     "      才写入文件。\n"
     "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
     "      改为在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）；\n"
-    "      --can-log 将每次试验的帧以 candump 日志写入 DIR。\n"
+    "      --can-log 将每次试验的帧以 candump 日志写入 DIR；\n"
+    "      --can-sync-timeout MS：MS 内无 SYNC 即停止试验（默认 20）。\n"
     "  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]\n"
     "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
     "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
@@ -66,7 +69,10 @@ T = {
  'learnid-cli: error: %1': ('learnid-cli: Fehler: %1', 'learnid-cli：错误：%1'),
  "--robot: must be 'sim' or 'can', got '%1'": ("--robot: muss 'sim' oder 'can' sein, gefunden: '%1'", "--robot：必须是 'sim' 或 'can'，实际为 '%1'"),
  '--%1 needs --robot can': ('--%1 braucht --robot can', '--%1 需要 --robot can'),
- '--can-log needs --robot can': ('--can-log braucht --robot can', '--can-log 需要 --robot can'),
+ "--can-sync-timeout: must be a whole number of ms from 1 to 60000, got '%1'":
+   ("--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: '%1'",
+    "--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 '%1'"),
+ 'Longest SYNC gap in a trial [ms].': ('Längste SYNC-Lücke in einem Versuch [ms].', '试验中最长的 SYNC 间隔 [ms]。'),
  '--robot can needs --can-plugin (e.g. socketcan, virtualcan)':
    ('--robot can braucht --can-plugin (z. B. socketcan, virtualcan)', '--robot can 需要 --can-plugin（例如 socketcan、virtualcan）'),
  '--robot can needs --can-interface (e.g. can0)': ('--robot can braucht --can-interface (z. B. can0)', '--robot can 需要 --can-interface（例如 can0）'),
