@@ -2508,6 +2508,14 @@
         <translation>CANopen-Knoten-ID von Gelenk 1, 2, ... (docs/can-protocol.md)</translation>
     </message>
     <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>A trial stops when no SYNC arrives for this long</source>
+        <translation>Ein Versuch endet, wenn so lange kein SYNC eintrifft</translation>
+    </message>
+    <message>
         <source>Plugin:</source>
         <translation>Plugin:</translation>
     </message>
@@ -2518,6 +2526,10 @@
     <message>
         <source>Nodes:</source>
         <translation>Knoten:</translation>
+    </message>
+    <message>
+        <source>SYNC timeout:</source>
+        <translation>SYNC-Zeitlimit:</translation>
     </message>
     <message>
         <source>Robot:</source>

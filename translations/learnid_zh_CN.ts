@@ -2507,6 +2507,14 @@
         <translation>关节 1、2……的 CANopen 节点 ID（docs/can-protocol.md）</translation>
     </message>
     <message>
+        <source> ms</source>
+        <translation> 毫秒</translation>
+    </message>
+    <message>
+        <source>A trial stops when no SYNC arrives for this long</source>
+        <translation>若超过此时间未收到 SYNC，试验即停止</translation>
+    </message>
+    <message>
         <source>Plugin:</source>
         <translation>插件：</translation>
     </message>
@@ -2517,6 +2525,10 @@
     <message>
         <source>Nodes:</source>
         <translation>节点：</translation>
+    </message>
+    <message>
+        <source>SYNC timeout:</source>
+        <translation>SYNC 超时：</translation>
     </message>
     <message>
         <source>Robot:</source>

@@ -7,6 +7,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSpinBox>
 
 namespace learnid {
 
@@ -17,6 +18,7 @@ RobotPanel::RobotPanel(QWidget *parent)
     , m_plugin(new QComboBox(m_canFields))
     , m_interface(new QLineEdit(QStringLiteral("can0"), m_canFields))
     , m_nodes(new QLineEdit(QStringLiteral("1,2"), m_canFields))
+    , m_syncTimeout(new QSpinBox(m_canFields))
     , m_connect(new QPushButton(QIcon(QStringLiteral(":/icons/connect.svg")), tr("Connect"), this))
     , m_state(new QLabel(this))
 {
@@ -24,6 +26,7 @@ RobotPanel::RobotPanel(QWidget *parent)
     m_plugin->setObjectName(QStringLiteral("canPlugin"));
     m_interface->setObjectName(QStringLiteral("canInterface"));
     m_nodes->setObjectName(QStringLiteral("canNodes"));
+    m_syncTimeout->setObjectName(QStringLiteral("canSyncTimeout"));
     m_connect->setObjectName(QStringLiteral("connectButton"));
     m_kind->addItem(tr("Simulated (paper 2-link arm)"), int(RobotKind::Simulated));
     m_kind->addItem(tr("CAN (CANopen / CiA 402)"), int(RobotKind::Can));
@@ -33,12 +36,17 @@ RobotPanel::RobotPanel(QWidget *parent)
                             "to try learnid-robot-sim first"));
     m_interface->setToolTip(tr("e.g. can0 (socketcan) or tcp://127.0.0.1:35468/can0 (virtualcan)"));
     m_nodes->setToolTip(tr("CANopen node id of joint 1, 2, ... (docs/can-protocol.md)"));
+    m_syncTimeout->setRange(4, 60000);
+    m_syncTimeout->setValue(20);
+    m_syncTimeout->setSuffix(tr(" ms"));
+    m_syncTimeout->setToolTip(tr("A trial stops when no SYNC arrives for this long"));
 
     auto *can = new QFormLayout(m_canFields);
     can->setContentsMargins(0, 0, 0, 0);
     can->addRow(tr("Plugin:"), m_plugin);
     can->addRow(tr("Interface:"), m_interface);
     can->addRow(tr("Nodes:"), m_nodes);
+    can->addRow(tr("SYNC timeout:"), m_syncTimeout);
 
     auto *layout = new QFormLayout(this);
     layout->addRow(tr("Robot:"), m_kind);
@@ -70,6 +78,7 @@ std::optional<RobotChoice> RobotPanel::choice(QString *error) const
         return c;
     c.canOptions.plugin = m_plugin->currentText();
     c.canOptions.interface = m_interface->text().trimmed();
+    setSyncTimeoutMs(c.canOptions, m_syncTimeout->value());
     QString why;
     c.canOptions.nodes = parseNodeList(m_nodes->text(), &why);
     if (c.canOptions.nodes.isEmpty())

@@ -9,12 +9,13 @@ class QComboBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QSpinBox;
 class QWidget;
 
 namespace learnid {
 
 /// Robot choice and connection: Simulated (the default) or CAN (plugin, interface, the node
-/// of each joint), the Connect button and the robot's state.
+/// of each joint, the SYNC timeout), the Connect button and the robot's state.
 class RobotPanel : public QWidget
 {
     Q_OBJECT
@@ -45,6 +46,7 @@ private:
     QComboBox *m_plugin;
     QLineEdit *m_interface;
     QLineEdit *m_nodes;
+    QSpinBox *m_syncTimeout;
     QPushButton *m_connect;
     QLabel *m_state;
     bool m_connected = false;

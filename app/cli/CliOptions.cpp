@@ -91,7 +91,7 @@ QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOpti
         if (!ok || ms < 1 || ms > 60000)
             return tr("--can-sync-timeout: must be a whole number of ms from 1 to 60000, got '%1'")
                 .arg(text);
-        run->can.syncGapPeriods = std::max(1, int(std::ceil(ms / (1000.0 * run->can.syncPeriod))));
+        setSyncTimeoutMs(run->can, ms);
     }
     const QString invalid = canRobotOptionsError(run->can);
     if (!invalid.isEmpty())

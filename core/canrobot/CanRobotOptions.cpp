@@ -6,6 +6,8 @@
 #include <QCanBus>
 #include <QCoreApplication>
 #include <QSet>
+#include <algorithm>
+#include <cmath>
 
 namespace learnid {
 
@@ -68,6 +70,11 @@ QString canRobotOptionsError(const CanRobotOptions &options)
             .arg(options.maxBusLoadPercent, 0, 'f', 0);
     }
     return {};
+}
+
+void setSyncTimeoutMs(CanRobotOptions &options, int ms)
+{
+    options.syncGapPeriods = std::max(2, int(std::ceil(ms / (1000.0 * options.syncPeriod))));
 }
 
 QList<int> parseNodeList(const QString &text, QString *error)

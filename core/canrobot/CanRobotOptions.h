@@ -40,6 +40,9 @@ BusLoad configuredBusLoad(const CanRobotOptions &options);
 /// above the limit, with the figures), or empty.
 QString canRobotOptionsError(const CanRobotOptions &options);
 
+/// Sets syncGapPeriods so that a trial stops after ms without SYNC (at least 2 periods).
+void setSyncTimeoutMs(CanRobotOptions &options, int ms);
+
 /// "1,2,3" -> {1, 2, 3}; on failure returns empty and sets error (naming the bad element).
 QList<int> parseNodeList(const QString &text, QString *error);
 

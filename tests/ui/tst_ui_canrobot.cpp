@@ -3,12 +3,15 @@
 
 #include "ui/ConvergenceTableModel.h"
 #include "ui/MessageBar.h"
+#include "ui/RobotPanel.h"
 #include "ui/SessionController.h"
 
 #include <QComboBox>
 #include <QLineEdit>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QtTest>
+#include <cmath>
 
 using namespace learnid;
 using namespace learnid::test;
@@ -43,6 +46,25 @@ private slots:
         QVERIFY2(text.contains(QStringLiteral("200")), qPrintable(text));
     }
 
+    void syncTimeout_becomesTheGapInSyncPeriods()
+    {
+        WindowFixture f;
+        chooseCan(f, QStringLiteral("virtualcan"), QStringLiteral("tcp://127.0.0.1:1/can0"),
+                  QStringLiteral("1,2"));
+        auto *timeout = f.window->findChild<QSpinBox *>(QStringLiteral("canSyncTimeout"));
+        const auto *panel = f.window->findChild<RobotPanel *>();
+        QVERIFY(timeout && panel);
+        for (const int ms : {20, 21, 200}) {
+            timeout->setValue(ms);
+            QString error;
+            const std::optional<RobotChoice> choice = panel->choice(&error);
+            QVERIFY2(choice.has_value(), qPrintable(error));
+            // ceil(ms / period): a gap of exactly ms is still allowed
+            const int expected = int(std::ceil(ms / (1000.0 * choice->canOptions.syncPeriod)));
+            QCOMPARE(choice->canOptions.syncGapPeriods, expected);
+        }
+    }
+
     void missingInterface_failsWithAClearMessage()
     {
         WindowFixture f;
@@ -72,6 +94,8 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         SessionController *c = f.window->controller();
         chooseCan(f, QStringLiteral("virtualcan"), interface, QStringLiteral("1,2"));
+        // As tst_can_e2e: CI shares 2 cores between two processes on a 2 ms SYNC clock.
+        f.window->findChild<QSpinBox *>(QStringLiteral("canSyncTimeout"))->setValue(200);
         QVERIFY(f.click("connectButton"));
         QTRY_VERIFY_WITH_TIMEOUT(c->lastCheck().has_value(), 20000);
         QVERIFY(c->info()->robotDescription.contains(QStringLiteral("virtualcan")));

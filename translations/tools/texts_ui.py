@@ -255,6 +255,10 @@ T = {
  'Cannot connect: %1': ('Verbindung nicht möglich: %1', '无法连接：%1'),
  'Interface:': ('Schnittstelle:', '接口：'),
  'Nodes:': ('Knoten:', '节点：'),
+ 'SYNC timeout:': ('SYNC-Zeitlimit:', 'SYNC 超时：'),
+ ' ms': (' ms', ' 毫秒'),
+ 'A trial stops when no SYNC arrives for this long':
+   ('Ein Versuch endet, wenn so lange kein SYNC eintrifft', '若超过此时间未收到 SYNC，试验即停止'),
  'Plugin:': ('Plugin:', '插件：'),
  'QCanBus plugin: socketcan for a CAN adapter on Linux; virtualcan to try learnid-robot-sim first':
    ('QCanBus-Plugin: socketcan für einen CAN-Adapter unter Linux; virtualcan, um zuerst learnid-robot-sim auszuprobieren',
