@@ -19,6 +19,7 @@
 #include <QTemporaryDir>
 #include <QTimer>
 #include <cstdio>
+#include <vector>
 #include <unistd.h>
 
 using namespace learnid;
@@ -115,8 +116,22 @@ void updateTimes()
     std::printf("\nWorst update: %.1f ms (target < 50 ms).\n\n", worst);
 }
 
+/// The samples a history keeps: every trial's plan (q_d, qd_d, qdd_d, tau_f) and record (q,
+/// tau) [MiB].
+double samplesMiB(const QVector<TrialResult> &history)
+{
+    double doubles = 0;
+    for (const TrialResult &t : history) {
+        const TrialPlan &p = t.plan();
+        for (const Eigen::MatrixXd *m : {&p.desired.q, &p.desired.qd, &p.desired.qdd,
+                                         &p.feedforward, &t.record.q, &t.record.tau})
+            doubles += double(m->size());
+    }
+    return doubles * sizeof(double) / (1024.0 * 1024.0);
+}
+
 /// Child: 100 trials through the window's controller (gui) or a bare session (headless);
-/// prints "trials rss" every 10 trials.
+/// prints "trials rss" every 10 trials (headless: and the samples the history keeps).
 int memoryChild(QApplication &app, bool gui)
 {
     Scenario s;
@@ -124,7 +139,7 @@ int memoryChild(QApplication &app, bool gui)
         auto session = bench::makeSession(s);
         for (int k = 10; k <= 100; k += 10) {
             session->runTrials(10);
-            std::printf("%d %.1f\n", k, rssMiB());
+            std::printf("%d %.1f %.1f\n", k, rssMiB(), samplesMiB(session->history()));
         }
         return 0;
     }
@@ -148,7 +163,8 @@ int memoryChild(QApplication &app, bool gui)
 void memory(const QString &self)
 {
     std::printf(
-        "| trials | RSS with the GUI [MiB] | RSS headless session [MiB] |\n|---|---|---|\n");
+        "| trials | RSS with the GUI [MiB] | RSS headless session [MiB] | samples kept [MiB] | "
+        "GUI RSS - samples [MiB] | headless RSS - samples [MiB] |\n|---|---|---|---|---|---|\n");
     QProcess gui, headless;
     gui.start(self, {QStringLiteral("--memory-child"), QStringLiteral("gui")});
     headless.start(self, {QStringLiteral("--memory-child"), QStringLiteral("headless")});
@@ -156,10 +172,25 @@ void memory(const QString &self)
     headless.waitForFinished(600000);
     const QList<QByteArray> a = gui.readAllStandardOutput().trimmed().split('\n');
     const QList<QByteArray> b = headless.readAllStandardOutput().trimmed().split('\n');
+    // Both children run the same deterministic trials: the headless history's samples are the
+    // samples the window's session keeps in its worker thread too.
+    std::vector<double> guiBeyond, headlessBeyond;
     for (int i = 0; i < std::min(a.size(), b.size()); ++i) {
         const QList<QByteArray> x = a[i].split(' '), y = b[i].split(' ');
-        if (x.size() == 2 && y.size() == 2)
-            std::printf("| %s | %s | %s |\n", x[0].constData(), x[1].constData(), y[1].constData());
+        if (x.size() != 2 || y.size() != 3)
+            continue;
+        const double gui = x[1].toDouble(), bare = y[1].toDouble(), kept = y[2].toDouble();
+        guiBeyond.push_back(gui - kept);
+        headlessBeyond.push_back(bare - kept);
+        std::printf("| %s | %.1f | %.1f | %.1f | %.1f | %.1f |\n", x[0].constData(), gui, bare,
+                    kept, gui - kept, bare - kept);
+    }
+    if (guiBeyond.size() > 1) {
+        const double trials = 10.0 * double(guiBeyond.size() - 1);
+        std::printf("\nBeyond the samples kept, from trial 10 to %d: GUI %+.3f MiB per trial, "
+                    "headless %+.3f MiB per trial.\n",
+                    int(10 * guiBeyond.size()), (guiBeyond.back() - guiBeyond.front()) / trials,
+                    (headlessBeyond.back() - headlessBeyond.front()) / trials);
     }
     std::printf("\n");
 }

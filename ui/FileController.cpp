@@ -39,6 +39,16 @@ FileController::FileController(SessionController *session, Views views, UiSettin
                 else
                     emit finished(tr("Parameter file not written: %1").arg(error), false);
             });
+    connect(m_session, &SessionController::trialCsvExported, this,
+            [this](const QString &folder, int files, const QString &error) {
+                if (error.isEmpty()) {
+                    remember(QDir(folder).filePath(QStringLiteral("x")));
+                    emit finished(tr("%n trial CSV file(s) written to %1", nullptr, files)
+                                      .arg(QDir::toNativeSeparators(folder)),
+                                  true);
+                } else
+                    emit finished(tr("Trial CSV not written: %1").arg(error), false);
+            });
 }
 
 QString FileController::choose(Purpose purpose, const QString &suggested)
@@ -167,24 +177,7 @@ void FileController::exportTrialCsvTo(const QString &folder)
         emit finished(tr("No trial CSV written: no trial has run yet"), false);
         return;
     }
-    try {
-        if (!QDir().mkpath(folder))
-            throw Error(tr("cannot create the folder %1").arg(QDir::toNativeSeparators(folder)));
-        QList<QPair<QString, QByteArray>> files;
-        for (const TrialResult &t : m_session->history()) {
-            if (t.status() == TrialStatus::Refused)
-                continue; // nothing was measured
-            const QString name = QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
-            files.append({QDir(folder).filePath(name), trialCsv(t.plan(), t.record)});
-        }
-        writeFilesAtomically(files);
-        remember(QDir(folder).filePath(QStringLiteral("x")));
-        emit finished(tr("%n trial CSV file(s) written to %1", nullptr, int(files.size()))
-                          .arg(QDir::toNativeSeparators(folder)),
-                      true);
-    } catch (const Error &e) {
-        emit finished(tr("Trial CSV not written: %1").arg(e.message()), false);
-    }
+    m_session->exportTrialCsv(folder); // the samples are with the session in its thread
 }
 
 void FileController::exportPlotTo(const QString &path)

@@ -57,6 +57,7 @@ public slots:
     void saveScenarioTo(const QString &path);
     /// Exports the accepted estimate; the result arrives asynchronously by finished().
     void exportParameterFileTo(const QString &jsonPath);
+    /// Writes the trial CSV files; the result arrives asynchronously by finished().
     void exportTrialCsvTo(const QString &folder);
     void exportPlotTo(const QString &path);
     void exportReportTo(const QString &path);

@@ -45,10 +45,11 @@ SessionController::SessionController(QObject *parent)
     connect(m_worker, &SessionWorker::trialStarted, this, &SessionController::trialStarted);
     connect(m_worker, &SessionWorker::progress, this, &SessionController::progress);
     connect(m_worker, &SessionWorker::trialFinished, this,
-            [this](const TrialResult &result, const QVector<Eigen::VectorXd> &estimates) {
-                m_history.append(result);
+            [this](const TrialResult &summary, const QList<TrackingErrorCurve> &curves,
+                   const QVector<Eigen::VectorXd> &estimates) {
+                m_history.append(summary);
                 m_estimates = estimates;
-                emit trialFinished(result);
+                emit trialFinished(summary, curves);
                 emit historyChanged();
             });
     connect(m_worker, &SessionWorker::runFinished, this, [this](bool all) {
@@ -76,6 +77,7 @@ SessionController::SessionController(QObject *parent)
             });
     connect(m_worker, &SessionWorker::parameterFileExported, this,
             &SessionController::parameterFileExported);
+    connect(m_worker, &SessionWorker::trialCsvExported, this, &SessionController::trialCsvExported);
     m_thread.start();
 }
 
@@ -186,6 +188,12 @@ void SessionController::revert()
     setBusy(true);
     SessionWorker *w = m_worker;
     post([w] { w->revert(); });
+}
+
+void SessionController::exportTrialCsv(const QString &folder)
+{
+    SessionWorker *w = m_worker;
+    post([w, folder] { w->exportTrialCsv(folder); });
 }
 
 void SessionController::exportParameterFile(const QString &jsonPath, int estimateIndex)

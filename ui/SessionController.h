@@ -4,6 +4,7 @@
 #include "session/TrialResult.h"
 #include "ui/RobotChoice.h"
 #include "ui/SessionInfo.h"
+#include "ui/TrackingErrorData.h"
 
 #include <QObject>
 #include <QThread>
@@ -15,8 +16,9 @@ namespace learnid {
 class SessionWorker;
 
 /// The GUI thread's front of the session. It starts a SessionWorker in its own QThread, forwards
-/// requests to it by queued calls, and keeps value copies of what the views show (history,
-/// estimates, the last pre-trial check). stop() reaches the running trial directly: cancelling
+/// requests to it by queued calls, and keeps value copies of what the views show (the history
+/// without its samples, see trialSummary(); estimates; the last pre-trial check). The samples
+/// stay with the session in the worker: exportTrialCsv() writes them there. stop() reaches the running trial directly: cancelling
 /// is thread-safe.
 class SessionController : public QObject
 {
@@ -56,6 +58,8 @@ public slots:
     void apply();
     void revert();
     void exportParameterFile(const QString &jsonPath, int estimateIndex);
+    /// folder/trial-NNN.csv of every trial that moved; the result comes by trialCsvExported().
+    void exportTrialCsv(const QString &folder);
 
 signals:
     void opened();
@@ -65,13 +69,16 @@ signals:
     void checkChanged();
     void trialStarted(int index, int samples);
     void progress(int index, int samplesDone, int samplesTotal);
-    void trialFinished(const learnid::TrialResult &result);
+    /// summary: the trial without its samples; curves: its tracking errors for the plot.
+    void trialFinished(const learnid::TrialResult &summary,
+                       const QList<learnid::TrackingErrorCurve> &curves);
     void historyChanged();
     void runFinished(bool allCompleted);
     void acceptedChanged(int estimateIndex);
     void applied(const Eigen::VectorXd &stored);
     void operationFailed(const QString &operation, const QString &message);
     void parameterFileExported(const QStringList &paths, const QString &error);
+    void trialCsvExported(const QString &folder, int files, const QString &error);
 
 private:
     void setBusy(bool busy);

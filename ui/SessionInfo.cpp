@@ -2,6 +2,7 @@
 
 #include "robot/SimulatedRobot.h"
 #include "session/TrialResult.h"
+#include "ui/TrackingErrorData.h"
 
 namespace learnid {
 
@@ -10,6 +11,7 @@ void registerSessionMetaTypes()
     qRegisterMetaType<learnid::SessionInfo>();
     qRegisterMetaType<learnid::TrialResult>();
     qRegisterMetaType<learnid::PreTrialCheck>();
+    qRegisterMetaType<QList<learnid::TrackingErrorCurve>>();
     qRegisterMetaType<Eigen::VectorXd>();
     qRegisterMetaType<QVector<Eigen::VectorXd>>();
 }

@@ -46,9 +46,10 @@ SessionPresenter::SessionPresenter(SessionController *controller, Views views, Q
     connect(c, &SessionController::progress, this, [this](int index, int done, int total) {
         m_views.run->setTrialProgress(index, done, total);
     });
-    connect(c, &SessionController::trialFinished, this, [this](const TrialResult &t) {
+    connect(c, &SessionController::trialFinished, this,
+            [this](const TrialResult &t, const QList<TrackingErrorCurve> &curves) {
         if (t.status() != TrialStatus::Refused)
-            m_views.plot->setTrialCurves(t.index, trackingErrorCurves(t));
+            m_views.plot->setTrialCurves(t.index, curves);
         if (t.learned())
             m_views.run->trialDone(int(m_controller->estimates().size()) - 1);
         else if (t.status() == TrialStatus::Refused) { // nothing moved, nothing recorded

@@ -7,8 +7,10 @@
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
 #include "io/SessionReport.h"
+#include "io/TrialCsv.h"
 #include "model/Error.h"
 #include "model/ModelFactory.h"
+#include "ui/TrialSummary.h"
 #include "ui/UiLogging.h"
 
 #include <QDir>
@@ -103,9 +105,12 @@ void SessionWorker::connectSession()
             });
     connect(m_session.get(), &CommissioningSession::trialFinished, this,
             [this](const TrialResult &result) {
-                TrialResult copy = result;
-                copy.lawCache.reset(); // the law's working memory stays with the session
-                emit trialFinished(copy, m_session->estimates());
+                // The samples stay here with the session; the GUI thread gets the figures and
+                // the plot's curves, computed here, off the GUI thread.
+                const QList<TrackingErrorCurve> curves =
+                    result.status() == TrialStatus::Refused ? QList<TrackingErrorCurve>()
+                                                            : trackingErrorCurves(result);
+                emit trialFinished(trialSummary(result), curves, m_session->estimates());
             });
 }
 
@@ -181,6 +186,23 @@ void SessionWorker::revert()
         emit applied(m_session->robot().storedParameters());
     else
         emit operationFailed(QStringLiteral("revert"), error);
+}
+
+void SessionWorker::exportTrialCsv(const QString &folder)
+{
+    if (!m_session) {
+        emit trialCsvExported(folder, 0, tr("no session to export"));
+        return;
+    }
+    try {
+        if (!QDir().mkpath(folder))
+            throw Error(tr("cannot create the folder %1").arg(QDir::toNativeSeparators(folder)));
+        const QList<QPair<QString, QByteArray>> files = trialCsvFiles(m_session->history(), folder);
+        writeFilesAtomically(files);
+        emit trialCsvExported(folder, int(files.size()), {});
+    } catch (const Error &e) {
+        emit trialCsvExported(folder, 0, e.message());
+    }
 }
 
 void SessionWorker::exportParameterFile(const QString &jsonPath, int estimateIndex)

@@ -4,6 +4,7 @@
 #include "session/CommissioningSession.h"
 #include "ui/RobotChoice.h"
 #include "ui/SessionInfo.h"
+#include "ui/TrackingErrorData.h"
 
 #include <QMutex>
 #include <QObject>
@@ -44,6 +45,8 @@ public slots:
     /// Writes the parameter file (JSON) of estimate k and its DCF fragment next to it
     /// (same base name, .dcf), all or nothing.
     void exportParameterFile(const QString &jsonPath, int estimateIndex);
+    /// Writes folder/trial-NNN.csv for every trial that moved, all or nothing.
+    void exportTrialCsv(const QString &folder);
 
 signals:
     void opened(const learnid::SessionInfo &info);
@@ -52,7 +55,11 @@ signals:
     void checked(const learnid::PreTrialCheck &check);
     void trialStarted(int index, int samples);
     void progress(int index, int samplesDone, int samplesTotal);
-    void trialFinished(const learnid::TrialResult &result, const QVector<Eigen::VectorXd> &estimates);
+    /// summary: the trial without its samples (trialSummary); curves: its tracking errors as the
+    /// plot draws them (none for a refused trial).
+    void trialFinished(const learnid::TrialResult &summary,
+                       const QList<learnid::TrackingErrorCurve> &curves,
+                       const QVector<Eigen::VectorXd> &estimates);
     /// A runTrial()/runTrials() call returned; allCompleted is false when one did not.
     void runFinished(bool allCompleted);
     void accepted(int estimateIndex);
@@ -60,6 +67,7 @@ signals:
     /// operation: "accept", "apply", "revert", "run"; message says what failed and where.
     void operationFailed(const QString &operation, const QString &message);
     void parameterFileExported(const QStringList &paths, const QString &error);
+    void trialCsvExported(const QString &folder, int files, const QString &error);
 
 private:
     void connectSession();

@@ -74,8 +74,9 @@ QString resultTable(const CommissioningSession &session)
 
 QString trialSummary(const TrialResult &result)
 {
+    // A trial that did not complete ends the series: its reason follows as the error line.
     if (result.status() == TrialStatus::Refused)
-        return result.message;
+        return tr("trial %1: %2").arg(result.index).arg(trialStatusName(result.status()));
     QStringList errors;
     for (Eigen::Index j = 0; j < result.maxTrackingErrorDeg.size(); ++j)
         errors << QString::number(result.maxTrackingErrorDeg[j], 'f', 5);
@@ -85,7 +86,7 @@ QString trialSummary(const TrialResult &result)
                        .arg(result.check.rule.duration, 0, 'f', 3)
                        .arg(result.record.samples())
                        .arg(errors.join(QStringLiteral(" / ")));
-    if (!result.message.isEmpty())
+    if (!result.message.isEmpty() && result.status() == TrialStatus::Completed)
         line += QStringLiteral(": ") + result.message;
     return line;
 }

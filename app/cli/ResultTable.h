@@ -11,7 +11,8 @@ namespace learnid::cli {
 /// relative change from the previous row and, for a simulated robot, the error against the truth.
 QString resultTable(const CommissioningSession &session);
 
-/// One line about a finished trial for the progress stream.
+/// One line about a finished trial for the progress stream (a trial that did not complete gets
+/// no reason here: it ends the series, and the reason follows as the error line).
 QString trialSummary(const TrialResult &result);
 
 } // namespace learnid::cli

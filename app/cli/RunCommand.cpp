@@ -16,6 +16,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <QLoggingCategory>
 #include <atomic>
 #include <csignal>
 
@@ -67,14 +68,8 @@ QList<QPair<QString, QByteArray>> buildOutputs(const RunOptions &options,
         files.append({info.dir().filePath(info.completeBaseName() + QStringLiteral(".dcf")),
                       parameterDcfFragment(content)});
     }
-    if (!options.trialCsvDir.isEmpty()) {
-        const QDir dir(options.trialCsvDir);
-        for (const TrialResult &t : session.history()) {
-            const QString name =
-                QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
-            files.append({dir.filePath(name), trialCsv(t.plan(), t.record)});
-        }
-    }
+    if (!options.trialCsvDir.isEmpty())
+        files += trialCsvFiles(session.history(), options.trialCsvDir);
     return files;
 }
 
@@ -109,6 +104,12 @@ ExitCode printScenarioCommand(QTextStream &out)
 
 ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &err)
 {
+    // The tool reports trials and errors itself: the session's log lines would repeat them.
+    // --quiet silences the CAN robot's progress lines too; its warnings still show.
+    QString rules = QStringLiteral("learnid.session=false\n");
+    if (options.quiet)
+        rules += QStringLiteral("learnid.*.info=false\nlearnid.*.debug=false\n");
+    QLoggingCategory::setFilterRules(rules);
     Scenario scenario;
     std::unique_ptr<CommissioningSession> session;
     try {

@@ -119,8 +119,9 @@ private slots:
         QCOMPARE(content.values, c->estimates()[2]); // the accepted estimate
         QVERIFY(QFile::exists(out.filePath(QStringLiteral("params.dcf"))));
 
-        f.window->actions()->exportTrialCsv->trigger();
-        QVERIFY(done.constLast().at(1).toBool());
+        f.window->actions()->exportTrialCsv->trigger(); // written in the session's thread
+        QVERIFY(done.wait(20000));
+        QVERIFY2(done.constLast().at(1).toBool(), qPrintable(done.constLast().at(0).toString()));
         const TrialRecordCsv csv = readTrialCsvFile(out.filePath(QStringLiteral("trials/trial-001.csv")));
         QCOMPARE(csv.samples(), c->history()[1].record.samples());
 

@@ -181,8 +181,12 @@ private slots:
         QVERIFY(!QFile::exists(bad));
         f.window->files()->exportReportTo(file + QStringLiteral("/report.pdf"));
         QCOMPARE(done.constLast().at(1).toBool(), false);
+        const int before = int(done.size());
         f.window->files()->exportTrialCsvTo(file + QStringLiteral("/trials"));
+        QTRY_COMPARE_WITH_TIMEOUT(int(done.size()), before + 1, 20000); // answered by the session's thread
         QCOMPARE(done.constLast().at(1).toBool(), false);
+        QVERIFY2(done.constLast().at(0).toString().contains(QStringLiteral("plain-file")),
+                 qPrintable(done.constLast().at(0).toString()));
         // The window still exports to a good path.
         f.window->files()->exportParameterFileTo(out.filePath(QStringLiteral("ok.json")));
         QVERIFY(done.wait(20000));

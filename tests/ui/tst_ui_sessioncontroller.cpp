@@ -1,6 +1,8 @@
+#include "io/TrialCsv.h"
 #include "ui/SessionController.h"
 
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace learnid;
@@ -40,6 +42,43 @@ private slots:
         QCOMPARE(c.history().size(), 1);
         QCOMPARE(c.estimates().size(), 2);
         QVERIFY(!c.history().constFirst().lawCache); // the law's memory stays in the worker
+    }
+
+    void trialSamples_stayWithTheSessionAndExportFromThere()
+    {
+        SessionController c;
+        QSignalSpy checked(&c, &SessionController::checkChanged);
+        c.open(Scenario{});
+        QVERIFY(checked.wait(20000));
+        QSignalSpy trial(&c, &SessionController::trialFinished);
+        QSignalSpy finished(&c, &SessionController::runFinished);
+        c.runTrial();
+        QVERIFY(finished.wait(20000));
+        const TrialResult &kept = c.history().constFirst();
+        const int samples = kept.record.samples();
+        QVERIFY(samples > 1000);
+        QCOMPARE(kept.plan().samples(), samples);
+        QCOMPARE(kept.record.q.size(), 0); // the GUI thread holds no samples ...
+        QCOMPARE(kept.plan().desired.q.size(), 0);
+        QCOMPARE(kept.maxTrackingErrorDeg.size(), 2); // ... but every figure
+        QVERIFY(kept.learned());
+        // The curves the plot draws came with the trial: one per joint, whose peak is the
+        // trial's max tracking error.
+        const auto curves = trial.constFirst().at(1).value<QList<TrackingErrorCurve>>();
+        QCOMPARE(curves.size(), 2);
+        for (const TrackingErrorCurve &curve : curves)
+            QCOMPARE(curve.maxAbsDeg, kept.maxTrackingErrorDeg[curve.joint]);
+
+        QTemporaryDir out;
+        QSignalSpy exported(&c, &SessionController::trialCsvExported);
+        c.exportTrialCsv(out.filePath(QStringLiteral("csv")));
+        QVERIFY(exported.wait(20000));
+        QCOMPARE(exported.constFirst().at(1).toInt(), 1);
+        QCOMPARE(exported.constFirst().at(2).toString(), QString());
+        const TrialRecordCsv csv =
+            readTrialCsvFile(out.filePath(QStringLiteral("csv/trial-000.csv")));
+        QCOMPARE(csv.samples(), samples);
+        QCOMPARE(csv.trackingErrorDeg.row(0).cwiseAbs().maxCoeff(), kept.maxTrackingErrorDeg[0]);
     }
 
     void faultedTrial_isKeptAndLeavesTheEstimate()

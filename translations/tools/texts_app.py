@@ -110,6 +110,7 @@ T = {
  'cond': ('cond', 'cond'),
  'vs truth %': ('vs. wahr %', '相对真值 %'),
  '(rank %1: unobservable kept)': ('(Rang %1: nicht beobachtbare beibehalten)', '（秩 %1：保留不可观测参数）'),
+ 'trial %1: %2': ('Versuch %1: %2', '试验 %1：%2'),
  'trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg':
    ('Versuch %1: %2, T = %3 s, %4 Abtastwerte, max. Folgefehler %5°', '试验 %1：%2，T = %3 s，%4 个采样点，最大跟踪误差 %5 度'),
  "--estimator: unknown law '%1' (known: %2)": ("--estimator: unbekanntes Gesetz '%1' (bekannt: %2)", "--estimator：未知学习律 '%1'（已知：%2）"),
