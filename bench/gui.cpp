@@ -114,6 +114,24 @@ void updateTimes()
                     history[k].record.samples(), a, b - a, d - b, ms - d, ms);
     }
     std::printf("\nWorst update: %.1f ms (target < 50 ms).\n\n", worst);
+
+    // The overlay of all trials, the plot's heaviest view: the 10 trials' curves again as
+    // trials 10, 11, ... up to 100, each added with the overlay shown.
+    window.plot()->setSelectedTrial(-1);
+    std::printf("| trials overlaid | plot + repaint [ms] |\n|---|---|\n");
+    for (int k = 10; k < 100; ++k) {
+        QList<TrackingErrorCurve> curves = trackingErrorCurves(history[k % 10]);
+        for (TrackingErrorCurve &c : curves)
+            c.trial = k;
+        QElapsedTimer t;
+        t.start();
+        window.plot()->setTrialCurves(k, curves);
+        QCoreApplication::processEvents();
+        window.repaint();
+        if ((k + 1) % 30 == 0 || k == 10)
+            std::printf("| %d | %.1f |\n", k + 1, double(t.nsecsElapsed()) / 1e6);
+    }
+    std::printf("\n");
 }
 
 /// The samples a history keeps: every trial's plan (q_d, qd_d, qdd_d, tau_f) and record (q,

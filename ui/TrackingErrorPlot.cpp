@@ -14,6 +14,11 @@ namespace learnid {
 
 namespace {
 
+// The overlay draws at most this many points in all (10 trials of 2 joints at 800 points): with
+// more trials each curve is thinned further by min/max buckets, which keep the peaks, so adding
+// the 100th trial costs about what adding the 10th did.
+constexpr int kOverlayPoints = 16000;
+
 const QColor kJointColors[] = {QColor(0x1f, 0x5f, 0xbf), QColor(0xc0, 0x39, 0x2b),
                                QColor(0x2e, 0x8b, 0x57), QColor(0x8e, 0x44, 0xad)};
 
@@ -135,6 +140,14 @@ int TrackingErrorPlot::seriesCount() const
     return int(m_chart->series().size());
 }
 
+int TrackingErrorPlot::pointCount() const
+{
+    int points = 0;
+    for (const QLineSeries *series : m_series)
+        points += series->count();
+    return points;
+}
+
 double TrackingErrorPlot::axisLimit() const
 {
     return m_error->max();
@@ -178,11 +191,16 @@ void TrackingErrorPlot::redraw()
         m_chart->setTitle(tr("Tracking error, %1").arg(trialLabel(selected)));
     }
     double maxAbs = 0.0, tMax = 0.0, yMin = 0.0, yMax = 0.0;
+    int curves = 0;
+    for (const int trial : shown)
+        curves += int(m_trials.at(trial).size());
+    const int perCurve = std::max(64, kOverlayPoints / std::max(1, curves));
     int used = 0;
     for (int order = 0; order < shown.size(); ++order) {
         for (const TrackingErrorCurve &curve : m_trials.at(shown.at(order))) {
             QLineSeries *series = seriesAt(used++);
-            series->replace(curve.points);
+            series->replace(curve.points.size() > perCurve ? decimateMinMax(curve.points, perCurve)
+                                                           : curve.points);
             QPen pen(selected < 0 ? trialColor(order, int(shown.size()))
                                   : kJointColors[curve.joint % 4]);
             pen.setWidthF(1.4);

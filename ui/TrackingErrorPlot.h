@@ -36,6 +36,8 @@ public:
 
     /// The plotted curves as currently shown (for tests and export).
     int seriesCount() const;
+    /// Points drawn in all series (the overlay of many trials is thinned to a fixed budget).
+    int pointCount() const;
     double axisLimit() const;
     double axisMinimum() const;
     double axisInterval() const;

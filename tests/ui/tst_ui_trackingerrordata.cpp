@@ -105,6 +105,24 @@ private slots:
         QCOMPARE(plot.selectedTrial(), -1); // the technician's choice is kept
         QCOMPARE(plot.trialCount(), 3);
     }
+
+    void overlayOfManyTrials_drawsABoundedNumberOfPointsAndKeepsThePeaks()
+    {
+        TrackingErrorPlot plot;
+        plot.setSelectedTrial(-1);
+        const QList<TrackingErrorCurve> one = trackingErrorCurves(syntheticTrial(0, 2500));
+        const int perTrial = int(one[0].points.size() + one[1].points.size());
+        for (int k = 0; k < 100; ++k)
+            plot.setTrialCurves(k, trackingErrorCurves(syntheticTrial(k, 2500)));
+        plot.setSelectedTrial(-1);
+        QCOMPARE(plot.seriesCount(), 200);
+        QVERIFY2(plot.pointCount() <= 16000, qPrintable(QString::number(plot.pointCount())));
+        QVERIFY(plot.pointCount() < 100 * perTrial / 4); // thinned
+        plot.setAutoScale(true); // the axis follows the drawn points: the +0.05 deg spike is kept
+        QVERIFY2(plot.axisLimit() >= 0.05, qPrintable(QString::number(plot.axisLimit())));
+        plot.setSelectedTrial(99); // one trial alone: drawn as computed
+        QCOMPARE(plot.pointCount(), perTrial);
+    }
 };
 
 QTEST_MAIN(TestTrackingErrorData)
