@@ -1,7 +1,8 @@
 // Speed benchmark: CPU time of a 6-trial paper-scenario session (simulation at RK4 0.2 ms,
 // planning, safety checks and identification included) and of one identification update over
 // 10^6 samples. Prints Markdown. Usage: learnid-bench-speed [repeats] [--session-only]
-// (--session-only skips the 10^6-sample part, e.g. to count instructions under callgrind).
+// [--law paper|improved] (--session-only skips the 10^6-sample part, e.g. to count instructions
+// under callgrind; --law measures one law only).
 #include "BenchSupport.h"
 #include "identify/LearningLaw.h"
 #include "session/TrialPlanner.h"
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 using namespace learnid;
 
@@ -41,9 +43,26 @@ TrialPlan longPlan(const Scenario &s, int samples)
 int main(int argc, char **argv)
 {
     const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 15;
-    const bool sessionOnly = argc > 2 && std::string(argv[2]) == "--session-only";
+    bool sessionOnly = false;
+    std::vector<const char *> laws = {"paper", "improved"};
+    for (int i = 2; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--session-only") {
+            sessionOnly = true;
+        } else if (arg == "--law" && i + 1 < argc) {
+            const std::string law = argv[++i];
+            if (law != "paper" && law != "improved") {
+                std::fprintf(stderr, "unknown law %s (paper or improved)\n", law.c_str());
+                return 2;
+            }
+            laws = {law == "paper" ? "paper" : "improved"};
+        } else {
+            std::fprintf(stderr, "unknown argument %s\n", arg.c_str());
+            return 2;
+        }
+    }
     std::printf("| measurement | law | median CPU time | repeats |\n|---|---|---|---|\n");
-    for (const char *law : {"paper", "improved"}) {
+    for (const char *law : laws) {
         std::vector<double> times;
         for (int r = 0; r < repeats; ++r) {
             Scenario s;
@@ -71,13 +90,13 @@ int main(int argc, char **argv)
     const double simTime = bench::cpuSeconds() - simStart;
     if (!record.completed())
         return 1;
-    for (const char *name : {"paper", "improved"}) {
+    for (const char *name : laws) {
         const auto law = makeLearningLaw(QString::fromLatin1(name));
         std::vector<double> times;
         for (int r = 0; r < 3; ++r) {
             const double t0 = bench::cpuSeconds();
-            const ParameterUpdate up = law->update(*model, {{&plan, &record}}, s.initialParameters,
-                                                   s.estimator);
+            const ParameterUpdate up =
+                law->update(*model, {{&plan, &record}}, s.initialParameters, s.estimator);
             times.push_back(bench::cpuSeconds() - t0);
             if (!up.phi.allFinite())
                 return 1;

@@ -1392,6 +1392,10 @@
         <translation>(Rang %1: nicht beobachtbare beibehalten)</translation>
     </message>
     <message>
+        <source>trial %1: %2</source>
+        <translation>Versuch %1: %2</translation>
+    </message>
+    <message>
         <source>trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg</source>
         <translation>Versuch %1: %2, T = %3 s, %4 Abtastwerte, max. Folgefehler %5°</translation>
     </message>
@@ -1943,10 +1947,6 @@
     <message>
         <source>No trial CSV written: no trial has run yet</source>
         <translation>Keine Versuchs-CSV geschrieben: noch kein Versuch gelaufen</translation>
-    </message>
-    <message>
-        <source>cannot create the folder %1</source>
-        <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
     <message numerus="yes">
         <source>%n trial CSV file(s) written to %1</source>
@@ -2852,6 +2852,10 @@
     <message>
         <source>no session to export</source>
         <translation>keine Sitzung zum Exportieren</translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1</source>
+        <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
 </context>
 <context>

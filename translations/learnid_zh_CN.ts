@@ -1392,6 +1392,10 @@
         <translation>（秩 %1：保留不可观测参数）</translation>
     </message>
     <message>
+        <source>trial %1: %2</source>
+        <translation>试验 %1：%2</translation>
+    </message>
+    <message>
         <source>trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg</source>
         <translation>试验 %1：%2，T = %3 s，%4 个采样点，最大跟踪误差 %5 度</translation>
     </message>
@@ -1943,10 +1947,6 @@
     <message>
         <source>No trial CSV written: no trial has run yet</source>
         <translation>未写入试验 CSV：尚未运行任何试验</translation>
-    </message>
-    <message>
-        <source>cannot create the folder %1</source>
-        <translation>无法创建文件夹 %1</translation>
     </message>
     <message numerus="yes">
         <source>%n trial CSV file(s) written to %1</source>
@@ -2851,6 +2851,10 @@
     <message>
         <source>no session to export</source>
         <translation>没有可导出的会话</translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1</source>
+        <translation>无法创建文件夹 %1</translation>
     </message>
 </context>
 <context>

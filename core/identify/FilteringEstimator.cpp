@@ -23,31 +23,82 @@ FilteringEstimator::FilteringEstimator(double rho, double samplePeriod)
     c.c = Eigen::MatrixXd::Identity(3, 3);
     c.d = Eigen::MatrixXd::Zero(3, 1);
     m_discrete = tustin(c, samplePeriod);
-    m_a = m_discrete.a;
-    m_b = m_discrete.b;
-    m_d = m_discrete.d;
-    m_rest = steadyState(m_discrete, Eigen::VectorXd::Ones(1));
+    // Tustin maps rho / (s + rho) to k (1 + z^-1) / ((1 + k) - (1 - k) z^-1), k = rho Ts / 2;
+    // F is its cube.
+    const double k = 0.5 * rho * samplePeriod;
+    m_sectionGain = k / (1.0 + k); // and the pole (1 - k) / (1 + k) = 1 - 2 g
 }
 
-template <bool allOutputs, bool reversed>
-void FilteringEstimator::run(const double *x, int n, double *out, int outStride) const
+namespace {
+
+// One step of the section g (1 + z^-1) / (1 - p z^-1), p = 1 - 2 g, from output y, input u and
+// previous input u0: p y + g (u + u0) written so that a section at rest (u = u0 = y) stays
+// exactly at rest.
+inline double lowPassSection(double y, double u, double u0, double g)
+{
+    return y + g * ((u - y) + (u0 - y));
+}
+
+// The same for g (1 - z^-1) / (1 - p z^-1): p y + g (u - u0), exactly 0 at rest.
+inline double differenceSection(double y, double u, double u0, double g)
+{
+    return y + g * ((u - u0) - 2.0 * y);
+}
+
+} // namespace
+
+template <bool reversed>
+void FilteringEstimator::runLowPass(const double *x, int n, double *out) const
 {
     if (n == 0)
         return;
     const int first = reversed ? n - 1 : 0;
     const int step = reversed ? -1 : 1;
-    Eigen::Vector3d s = m_rest * x[first];
+    const double g = m_sectionGain;
+    // At rest at x[first]: every section's input and output equal it (unit DC gain).
+    double u0 = x[first], y1 = u0, y2 = u0, y3 = u0;
     for (int i = 0, k = first; i < n; ++i, k += step) {
         const double u = x[k];
-        if constexpr (allOutputs) {
-            const Eigen::Vector3d y = s + m_d * u;
-            out[k * outStride] = y[0];
-            out[k * outStride + 1] = y[1];
-            out[k * outStride + 2] = y[2];
-        } else {
-            out[k * outStride] = s[0] + m_d[0] * u;
-        }
-        s = m_a * s + m_b * u;
+        const double y1New = lowPassSection(y1, u, u0, g);
+        const double y2New = lowPassSection(y2, y1New, y1, g);
+        y3 = lowPassSection(y3, y2New, y2, g);
+        out[k] = y3;
+        u0 = u;
+        y1 = y1New;
+        y2 = y2New;
+    }
+}
+
+template <bool reversed>
+void FilteringEstimator::runAllOutputs(const double *x, int n, double *out) const
+{
+    if (n == 0)
+        return;
+    // Output i of the Tustin state space is D^i F, D = (2/Ts)(1 - z^-1)/(1 + z^-1) the Tustin
+    // derivative: with sections S+ = g (1 + z^-1)/(1 - p z^-1) and S- = g (1 - z^-1)/(1 - p z^-1),
+    // F = S+ S+ S+, D F = (2/Ts) S- S+ S+, D^2 F = (2/Ts)^2 S- S- S+.
+    const int first = reversed ? n - 1 : 0;
+    const int step = reversed ? -1 : 1;
+    const double g = m_sectionGain;
+    const double derivative = 2.0 / m_ts;
+    // At rest at x[first]: S+ passes a constant, S- gives 0.
+    double u0 = x[first];
+    double a = u0, b = u0, y0 = u0, y1 = 0.0, c = 0.0, y2 = 0.0;
+    for (int i = 0, k = first; i < n; ++i, k += step) {
+        const double u = x[k];
+        const double aNew = lowPassSection(a, u, u0, g);
+        const double bNew = lowPassSection(b, aNew, a, g);
+        const double cNew = differenceSection(c, aNew, a, g);
+        y0 = lowPassSection(y0, bNew, b, g);
+        y1 = differenceSection(y1, bNew, b, g);
+        y2 = differenceSection(y2, cNew, c, g);
+        out[3 * k] = y0;
+        out[3 * k + 1] = derivative * y1;
+        out[3 * k + 2] = derivative * derivative * y2;
+        u0 = u;
+        a = aNew;
+        b = bNew;
+        c = cNew;
     }
 }
 
@@ -80,7 +131,7 @@ Eigen::MatrixXd FilteringEstimator::causal(const Eigen::Ref<const Eigen::RowVect
 {
     const Eigen::RowVectorXd in = x; // contiguous copy
     Eigen::MatrixXd out(3, in.size());
-    run<true, false>(in.data(), int(in.size()), out.data(), 3);
+    runAllOutputs<false>(in.data(), int(in.size()), out.data());
     return out;
 }
 
@@ -88,7 +139,7 @@ Eigen::RowVectorXd FilteringEstimator::lowPass(const Eigen::Ref<const Eigen::Row
 {
     const Eigen::RowVectorXd in = x;
     Eigen::RowVectorXd out(in.size());
-    run<false, false>(in.data(), int(in.size()), out.data(), 1);
+    runLowPass<false>(in.data(), int(in.size()), out.data());
     return out;
 }
 
@@ -96,7 +147,7 @@ Eigen::MatrixXd FilteringEstimator::zeroPhase(const Eigen::Ref<const Eigen::RowV
 {
     const Eigen::RowVectorXd forward = lowPass(x);
     Eigen::MatrixXd out(3, forward.size());
-    run<true, true>(forward.data(), int(forward.size()), out.data(), 3);
+    runAllOutputs<true>(forward.data(), int(forward.size()), out.data());
     // The backward pass differentiates with respect to reversed time: d/dt = -d/d(-t).
     out.row(1) *= -1.0;
     return out;
@@ -107,8 +158,28 @@ FilteringEstimator::anticausalLowPass(const Eigen::Ref<const Eigen::RowVectorXd>
 {
     const Eigen::RowVectorXd in = x;
     Eigen::RowVectorXd out(in.size());
-    run<false, true>(in.data(), int(in.size()), out.data(), 1);
+    runLowPass<true>(in.data(), int(in.size()), out.data());
     return out;
+}
+
+void FilteringEstimator::zeroPhaseLowPassInPlace(double *x, Eigen::Index n) const
+{
+    // Each step reads its input sample before it writes the output over it.
+    runLowPass<false>(x, int(n), x);
+    runLowPass<true>(x, int(n), x);
+}
+
+void FilteringEstimator::filterInto(double *x, Eigen::Index n, bool zeroPhase, double *out) const
+{
+    if (!zeroPhase) {
+        runAllOutputs<false>(x, int(n), out);
+        return;
+    }
+    runLowPass<false>(x, int(n), x);
+    runAllOutputs<true>(x, int(n), out);
+    // The backward pass differentiates with respect to reversed time: d/dt = -d/d(-t).
+    for (Eigen::Index k = 0; k < n; ++k)
+        out[3 * k + 1] = -out[3 * k + 1];
 }
 
 Eigen::RowVectorXd

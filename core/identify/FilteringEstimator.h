@@ -34,6 +34,11 @@ public:
 
     /// F(s) F(-s) x alone (1 x N).
     Eigen::RowVectorXd zeroPhaseLowPass(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
+    /// zeroPhaseLowPass() of the n samples at x, in place (no copies: for long records).
+    void zeroPhaseLowPassInPlace(double *x, Eigen::Index n) const;
+    /// causal() or zeroPhase() of the n samples at x into out (3 x n, column-major) without
+    /// copies; zeroPhase overwrites x with its forward pass.
+    void filterInto(double *x, Eigen::Index n, bool zeroPhase, double *out) const;
 
     /// Variance of white noise after lowPass() relative to before: the sum of the squared
     /// impulse response of F.
@@ -42,16 +47,15 @@ public:
     double zeroPhaseNoiseGain() const;
 
 private:
-    template <bool allOutputs, bool reversed>
-    void run(const double *x, int n, double *out, int outStride) const;
+    template <bool reversed> void runAllOutputs(const double *x, int n, double *out) const;
+    template <bool reversed> void runLowPass(const double *x, int n, double *out) const;
 
     double m_rho;
     double m_ts;
     StateSpace m_discrete;
-    Eigen::Matrix3d m_a;
-    Eigen::Vector3d m_b;
-    Eigen::Vector3d m_d;   // direct feedthrough of the three outputs (C = I)
-    Eigen::Vector3d m_rest; // state at rest under unit input: (I - A)^-1 B
+    // The filter runs as Tustin first-order sections g (1 +- z^-1) / (1 - p z^-1): the same
+    // transfer functions as the discrete state space's outputs in fewer operations.
+    double m_sectionGain = 0.0;
 };
 
 } // namespace learnid

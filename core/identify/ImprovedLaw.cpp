@@ -1,28 +1,29 @@
 #include "identify/ImprovedLaw.h"
 
 #include "identify/FilteringEstimator.h"
+#include "identify/GramBlock.h"
 #include "model/Error.h"
 
 #include <QCoreApplication>
+#include <cmath>
 
 namespace learnid {
 
 namespace {
 
-/// Stacked rows F[W_k+1/2] phi = F[tau_k] of one trial (steps 1-3 of the class comment), the
-/// weight of each row (step 4) and H^T A for the covariance. Kept in the trial's cache.
-struct Regression final : LawCache
+/// One trial's rows F[W_k+1/2] phi = F[tau_k] (steps 1-3 of the class comment) reduced to their
+/// Gram quantities per joint about the trial's own least-squares fit, with the weight of each
+/// joint's rows (step 4) and H^T A's Gram matrices for the covariance. Kept in the trial's cache:
+/// O(n m^2) numbers, whatever the trial's length.
+struct TrialGram final : LawCache
 {
     double rho = 0.0;
-    Eigen::MatrixXd a;
-    Eigen::VectorXd b;
-    Eigen::VectorXd weight;
-    Eigen::MatrixXd shaped;
+    GramBlock block;
 };
 
-Regression filteredRegression(const RobotModel &model, const TrialPlan &plan,
-                              const TrialRecord &record, const EstimatorSettings &settings,
-                              const Eigen::VectorXd &phiPrev)
+std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialPlan &plan,
+                                     const TrialRecord &record, const EstimatorSettings &settings,
+                                     const Eigen::VectorXd &phiPrev)
 {
     validateRecord(model, plan, record);
     const int n = model.dof();
@@ -35,57 +36,72 @@ Regression filteredRegression(const RobotModel &model, const TrialPlan &plan,
 
     // Regressor entries as signals: row i*n + j of w is W(j, i) over the samples.
     Eigen::MatrixXd w(n * m, samples);
-    for (int k = 0; k < samples; ++k) {
-        Eigen::Map<Eigen::MatrixXd> wk(w.col(k).data(), n, m);
-        model.regressor(hat.q.col(k), hat.qd.col(k), hat.qdd.col(k), wk);
-    }
+    model.regressorSeries(hat.q, hat.qd, hat.qdd, w);
 
-    // 2. Mid-sample pairing, 3. zero-phase filtering of both sides.
+    // 2. Mid-sample pairing, 3. zero-phase filtering of both sides. Joint j's rows A_j: column i
+    // is the filtered signal of W(j, i); entries that are identically zero stay zero.
     const int rows = samples - 1;
-    Eigen::MatrixXd wf(n * m, rows);
-    for (int r = 0; r < n * m; ++r) {
-        if (w.row(r).isZero(0.0)) {
-            wf.row(r).setZero();
-            continue;
+    std::vector<Eigen::MatrixXd> a(size_t(n), Eigen::MatrixXd(rows, m));
+    std::vector<bool> zero(size_t(n * m));
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < m; ++i) {
+            const int r = i * n + j;
+            auto column = a[size_t(j)].col(i);
+            zero[size_t(r)] = w.row(r).isZero(0.0);
+            if (zero[size_t(r)]) {
+                column.setZero();
+                continue;
+            }
+            column = 0.5 * (w.row(r).head(rows) + w.row(r).tail(rows)).transpose();
+            filter.zeroPhaseLowPassInPlace(column.data(), rows);
         }
-        const Eigen::RowVectorXd mid = 0.5 * (w.row(r).head(rows) + w.row(r).tail(rows));
-        wf.row(r) = filter.zeroPhaseLowPass(mid);
     }
-    Eigen::MatrixXd tauf(n, rows);
-    for (int j = 0; j < n; ++j)
-        tauf.row(j) = filter.zeroPhaseLowPass(record.tau.row(j).head(rows));
-
-    Regression out;
-    out.rho = settings.rho;
-    out.a.resize(Eigen::Index(rows) * n, m);
-    for (int k = 0; k < rows; ++k)
-        out.a.middleRows(Eigen::Index(k) * n, n) =
-            Eigen::Map<const Eigen::MatrixXd>(wf.col(k).data(), n, m);
-    out.b = Eigen::Map<const Eigen::VectorXd>(tauf.data(), tauf.size());
+    Eigen::MatrixXd tauf(rows, n);
+    for (int j = 0; j < n; ++j) {
+        tauf.col(j) = record.tau.row(j).head(rows).transpose();
+        filter.zeroPhaseLowPassInPlace(tauf.col(j).data(), rows);
+    }
 
     // 4. OLS gives each joint's residual level in this trial; its rows get the inverse weight.
-    const ParameterUpdate ols = observableUpdate(out.a, out.b, n, phiPrev, settings.rankTolerance);
-    const double floor = 1e-9 * (out.b.cwiseAbs().maxCoeff() + 1.0);
-    out.weight = ols.residualRms.cwiseMax(floor).cwiseInverse().replicate(rows, 1);
+    // The block is then taken about the OLS estimate, so that its residuals are computed from
+    // the rows (exactly) and any later fit's residual follows without cancellation.
+    auto out = std::make_shared<TrialGram>();
+    out->rho = settings.rho;
+    GramBlock prior(n, m, rows, phiPrev);
+    for (int j = 0; j < n; ++j)
+        prior.setJointNormalEquations(j, a[size_t(j)], tauf.col(j));
+    const ParameterUpdate ols = observableUpdate({&prior}, phiPrev, settings.rankTolerance);
+    out->block = std::move(prior);
+    out->block.setReference(ols.phi);
+    const double floor = 1e-9 * (tauf.cwiseAbs().maxCoeff() + 1.0);
+    for (int j = 0; j < n; ++j) {
+        out->block.setJointResidual(j, a[size_t(j)], tauf.col(j));
+        const double rms = std::sqrt(out->block.residualSquares(j) / double(rows));
+        out->block.setJointWeight(j, 1.0 / std::max(rms, floor));
+    }
+
     // Torque noise reaches b through F(s)F(-s), a symmetric operator (H^T = H).
-    out.shaped = filterJointSignals(out.a, n, [&filter](const Eigen::RowVectorXd &x) {
-        return filter.zeroPhaseLowPass(x);
-    });
+    for (int j = 0; j < n; ++j) {
+        Eigen::MatrixXd &h = a[size_t(j)];
+        for (int i = 0; i < m; ++i)
+            if (!zero[size_t(i * n + j)])
+                filter.zeroPhaseLowPassInPlace(h.col(i).data(), rows);
+        out->block.setJointShapedRows(j, h);
+    }
     return out;
 }
 
-// The trial's regression from its cache, computed and cached on first use.
-std::shared_ptr<const Regression> regressionOf(const RobotModel &model, const TrialData &trial,
-                                               const EstimatorSettings &settings,
-                                               const Eigen::VectorXd &phiPrev)
+// The trial's Gram block from its cache, computed and cached on first use.
+std::shared_ptr<const TrialGram> trialGramOf(const RobotModel &model, const TrialData &trial,
+                                             const EstimatorSettings &settings,
+                                             const Eigen::VectorXd &phiPrev)
 {
     if (trial.cache) {
-        if (auto cached = std::dynamic_pointer_cast<const Regression>(*trial.cache);
+        if (auto cached = std::dynamic_pointer_cast<const TrialGram>(*trial.cache);
             cached && cached->rho == settings.rho)
             return cached;
     }
-    auto r = std::make_shared<Regression>(
-        filteredRegression(model, *trial.plan, *trial.record, settings, phiPrev));
+    auto r = trialGram(model, *trial.plan, *trial.record, settings, phiPrev);
     if (trial.cache)
         *trial.cache = r;
     return r;
@@ -99,39 +115,19 @@ ParameterUpdate ImprovedLaw::update(const RobotModel &model, const std::vector<T
 {
     if (trials.empty())
         throw Error(QCoreApplication::translate("LearningLaw", "no completed trial to learn from"));
-    const int n = model.dof();
     const size_t first = settings.accumulate ? 0 : trials.size() - 1;
 
     // 4. All trials solved together, each row weighted by its joint's noise in its trial: the
     // estimate is consistent whatever feedforward a trial ran with, so every trial adds.
-    std::vector<std::shared_ptr<const Regression>> parts;
-    Eigen::Index rows = 0;
+    std::vector<std::shared_ptr<const TrialGram>> parts;
+    std::vector<const GramBlock *> blocks;
     for (size_t i = first; i < trials.size(); ++i) {
-        parts.push_back(regressionOf(model, trials[i], settings, phiPrev));
-        rows += parts.back()->a.rows();
+        parts.push_back(trialGramOf(model, trials[i], settings, phiPrev));
+        blocks.push_back(&parts.back()->block);
     }
-    NoiseShaping noise;
-    noise.varianceGain =
+    const double gain =
         FilteringEstimator(settings.rho, trials.back().record->samplePeriod).zeroPhaseNoiseGain();
-    if (parts.size() == 1) {
-        noise.transposedApplied = parts[0]->shaped;
-        return observableUpdate(parts[0]->a, parts[0]->b, n, phiPrev, settings.rankTolerance,
-                                parts[0]->weight, noise);
-    }
-
-    Eigen::MatrixXd a(rows, model.parameterCount());
-    Eigen::VectorXd b(rows), weight(rows);
-    noise.transposedApplied.resize(rows, model.parameterCount());
-    Eigen::Index at = 0;
-    for (const auto &part : parts) {
-        const Eigen::Index r = part->a.rows();
-        a.middleRows(at, r) = part->a;
-        b.segment(at, r) = part->b;
-        weight.segment(at, r) = part->weight;
-        noise.transposedApplied.middleRows(at, r) = part->shaped;
-        at += r;
-    }
-    return observableUpdate(a, b, n, phiPrev, settings.rankTolerance, weight, noise);
+    return observableUpdate(blocks, phiPrev, settings.rankTolerance, gain);
 }
 
 } // namespace learnid

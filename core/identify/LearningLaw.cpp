@@ -6,6 +6,7 @@
 #include "model/Error.h"
 
 #include <QCoreApplication>
+#include <cmath>
 
 namespace learnid {
 
@@ -30,9 +31,11 @@ JointStateEstimate estimateJointStates(const FilteringEstimator &filter, const T
     const Eigen::Index samples = record.samples();
     JointStateEstimate out{Eigen::MatrixXd(n, samples), Eigen::MatrixXd(n, samples),
                            Eigen::MatrixXd(n, samples)};
+    Eigen::RowVectorXd e(samples);
+    Eigen::MatrixXd fe(3, samples); // F e, F s e, F s^2 e
     for (Eigen::Index j = 0; j < n; ++j) {
-        const Eigen::RowVectorXd e = plan.desired.q.row(j).head(samples) - record.q.row(j);
-        const Eigen::MatrixXd fe = zeroPhase ? filter.zeroPhase(e) : filter.causal(e);
+        e = plan.desired.q.row(j).head(samples) - record.q.row(j);
+        filter.filterInto(e.data(), samples, zeroPhase, fe.data());
         out.q.row(j) = plan.desired.q.row(j).head(samples) - fe.row(0);
         out.qd.row(j) = plan.desired.qd.row(j).head(samples) - fe.row(1);
         out.qdd.row(j) = plan.desired.qdd.row(j).head(samples) - fe.row(2);
@@ -40,32 +43,15 @@ JointStateEstimate estimateJointStates(const FilteringEstimator &filter, const T
     return out;
 }
 
-Eigen::MatrixXd filterJointSignals(
-    const Eigen::MatrixXd &a, int n,
-    const std::function<Eigen::RowVectorXd(const Eigen::RowVectorXd &)> &filter)
-{
-    const Eigen::Index samples = a.rows() / n;
-    Eigen::MatrixXd out(a.rows(), a.cols());
-    for (Eigen::Index i = 0; i < a.cols(); ++i) {
-        for (int j = 0; j < n; ++j) {
-            const Eigen::Map<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>> signal(
-                a.col(i).data() + j, samples, Eigen::InnerStride<>(n));
-            const Eigen::RowVectorXd filtered = filter(signal);
-            Eigen::Map<Eigen::RowVectorXd, 0, Eigen::InnerStride<>>(out.col(i).data() + j, samples,
-                                                                   Eigen::InnerStride<>(n)) =
-                filtered;
-        }
-    }
-    return out;
-}
-
 void validateRecord(const RobotModel &model, const TrialPlan &plan, const TrialRecord &record)
 {
-    const auto tr = [](const char *s) { return QCoreApplication::translate("LearningLaw", s); };
+    const auto tr = [](const char *s) {
+        return QCoreApplication::translate("LearningLaw", s);
+    };
     const int n = model.dof();
-    if (record.q.rows() != n || record.tau.rows() != n || record.tau.cols() != record.q.cols()
-        || plan.desired.dof() != n || plan.feedforward.rows() != n
-        || plan.feedforward.cols() != plan.samples() || record.samples() != plan.samples()) {
+    if (record.q.rows() != n || record.tau.rows() != n || record.tau.cols() != record.q.cols() ||
+        plan.desired.dof() != n || plan.feedforward.rows() != n ||
+        plan.feedforward.cols() != plan.samples() || record.samples() != plan.samples()) {
         throw Error(tr("trial record does not match its plan: %1 of %2 samples, %3 joints "
                        "recorded for a %4-joint model")
                         .arg(record.samples())
@@ -75,6 +61,10 @@ void validateRecord(const RobotModel &model, const TrialPlan &plan, const TrialR
     }
     if (record.samples() < 16)
         throw Error(tr("trial record has only %1 samples").arg(record.samples()));
+    // A sum is finite when every term is (one vectorised pass); otherwise, or on overflow, the
+    // loop below names the first bad value, if any.
+    if (std::isfinite(record.q.sum() + record.tau.sum()))
+        return;
     for (int k = 0; k < record.samples(); ++k) {
         for (int j = 0; j < n; ++j) {
             if (!std::isfinite(record.q(j, k)) || !std::isfinite(record.tau(j, k))) {

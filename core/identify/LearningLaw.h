@@ -67,12 +67,6 @@ JointStateEstimate estimateJointStates(const class FilteringEstimator &filter,
                                        const TrialPlan &plan, const TrialRecord &record,
                                        bool zeroPhase);
 
-/// Applies a filter to each joint's signal in each column of a stacked regressor (row k*n + j is
-/// joint j of sample k): the H^T A of NoiseShaping.
-Eigen::MatrixXd filterJointSignals(
-    const Eigen::MatrixXd &a, int n,
-    const std::function<Eigen::RowVectorXd(const Eigen::RowVectorXd &)> &filter);
-
 /// Checks that plan and record agree in size and hold only finite numbers; throws Error naming
 /// the first bad sample and joint.
 void validateRecord(const RobotModel &model, const TrialPlan &plan, const TrialRecord &record);

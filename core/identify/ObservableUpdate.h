@@ -8,11 +8,11 @@ namespace learnid {
 /// Outcome of one least-squares parameter update.
 struct ParameterUpdate
 {
-    Eigen::VectorXd phi;         ///< updated estimate (m)
-    Eigen::VectorXd phiStd;      ///< estimated standard deviation per parameter; +inf where kept
-    double condition = 0.0;      ///< cond(W^T W) of the regressor, columns scaled to unit norm
-    int rank = 0;                ///< observable directions used in the update
-    Eigen::VectorXd residualRms; ///< RMS of b - A phi per joint [N m] (n)
+    Eigen::VectorXd phi;          ///< updated estimate (m)
+    Eigen::VectorXd phiStd;       ///< estimated standard deviation per parameter; +inf where kept
+    double condition = 0.0;       ///< cond(W^T W) of the regressor, columns scaled to unit norm
+    int rank = 0;                 ///< observable directions used in the update
+    Eigen::VectorXd residualRms;  ///< RMS of b - A phi per joint [N m] (n)
     std::vector<bool> observable; ///< per parameter: false when it lies in the kept directions
 };
 
@@ -22,7 +22,7 @@ struct ParameterUpdate
 ///   sigma_w^2 (B^T B)^-1 (H^T B)^T (H^T B) (B^T B)^-1,  sigma_w^2 = residual variance / gain.
 struct NoiseShaping
 {
-    double varianceGain = 1.0;      ///< variance of H w over variance of w (sum of h_k^2)
+    double varianceGain = 1.0;         ///< variance of H w over variance of w (sum of h_k^2)
     Eigen::MatrixXd transposedApplied; ///< H^T applied to each column of A, per joint; empty: H = I
 };
 
@@ -41,5 +41,15 @@ ParameterUpdate observableUpdate(const Eigen::MatrixXd &a, const Eigen::VectorXd
                                  const Eigen::VectorXd &phiPrev, double tolerance,
                                  const Eigen::VectorXd &rowWeight = {},
                                  const struct NoiseShaping &noise = {});
+
+/// The same update from blocks of rows reduced to their Gram quantities (GramBlock; e.g. one
+/// block per trial, each joint's rows weighted by the block's weight of that joint): equal to
+/// observableUpdate() of the stacked rows up to rounding, in O(blocks n m^2). The residual RMS
+/// and the standard deviations come from the blocks' exact residual expansion.
+/// varianceGain: NoiseShaping::varianceGain of the rows (1 when unfiltered); the blocks' shaped
+/// Gram matrices, when every block has them, give the covariance sandwich.
+ParameterUpdate observableUpdate(const std::vector<const class GramBlock *> &blocks,
+                                 const Eigen::VectorXd &phiPrev, double tolerance,
+                                 double varianceGain = 1.0);
 
 } // namespace learnid

@@ -1,6 +1,7 @@
 #include "identify/PaperLaw.h"
 
 #include "identify/FilteringEstimator.h"
+#include "identify/GramBlock.h"
 #include "model/Error.h"
 
 #include <QCoreApplication>
@@ -27,29 +28,39 @@ ParameterUpdate PaperLaw::update(const RobotModel &model, const std::vector<Tria
     const Eigen::MatrixXd &qddHat = hat.qdd;
     Eigen::MatrixXd tauHat(n, samples);
     for (int j = 0; j < n; ++j)
-        tauHat.row(j) = plan.feedforward.row(j)
-                        + filter.lowPass(record.tau.row(j) - plan.feedforward.row(j));
+        tauHat.row(j) =
+            plan.feedforward.row(j) + filter.lowPass(record.tau.row(j) - plan.feedforward.row(j));
 
     // Torque sample k is held over [t_k, t_k + Ts): pair it with the regressor at the interval's
     // mid-point, (W_k + W_k+1) / 2. Online this costs one sample of delay. Pairing it with W_k
     // instead leaves a converged bias of about -0.5 % in b on the paper scenario.
+    // Joint j's rows A_j (rows x m) and targets b_j, one row per sample.
     const int rows = samples - 1;
-    Eigen::MatrixXd a(Eigen::Index(rows) * n, m);
-    Eigen::MatrixXd w0(n, m), w1(n, m);
-    model.regressor(record.q.col(0), qdHat.col(0), qddHat.col(0), w0);
-    for (int k = 0; k < rows; ++k) {
-        model.regressor(record.q.col(k + 1), qdHat.col(k + 1), qddHat.col(k + 1), w1);
-        a.middleRows(Eigen::Index(k) * n, n) = 0.5 * (w0 + w1);
-        w0.swap(w1);
+    Eigen::MatrixXd w(n * m, samples); // row i * n + j: W(j, i) over the samples
+    model.regressorSeries(record.q, qdHat, qddHat, w);
+    std::vector<Eigen::MatrixXd> a(size_t(n), Eigen::MatrixXd(rows, m));
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < m; ++i)
+            a[size_t(j)].col(i) =
+                0.5 * (w.row(i * n + j).head(rows) + w.row(i * n + j).tail(rows)).transpose();
+    // Solved from the rows' Gram matrices, then taken about the solution so that the residual is
+    // the rows' own (GramBlock).
+    GramBlock block(n, m, rows, phiPrev);
+    for (int j = 0; j < n; ++j)
+        block.setJointNormalEquations(j, a[size_t(j)], tauHat.row(j).head(rows).transpose());
+    const Eigen::VectorXd phi = observableUpdate({&block}, phiPrev, settings.rankTolerance).phi;
+    block.setReference(phi);
+    for (int j = 0; j < n; ++j) {
+        block.setJointResidual(j, a[size_t(j)], tauHat.row(j).head(rows).transpose());
+        // Torque noise reaches tau_hat through the causal F, whose transpose runs backward in
+        // time; identically zero regressor entries stay zero.
+        Eigen::MatrixXd &h = a[size_t(j)];
+        for (int i = 0; i < m; ++i)
+            if (!h.col(i).isZero(0.0))
+                h.col(i) = filter.anticausalLowPass(h.col(i).transpose()).transpose();
+        block.setJointShapedRows(j, h);
     }
-    const Eigen::VectorXd b =
-        Eigen::Map<const Eigen::VectorXd>(tauHat.data(), Eigen::Index(rows) * n);
-    // Torque noise reaches tau_hat through the causal F, whose transpose runs backward in time.
-    NoiseShaping noise;
-    noise.varianceGain = filter.lowPassNoiseGain();
-    noise.transposedApplied = filterJointSignals(
-        a, n, [&filter](const Eigen::RowVectorXd &x) { return filter.anticausalLowPass(x); });
-    return observableUpdate(a, b, n, phiPrev, settings.rankTolerance, {}, noise);
+    return observableUpdate({&block}, phiPrev, settings.rankTolerance, filter.lowPassNoiseGain());
 }
 
 } // namespace learnid

@@ -39,6 +39,19 @@ void RobotModel::rk4Step(Eigen::Ref<Eigen::VectorXd> q, Eigen::Ref<Eigen::Vector
     qd += (h / 6.0) * (a1 + 2.0 * a2 + 2.0 * a3 + a4);
 }
 
+void RobotModel::regressorSeries(const Eigen::Ref<const Eigen::MatrixXd> &q,
+                                 const Eigen::Ref<const Eigen::MatrixXd> &qd,
+                                 const Eigen::Ref<const Eigen::MatrixXd> &qdd,
+                                 Eigen::Ref<Eigen::MatrixXd> out) const
+{
+    const int n = dof();
+    const int m = parameterCount();
+    for (Eigen::Index k = 0; k < q.cols(); ++k) {
+        Eigen::Map<Eigen::MatrixXd> wk(out.col(k).data(), n, m);
+        regressor(q.col(k), qd.col(k), qdd.col(k), wk);
+    }
+}
+
 bool RobotModel::massMatrixPositiveDefinite(const VectorRef &q, const VectorRef &phi) const
 {
     Eigen::MatrixXd m(dof(), dof());

@@ -35,6 +35,14 @@ public:
     /// W(q, qd, qdd) into out (dof x parameterCount).
     virtual void regressor(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd,
                            Eigen::Ref<Eigen::MatrixXd> out) const = 0;
+    /// W at every sample of a trajectory: column k of out (dof * parameterCount x N) holds
+    /// W(q_k, qd_k, qdd_k) column-major (entry (j, i) at row i * dof + j); q, qd, qdd are
+    /// dof x N. The default calls regressor() per sample; models override it where a batch
+    /// saves the per-sample call (the learning laws evaluate it at every recorded sample).
+    virtual void regressorSeries(const Eigen::Ref<const Eigen::MatrixXd> &q,
+                                 const Eigen::Ref<const Eigen::MatrixXd> &qd,
+                                 const Eigen::Ref<const Eigen::MatrixXd> &qdd,
+                                 Eigen::Ref<Eigen::MatrixXd> out) const;
     /// M(q, phi) into out (dof x dof).
     virtual void massMatrix(const VectorRef &q, const VectorRef &phi,
                             Eigen::Ref<Eigen::MatrixXd> out) const = 0;
@@ -60,7 +68,8 @@ public:
     bool massMatrixPositiveDefinite(const VectorRef &q, const VectorRef &phi) const;
 
     /// Allocating conveniences for tests and planning code outside hot loops.
-    Eigen::MatrixXd regressorAt(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd) const;
+    Eigen::MatrixXd regressorAt(const VectorRef &q, const VectorRef &qd,
+                                const VectorRef &qdd) const;
     Eigen::VectorXd torqueAt(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd,
                              const VectorRef &phi) const;
 };

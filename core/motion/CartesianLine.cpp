@@ -15,9 +15,13 @@ Eigen::Vector2d CartesianLine::direction() const
     return {std::cos(a), std::sin(a)};
 }
 
-void lineStateInto(const Kinematics &kinematics, const CartesianLine &line, double T, double t,
-                   const Eigen::Ref<const Eigen::VectorXd> &near, Eigen::Ref<Eigen::VectorXd> q,
-                   Eigen::Ref<Eigen::VectorXd> qd, Eigen::Ref<Eigen::VectorXd> qdd)
+namespace {
+
+// lineStateInto() with the line's direction precomputed (planLine() calls it every sample).
+void lineStateAlong(const Kinematics &kinematics, const CartesianLine &line,
+                    const Eigen::Vector2d &dir, double T, double t,
+                    const Eigen::Ref<const Eigen::VectorXd> &near, Eigen::Ref<Eigen::VectorXd> q,
+                    Eigen::Ref<Eigen::VectorXd> qd, Eigen::Ref<Eigen::VectorXd> qdd)
 {
     const double u = std::clamp(t / T, 0.0, 1.0);
     const double u2 = u * u;
@@ -25,17 +29,19 @@ void lineStateInto(const Kinematics &kinematics, const CartesianLine &line, doub
     const double sd = 30.0 * u2 * (1.0 - 2.0 * u + u2) / T;
     const double sdd = 60.0 * u * (1.0 - 3.0 * u + 2.0 * u2) / (T * T);
 
-    const Eigen::Vector2d dir = line.direction();
     const Eigen::Vector2d x = line.start + s * line.length * dir;
-    kinematics.inverseInto(x, near, q);
-    Eigen::Matrix2d j;
-    kinematics.jacobianInto(q, j);
-    const Eigen::Matrix2d jInv = j.inverse(); // non-singular: inverseInto keeps off singularities
-    qd = jInv * (sd * line.length * dir);
-    Eigen::Vector2d jdotQd;
-    kinematics.jacobianDotTimesQdInto(q, qd, jdotQd);
-    // xdd = J qdd + Jdot qd
-    qdd = jInv * (sdd * line.length * dir - jdotQd);
+    const Eigen::Vector2d xd = sd * line.length * dir;
+    const Eigen::Vector2d xdd = sdd * line.length * dir;
+    kinematics.jointStateInto(x, xd, xdd, near, q, qd, qdd);
+}
+
+} // namespace
+
+void lineStateInto(const Kinematics &kinematics, const CartesianLine &line, double T, double t,
+                   const Eigen::Ref<const Eigen::VectorXd> &near, Eigen::Ref<Eigen::VectorXd> q,
+                   Eigen::Ref<Eigen::VectorXd> qd, Eigen::Ref<Eigen::VectorXd> qdd)
+{
+    lineStateAlong(kinematics, line, line.direction(), T, t, near, q, qd, qdd);
 }
 
 JointState lineStateAt(const Kinematics &kinematics, const CartesianLine &line, double T, double t,
@@ -49,8 +55,8 @@ JointState lineStateAt(const Kinematics &kinematics, const CartesianLine &line, 
 JointTrajectory planLine(const Kinematics &kinematics, const CartesianLine &line,
                          const MotionTiming &timing)
 {
-    if (!(timing.samplePeriod > 0.0) || !(timing.motionDuration > 0.0) || timing.restBefore < 0.0
-        || timing.restAfter < 0.0) {
+    if (!(timing.samplePeriod > 0.0) || !(timing.motionDuration > 0.0) || timing.restBefore < 0.0 ||
+        timing.restAfter < 0.0) {
         throw Error(QCoreApplication::translate(
             "CartesianLine", "invalid timing: sample period and duration must be positive, "
                              "rests non-negative"));
@@ -68,11 +74,20 @@ JointTrajectory planLine(const Kinematics &kinematics, const CartesianLine &line
     if (dof != 2)
         throw Error(QCoreApplication::translate("CartesianLine", "a planar line needs 2 joints"));
     Eigen::Vector2d near = kinematics.inverse(line.start, Eigen::VectorXd());
+    const Eigen::Vector2d dir = line.direction();
+    double previousT = -1.0;
     for (int k = 0; k < n; ++k) {
         const double t = k * timing.samplePeriod - timing.restBefore;
-        lineStateInto(kinematics, line, timing.motionDuration,
-                      std::clamp(t, 0.0, timing.motionDuration), near, traj.q.col(k),
-                      traj.qd.col(k), traj.qdd.col(k));
+        const double clamped = std::clamp(t, 0.0, timing.motionDuration);
+        if (clamped == previousT) {
+            // At rest: the same point as the previous sample (its state, computed again from
+            // the same inputs, would be the same numbers).
+            traj.q.col(k) = traj.q.col(k - 1);
+        } else {
+            lineStateAlong(kinematics, line, dir, timing.motionDuration, clamped, near,
+                           traj.q.col(k), traj.qd.col(k), traj.qdd.col(k));
+        }
+        previousT = clamped;
         // At rest the time scaling is exactly zero; clamping t makes that so without rounding.
         if (!(t > 0.0 && t < timing.motionDuration)) {
             traj.qd.col(k).setZero();

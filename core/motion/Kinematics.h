@@ -27,6 +27,15 @@ public:
     virtual void jacobianDotTimesQdInto(const VectorRef &q, const VectorRef &qd,
                                         Eigen::Ref<Eigen::VectorXd> out) const = 0;
 
+    /// The joint state that moves the task point along x [m], xd [m/s], xdd [m/s^2] (n):
+    /// q = inverse(x, near), qd = J^-1 xd, qdd = J^-1 (xdd - Jdot qd), into q [rad], qd [rad/s],
+    /// qdd [rad/s^2] (n). Throws Error as inverseInto(). The default evaluates the functions
+    /// above; arms override it to share their trigonometry (the planner calls it every sample).
+    virtual void jointStateInto(const VectorRef &x, const VectorRef &xd, const VectorRef &xdd,
+                                const VectorRef &near, Eigen::Ref<Eigen::VectorXd> q,
+                                Eigen::Ref<Eigen::VectorXd> qd,
+                                Eigen::Ref<Eigen::VectorXd> qdd) const;
+
     /// Allocating conveniences of the above, for code outside hot loops.
     Eigen::VectorXd forward(const VectorRef &q) const;
     Eigen::VectorXd inverse(const VectorRef &x, const VectorRef &near) const;

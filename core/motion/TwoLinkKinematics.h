@@ -19,8 +19,17 @@ public:
     void jacobianInto(const VectorRef &q, Eigen::Ref<Eigen::MatrixXd> out) const override;
     void jacobianDotTimesQdInto(const VectorRef &q, const VectorRef &qd,
                                 Eigen::Ref<Eigen::VectorXd> out) const override;
+    /// One acos and two atan2 per call: the sines and cosines of the joint angles follow from
+    /// the triangle of the links algebraically.
+    void jointStateInto(const VectorRef &x, const VectorRef &xd, const VectorRef &xdd,
+                        const VectorRef &near, Eigen::Ref<Eigen::VectorXd> q,
+                        Eigen::Ref<Eigen::VectorXd> qd,
+                        Eigen::Ref<Eigen::VectorXd> qdd) const override;
 
 private:
+    /// Inverse kinematics of x with cos and sin of both joint angles: c0, s0, c1, s1.
+    void solve(const VectorRef &x, const VectorRef &near, double *q, double *cs) const;
+
     double m_l1;
     double m_l2;
     int m_elbowSign;

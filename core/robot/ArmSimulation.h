@@ -1,6 +1,8 @@
 #pragma once
 
 #include "model/RobotModel.h"
+#include "model/TwoLinkArm.h"
+#include "model/TwoLinkDynamics.h"
 
 #include <Eigen/Core>
 #include <QtGlobal>
@@ -48,6 +50,7 @@ public:
         , m_h(samplePeriod / m_substeps)
         , m_countAngle(options.encoderCounts > 0 ? 2.0 * M_PI / double(options.encoderCounts) : 0.0)
         , m_normal(0.0, 1.0)
+        , m_twoLink(dynamic_cast<const TwoLinkArm *>(m_model.get()) != nullptr)
     {
         std::seed_seq seq{quint64(options.seed), quint64(noiseStream)};
         m_rng.seed(seq);
@@ -114,9 +117,16 @@ public:
     bool braked(int j) const { return m_braked[j]; }
 
     /// Advances the arm by one sample period under tau [N m] (n) held constant: options.substeps
-    /// RK4 steps of the true dynamics.
+    /// RK4 steps of the true dynamics. The paper's 2-link arm takes an inline path (no virtual
+    /// call per step, one sin/cos per sample period: twolink::rk4Steps); it moves the arm as
+    /// RobotModel::rk4Step does, to rounding.
     template <typename Tau> void integrate(const Tau &tau)
     {
+        if (m_twoLink && !m_anyBraked) {
+            const double t[2] = {tau[0], tau[1]};
+            twolink::rk4Steps(m_q.data(), m_qd.data(), t, m_phi.data(), m_h, m_substeps);
+            return;
+        }
         for (int s = 0; s < m_substeps; ++s) {
             m_model->rk4Step(m_q, m_qd, tau, m_phi, m_h);
             if (m_anyBraked)
@@ -148,6 +158,7 @@ private:
     Eigen::Matrix<bool, N, 1> m_braked;
     Vector m_heldQ;
     bool m_anyBraked = false;
+    bool m_twoLink; ///< the model is the paper's 2-link arm (TwoLinkArm)
 };
 
 } // namespace learnid

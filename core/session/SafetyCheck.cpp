@@ -3,8 +3,10 @@
 #include "control/PidController.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <QCoreApplication>
 #include <cmath>
+#include <unsupported/Eigen/MatrixFunctions>
 
 namespace learnid {
 
@@ -15,20 +17,66 @@ QString tr(const char *text)
     return QCoreApplication::translate("SafetyCheck", text);
 }
 
-// Continuous plant linearised at (q, qd, qdd) with tau = inverse dynamics there.
-StateSpace linearisedPlant(const RobotModel &model, const Eigen::VectorXd &phi,
-                           const Eigen::VectorXd &q, const Eigen::VectorXd &qd,
-                           const Eigen::VectorXd &qdd)
+// Sizes of the check for N joints (N = Eigen::Dynamic: any count, known at run time).
+template <int N> struct CheckSizes
 {
+    static constexpr int fixed(int k) { return N == Eigen::Dynamic ? Eigen::Dynamic : k * N; }
+    using JointVector = Eigen::Matrix<double, N, 1>;
+    using PlantMatrix = Eigen::Matrix<double, fixed(2), fixed(2)>; // x = (q, qd)
+    using InputMatrix = Eigen::Matrix<double, fixed(2), N>;
+    using HoldMatrix = Eigen::Matrix<double, fixed(3), fixed(3)>;       // [A B; 0 0]
+    using ControllerMatrix = Eigen::Matrix<double, fixed(3), fixed(3)>; // 3 PID states per joint
+    using ControllerInput = Eigen::Matrix<double, fixed(3), N>;
+    using ControllerOutput = Eigen::Matrix<double, N, fixed(3)>;
+    using JointMatrix = Eigen::Matrix<double, N, N>;
+    using LoopMatrix = Eigen::Matrix<double, fixed(5), fixed(5)>;
+};
+
+// The joints' discrete PIDs as one block-diagonal controller: xc+ = Ac xc + Bc e, u = Cc xc + Dc e.
+template <int N> struct Controller
+{
+    typename CheckSizes<N>::ControllerMatrix a;
+    typename CheckSizes<N>::ControllerInput b;
+    typename CheckSizes<N>::ControllerOutput c;
+    typename CheckSizes<N>::JointMatrix d;
+
+    Controller(const PidController &pid, int n)
+    {
+        a.setZero(3 * n, 3 * n);
+        b.setZero(3 * n, n);
+        c.setZero(n, 3 * n);
+        d.setZero(n, n);
+        for (int j = 0; j < n; ++j) {
+            const StateSpace &s = pid.joint(j);
+            a.block(3 * j, 3 * j, 3, 3) = s.a;
+            b.block(3 * j, j, 3, 1) = s.b;
+            c.block(j, 3 * j, 1, 3) = s.c;
+            d(j, j) = s.d(0, 0);
+        }
+    }
+};
+
+// Spectral radius of the discrete closed loop at one point of the path: the plant
+// x = (q, qd), x' = (qd, M^-1 (tau - h)) linearised at (q, qd, qdd) with tau = inverse dynamics
+// there (central differences), discretised with zero-order hold, under the controller.
+template <int N>
+double closedLoopRadius(const RobotModel &model, const Eigen::VectorXd &phi,
+                        const Eigen::Ref<const Eigen::VectorXd> &q,
+                        const Eigen::Ref<const Eigen::VectorXd> &qd,
+                        const Eigen::Ref<const Eigen::VectorXd> &qdd, double ts,
+                        const Controller<N> &ctrl)
+{
+    using S = CheckSizes<N>;
     const int n = model.dof();
-    Eigen::VectorXd tau(n);
+    typename S::JointVector tau(n), fp(n), fm(n), qp(n), qm(n), vp(n), vm(n);
     model.inverseDynamics(q, qd, qdd, phi, tau);
-    StateSpace s;
-    s.a = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-    s.a.topRightCorner(n, n).setIdentity();
-    Eigen::VectorXd fp(n), fm(n);
+    typename S::HoldMatrix aug = S::HoldMatrix::Zero(3 * n, 3 * n);
+    aug.block(0, n, n, n).setIdentity();
     for (int i = 0; i < 2 * n; ++i) {
-        Eigen::VectorXd qp = q, qm = q, vp = qd, vm = qd;
+        qp = q;
+        qm = q;
+        vp = qd;
+        vm = qd;
         const double base = i < n ? q[i] : qd[i - n];
         const double h = 1e-6 * std::max(1.0, std::abs(base));
         if (i < n) {
@@ -40,16 +88,54 @@ StateSpace linearisedPlant(const RobotModel &model, const Eigen::VectorXd &phi,
         }
         model.forwardDynamics(qp, vp, tau, phi, fp);
         model.forwardDynamics(qm, vm, tau, phi, fm);
-        s.a.block(n, i, n, 1) = (fp - fm) / (2.0 * h);
+        aug.block(n, i, n, 1) = (fp - fm) / (2.0 * h);
     }
     Eigen::MatrixXd m(n, n);
     model.massMatrix(q, phi, m);
-    s.b = Eigen::MatrixXd::Zero(2 * n, n);
-    s.b.bottomRows(n) = m.inverse();
-    s.c = Eigen::MatrixXd::Zero(n, 2 * n);
-    s.c.leftCols(n).setIdentity();
-    s.d = Eigen::MatrixXd::Zero(n, n);
-    return s;
+    aug.block(n, 2 * n, n, n) = typename S::JointMatrix(m).inverse();
+    // Zero-order hold: exp([A B; 0 0] ts) = [Phi Gamma; 0 I].
+    aug *= ts;
+    const typename S::HoldMatrix e = aug.exp();
+    const typename S::PlantMatrix phiPlant = e.topLeftCorner(2 * n, 2 * n);
+    const typename S::InputMatrix gamma = e.topRightCorner(2 * n, n);
+
+    // Closed loop with y = C x = q, e = -y: x+ = Phi x + Gamma u, u = Cc xc - Dc C x;
+    // xc+ = Ac xc - Bc C x.
+    const int np = 2 * n, nc = 3 * n;
+    typename S::LoopMatrix cl(np + nc, np + nc);
+    cl.topLeftCorner(np, np) = phiPlant;
+    cl.topLeftCorner(np, n) -= gamma * ctrl.d;
+    cl.topRightCorner(np, nc) = gamma * ctrl.c;
+    cl.bottomLeftCorner(nc, np).setZero();
+    cl.bottomLeftCorner(nc, n) = -ctrl.b;
+    cl.bottomRightCorner(nc, nc) = ctrl.a;
+    const Eigen::EigenSolver<typename S::LoopMatrix> es(cl, false);
+    return es.eigenvalues().cwiseAbs().maxCoeff();
+}
+
+template <int N>
+void checkPath(const RobotModel &model, const Eigen::VectorXd &phiHat, const TrialPlan &plan,
+               int points, SafetyVerdict &v)
+{
+    const double ts = plan.desired.samplePeriod;
+    const Controller<N> ctrl(PidController(plan.controller), model.dof());
+    const int samples = plan.samples();
+    const int count = std::max(2, points);
+    for (int p = 0; p < count; ++p) {
+        const int k = int(std::lround(double(p) * (samples - 1) / (count - 1)));
+        const auto q = plan.desired.q.col(k);
+        if (!model.massMatrixPositiveDefinite(q, phiHat)) {
+            v.physical = false;
+            v.worstTime = k * ts;
+            break;
+        }
+        const double radius = closedLoopRadius<N>(model, phiHat, q, plan.desired.qd.col(k),
+                                                  plan.desired.qdd.col(k), ts, ctrl);
+        if (radius > v.worstSpectralRadius) {
+            v.worstSpectralRadius = radius;
+            v.worstTime = k * ts;
+        }
+    }
 }
 
 } // namespace
@@ -64,45 +150,11 @@ SafetyVerdict checkTrial(const RobotModel &model, const Eigen::VectorXd &phiHat,
     v.motionDuration = plan.motionDuration;
     v.peakTorque = plan.feedforward.cwiseAbs().rowwise().maxCoeff();
 
-    // Controller: block diagonal of the joints' discrete PIDs (3 states each).
-    const PidController pid(plan.controller);
-    const int nc = 3 * n;
-    Eigen::MatrixXd ac = Eigen::MatrixXd::Zero(nc, nc), bc = Eigen::MatrixXd::Zero(nc, n);
-    Eigen::MatrixXd cc = Eigen::MatrixXd::Zero(n, nc), dc = Eigen::MatrixXd::Zero(n, n);
-    for (int j = 0; j < n; ++j) {
-        const StateSpace &d = pid.joint(j);
-        ac.block(3 * j, 3 * j, 3, 3) = d.a;
-        bc.block(3 * j, j, 3, 1) = d.b;
-        cc.block(j, 3 * j, 1, 3) = d.c;
-        dc(j, j) = d.d(0, 0);
-    }
-
-    const int samples = plan.samples();
-    const int count = std::max(2, points);
-    for (int p = 0; p < count; ++p) {
-        const int k = int(std::lround(double(p) * (samples - 1) / (count - 1)));
-        const Eigen::VectorXd q = plan.desired.q.col(k);
-        if (!model.massMatrixPositiveDefinite(q, phiHat)) {
-            v.physical = false;
-            v.worstTime = k * ts;
-            break;
-        }
-        const StateSpace plant = zeroOrderHold(
-            linearisedPlant(model, phiHat, q, plan.desired.qd.col(k), plan.desired.qdd.col(k)), ts);
-        // Closed loop: x+ = Phi x + Gamma u, u = Cc xc - Dc C x; xc+ = Ac xc - Bc C x.
-        const int np = plant.states();
-        Eigen::MatrixXd cl(np + nc, np + nc);
-        cl.topLeftCorner(np, np) = plant.a - plant.b * dc * plant.c;
-        cl.topRightCorner(np, nc) = plant.b * cc;
-        cl.bottomLeftCorner(nc, np) = -bc * plant.c;
-        cl.bottomRightCorner(nc, nc) = ac;
-        const Eigen::EigenSolver<Eigen::MatrixXd> es(cl, false);
-        const double radius = es.eigenvalues().cwiseAbs().maxCoeff();
-        if (radius > v.worstSpectralRadius) {
-            v.worstSpectralRadius = radius;
-            v.worstTime = k * ts;
-        }
-    }
+    // Fixed-size matrices for the 2-link arm (10 x 10 closed loop): no heap work per point.
+    if (n == 2)
+        checkPath<2>(model, phiHat, plan, points, v);
+    else
+        checkPath<Eigen::Dynamic>(model, phiHat, plan, points, v);
     v.worstDecayRate = std::log(std::max(v.worstSpectralRadius, 1e-300)) / ts;
     v.stable = v.physical && v.worstDecayRate < -margin;
     int overJoint = -1;

@@ -86,6 +86,7 @@ private slots:
     void zeroPhase_commutesWithTimeReversalAwayFromEdges();
     void zeroPhaseEdges_haveNoStartTransient();
     void singleOutputVariants_equalFirstRow();
+    void causal_equalsTheDiscreteStateSpaceRunFromRest();
     void noiseGains_equalParsevalIntegralOfExactResponse();
     void anticausalLowPass_isAdjointOfLowPass();
     void emptyAndSingleSampleInputs_areHandled();
@@ -253,6 +254,30 @@ void TestFilteringEstimator::singleOutputVariants_equalFirstRow()
     stacked.row(1) = x;
     LEARNID_COMPARE_MATRIX(f.causal(stacked.row(1)), f.causal(x), 0.0);
     LEARNID_COMPARE_MATRIX(f.zeroPhase(stacked.row(1)), f.zeroPhase(x), 0.0);
+}
+
+// causal() runs first-order sections; the discrete state space it realises, stepped directly
+// from its rest state (I - A)^-1 B x[0], gives the same three outputs to rounding.
+void TestFilteringEstimator::causal_equalsTheDiscreteStateSpaceRunFromRest()
+{
+    const FilteringEstimator f(rho, ts);
+    const StateSpace &d = f.discrete();
+    std::mt19937 rng(317);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    Eigen::RowVectorXd x(1500);
+    for (int k = 0; k < x.size(); ++k)
+        x[k] = std::sin(0.01 * k) + 0.1 * normal(rng);
+    Eigen::VectorXd state = steadyState(d, Eigen::VectorXd::Constant(1, x[0]));
+    Eigen::MatrixXd expected(3, x.size());
+    for (int k = 0; k < x.size(); ++k) {
+        expected.col(k) = d.c * state + d.d * x[k];
+        state = d.a * state + d.b * x[k];
+    }
+    const Eigen::MatrixXd actual = f.causal(x);
+    for (int i = 0; i < 3; ++i) {
+        const double scale = expected.row(i).cwiseAbs().maxCoeff();
+        LEARNID_COMPARE_MATRIX(actual.row(i), expected.row(i), 1e-12 * scale);
+    }
 }
 
 // Parseval: the sum of the squared impulse response of a discrete filter is

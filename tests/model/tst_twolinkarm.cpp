@@ -88,6 +88,7 @@ private slots:
     void torque_satisfiesLagrangeEquations();
     void factory_createsEveryKnownModelAndRejectsUnknownIds();
     void rk4StepOverride_equalsGenericRk4();
+    void regressorSeries_equalsTheRegressorAtEverySample();
 };
 
 void TestTwoLinkArm::describesThreeInertiaParameters()
@@ -341,11 +342,40 @@ void TestTwoLinkArm::rk4StepOverride_equalsGenericRk4()
             Eigen::VectorXd q = q0, qd = qd0, qGeneric = q0, qdGeneric = qd0;
             arm.rk4Step(q, qd, tau, phi, h);
             arm.RobotModel::rk4Step(qGeneric, qdGeneric, tau, phi, h);
-            QVERIFY2((q - qGeneric).cwiseAbs().maxCoeff() < 1e-14 * (1.0 + q0.cwiseAbs().maxCoeff()),
+            QVERIFY2((q - qGeneric).cwiseAbs().maxCoeff() <
+                         1e-14 * (1.0 + q0.cwiseAbs().maxCoeff()),
                      qPrintable(QString::number((q - qGeneric).cwiseAbs().maxCoeff())));
-            QVERIFY2((qd - qdGeneric).cwiseAbs().maxCoeff() < 1e-12 * (1.0 + qd0.cwiseAbs().maxCoeff()),
+            QVERIFY2((qd - qdGeneric).cwiseAbs().maxCoeff() <
+                         1e-12 * (1.0 + qd0.cwiseAbs().maxCoeff()),
                      qPrintable(QString::number((qd - qdGeneric).cwiseAbs().maxCoeff())));
         }
+    }
+}
+
+// The batch override against RobotModel's default (regressor() per sample), and the layout.
+void TestTwoLinkArm::regressorSeries_equalsTheRegressorAtEverySample()
+{
+    const TwoLinkArm arm;
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> value(-3.0, 3.0);
+    Eigen::MatrixXd q(2, 50), qd(2, 50), qdd(2, 50);
+    for (Eigen::MatrixXd *m : {&q, &qd, &qdd})
+        for (Eigen::Index i = 0; i < m->size(); ++i)
+            (*m)(i) = value(rng);
+    Eigen::MatrixXd batch(6, 50), generic(6, 50);
+    // Random samples jump (direct sin/cos); a smooth path rotates sin/cos between anchors.
+    for (Eigen::Index k = 25; k < 50; ++k)
+        q.col(k) = q.col(24) + 0.003 * double(k - 24) * Eigen::Vector2d(1.0, -0.5);
+    arm.regressorSeries(q, qd, qdd, batch);
+    arm.RobotModel::regressorSeries(q, qd, qdd, generic);
+    LEARNID_COMPARE_MATRIX(batch, generic, 1e-14);
+    for (int k = 0; k < 50; ++k) {
+        const Eigen::MatrixXd w = arm.regressorAt(q.col(k), qd.col(k), qdd.col(k));
+        LEARNID_COMPARE_MATRIX(
+            Eigen::MatrixXd(Eigen::Map<const Eigen::MatrixXd>(batch.col(k).data(), 2, 3)), w,
+            1e-14);
+        QCOMPARE(batch(1, k), 0.0); // structural zeros W(1, 0), W(0, 2)
+        QCOMPARE(batch(4, k), 0.0);
     }
 }
 

@@ -40,6 +40,7 @@ private slots:
     void elbowSign_selectsBranch();
     void jacobian_equalsCentralDifferences();
     void jacobianDotTimesQd_equalsDerivativeOfJacobianAlongQd();
+    void jointState_equalsTheGenericInverseJacobianRoute();
     void unreachablePoint_throwsNamingThePoint();
     void singularPoints_throw();
     void near_keepsTheTwoPiBranch();
@@ -143,6 +144,30 @@ void TestTwoLinkKinematics::jacobianDotTimesQd_equalsDerivativeOfJacobianAlongQd
         const Eigen::Vector2d numeric =
             (kin.jacobian(q + h * qd) - kin.jacobian(q - h * qd)) * qd / (2.0 * h);
         LEARNID_COMPARE_MATRIX(kin.jacobianDotTimesQd(q, qd), numeric, 1e-7);
+    }
+}
+
+// The override shares one set of sines and cosines; the base class evaluates inverse kinematics,
+// Jacobian and Jdot qd separately (sin/cos of each angle) and inverts J: the same state.
+void TestTwoLinkKinematics::jointState_equalsTheGenericInverseJacobianRoute()
+{
+    for (int elbow : {1, -1}) {
+        const TwoLinkKinematics kin(0.9, 0.4, elbow);
+        std::mt19937 rng(47);
+        std::uniform_real_distribution<double> rate(-2.0, 2.0);
+        for (int trial = 0; trial < 300; ++trial) {
+            const Eigen::Vector2d x = randomReachablePoint(rng, 0.9, 0.4);
+            const Eigen::Vector2d xd(rate(rng), rate(rng)), xdd(rate(rng), rate(rng));
+            const Eigen::Vector2d near = kin.inverse(x, noNear) + Eigen::Vector2d(0.3, -0.2);
+            Eigen::VectorXd q(2), qd(2), qdd(2), qRef(2), qdRef(2), qddRef(2);
+            kin.jointStateInto(x, xd, xdd, near, q, qd, qdd);
+            kin.Kinematics::jointStateInto(x, xd, xdd, near, qRef, qdRef, qddRef);
+            QCOMPARE(q, qRef);
+            // J^-1 grows near the folded arm (r = 0.52 m): compare relative to the magnitudes.
+            LEARNID_COMPARE_MATRIX(qd, qdRef, 1e-12 * (1.0 + qdRef.cwiseAbs().maxCoeff()));
+            LEARNID_COMPARE_MATRIX(qdd, qddRef, 1e-11 * (1.0 + qddRef.cwiseAbs().maxCoeff()));
+            LEARNID_COMPARE_MATRIX(kin.forward(q), x, 1e-12);
+        }
     }
 }
 

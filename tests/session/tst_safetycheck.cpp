@@ -18,6 +18,7 @@ private slots:
     void paperLambda40_isUnstableForTheTrueInertiaOnly();
     void restVerdict_agreesWithContinuousTimePoles_data();
     void restVerdict_agreesWithContinuousTimePoles();
+    void restRadius_equalsTheLoopBuiltFromTheStateSpaceHelpers();
     void lambda40_simulatedRobotLimitCycles();
     void nonPhysicalEstimate_isRefused();
     void plannedTorqueAboveLimit_isRefusedNamingTheJoint();
@@ -78,7 +79,8 @@ void TestSafetyCheck::restVerdict_agreesWithContinuousTimePoles()
     s.controller.lambda = lambda;
     TrialPlan plan = TrialPlanner(s, m_model).plan(phi);
     // Keep only the first rest samples: the start pose at rest.
-    for (Eigen::MatrixXd *m : {&plan.desired.q, &plan.desired.qd, &plan.desired.qdd, &plan.feedforward})
+    for (Eigen::MatrixXd *m :
+         {&plan.desired.q, &plan.desired.qd, &plan.desired.qdd, &plan.feedforward})
         m->conservativeResize(Eigen::NoChange, 10);
     const SafetyVerdict v = checkTrial(*m_model, phi, plan);
 
@@ -88,7 +90,8 @@ void TestSafetyCheck::restVerdict_agreesWithContinuousTimePoles()
     cl.block(0, 2, 2, 2).setIdentity();
     const Eigen::MatrixXd mInv = m.inverse();
     for (int j = 0; j < 2; ++j) {
-        const StateSpace c = pidStateSpace(s.controller.kp[j], s.controller.ki[j], s.controller.kd[j], lambda);
+        const StateSpace c =
+            pidStateSpace(s.controller.kp[j], s.controller.ki[j], s.controller.kd[j], lambda);
         // u_j = Cc x_j + Dc e_j with e_j = -q_j; controller state x_j' = Ac x_j + Bc e_j.
         cl.block(2, 4 + 3 * j, 2, 3) = mInv.col(j) * c.c;
         cl.block(2, j, 2, 1) -= mInv.col(j) * c.d(0, 0);
@@ -100,6 +103,50 @@ void TestSafetyCheck::restVerdict_agreesWithContinuousTimePoles()
     QCOMPARE(v.stable, maxReal < 0.0);
     if (lambda == 40.0 && phi == m_truth)
         QVERIFY2(maxReal > 1.0, qPrintable(QString::number(maxReal))); // the paper's case
+}
+
+// The check's fixed-size closed loop against one assembled from the dynamic StateSpace helpers
+// (zeroOrderHold of the plant at rest, x'' = M^-1 u; the Tustin PIDs): the same spectral radius.
+void TestSafetyCheck::restRadius_equalsTheLoopBuiltFromTheStateSpaceHelpers()
+{
+    for (double lambda : {40.0, 200.0}) {
+        Scenario s;
+        s.controller.lambda = lambda;
+        TrialPlan plan = TrialPlanner(s, m_model).plan(m_truth);
+        for (Eigen::MatrixXd *m :
+             {&plan.desired.q, &plan.desired.qd, &plan.desired.qdd, &plan.feedforward})
+            m->conservativeResize(Eigen::NoChange, 10);
+        const SafetyVerdict v = checkTrial(*m_model, m_truth, plan);
+
+        Eigen::MatrixXd m(2, 2);
+        m_model->massMatrix(plan.desired.q.col(0), m_truth, m);
+        StateSpace plant;
+        plant.a = Eigen::MatrixXd::Zero(4, 4);
+        plant.a.block(0, 2, 2, 2).setIdentity();
+        plant.b = Eigen::MatrixXd::Zero(4, 2);
+        plant.b.bottomRows(2) = m.inverse();
+        plant.c = Eigen::MatrixXd::Zero(2, 4);
+        plant.c.leftCols(2).setIdentity();
+        plant.d = Eigen::MatrixXd::Zero(2, 2);
+        const StateSpace d = zeroOrderHold(plant, s.controller.samplePeriod);
+        const PidController pid(s.controller);
+        Eigen::MatrixXd cl = Eigen::MatrixXd::Zero(10, 10);
+        cl.topLeftCorner(4, 4) = d.a;
+        for (int j = 0; j < 2; ++j) {
+            const StateSpace &c = pid.joint(j); // u_j = Cc x_j - Dc q_j; x_j+ = Ac x_j - Bc q_j
+            cl.block(0, 4 + 3 * j, 4, 3) = d.b.col(j) * c.c;
+            cl.block(0, j, 4, 1) -= d.b.col(j) * c.d(0, 0);
+            cl.block(4 + 3 * j, 4 + 3 * j, 3, 3) = c.a;
+            cl.block(4 + 3 * j, j, 3, 1) = -c.b;
+        }
+        const double radius =
+            Eigen::EigenSolver<Eigen::MatrixXd>(cl, false).eigenvalues().cwiseAbs().maxCoeff();
+        QVERIFY2(std::abs(v.worstSpectralRadius - radius) < 1e-9,
+                 qPrintable(QStringLiteral("%1 vs %2")
+                                .arg(v.worstSpectralRadius, 0, 'g', 17)
+                                .arg(radius, 0, 'g', 17)));
+        QCOMPARE(v.stable, radius < 1.0);
+    }
 }
 
 // The verdict describes the robot: with lambda = 40 and a feedforward built with the truth, the
