@@ -1,0 +1,110 @@
+// The `learnid` executable as a technician starts it: --screenshot renders the main window after
+// a simulated session (the README's and the user guide's pictures come from it), and bad
+// options end with a clear message and a non-zero exit.
+#include <QImage>
+#include <QProcess>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QtTest>
+
+class TestGuiApp : public QObject
+{
+    Q_OBJECT
+
+private:
+    struct Run
+    {
+        int exitCode = -1;
+        QString err;
+    };
+
+    static Run learnid(const QStringList &arguments)
+    {
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+        env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(LEARNID_GUI_PATH), arguments);
+        if (!p.waitForFinished(120000)) {
+            p.kill();
+            p.waitForFinished();
+        }
+        return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
+                QString::fromUtf8(p.readAllStandardError())};
+    }
+
+    // Distinct colours in a coarse grid of the picture: a blank or failed render has a handful.
+    static int distinctColours(const QImage &image)
+    {
+        QSet<QRgb> colours;
+        for (int y = 0; y < image.height(); y += 3)
+            for (int x = 0; x < image.width(); x += 3)
+                colours.insert(image.pixel(x, y));
+        return int(colours.size());
+    }
+
+private slots:
+    void screenshot_rendersTheWindowAfterASession_data()
+    {
+        QTest::addColumn<QString>("view");
+        QTest::addColumn<int>("minWidth");
+        QTest::newRow("main") << QStringLiteral("main") << 1000;
+        QTest::newRow("apply-dialog") << QStringLiteral("apply-dialog") << 300;
+        QTest::newRow("refused-check") << QStringLiteral("refused-check") << 1000;
+    }
+
+    void screenshot_rendersTheWindowAfterASession()
+    {
+        QFETCH(QString, view);
+        QFETCH(int, minWidth);
+        QTemporaryDir dir;
+        const QString png = dir.filePath(view + QStringLiteral(".png"));
+        const Run run = learnid({QStringLiteral("--screenshot"), png,
+                                 QStringLiteral("--screenshot-view"), view});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QImage image(png);
+        QVERIFY2(!image.isNull(), qPrintable(png));
+        QVERIFY2(image.width() >= minWidth && image.height() >= 200,
+                 qPrintable(QStringLiteral("%1 x %2").arg(image.width()).arg(image.height())));
+        QVERIFY2(distinctColours(image) > 40, qPrintable(QString::number(distinctColours(image))));
+    }
+
+    void badOptions_endWithAClearMessage_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("unknown option")
+            << QStringList{QStringLiteral("--bogus")} << QStringLiteral("bogus");
+        QTest::newRow("unwritable screenshot")
+            << QStringList{QStringLiteral("--screenshot"), QStringLiteral("/nonexistent/x.png")}
+            << QStringLiteral("learnid: --screenshot: cannot write /nonexistent/x.png");
+        QTest::newRow("unknown view")
+            << QStringList{QStringLiteral("--screenshot"), QStringLiteral("x.png"),
+                           QStringLiteral("--screenshot-view"), QStringLiteral("bogus")}
+            << QStringLiteral("learnid: unknown --screenshot-view 'bogus'; known: main, "
+                              "apply-dialog, refused-check");
+    }
+
+    void badOptions_endWithAClearMessage()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, expected);
+        const Run run = learnid(arguments);
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.err.contains(expected), qPrintable(run.err));
+    }
+
+    void unknownLanguage_stillStartsTheWindow()
+    {
+        QTemporaryDir dir;
+        const QString png = dir.filePath(QStringLiteral("xx.png"));
+        const Run run = learnid({QStringLiteral("--language"), QStringLiteral("xx"),
+                                 QStringLiteral("--screenshot"), png});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QVERIFY(!QImage(png).isNull());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestGuiApp)
+#include "tst_gui_app.moc"
