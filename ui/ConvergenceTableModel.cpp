@@ -25,19 +25,9 @@ void ConvergenceTableModel::setHistory(const QVector<TrialResult> &history,
                                        const QVector<Eigen::VectorXd> &estimates)
 {
     beginResetModel();
-    // The figures only, not the plans and records: sharing the caller's vector would make its
-    // next append deep-copy every trial (copy on write), growing memory with every trial.
-    m_history.clear();
-    m_history.reserve(history.size());
-    for (const TrialResult &t : history) {
-        TrialResult figures;
-        figures.index = t.index;
-        figures.record.status = t.record.status;
-        figures.message = t.message;
-        figures.maxTrackingErrorDeg = t.maxTrackingErrorDeg;
-        figures.update = t.update;
-        m_history.append(std::move(figures));
-    }
+    // Shared with the caller: the window's history holds no samples (trialSummary), so the
+    // copy its next append makes is of figures only.
+    m_history = history;
     m_estimates = estimates;
     m_trialsWith = QVector<QVector<int>>(estimates.size());
     m_producer = QVector<int>(estimates.size(), -1);

@@ -48,7 +48,7 @@ private:
 
     QList<ParameterInfo> m_parameters;
     std::optional<Eigen::VectorXd> m_truth;
-    QVector<TrialResult> m_history; ///< per trial its figures, without plan and record
+    QVector<TrialResult> m_history; ///< the trials shown (the window gives them without samples)
     QVector<Eigen::VectorXd> m_estimates;
     QVector<QVector<int>> m_trialsWith; ///< history indices of the trials run with estimate k
     QVector<int> m_producer;            ///< history index of the trial that produced k, or -1

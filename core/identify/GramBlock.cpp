@@ -1,5 +1,6 @@
 #include "identify/GramBlock.h"
 
+#include "identify/ObservableUpdate.h"
 #include "model/Error.h"
 
 #include <QCoreApplication>
@@ -70,6 +71,24 @@ bool GramBlock::allFinite() const
             return false;
     }
     return true;
+}
+
+GramBlock selfFittedBlock(const std::vector<Eigen::MatrixXd> &a, const Eigen::MatrixXd &b,
+                          const Eigen::VectorXd &phiPrev, double tolerance)
+{
+    const int n = int(a.size());
+    if (n == 0 || b.cols() != n)
+        throw sizeError(b.rows() * b.cols(), phiPrev.size(), b.size(), n, phiPrev.size());
+    GramBlock block(n, int(phiPrev.size()), b.rows(), phiPrev);
+    for (int j = 0; j < n; ++j) {
+        if (a[size_t(j)].rows() != b.rows() || a[size_t(j)].cols() != phiPrev.size())
+            throw sizeError(a[size_t(j)].rows(), a[size_t(j)].cols(), b.rows(), n, phiPrev.size());
+        block.setJointNormalEquations(j, a[size_t(j)], b.col(j));
+    }
+    block.setReference(observableUpdate({&block}, phiPrev, tolerance).phi);
+    for (int j = 0; j < n; ++j)
+        block.setJointResidual(j, a[size_t(j)], b.col(j));
+    return block;
 }
 
 GramBlock stackedGramBlock(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int n,

@@ -95,6 +95,13 @@ private:
 Error sizeError(Eigen::Index rows, Eigen::Index columns, Eigen::Index targets, int joints,
                 Eigen::Index parameters);
 
+/// Joint j's rows a[j] (N x m) and targets column j of b (N x n) as one block, solved from
+/// phiPrev (tolerance: the rank tolerance of observableUpdate()) and taken about that fit, where
+/// its residuals are the rows' own and any later fit's residual follows without cancellation.
+/// The shaped Gram matrices and weights are left to the caller.
+GramBlock selfFittedBlock(const std::vector<Eigen::MatrixXd> &a, const Eigen::MatrixXd &b,
+                          const Eigen::VectorXd &phiPrev, double tolerance);
+
 /// The block of sample-major stacked rows as observableUpdate() takes them: row k*n + j of a
 /// (N n x m) and b (N n) is joint j of sample k; shaped: H^T a of the same layout, or empty.
 GramBlock stackedGramBlock(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int n,

@@ -67,15 +67,9 @@ std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialPlan &p
     // the rows (exactly) and any later fit's residual follows without cancellation.
     auto out = std::make_shared<TrialGram>();
     out->rho = settings.rho;
-    GramBlock prior(n, m, rows, phiPrev);
-    for (int j = 0; j < n; ++j)
-        prior.setJointNormalEquations(j, a[size_t(j)], tauf.col(j));
-    const ParameterUpdate ols = observableUpdate({&prior}, phiPrev, settings.rankTolerance);
-    out->block = std::move(prior);
-    out->block.setReference(ols.phi);
+    out->block = selfFittedBlock(a, tauf, phiPrev, settings.rankTolerance);
     const double floor = 1e-9 * (tauf.cwiseAbs().maxCoeff() + 1.0);
     for (int j = 0; j < n; ++j) {
-        out->block.setJointResidual(j, a[size_t(j)], tauf.col(j));
         const double rms = std::sqrt(out->block.residualSquares(j) / double(rows));
         out->block.setJointWeight(j, 1.0 / std::max(rms, floor));
     }

@@ -14,27 +14,22 @@ namespace learnid {
 
 namespace {
 
+Error nonFiniteError()
+{
+    return Error(QCoreApplication::translate(
+        "ObservableUpdate", "the regressor or the torque contains non-finite values"));
+}
+
 void checkSizes(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int n,
                 const Eigen::VectorXd &phiPrev, const Eigen::VectorXd &rowWeight)
 {
     const Eigen::Index rows = a.rows();
     if (n <= 0 || rows % n != 0 || b.size() != rows || phiPrev.size() != a.cols() ||
-        (rowWeight.size() != 0 && rowWeight.size() != rows) || rows < a.cols()) {
-        throw Error(QCoreApplication::translate(
-                        "ObservableUpdate",
-                        "least squares sizes do not match: %1 x %2 regressor, %3 targets, "
-                        "%4 joints, %5 parameters")
-                        .arg(rows)
-                        .arg(a.cols())
-                        .arg(b.size())
-                        .arg(n)
-                        .arg(phiPrev.size()));
-    }
+        (rowWeight.size() != 0 && rowWeight.size() != rows) || rows < a.cols())
+        throw sizeError(rows, a.cols(), b.size(), n, phiPrev.size());
     if (!a.allFinite() || !b.allFinite() || !phiPrev.allFinite() ||
-        (rowWeight.size() != 0 && !rowWeight.allFinite())) {
-        throw Error(QCoreApplication::translate(
-            "ObservableUpdate", "the regressor or the torque contains non-finite values"));
-    }
+        (rowWeight.size() != 0 && !rowWeight.allFinite()))
+        throw nonFiniteError();
 }
 
 // Eigen-decomposition of a symmetric Gram matrix, largest eigenvalue first.
@@ -187,10 +182,8 @@ ParameterUpdate observableUpdate(const std::vector<const GramBlock *> &blocks,
         if (block->joints() != n || block->parameters() != m)
             throw sizeError(block->samples() * block->joints(), block->parameters(),
                             block->samples() * block->joints(), block->joints(), m);
-        if (!block->allFinite() || !phiPrev.allFinite()) {
-            throw Error(QCoreApplication::translate(
-                "ObservableUpdate", "the regressor or the torque contains non-finite values"));
-        }
+        if (!block->allFinite() || !phiPrev.allFinite())
+            throw nonFiniteError();
         samples += block->samples();
         shaped = shaped && block->shaped();
     }

@@ -43,15 +43,10 @@ ParameterUpdate PaperLaw::update(const RobotModel &model, const std::vector<Tria
         for (int i = 0; i < m; ++i)
             a[size_t(j)].col(i) =
                 0.5 * (w.row(i * n + j).head(rows) + w.row(i * n + j).tail(rows)).transpose();
-    // Solved from the rows' Gram matrices, then taken about the solution so that the residual is
-    // the rows' own (GramBlock).
-    GramBlock block(n, m, rows, phiPrev);
-    for (int j = 0; j < n; ++j)
-        block.setJointNormalEquations(j, a[size_t(j)], tauHat.row(j).head(rows).transpose());
-    const Eigen::VectorXd phi = observableUpdate({&block}, phiPrev, settings.rankTolerance).phi;
-    block.setReference(phi);
+    // Solved, then taken about its own fit: the residual is the rows' own.
+    GramBlock block = selfFittedBlock(a, tauHat.leftCols(rows).transpose(), phiPrev,
+                                      settings.rankTolerance);
     for (int j = 0; j < n; ++j) {
-        block.setJointResidual(j, a[size_t(j)], tauHat.row(j).head(rows).transpose());
         // Torque noise reaches tau_hat through the causal F, whose transpose runs backward in
         // time; identically zero regressor entries stay zero.
         Eigen::MatrixXd &h = a[size_t(j)];

@@ -6,6 +6,7 @@
 #include "can/CandumpLog.h"
 
 #include "../support/RobotSimProcess.h"
+#include "../support/ToolRun.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -21,13 +22,7 @@ using namespace learnid;
 
 namespace {
 
-struct Result
-{
-    int exitCode = -1;
-    QString out;
-    QString err;
-    qint64 ms = 0;
-};
+using Result = learnid::test::ToolRun;
 
 QJsonObject readJson(const QString &path)
 {
@@ -63,16 +58,7 @@ private slots:
 private:
     Result cli(const QStringList &args) const
     {
-        QProcess p;
-        p.setWorkingDirectory(m_dir.path());
-        QElapsedTimer clock;
-        clock.start();
-        p.start(QStringLiteral(LEARNID_CLI_PATH), args);
-        if (!p.waitForFinished(240000))
-            return {};
-        return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
-                QString::fromUtf8(p.readAllStandardOutput()),
-                QString::fromUtf8(p.readAllStandardError()), clock.elapsed()};
+        return learnid::test::runTool(QStringLiteral(LEARNID_CLI_PATH), args, m_dir.path(), 240000);
     }
     static QString interface(quint16 port)
     {

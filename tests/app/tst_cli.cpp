@@ -1,4 +1,5 @@
 // End-to-end tests of the learnid-cli executable: what a user types, what it prints and writes.
+#include "../support/ToolRun.h"
 #include "io/ParameterFile.h"
 
 #include <QDir>
@@ -24,22 +25,10 @@ private slots:
     void unknownOption_printsUsage();
 
 private:
-    struct Result
-    {
-        int exitCode = -1;
-        QString out;
-        QString err;
-    };
+    using Result = learnid::test::ToolRun;
     Result cli(const QStringList &args, const QString &dir) const
     {
-        QProcess p;
-        p.setWorkingDirectory(dir);
-        p.start(QStringLiteral(LEARNID_CLI_PATH), args);
-        if (!p.waitForFinished(120000))
-            return {};
-        return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
-                QString::fromUtf8(p.readAllStandardOutput()),
-                QString::fromUtf8(p.readAllStandardError())};
+        return learnid::test::runTool(QStringLiteral(LEARNID_CLI_PATH), args, dir);
     }
     static QJsonObject readJson(const QString &path)
     {

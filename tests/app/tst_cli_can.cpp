@@ -1,6 +1,8 @@
 // learnid-cli's CAN options without a robot on the bus: bad values name the option and the
 // value, a configuration above the bus limit is refused with its figures, a bus nobody answers
 // on fails quickly with the node and object, a malformed log names file and line.
+#include "../support/ToolRun.h"
+
 #include <QElapsedTimer>
 #include <QFile>
 #include <QProcess>
@@ -19,23 +21,10 @@ private slots:
     void malformedCandump_namesFileAndLine();
 
 private:
-    struct Result
-    {
-        int exitCode = -1;
-        QString err;
-        qint64 ms = 0;
-    };
+    using Result = learnid::test::ToolRun;
     Result cli(const QStringList &args) const
     {
-        QProcess p;
-        p.setWorkingDirectory(m_dir.path());
-        QElapsedTimer clock;
-        clock.start();
-        p.start(QStringLiteral(LEARNID_CLI_PATH), args);
-        if (!p.waitForFinished(60000))
-            return {};
-        return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
-                QString::fromUtf8(p.readAllStandardError()), clock.elapsed()};
+        return learnid::test::runTool(QStringLiteral(LEARNID_CLI_PATH), args, m_dir.path(), 60000);
     }
     QTemporaryDir m_dir;
 };

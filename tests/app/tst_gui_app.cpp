@@ -1,6 +1,8 @@
 // The `learnid` executable as a technician starts it: --screenshot renders the main window after
 // a simulated session (the README's and the user guide's pictures come from it), and bad
 // options end with a clear message and a non-zero exit.
+#include "../support/ToolRun.h"
+
 #include <QImage>
 #include <QProcess>
 #include <QSet>
@@ -12,26 +14,14 @@ class TestGuiApp : public QObject
     Q_OBJECT
 
 private:
-    struct Run
-    {
-        int exitCode = -1;
-        QString err;
-    };
+    using Run = learnid::test::ToolRun;
 
     static Run learnid(const QStringList &arguments)
     {
-        QProcess p;
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
         env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
-        p.setProcessEnvironment(env);
-        p.start(QStringLiteral(LEARNID_GUI_PATH), arguments);
-        if (!p.waitForFinished(120000)) {
-            p.kill();
-            p.waitForFinished();
-        }
-        return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
-                QString::fromUtf8(p.readAllStandardError())};
+        return learnid::test::runTool(QStringLiteral(LEARNID_GUI_PATH), arguments, {}, 120000, env);
     }
 
     // Distinct colours in a coarse grid of the picture: a blank or failed render has a handful.
