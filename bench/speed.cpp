@@ -1,10 +1,11 @@
 // Speed benchmark: CPU time of a 6-trial paper-scenario session (simulation at RK4 0.2 ms,
 // planning, safety checks and identification included) and of one identification update over
-// 10^6 samples. Prints Markdown. Usage: learnid-bench-speed [repeats] [--session-only]
+// 10^6 samples. Prints Markdown. Usage: learnid-bench-speed [repeats] [--session-only | --parts]
 // [--law paper|improved] (--session-only skips the 10^6-sample part, e.g. to count instructions
-// under callgrind; --law measures one law only).
+// under callgrind; --parts also times the session's parts one by one; --law measures one law).
 #include "BenchSupport.h"
 #include "identify/LearningLaw.h"
+#include "session/SafetyCheck.h"
 #include "session/TrialPlanner.h"
 
 #include <cstdio>
@@ -38,17 +39,68 @@ TrialPlan longPlan(const Scenario &s, int samples)
     return plan;
 }
 
+// CPU time of each part of a session, run as the session runs them (the same plans, robot and
+// estimates): planning, pre-trial check, simulation, identification update.
+void printParts(const char *lawName, int repeats)
+{
+    Scenario s;
+    s.law = QString::fromLatin1(lawName);
+    auto reference = bench::makeSession(s);
+    if (!reference->runTrials(6))
+        return;
+    const auto model = makeRobotModel(s.model);
+    const auto law = makeLearningLaw(s.law);
+    const char *names[4] = {"planning (6 plans)", "pre-trial checks (6)", "simulation (6 trials)",
+                            "identification (6 updates)"};
+    std::vector<double> times[4];
+    for (int r = 0; r < repeats; ++r) {
+        const TrialPlanner planner(s, model);
+        SimulatedRobot robot(model, s.trueParameters);
+        std::vector<TrialPlan> plans(6);
+        std::vector<TrialRecord> records(6);
+        std::vector<std::shared_ptr<LawCache>> caches(6);
+        double sum[4] = {0, 0, 0, 0};
+        for (int k = 0; k < 6; ++k) {
+            const Eigen::VectorXd &phi = reference->estimates()[k];
+            double t[5];
+            t[0] = bench::cpuSeconds();
+            plans[k] = planner.plan(phi);
+            t[1] = bench::cpuSeconds();
+            checkTrial(*model, phi, plans[k], s.stabilityMargin);
+            t[2] = bench::cpuSeconds();
+            records[k] = robot.runTrial(plans[k], {});
+            t[3] = bench::cpuSeconds();
+            std::vector<TrialData> data;
+            for (int i = 0; i <= k; ++i)
+                data.push_back({&plans[i], &records[i], &caches[i]});
+            law->update(*model, data, phi, s.estimator);
+            t[4] = bench::cpuSeconds();
+            for (int i = 0; i < 4; ++i)
+                sum[i] += t[i + 1] - t[i];
+        }
+        for (int i = 0; i < 4; ++i)
+            times[i].push_back(sum[i]);
+    }
+    for (int i = 0; i < 4; ++i)
+        std::printf("| %s | %s | %.1f ms | %d |\n", names[i], lawName,
+                    1e3 * bench::median(times[i]), repeats);
+}
+
 } // namespace
 
 int main(int argc, char **argv)
 {
     const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 15;
     bool sessionOnly = false;
+    bool parts = false;
     std::vector<const char *> laws = {"paper", "improved"};
     for (int i = 2; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--session-only") {
             sessionOnly = true;
+        } else if (arg == "--parts") {
+            sessionOnly = true;
+            parts = true;
         } else if (arg == "--law" && i + 1 < argc) {
             const std::string law = argv[++i];
             if (law != "paper" && law != "improved") {
@@ -76,6 +128,8 @@ int main(int argc, char **argv)
         }
         std::printf("| 6-trial paper-scenario session, simulation included | %s | %.1f ms | %d |\n",
                     law, 1e3 * bench::median(times), repeats);
+        if (parts)
+            printParts(law, repeats);
     }
 
     if (sessionOnly)

@@ -3,6 +3,7 @@
 #include "identify/FilteringEstimator.h"
 #include "identify/GramBlock.h"
 #include "model/Error.h"
+#include "model/VectorState.h"
 
 #include <QCoreApplication>
 #include <cmath>
@@ -107,6 +108,7 @@ ParameterUpdate ImprovedLaw::update(const RobotModel &model, const std::vector<T
                                     const Eigen::VectorXd &phiPrev,
                                     const EstimatorSettings &settings) const
 {
+    clearUpperVectorState();
     if (trials.empty())
         throw Error(QCoreApplication::translate("LearningLaw", "no completed trial to learn from"));
     const size_t first = settings.accumulate ? 0 : trials.size() - 1;

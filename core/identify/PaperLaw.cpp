@@ -3,6 +3,7 @@
 #include "identify/FilteringEstimator.h"
 #include "identify/GramBlock.h"
 #include "model/Error.h"
+#include "model/VectorState.h"
 
 #include <QCoreApplication>
 
@@ -12,6 +13,7 @@ ParameterUpdate PaperLaw::update(const RobotModel &model, const std::vector<Tria
                                  const Eigen::VectorXd &phiPrev,
                                  const EstimatorSettings &settings) const
 {
+    clearUpperVectorState();
     if (trials.empty())
         throw Error(QCoreApplication::translate("LearningLaw", "no completed trial to learn from"));
     const TrialPlan &plan = *trials.back().plan;

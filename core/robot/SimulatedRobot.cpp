@@ -1,6 +1,7 @@
 #include "robot/SimulatedRobot.h"
 
 #include "control/PidController.h"
+#include "model/VectorState.h"
 
 #include <QCoreApplication>
 #include <cmath>
@@ -33,6 +34,7 @@ QString SimulatedRobot::description() const
 
 TrialRecord SimulatedRobot::runTrial(const TrialPlan &plan, const TrialMonitor &monitor)
 {
+    clearUpperVectorState();
     const quint64 noiseStream = m_trialCount++;
     if (m_model->dof() == 2)
         return simulate<2>(plan, monitor, noiseStream);
@@ -104,8 +106,10 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
             tauPlant += disturbance;
         arm.integrate(tauPlant);
 
-        if (monitor.progress && ((k + 1) % 100 == 0 || k + 1 == samples))
+        if (monitor.progress && ((k + 1) % 100 == 0 || k + 1 == samples)) {
             monitor.progress(k + 1, samples);
+            clearUpperVectorState(); // the report may have run Qt code (a signal)
+        }
     }
     record.q.conservativeResize(n, recorded);
     record.tau.conservativeResize(n, recorded);

@@ -1,6 +1,7 @@
 #include "session/SafetyCheck.h"
 
 #include "control/PidController.h"
+#include "model/VectorState.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
@@ -143,6 +144,7 @@ void checkPath(const RobotModel &model, const Eigen::VectorXd &phiHat, const Tri
 SafetyVerdict checkTrial(const RobotModel &model, const Eigen::VectorXd &phiHat,
                          const TrialPlan &plan, double margin, int points)
 {
+    clearUpperVectorState();
     const int n = model.dof();
     const double ts = plan.desired.samplePeriod;
     SafetyVerdict v;

@@ -1,6 +1,7 @@
 #include "session/TrialPlanner.h"
 
 #include "model/Error.h"
+#include "model/VectorState.h"
 #include "motion/TwoLinkKinematics.h"
 
 #include <QCoreApplication>
@@ -22,6 +23,7 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
 
 TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ruleOut) const
 {
+    clearUpperVectorState();
     const TorqueRuleResult rule = shortestDuration(m_ruleGrid, phiHat, m_scenario.torqueLimits,
                                                    m_scenario.planningFraction);
     if (ruleOut)
