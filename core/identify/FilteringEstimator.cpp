@@ -70,6 +70,37 @@ void FilteringEstimator::runLowPass(const double *x, int n, double *out) const
 }
 
 template <bool reversed>
+void FilteringEstimator::runLowPassPairInPlace(double *x, double *w, int n) const
+{
+    // runLowPass() on x and on w, in place, interleaved: the same operations per signal.
+    if (n == 0)
+        return;
+    const int first = reversed ? n - 1 : 0;
+    const int step = reversed ? -1 : 1;
+    const double g = m_sectionGain;
+    double u0 = x[first], y1 = u0, y2 = u0, y3 = u0;
+    double v0 = w[first], z1 = v0, z2 = v0, z3 = v0;
+    for (int i = 0, k = first; i < n; ++i, k += step) {
+        const double u = x[k];
+        const double v = w[k];
+        const double y1New = lowPassSection(y1, u, u0, g);
+        const double z1New = lowPassSection(z1, v, v0, g);
+        const double y2New = lowPassSection(y2, y1New, y1, g);
+        const double z2New = lowPassSection(z2, z1New, z1, g);
+        y3 = lowPassSection(y3, y2New, y2, g);
+        z3 = lowPassSection(z3, z2New, z2, g);
+        x[k] = y3;
+        w[k] = z3;
+        u0 = u;
+        v0 = v;
+        y1 = y1New;
+        z1 = z1New;
+        y2 = y2New;
+        z2 = z2New;
+    }
+}
+
+template <bool reversed>
 void FilteringEstimator::runAllOutputs(const double *x, int n, double *out) const
 {
     if (n == 0)
@@ -167,6 +198,18 @@ void FilteringEstimator::zeroPhaseLowPassInPlace(double *x, Eigen::Index n) cons
     // Each step reads its input sample before it writes the output over it.
     runLowPass<false>(x, int(n), x);
     runLowPass<true>(x, int(n), x);
+}
+
+void FilteringEstimator::zeroPhaseLowPassInPlace(const std::vector<double *> &series,
+                                                 Eigen::Index n) const
+{
+    size_t i = 0;
+    for (; i + 1 < series.size(); i += 2) {
+        runLowPassPairInPlace<false>(series[i], series[i + 1], int(n));
+        runLowPassPairInPlace<true>(series[i], series[i + 1], int(n));
+    }
+    if (i < series.size())
+        zeroPhaseLowPassInPlace(series[i], n);
 }
 
 void FilteringEstimator::filterInto(double *x, Eigen::Index n, bool zeroPhase, double *out) const

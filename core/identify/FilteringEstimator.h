@@ -3,6 +3,7 @@
 #include "control/StateSpace.h"
 
 #include <Eigen/Core>
+#include <vector>
 
 namespace learnid {
 
@@ -36,6 +37,10 @@ public:
     Eigen::RowVectorXd zeroPhaseLowPass(const Eigen::Ref<const Eigen::RowVectorXd> &x) const;
     /// zeroPhaseLowPass() of the n samples at x, in place (no copies: for long records).
     void zeroPhaseLowPassInPlace(double *x, Eigen::Index n) const;
+    /// The same on several signals of n samples each, two at a time in one pass: each filter
+    /// recursion waits on its own previous output, so a second one runs in the first's latency.
+    /// The results are those of one signal at a time, to the bit.
+    void zeroPhaseLowPassInPlace(const std::vector<double *> &series, Eigen::Index n) const;
     /// causal() or zeroPhase() of the n samples at x into out (3 x n, column-major) without
     /// copies; zeroPhase overwrites x with its forward pass.
     void filterInto(double *x, Eigen::Index n, bool zeroPhase, double *out) const;
@@ -49,6 +54,7 @@ public:
 private:
     template <bool reversed> void runAllOutputs(const double *x, int n, double *out) const;
     template <bool reversed> void runLowPass(const double *x, int n, double *out) const;
+    template <bool reversed> void runLowPassPairInPlace(double *x, double *w, int n) const;
 
     double m_rho;
     double m_ts;

@@ -43,25 +43,26 @@ std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialPlan &p
     // is the filtered signal of W(j, i); entries that are identically zero stay zero.
     const int rows = samples - 1;
     std::vector<Eigen::MatrixXd> a(size_t(n), Eigen::MatrixXd(rows, m));
-    std::vector<bool> zero(size_t(n * m));
+    std::vector<double *> nonzero;
     for (int j = 0; j < n; ++j) {
         for (int i = 0; i < m; ++i) {
             const int r = i * n + j;
             auto column = a[size_t(j)].col(i);
-            zero[size_t(r)] = w.row(r).isZero(0.0);
-            if (zero[size_t(r)]) {
+            if (w.row(r).isZero(0.0)) {
                 column.setZero();
                 continue;
             }
             column = 0.5 * (w.row(r).head(rows) + w.row(r).tail(rows)).transpose();
-            filter.zeroPhaseLowPassInPlace(column.data(), rows);
+            nonzero.push_back(column.data());
         }
     }
     Eigen::MatrixXd tauf(rows, n);
+    std::vector<double *> series = nonzero; // and the torques: all filtered in pairs
     for (int j = 0; j < n; ++j) {
         tauf.col(j) = record.tau.row(j).head(rows).transpose();
-        filter.zeroPhaseLowPassInPlace(tauf.col(j).data(), rows);
+        series.push_back(tauf.col(j).data());
     }
+    filter.zeroPhaseLowPassInPlace(series, rows);
 
     // 4. OLS gives each joint's residual level in this trial; its rows get the inverse weight.
     // The block is then taken about the OLS estimate, so that its residuals are computed from
@@ -76,13 +77,9 @@ std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialPlan &p
     }
 
     // Torque noise reaches b through F(s)F(-s), a symmetric operator (H^T = H).
-    for (int j = 0; j < n; ++j) {
-        Eigen::MatrixXd &h = a[size_t(j)];
-        for (int i = 0; i < m; ++i)
-            if (!zero[size_t(i * n + j)])
-                filter.zeroPhaseLowPassInPlace(h.col(i).data(), rows);
-        out->block.setJointShapedRows(j, h);
-    }
+    filter.zeroPhaseLowPassInPlace(nonzero, rows);
+    for (int j = 0; j < n; ++j)
+        out->block.setJointShapedRows(j, a[size_t(j)]);
     return out;
 }
 

@@ -254,6 +254,20 @@ void TestFilteringEstimator::singleOutputVariants_equalFirstRow()
     stacked.row(1) = x;
     LEARNID_COMPARE_MATRIX(f.causal(stacked.row(1)), f.causal(x), 0.0);
     LEARNID_COMPARE_MATRIX(f.zeroPhase(stacked.row(1)), f.zeroPhase(x), 0.0);
+    // In place, one signal or several (filtered two at a time, the third alone): the same
+    // numbers, to the bit.
+    const Eigen::RowVectorXd expected = f.zeroPhaseLowPass(x);
+    Eigen::RowVectorXd single = x;
+    f.zeroPhaseLowPassInPlace(single.data(), single.size());
+    LEARNID_COMPARE_MATRIX(single, expected, 0.0);
+    Eigen::MatrixXd columns(x.size(), 3);
+    for (int c = 0; c < 3; ++c)
+        columns.col(c) = (c + 1.0) * x.transpose();
+    f.zeroPhaseLowPassInPlace({columns.col(0).data(), columns.col(1).data(), columns.col(2).data()},
+                              x.size());
+    for (int c = 0; c < 3; ++c)
+        LEARNID_COMPARE_MATRIX(columns.col(c).transpose(),
+                               f.zeroPhaseLowPass((c + 1.0) * x), 0.0);
 }
 
 // causal() runs first-order sections; the discrete state space it realises, stepped directly
