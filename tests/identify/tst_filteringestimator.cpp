@@ -266,8 +266,7 @@ void TestFilteringEstimator::singleOutputVariants_equalFirstRow()
     f.zeroPhaseLowPassInPlace({columns.col(0).data(), columns.col(1).data(), columns.col(2).data()},
                               x.size());
     for (int c = 0; c < 3; ++c)
-        LEARNID_COMPARE_MATRIX(columns.col(c).transpose(),
-                               f.zeroPhaseLowPass((c + 1.0) * x), 0.0);
+        LEARNID_COMPARE_MATRIX(columns.col(c).transpose(), f.zeroPhaseLowPass((c + 1.0) * x), 0.0);
 }
 
 // causal() runs first-order sections; the discrete state space it realises, stepped directly
