@@ -9,10 +9,10 @@ namespace learnid {
 /// and returns without vzeroupper. On Intel CPUs every SSE instruction that follows then carries
 /// a false dependency on those dirty upper halves: this project's numerical code ran two to five
 /// times slower after any QHash use (a trial plan 0.25 ms, then 1.3 ms; the 6-trial session
-/// 31-39 ms, then 17-18 ms with the state cleared; docs/benchmarks.md). Qt uses QHash
-/// everywhere (meta types, signals, logging), so the numerical entry points (planning, the
-/// pre-trial check, the simulation, the learning laws) call this first, and the simulation again
-/// after each progress report. It costs one instruction; code compiled with AVX needs none.
+/// twice as long; docs/benchmarks.md, "Speed"). Qt uses QHash everywhere (meta types, signals,
+/// logging), so the numerical entry points (planning, the pre-trial check, the simulation, the
+/// learning laws) call this first, and the simulation again after each progress report. It
+/// costs one instruction; code compiled with AVX needs none.
 inline void clearUpperVectorState()
 {
 #if defined(__x86_64__) && !defined(__AVX__) && (defined(__GNUC__) || defined(__clang__))
