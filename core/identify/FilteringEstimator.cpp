@@ -45,6 +45,31 @@ inline double differenceSection(double y, double u, double u0, double g)
     return y + g * ((u - u0) - 2.0 * y);
 }
 
+// F = S+ S+ S+ on one signal, sample by sample, started at rest at `rest`: every section's
+// input and output equal it (unit DC gain).
+struct LowPassChain
+{
+    double u0, y1, y2, y3;
+
+    explicit LowPassChain(double rest)
+        : u0(rest)
+        , y1(rest)
+        , y2(rest)
+        , y3(rest)
+    {}
+
+    double step(double u, double g)
+    {
+        const double y1New = lowPassSection(y1, u, u0, g);
+        const double y2New = lowPassSection(y2, y1New, y1, g);
+        y3 = lowPassSection(y3, y2New, y2, g);
+        u0 = u;
+        y1 = y1New;
+        y2 = y2New;
+        return y3;
+    }
+};
+
 } // namespace
 
 template <bool reversed>
@@ -54,49 +79,24 @@ void FilteringEstimator::runLowPass(const double *x, int n, double *out) const
         return;
     const int first = reversed ? n - 1 : 0;
     const int step = reversed ? -1 : 1;
-    const double g = m_sectionGain;
-    // At rest at x[first]: every section's input and output equal it (unit DC gain).
-    double u0 = x[first], y1 = u0, y2 = u0, y3 = u0;
-    for (int i = 0, k = first; i < n; ++i, k += step) {
-        const double u = x[k];
-        const double y1New = lowPassSection(y1, u, u0, g);
-        const double y2New = lowPassSection(y2, y1New, y1, g);
-        y3 = lowPassSection(y3, y2New, y2, g);
-        out[k] = y3;
-        u0 = u;
-        y1 = y1New;
-        y2 = y2New;
-    }
+    LowPassChain f(x[first]);
+    for (int i = 0, k = first; i < n; ++i, k += step)
+        out[k] = f.step(x[k], m_sectionGain);
 }
 
 template <bool reversed>
 void FilteringEstimator::runLowPassPairInPlace(double *x, double *w, int n) const
 {
-    // runLowPass() on x and on w, in place, interleaved: the same operations per signal.
+    // runLowPass() on x and on w, in place, in one loop: two independent chains.
     if (n == 0)
         return;
     const int first = reversed ? n - 1 : 0;
     const int step = reversed ? -1 : 1;
-    const double g = m_sectionGain;
-    double u0 = x[first], y1 = u0, y2 = u0, y3 = u0;
-    double v0 = w[first], z1 = v0, z2 = v0, z3 = v0;
+    LowPassChain f(x[first]);
+    LowPassChain h(w[first]);
     for (int i = 0, k = first; i < n; ++i, k += step) {
-        const double u = x[k];
-        const double v = w[k];
-        const double y1New = lowPassSection(y1, u, u0, g);
-        const double z1New = lowPassSection(z1, v, v0, g);
-        const double y2New = lowPassSection(y2, y1New, y1, g);
-        const double z2New = lowPassSection(z2, z1New, z1, g);
-        y3 = lowPassSection(y3, y2New, y2, g);
-        z3 = lowPassSection(z3, z2New, z2, g);
-        x[k] = y3;
-        w[k] = z3;
-        u0 = u;
-        v0 = v;
-        y1 = y1New;
-        z1 = z1New;
-        y2 = y2New;
-        z2 = z2New;
+        x[k] = f.step(x[k], m_sectionGain);
+        w[k] = h.step(w[k], m_sectionGain);
     }
 }
 
