@@ -24,10 +24,22 @@ private slots:
     void plannedTorqueAboveLimit_isRefusedNamingTheJoint();
 
 private:
+    // The plan of scenario s with phi cut to its first 10 samples: the start pose at rest.
+    TrialPlan restPlan(const Scenario &s, const Eigen::VectorXd &phi) const;
+
     std::shared_ptr<TwoLinkArm> m_model = std::make_shared<TwoLinkArm>();
     Eigen::VectorXd m_truth = Eigen::Vector3d(20, 5, 8);
     Eigen::VectorXd m_initial = Eigen::Vector3d(40, 20, 30);
 };
+
+TrialPlan TestSafetyCheck::restPlan(const Scenario &s, const Eigen::VectorXd &phi) const
+{
+    TrialPlan plan = TrialPlanner(s, m_model).plan(phi);
+    for (Eigen::MatrixXd *m :
+         {&plan.desired.q, &plan.desired.qd, &plan.desired.qdd, &plan.feedforward})
+        m->conservativeResize(Eigen::NoChange, 10);
+    return plan;
+}
 
 void TestSafetyCheck::paperGainsWithLambda200_areStableAlongThePath()
 {
@@ -77,11 +89,7 @@ void TestSafetyCheck::restVerdict_agreesWithContinuousTimePoles()
     QFETCH(Eigen::VectorXd, phi);
     Scenario s;
     s.controller.lambda = lambda;
-    TrialPlan plan = TrialPlanner(s, m_model).plan(phi);
-    // Keep only the first rest samples: the start pose at rest.
-    for (Eigen::MatrixXd *m :
-         {&plan.desired.q, &plan.desired.qd, &plan.desired.qdd, &plan.feedforward})
-        m->conservativeResize(Eigen::NoChange, 10);
+    const TrialPlan plan = restPlan(s, phi);
     const SafetyVerdict v = checkTrial(*m_model, phi, plan);
 
     Eigen::MatrixXd m(2, 2);
@@ -112,10 +120,7 @@ void TestSafetyCheck::restRadius_equalsTheLoopBuiltFromTheStateSpaceHelpers()
     for (double lambda : {40.0, 200.0}) {
         Scenario s;
         s.controller.lambda = lambda;
-        TrialPlan plan = TrialPlanner(s, m_model).plan(m_truth);
-        for (Eigen::MatrixXd *m :
-             {&plan.desired.q, &plan.desired.qd, &plan.desired.qdd, &plan.feedforward})
-            m->conservativeResize(Eigen::NoChange, 10);
+        const TrialPlan plan = restPlan(s, m_truth);
         const SafetyVerdict v = checkTrial(*m_model, m_truth, plan);
 
         Eigen::MatrixXd m(2, 2);

@@ -7,6 +7,19 @@
 
 using namespace learnid;
 
+namespace {
+
+// Opens the default scenario and waits for the worker's first pre-trial check.
+bool openDefaultScenario(SessionController &c)
+{
+    const Scenario defaults;
+    QSignalSpy checked(&c, &SessionController::checkChanged);
+    c.open(defaults);
+    return checked.wait(20000);
+}
+
+} // namespace
+
 class TestSessionController : public QObject
 {
     Q_OBJECT
@@ -15,9 +28,7 @@ private slots:
     void open_plansAndChecksTheFirstTrial()
     {
         SessionController c;
-        QSignalSpy checked(&c, &SessionController::checkChanged);
-        c.open(Scenario{});
-        QVERIFY(checked.wait(20000));
+        QVERIFY(openDefaultScenario(c));
         QVERIFY(c.isOpen());
         QVERIFY(c.lastCheck()->passed());
         QCOMPARE(c.estimates().size(), 1);
@@ -28,9 +39,7 @@ private slots:
     void runTrial_deliversValueCopiesOffTheGuiThread()
     {
         SessionController c;
-        QSignalSpy checked(&c, &SessionController::checkChanged);
-        c.open(Scenario{});
-        QVERIFY(checked.wait(20000));
+        QVERIFY(openDefaultScenario(c));
         QSignalSpy finished(&c, &SessionController::runFinished);
         QSignalSpy progress(&c, &SessionController::progress);
         c.runTrial();
@@ -47,9 +56,7 @@ private slots:
     void trialSamples_stayWithTheSessionAndExportFromThere()
     {
         SessionController c;
-        QSignalSpy checked(&c, &SessionController::checkChanged);
-        c.open(Scenario{});
-        QVERIFY(checked.wait(20000));
+        QVERIFY(openDefaultScenario(c));
         QSignalSpy trial(&c, &SessionController::trialFinished);
         QSignalSpy finished(&c, &SessionController::runFinished);
         c.runTrial();
@@ -84,12 +91,10 @@ private slots:
     void faultedTrial_isKeptAndLeavesTheEstimate()
     {
         SessionController c;
-        QSignalSpy checked(&c, &SessionController::checkChanged);
         SimulatedFaults faults;
         faults.driveFaultAtSample = 300;
         c.setSimulatedFaults(faults);
-        c.open(Scenario{});
-        QVERIFY(checked.wait(20000));
+        QVERIFY(openDefaultScenario(c));
         QSignalSpy finished(&c, &SessionController::runFinished);
         c.runTrial();
         QVERIFY(finished.wait(20000));
@@ -102,9 +107,7 @@ private slots:
     void applyWithoutAccept_isRefused()
     {
         SessionController c;
-        QSignalSpy checked(&c, &SessionController::checkChanged);
-        c.open(Scenario{});
-        QVERIFY(checked.wait(20000));
+        QVERIFY(openDefaultScenario(c));
         QSignalSpy failed(&c, &SessionController::operationFailed);
         c.apply();
         QVERIFY(failed.wait(20000));
