@@ -3,11 +3,15 @@
 # Sourced by scripts/run and scripts/test; needs root (or sudo) when something is missing.
 set -euo pipefail
 
+# Complete for a bare Debian 12 (debootstrap --variant=minbase), checked by CI's clean-room
+# stage (.ci/run). Debian's qt6-charts-dev does not pull in the Qt6OpenGL CMake package that
+# Qt6Charts' config asks for (libqt6opengl6-dev); CPack's DEB generator runs `file`.
 LEARNID_PACKAGES=(
     build-essential cmake ninja-build pkg-config
-    qt6-base-dev qt6-charts-dev qt6-serialbus-dev qt6-tools-dev qt6-l10n-tools
-    qt6-tools-dev-tools qt6-qpa-plugins libgl-dev libeigen3-dev
-    xvfb xauth qt6-svg-dev dpkg-dev  # dpkg-dev: tst_package (dpkg-shlibdeps)
+    qt6-base-dev qt6-charts-dev libqt6opengl6-dev qt6-serialbus-dev qt6-tools-dev
+    qt6-l10n-tools qt6-tools-dev-tools qt6-qpa-plugins libgl-dev libeigen3-dev
+    xvfb xauth qt6-svg-dev
+    dpkg-dev file  # tst_package: dpkg-shlibdeps, and CPack's DEB generator runs `file`
     clang libclang-rt-14-dev  # scripts/fuzz: libFuzzer and the sanitizer runtimes of clang
 )
 

@@ -1,10 +1,14 @@
 # cmake -P PackageTest.cmake with -DCPACK= -DDPKG= -DDPKG_DEB= -DOBJDUMP= -DCONFIG=<CPackConfig>
-# -DWORK=<scratch dir> -DVERSION=<project version> -DPROGRAMS=a,b,c
+# -DWORK=<scratch dir> -DVERSION=<project version> -DPROGRAMS=a,b,c [-DMISSING=tools not found]
 # Builds the .deb, unpacks it with dpkg -x and checks it: control fields, files, the Qt
 # libraries the binaries link among the Depends, no absolute RPATH, and the installed
 # executables running from the scratch root with the system's Qt (LD_LIBRARY_PATH unset).
 cmake_minimum_required(VERSION 3.24)
 string(REPLACE "," ";" PROGRAMS "${PROGRAMS}")
+if(MISSING)
+    message(FATAL_ERROR "cannot build the package, not found at configure time: ${MISSING} "
+                        "(scripts/deps.sh installs dpkg-dev, binutils and file)")
+endif()
 
 function(run what)  # run(<what> <command...>): runs it, fails naming <what>; sets OUT
     execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
