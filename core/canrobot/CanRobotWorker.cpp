@@ -18,6 +18,35 @@
 
 namespace learnid {
 
+/// The CANopen units on one open connection. Members are built in declaration order: the
+/// recorder first, so that it sees each received frame before a unit answers it.
+struct ConnectionUnits
+{
+    explicit ConnectionUnits(CanConnection *connection, const CanRobotOptions &options)
+        : recorder(connection->link(), options.interface)
+        , sdo(connection->link())
+        , sequence(&sdo)
+        , nmt(connection->link())
+        , heartbeat(connection->link())
+        , emcy(connection->link())
+        , streamer(connection->link(), &nmt, &heartbeat, &emcy)
+    {
+        sdo.setTimeout(options.sdoTimeoutMs);
+        streamer.setLatencyClock({[connection] { return connection->lastArrivalNs(); },
+                                  [connection] {
+                                      return connection->nowNs();
+                                  }});
+    }
+
+    CandumpRecorder recorder;
+    SdoClient sdo;
+    SdoSequence sequence;
+    Nmt nmt;
+    HeartbeatConsumer heartbeat;
+    EmcyConsumer emcy;
+    TrialStreamer streamer;
+};
+
 namespace {
 
 TrialRecord notStarted(double ts, TrialStatus status, const QString &message)
@@ -60,10 +89,8 @@ void CanRobotWorker::connectBus(std::function<void(const QString &)> done)
             this, [done, invalid] { done(invalid); }, Qt::QueuedConnection);
         return;
     }
-    if (m_units && !m_connection->isConnected()) {
-        delete m_units; // built on the link of a connection that was lost
-        m_units = nullptr;
-    }
+    if (m_units && !m_connection->isConnected())
+        m_units.reset(); // built on the link of a connection that was lost
     m_connection->open([this, done](const QString &error) {
         if (error.isEmpty())
             ensureUnits();
@@ -73,33 +100,20 @@ void CanRobotWorker::connectBus(std::function<void(const QString &)> done)
 
 void CanRobotWorker::ensureUnits()
 {
-    if (m_units)
-        return;
-    CanLink *link = m_connection->link();
-    m_units = new QObject(this);
-    // The recorder first: it must see each received frame before a unit answers it.
-    m_recorder = new CandumpRecorder(link, m_options.interface, m_units);
-    m_sdo = new SdoClient(link, m_units);
-    m_sdo->setTimeout(m_options.sdoTimeoutMs);
-    m_sequence = new SdoSequence(m_sdo, m_units);
-    m_nmt = new Nmt(link, m_units);
-    m_heartbeat = new HeartbeatConsumer(link, m_units);
-    m_emcy = new EmcyConsumer(link, m_units);
-    m_streamer = new TrialStreamer(link, m_nmt, m_heartbeat, m_emcy, m_units);
-    CanConnection *connection = m_connection;
-    m_streamer->setLatencyClock({[connection] { return connection->lastArrivalNs(); },
-                                 [connection] {
-                                     return connection->nowNs();
-                                 }});
+    if (!m_units)
+        m_units = std::make_unique<ConnectionUnits>(m_connection, m_options);
 }
 
 void CanRobotWorker::onLost(const QString &reason)
 {
     qCWarning(lcCan).noquote() << reason;
-    if (m_sequence && m_sequence->isRunning())
-        m_sequence->cancel(reason);
-    if (m_streamer && m_streamer->isRunning())
-        m_streamer->abort(TrialStatus::Faulted, tr("%1 %2").arg(reason, m_streamer->where()));
+    if (!m_units)
+        return;
+    if (m_units->sequence.isRunning())
+        m_units->sequence.cancel(reason);
+    if (m_units->streamer.isRunning())
+        m_units->streamer.abort(TrialStatus::Faulted,
+                                tr("%1 %2").arg(asClause(reason), m_units->streamer.where()));
     // The units stay until the next call reconnects and builds new ones (connectBus).
 }
 
@@ -136,12 +150,13 @@ void CanRobotWorker::configure(const TrialPlan &plan, const TrialMonitor &monito
     } catch (const Error &e) {
         return endTrial(notStarted(m_samplePeriod, TrialStatus::Refused, e.message()));
     }
-    m_recorder->start();
-    m_heartbeat->stopAll();
-    if (!m_nmt->enterPreOperational(0))
+    ConnectionUnits &units = *m_units; // connectBus succeeded just now
+    units.recorder.start();
+    units.heartbeat.stopAll();
+    if (!units.nmt.enterPreOperational(0))
         return endTrial(
             notStarted(m_samplePeriod, TrialStatus::Faulted, m_connection->link()->lastError()));
-    m_sequence->run(steps, [this, plan, monitor](const QString &error) {
+    units.sequence.run(steps, [this, plan, monitor](const QString &error) {
         if (!error.isEmpty())
             return endTrial(
                 notStarted(m_samplePeriod, TrialStatus::Faulted,
@@ -149,24 +164,25 @@ void CanRobotWorker::configure(const TrialPlan &plan, const TrialMonitor &monito
         if (monitor.cancelled())
             return endTrial(notStarted(m_samplePeriod, TrialStatus::Cancelled,
                                        tr("stopped by the operator before the drives moved")));
-        m_streamer->start(*m_model, plan, m_options.nodes, m_configuration->scaling, m_options,
+        m_units->streamer.start(*m_model, plan, m_options.nodes, m_configuration->scaling, m_options,
                           monitor, [this](const TrialRecord &record) { endTrial(record); });
     });
 }
 
 void CanRobotWorker::endTrial(TrialRecord record)
 {
-    if (m_streamer)
-        m_stats = m_streamer->statistics();
-    if (m_recorder && m_recorder->isRecording()) {
-        m_recorder->stop();
+    CandumpRecorder *recorder = m_units ? &m_units->recorder : nullptr;
+    if (m_units)
+        m_stats = m_units->streamer.statistics();
+    if (recorder && recorder->isRecording()) {
+        recorder->stop();
         if (!m_options.candumpDir.isEmpty()) {
             QDir().mkpath(m_options.candumpDir);
             const QString file =
                 QDir(m_options.candumpDir)
                     .filePath(
                         QStringLiteral("trial-%1.log").arg(m_trials, 3, 10, QLatin1Char('0')));
-            const QString error = m_recorder->save(file);
+            const QString error = recorder->save(file);
             if (!error.isEmpty()) {
                 qCWarning(lcCan).noquote() << error;
                 if (record.completed()) {
@@ -193,29 +209,28 @@ void CanRobotWorker::apply(const Eigen::VectorXd &phi, std::function<void(const 
     }
     connectBus([this, steps, done](const QString &error) {
         if (!error.isEmpty())
-            return done(tr("%1; the stored parameters are unchanged").arg(error));
+            return done(tr("%1; the stored parameters are unchanged").arg(asClause(error)));
         int stores = 0;
         for (const SdoStep &s : steps)
             stores += s.index == 0x1010 ? 1 : 0;
         const int firstStore = int(steps.size()) - stores;
-        m_sequence->run(steps, [this, done, firstStore](const QString &error) {
+        SdoSequence *sequence = &m_units->sequence; // connectBus succeeded just now
+        sequence->run(steps, [done, firstStore, sequence](const QString &error) {
             if (error.isEmpty())
                 return done({});
-            if (m_sequence->stepsDone() < firstStore)
-                return done(tr("%1; nothing was stored (0x1010 not written)").arg(error));
+            if (sequence->stepsDone() < firstStore)
+                return done(
+                    tr("%1; nothing was stored (0x1010 not written)").arg(asClause(error)));
             done(tr("%1; storing stopped at node %2 of the list")
-                     .arg(error)
-                     .arg(m_sequence->stepsDone() - firstStore + 1));
+                     .arg(asClause(error))
+                     .arg(sequence->stepsDone() - firstStore + 1));
         });
     });
 }
 
 void CanRobotWorker::shutdown()
 {
-    if (m_units) {
-        delete m_units;
-        m_units = nullptr;
-    }
+    m_units.reset();
     m_connection->close();
 }
 

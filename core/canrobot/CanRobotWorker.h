@@ -12,12 +12,7 @@
 namespace learnid {
 
 class CanConnection;
-class CandumpRecorder;
-class EmcyConsumer;
-class HeartbeatConsumer;
-class Nmt;
-class SdoClient;
-class SdoSequence;
+struct ConnectionUnits;
 struct NodeConfigurationResult;
 
 /// The CAN robot's work in its own thread: the connection, the CANopen units on it, the
@@ -52,15 +47,9 @@ private:
     std::shared_ptr<const RobotModel> m_model;
     CanRobotOptions m_options;
     CanConnection *m_connection = nullptr;
-    // The units of the current connection (children of unitsParent, rebuilt on reconnect).
-    QObject *m_units = nullptr;
-    SdoClient *m_sdo = nullptr;
-    SdoSequence *m_sequence = nullptr;
-    Nmt *m_nmt = nullptr;
-    HeartbeatConsumer *m_heartbeat = nullptr;
-    EmcyConsumer *m_emcy = nullptr;
-    TrialStreamer *m_streamer = nullptr;
-    CandumpRecorder *m_recorder = nullptr;
+    /// The protocol units of the current connection, built and destroyed as a whole: they hold
+    /// the connection's link, so none may outlive it (null while there is no connection).
+    std::unique_ptr<ConnectionUnits> m_units;
 
     std::function<void(const TrialRecord &)> m_trialDone;
     std::shared_ptr<NodeConfigurationResult> m_configuration;

@@ -20,4 +20,11 @@ private:
     QString m_message;
 };
 
+/// A message without its final full stop, to go on with it: "%1; nothing was stored".
+/// Messages are whole sentences when they stand alone; a sentence ends once.
+inline QString asClause(const QString &message)
+{
+    return message.endsWith(QLatin1Char('.')) ? message.chopped(1) : message;
+}
+
 } // namespace learnid

@@ -26,6 +26,7 @@ struct Setup
     CanRobotOptions options;
     std::unique_ptr<CanRobotWorker> worker;
     QPointer<MemoryCanDevice> master; ///< the master's device, once connected
+    QString refuseDevice; ///< when set, the factory makes no device and answers this error
 
     explicit Setup(CanRobotOptions o = {})
         : options(std::move(o))
@@ -35,10 +36,15 @@ struct Setup
         options.plugin = QStringLiteral("memory");
         options.interface = QStringLiteral("master");
         MemoryCanBus *b = &bus;
-        worker = std::make_unique<CanRobotWorker>(test::testModel(), options, [this, b](QString *) {
-            master = new MemoryCanDevice(QStringLiteral("master"), b);
-            return master.data();
-        });
+        worker = std::make_unique<CanRobotWorker>(
+            test::testModel(), options, [this, b](QString *error) -> QCanBusDevice * {
+                if (!refuseDevice.isEmpty()) {
+                    *error = refuseDevice;
+                    return nullptr;
+                }
+                master = new MemoryCanDevice(QStringLiteral("master"), b);
+                return master.data();
+            });
     }
 
     TrialRecord run(const TrialPlan &plan, const TrialMonitor &monitor = {})
@@ -89,6 +95,8 @@ private slots:
     void apply_writesReadsBackAndStores();
     void apply_readBackMismatch_storesNothing();
     void apply_abort_storesNothing();
+    void lostConnection_failedReconnect_trialAndApplyEndWithTheError();
+    void apply_silentNode_saysSoInOneSentence();
 };
 
 void TestCanRobotWorker::trial_collectsSamplesBySyncAcrossCounterWrap()
@@ -276,6 +284,46 @@ void TestCanRobotWorker::apply_abort_storesNothing()
     QVERIFY2(error.contains(QLatin1String("0x1010 not written")), qPrintable(error));
     QCOMPARE(s.drives.node(1).stores, 0);
     QCOMPARE(s.drives.node(2).stores, 0);
+}
+
+// The units of a lost connection are gone when its reconnect fails: a trial and an apply must
+// end with the reconnect's error (under ASan: no use of the units freed with the connection).
+void TestCanRobotWorker::lostConnection_failedReconnect_trialAndApplyEndWithTheError()
+{
+    Setup s;
+    const Eigen::Vector3d phi(20.5, 5.25, 8.125);
+    QCOMPARE(s.apply(phi), QString()); // connects and builds the units
+    QVERIFY(s.master);
+    s.master->injectError(QStringLiteral("cable unplugged"), QCanBusDevice::ConnectionError, true);
+    s.refuseDevice = QStringLiteral("adapter not found");
+
+    s.drives.startSync();
+    const TrialRecord r = s.run(test::testPlan(50));
+    QCOMPARE(r.status, TrialStatus::Refused);
+    QVERIFY2(r.message.contains(QLatin1String("adapter not found")), qPrintable(r.message));
+    QCOMPARE(r.samples(), 0);
+
+    const QString error = s.apply(phi);
+    QVERIFY2(error.contains(QLatin1String("adapter not found")), qPrintable(error));
+    QVERIFY2(error.contains(QLatin1String("stored parameters are unchanged")), qPrintable(error));
+    QCOMPARE(s.drives.node(1).stores, 1); // only the first apply stored
+
+    // Once the adapter is back, the next call connects and builds new units.
+    s.refuseDevice.clear();
+    QCOMPARE(s.apply(phi), QString());
+    QCOMPARE(s.drives.node(1).stores, 2);
+}
+
+void TestCanRobotWorker::apply_silentNode_saysSoInOneSentence()
+{
+    Setup s;
+    s.drives.node(2).server.reset(); // node 2 answers no SDO
+    const QString error = s.apply(Eigen::Vector3d(20, 5, 8));
+    QVERIFY2(error.contains(QStringLiteral("node 2 did not answer within %1 ms; nothing was stored")
+                                .arg(s.options.sdoTimeoutMs)),
+             qPrintable(error));
+    QVERIFY2(!error.contains(QLatin1String(".;")), qPrintable(error));
+    QCOMPARE(s.drives.node(1).stores, 0);
 }
 
 QTEST_GUILESS_MAIN(TestCanRobotWorker)
