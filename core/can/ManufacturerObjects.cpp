@@ -1,10 +1,12 @@
 #include "can/ManufacturerObjects.h"
 
+#include "can/SdoAbortCode.h"
 #include "model/Error.h"
 
 #include <QCoreApplication>
 #include <QSet>
 #include <cmath>
+#include <limits>
 
 namespace learnid::objects {
 
@@ -19,25 +21,62 @@ QString tr(const char *text)
 
 } // namespace
 
-QList<ObjectDescription> manufacturerObjects(int parameterCount)
+int objectCode(quint16 index)
 {
+    switch (index) {
+    case gains:
+        return 0x9;
+    case identifiedParameters:
+        return 0x8;
+    default:
+        return 0x7;
+    }
+}
+
+QList<ObjectDescription> manufacturerObjects(const ManufacturerDefaults &d)
+{
+    using Access = ObjectDictionary::Access;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    constexpr ValueRange positive{0.0, false, inf};
+    constexpr ValueRange nonNegative{0.0, true, inf};
+    constexpr ValueRange anyFinite{-inf, true, inf};
+    const int m = qBound(0, d.parameterCount, maxIdentifiedParameters);
     // Names are not translated: DCF files are read by machines and drive vendors.
     const auto s = [](const char *text) {
         return QString::fromLatin1(text);
     };
     QList<ObjectDescription> list = {
-        {gains, gainKp, DataType::Real32, s("Gain kp"), s("N m/rad")},
-        {gains, gainKi, DataType::Real32, s("Gain ki"), s("N m/(rad s)")},
-        {gains, gainKd, DataType::Real32, s("Gain kd"), s("N m s/rad")},
-        {gains, gainLambda, DataType::Real32, s("Derivative filter lambda"), s("1/s")},
-        {identifiedParameters, 0, DataType::Unsigned8, s("Identified parameter count"), {}},
+        {gains, 0, DataType::Unsigned8, Access::ReadOnly, 4, {4, true, 4},
+         s("Highest sub-index supported"), {}},
+        {gains, gainKp, DataType::Real32, Access::ReadWrite, d.kp, positive, s("Gain kp"),
+         s("N m/rad")},
+        {gains, gainKi, DataType::Real32, Access::ReadWrite, d.ki, nonNegative, s("Gain ki"),
+         s("N m/(rad s)")},
+        {gains, gainKd, DataType::Real32, Access::ReadWrite, d.kd, nonNegative, s("Gain kd"),
+         s("N m s/rad")},
+        {gains, gainLambda, DataType::Real32, Access::ReadWrite, d.lambda, positive,
+         s("Derivative filter lambda"), s("rad/s")},
+        {identifiedParameters, 0, DataType::Unsigned8, Access::ReadWrite, 0,
+         {0, true, double(m)}, s("Number of identified parameters"), {}},
     };
-    for (int i = 1; i <= qBound(0, parameterCount, maxIdentifiedParameters); ++i) {
-        list.append({identifiedParameters, quint8(i), DataType::Real32,
-                     s("Identified parameter %1").arg(i), s("SI")});
+    for (int i = 1; i <= m; ++i) {
+        list.append({identifiedParameters, quint8(i), DataType::Real32, Access::ReadWrite, 0,
+                     anyFinite, s("Identified parameter %1").arg(i), s("SI")});
     }
-    list.append({torqueLimit, 0, DataType::Real32, s("Torque limit"), s("N m")});
+    list.append({torqueLimit, 0, DataType::Real32, Access::ReadWrite, d.torqueLimit,
+                 {0.0, false, 1e6}, s("Torque limit"), s("N m")});
     return list;
+}
+
+quint32 writeAbortCode(const ObjectDescription &o, double value)
+{
+    if (!std::isfinite(value))
+        return sdoabort::invalidValue;
+    if (value < o.range.min || (!o.range.minIncluded && value == o.range.min))
+        return sdoabort::valueTooLow;
+    if (value > o.range.max)
+        return sdoabort::valueTooHigh;
+    return 0;
 }
 
 PdoMapping trialRpdoMapping()

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "can/CanOpen.h"
+#include "can/ObjectDictionary.h"
 #include "can/Pdo.h"
 #include "can/SdoWrite.h"
 
@@ -49,27 +50,60 @@ constexpr quint16 torqueOffset = 0x60B2;            ///< INTEGER16 [per mille of
 /// period = value * 10^exponent s (2 ms: 2, -3).
 constexpr quint16 interpolationTimePeriod = 0x60C2;
 
-/// One object as documented and written into the DCF fragment.
+/// What a drive holds before anything is written: its own joint's gains and torque limit (the
+/// controller's configuration) and room for parameterCount identified parameters.
+struct ManufacturerDefaults
+{
+    double kp = 0.0;          ///< [N m/rad]
+    double ki = 0.0;          ///< [N m/(rad s)]
+    double kd = 0.0;          ///< [N m s/rad]
+    double lambda = 0.0;      ///< derivative filter bandwidth [rad/s]
+    double torqueLimit = 0.0; ///< [N m]
+    int parameterCount = 0;   ///< entries 0x2200:01..m (at most maxIdentifiedParameters)
+};
+
+/// The values a write may take: finite, above min (or equal to it when minIncluded), at most max.
+struct ValueRange
+{
+    double min;
+    bool minIncluded;
+    double max;
+};
+
+/// One manufacturer object entry of a drive: the one description that the simulated drive's
+/// dictionary, the DCF fragment and docs/can-protocol.md §2.2 follow.
 struct ObjectDescription
 {
     quint16 index;
     quint8 subIndex;
     canopen::DataType type;
-    QString name; ///< parameter name as in a DCF, e.g. "Identified parameter 1" (untranslated)
-    QString unit; ///< SI unit, empty when none
+    ObjectDictionary::Access access;
+    double defaultValue; ///< what the drive holds after power-on without a stored set
+    ValueRange range;    ///< of a write (writeAbortCode); meaningless for read-only entries
+    QString name;        ///< parameter name as in a DCF, e.g. "Gain kp" (untranslated)
+    QString unit;        ///< SI unit, empty when none
 };
 
-/// The manufacturer objects for n identified parameters (0x2100:1..4, 0x2200:0..n, 0x2300:0).
-QList<ObjectDescription> manufacturerObjects(int parameterCount);
+/// CiA 301 object code of a manufacturer object: 0x7 VAR, 0x8 ARRAY, 0x9 RECORD.
+int objectCode(quint16 index);
+
+/// The manufacturer objects of a drive, in index and sub-index order: 0x2100:00..04 (gains, a
+/// RECORD), 0x2200:00..m (the count, read-write, and the identified parameters, an ARRAY),
+/// 0x2300:00 (torque limit, a VAR).
+QList<ObjectDescription> manufacturerObjects(const ManufacturerDefaults &defaults);
+
+/// The abort code a drive answers to an SDO write of value to o: 0 to accept; 0x06090030 not
+/// finite, 0x06090032 below the range, 0x06090031 above it.
+quint32 writeAbortCode(const ObjectDescription &o, double value);
 
 /// The mapping of a trial's RPDO1: target position, torque offset, controlword (8 bytes).
 PdoMapping trialRpdoMapping();
 /// The mapping of a trial's TPDO1: position actual, torque actual, statusword (8 bytes).
 PdoMapping trialTpdoMapping();
 
-/// The exact SDO writes "apply" performs (DESIGN.md §4): for each node the count then each
-/// parameter to 0x2200; after every node holds them (and the caller has read them back),
-/// 0x1010:01 = "save" on each node, so that no drive stores a half-written set.
+/// The exact SDO writes "apply" performs (docs/can-protocol.md §8, Apply): for each node the
+/// count then each parameter to 0x2200; after every node holds them (and the caller has read
+/// them back), 0x1010:01 = "save" on each node, so that no drive stores a half-written set.
 /// phi: identified parameters in SI units (n). Throws learnid::Error for an empty or
 /// non-finite phi, more than 254 parameters, invalid or repeated node ids.
 SdoWriteSequence parameterWriteSequence(const QList<int> &nodes, const Eigen::VectorXd &phi);

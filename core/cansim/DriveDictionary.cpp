@@ -17,30 +17,6 @@ constexpr quint32 pdoInvalid = 0x80000000u;
 constexpr quint32 pdoNoRtr = 0x40000000u;
 constexpr quint8 synchronousEverySync = 1;
 
-quint32 finiteAtLeast(const QByteArray &raw, double min, bool inclusive)
-{
-    const double v = canopen::decodeValue(DataType::Real32, raw);
-    if (!std::isfinite(v))
-        return sdoabort::invalidValue;
-    if (v < min || (!inclusive && v == min))
-        return sdoabort::valueTooLow;
-    return 0;
-}
-
-ObjectDictionary::Validator positiveReal()
-{
-    return [](const QByteArray &raw) {
-        return finiteAtLeast(raw, 0.0, false);
-    };
-}
-
-ObjectDictionary::Validator nonNegativeReal()
-{
-    return [](const QByteArray &raw) {
-        return finiteAtLeast(raw, 0.0, true);
-    };
-}
-
 // PDO communication (0x1400 / 0x1800) and mapping (0x1600 / 0x1A00) of PDO 1 (CiA 301
 // §7.5.2.35-38): only the pre-defined COB-ID, transmission type 1 and the trial mapping;
 // the mapping changes only while the PDO is invalid and its count is 0.
@@ -122,6 +98,11 @@ double interpolationPeriod(const ObjectDictionary &od)
            std::pow(10.0, od.value(objects::interpolationTimePeriod, 2));
 }
 
+objects::ManufacturerDefaults manufacturerDefaults(const DriveNodeSettings &s)
+{
+    return {s.kp, s.ki, s.kd, s.lambda, s.torqueLimit, s.parameterCount};
+}
+
 void addDriveObjects(ObjectDictionary &od, const DriveNodeSettings &s)
 {
     using namespace objects;
@@ -143,28 +124,13 @@ void addDriveObjects(ObjectDictionary &od, const DriveNodeSettings &s)
     addPdoObjects(od, node, PdoDirection::Receive);
     addPdoObjects(od, node, PdoDirection::Transmit);
 
-    od.add(gains, gainKp, DataType::Real32, Access::ReadWrite, s.kp, positiveReal());
-    od.add(gains, gainKi, DataType::Real32, Access::ReadWrite, s.ki, nonNegativeReal());
-    od.add(gains, gainKd, DataType::Real32, Access::ReadWrite, s.kd, nonNegativeReal());
-    od.add(gains, gainLambda, DataType::Real32, Access::ReadWrite, s.lambda, positiveReal());
-    const int m = qBound(0, s.parameterCount, maxIdentifiedParameters);
-    od.add(identifiedParameters, 0, DataType::Unsigned8, Access::ReadWrite, 0,
-           ObjectDictionary::rangeValidator(DataType::Unsigned8, 0, m));
-    for (int i = 1; i <= m; ++i) {
-        od.add(identifiedParameters, quint8(i), DataType::Real32, Access::ReadWrite, 0,
-               [](const QByteArray &raw) -> quint32 {
-                   return std::isfinite(canopen::decodeValue(DataType::Real32, raw))
-                              ? 0
-                              : sdoabort::invalidValue;
+    // The manufacturer objects as the one table describes them (the DCF and the docs follow it).
+    for (const ObjectDescription &o : manufacturerObjects(manufacturerDefaults(s))) {
+        od.add(o.index, o.subIndex, o.type, o.access, o.defaultValue,
+               [o](const QByteArray &raw) {
+                   return writeAbortCode(o, canopen::decodeValue(o.type, raw));
                });
     }
-    od.add(objects::torqueLimit, 0, DataType::Real32, Access::ReadWrite, s.torqueLimit,
-           [](const QByteArray &raw) -> quint32 {
-               if (const quint32 code = finiteAtLeast(raw, 0.0, false))
-                   return code;
-               return canopen::decodeValue(DataType::Real32, raw) > 1e6 ? sdoabort::valueTooHigh
-                                                                        : 0;
-           });
 
     od.add(controlword, 0, DataType::Unsigned16, Access::ReadWrite, 0);
     od.add(statusword, 0, DataType::Unsigned16, Access::ReadOnly, 0);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "can/ManufacturerObjects.h"
 #include "can/ObjectDictionary.h"
 #include "cansim/DriveSettings.h"
 
@@ -12,6 +13,9 @@ namespace learnid {
 /// "save" signature, PDO mapping rules). Throws learnid::Error when settings do not fit the
 /// objects' types.
 void addDriveObjects(ObjectDictionary &dictionary, const DriveNodeSettings &settings);
+
+/// The manufacturer objects' power-on defaults of a drive with these settings.
+objects::ManufacturerDefaults manufacturerDefaults(const DriveNodeSettings &settings);
 
 /// Resets the communication objects (0x1017, PDO communication and mapping) to their defaults,
 /// as NMT reset communication does.

@@ -1,6 +1,7 @@
 #include "cansim/StoredParameterSet.h"
 
 #include "can/ManufacturerObjects.h"
+#include "cansim/DriveDictionary.h"
 
 namespace learnid {
 
@@ -40,12 +41,9 @@ void StoredParameterSet::restore(ObjectDictionary &dictionary,
             dictionary.setBytes(quint16(k >> 8), quint8(k & 0xFF), raw);
         return;
     }
-    dictionary.setValue(ob::gains, ob::gainKp, settings.kp);
-    dictionary.setValue(ob::gains, ob::gainKi, settings.ki);
-    dictionary.setValue(ob::gains, ob::gainKd, settings.kd);
-    dictionary.setValue(ob::gains, ob::gainLambda, settings.lambda);
-    dictionary.setValue(ob::identifiedParameters, 0, 0);
-    dictionary.setValue(ob::torqueLimit, 0, settings.torqueLimit);
+    // Nothing stored: every manufacturer object back to its power-on default.
+    for (const ob::ObjectDescription &o : ob::manufacturerObjects(manufacturerDefaults(settings)))
+        dictionary.setValue(o.index, o.subIndex, o.defaultValue);
 }
 
 } // namespace learnid

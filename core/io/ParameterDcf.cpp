@@ -1,15 +1,17 @@
 #include "io/JsonReader.h"
 #include "io/ParameterFile.h"
+#include "can/ManufacturerObjects.h"
 #include "model/Error.h"
 
 #include <QCoreApplication>
 #include <cmath>
 #include <limits>
 
-// CiA 306 DCF fragment of the manufacturer objects learnid writes (docs/file-formats.md):
-//   0x2100 RECORD  joint controller gains: sub1 kp, sub2 ki, sub3 kd, sub4 lambda (REAL32)
-//   0x2200 ARRAY   identified dynamic parameters: sub1..m (REAL32)
-// Each drive holds its own joint's gains and the whole parameter vector.
+// CiA 306 DCF fragment of the manufacturer objects learnid writes (docs/file-formats.md), one
+// per drive, generated from the same table as the simulated drive's dictionary
+// (objects::manufacturerObjects): 0x2100 the joint's gains (RECORD), 0x2200 the identified
+// parameters with their count in sub 0 (ARRAY). Each drive holds its own joint's gains and the
+// whole parameter vector. 0x2300 (torque limit) is not in a parameter file, so not here.
 // The text of the fragment is not translated: configuration tools and records compare it.
 
 namespace learnid {
@@ -20,9 +22,6 @@ QString tr(const char *text)
 {
     return QCoreApplication::translate("ParameterFile", text);
 }
-
-constexpr quint16 gainsIndex = 0x2100;
-constexpr quint16 parametersIndex = 0x2200;
 
 // The shortest decimal text that reads back to the same REAL32 as value.
 QByteArray real32Text(double value, const QString &path)
@@ -47,33 +46,74 @@ QByteArray hex(quint16 index)
     return QByteArray::number(index, 16).rightJustified(4, '0').toUpper();
 }
 
+// An entry's value as DCF text: integers as such, REAL32 as the shortest text of the same float.
+QByteArray valueText(canopen::DataType type, double value, const QString &path)
+{
+    if (type == canopen::DataType::Real32)
+        return real32Text(value, path);
+    return QByteArray::number(qint64(value));
+}
+
+QByteArray dataTypeText(canopen::DataType type)
+{
+    return "0x" + QByteArray::number(quint16(type), 16).rightJustified(4, '0').toUpper();
+}
+
+QByteArray accessText(ObjectDictionary::Access access)
+{
+    switch (access) {
+    case ObjectDictionary::Access::ReadOnly:
+        return "ro";
+    case ObjectDictionary::Access::WriteOnly:
+        return "wo";
+    case ObjectDictionary::Access::ReadWrite:
+        return "rw";
+    case ObjectDictionary::Access::Constant:
+        return "const";
+    }
+    return "rw";
+}
+
+// The key path of gain entry sub in the parameter file's JSON form, for error messages.
+QString gainKeyPath(quint8 sub, int joint)
+{
+    switch (sub) {
+    case objects::gainKp:
+        return QStringLiteral("controller.kp[%1]").arg(joint);
+    case objects::gainKi:
+        return QStringLiteral("controller.ki[%1]").arg(joint);
+    case objects::gainKd:
+        return QStringLiteral("controller.kd[%1]").arg(joint);
+    case objects::gainLambda:
+        return QStringLiteral("controller.lambda");
+    default:
+        return {};
+    }
+}
+
 struct Entry
 {
+    objects::ObjectDescription object;
     QString name;
-    QByteArray value;
+    QByteArray value; ///< ParameterValue
 };
 
-// [IIII] and [IIIIsubN] sections of an ARRAY (0x8) or RECORD (0x9) of REAL32 entries with the
-// count in sub0, as CiA 301 lays out such objects.
-void writeObject(QByteArray &out, quint16 index, const QString &name, const char *objectType,
-                 const QList<Entry> &entries)
+// [IIII] and [IIIIsubN] sections of an ARRAY or RECORD (sub 0 first), as CiA 306 lays them out.
+void writeObject(QByteArray &out, quint16 index, const QString &name, const QList<Entry> &entries)
 {
     const QByteArray section = hex(index);
-    const QByteArray count = QByteArray::number(entries.size());
     out += "[" + section + "]\n";
     out += "ParameterName=" + name.toUtf8() + "\n";
-    out += QByteArray("ObjectType=") + objectType + "\n";
-    out += "SubNumber=" + QByteArray::number(entries.size() + 1) + "\n\n";
-    out += "[" + section + "sub0]\n";
-    out += "ParameterName=Highest sub-index supported\n";
-    out += "ObjectType=0x7\nDataType=0x0005\nAccessType=ro\n";
-    out += "DefaultValue=" + count + "\nParameterValue=" + count + "\nPDOMapping=0\n\n";
-    for (int i = 0; i < int(entries.size()); ++i) {
-        out += "[" + section + "sub" + QByteArray::number(i + 1, 16).toUpper() + "]\n";
-        out += "ParameterName=" + entries.at(i).name.toUtf8() + "\n";
-        out += "ObjectType=0x7\nDataType=0x0008\nAccessType=rw\n";
-        out += "DefaultValue=" + entries.at(i).value + "\n";
-        out += "ParameterValue=" + entries.at(i).value + "\nPDOMapping=0\n\n";
+    out += "ObjectType=0x" + QByteArray::number(objects::objectCode(index), 16) + "\n";
+    out += "SubNumber=" + QByteArray::number(entries.size()) + "\n\n";
+    for (const Entry &e : entries) {
+        const objects::ObjectDescription &o = e.object;
+        out += "[" + section + "sub" + QByteArray::number(o.subIndex, 16).toUpper() + "]\n";
+        out += "ParameterName=" + e.name.toUtf8() + "\n";
+        out += "ObjectType=0x7\nDataType=" + dataTypeText(o.type) + "\n";
+        out += "AccessType=" + accessText(o.access) + "\n";
+        out += "DefaultValue=" + valueText(o.type, o.defaultValue, {}) + "\n";
+        out += "ParameterValue=" + e.value + "\nPDOMapping=0\n\n";
     }
 }
 
@@ -89,23 +129,35 @@ QByteArray parameterDcfFragment(const ParameterFileContent &content, int joint)
                         .arg(nodes.size()));
     }
     const ControllerSettings &c = content.controller;
-    const QString gainPath = QStringLiteral("controller.%1[%2]");
-    const QList<Entry> gains = {
-        {QStringLiteral("kp [N m/rad]"),
-         real32Text(c.kp[joint], gainPath.arg(QStringLiteral("kp")).arg(joint))},
-        {QStringLiteral("ki [N m/(rad s)]"),
-         real32Text(c.ki[joint], gainPath.arg(QStringLiteral("ki")).arg(joint))},
-        {QStringLiteral("kd [N m s/rad]"),
-         real32Text(c.kd[joint], gainPath.arg(QStringLiteral("kd")).arg(joint))},
-        {QStringLiteral("lambda [rad/s]"),
-         real32Text(c.lambda, QStringLiteral("controller.lambda"))},
+    objects::ManufacturerDefaults defaults;
+    defaults.kp = c.kp[joint];
+    defaults.ki = c.ki[joint];
+    defaults.kd = c.kd[joint];
+    defaults.lambda = c.lambda;
+    defaults.parameterCount = int(content.parameters.size());
+    // What the drive holds once configured and applied: the gains (its defaults here, as the
+    // robot side is set up from the same controller), the count and the identified values.
+    const auto parameterValue = [&](const objects::ObjectDescription &o) -> QByteArray {
+        if (o.index == objects::identifiedParameters && o.subIndex > 0) {
+            const int i = o.subIndex - 1;
+            return real32Text(content.values[i], QStringLiteral("parameters[%1].value").arg(i));
+        }
+        if (o.index == objects::identifiedParameters)
+            return QByteArray::number(content.parameters.size());
+        return valueText(o.type, o.defaultValue, gainKeyPath(o.subIndex, joint));
     };
+    QList<Entry> gains;
     QList<Entry> parameters;
-    for (int i = 0; i < int(content.parameters.size()); ++i) {
-        const ParameterInfo &p = content.parameters.at(i);
-        parameters.append(
-            {QStringLiteral("%1 [%2]").arg(p.name, p.unit),
-             real32Text(content.values[i], QStringLiteral("parameters[%1].value").arg(i))});
+    for (const objects::ObjectDescription &o : objects::manufacturerObjects(defaults)) {
+        QString name = o.unit.isEmpty() ? o.name : QStringLiteral("%1 [%2]").arg(o.name, o.unit);
+        if (o.index == objects::identifiedParameters && o.subIndex > 0) {
+            const ParameterInfo &p = content.parameters.at(o.subIndex - 1);
+            name = QStringLiteral("%1 [%2]").arg(p.name, p.unit);
+        }
+        if (o.index == objects::gains)
+            gains.append({o, name, parameterValue(o)});
+        else if (o.index == objects::identifiedParameters)
+            parameters.append({o, name, parameterValue(o)});
     }
 
     const QString comments =
@@ -119,10 +171,10 @@ QByteArray parameterDcfFragment(const ParameterFileContent &content, int joint)
     QByteArray out = comments.toUtf8();
     out += "[DeviceComissioning]\nNodeID=" + QByteArray::number(nodes.at(joint)) + "\n\n";
     out += "[ManufacturerObjects]\nSupportedObjects=2\n";
-    out += "1=0x" + hex(gainsIndex) + "\n2=0x" + hex(parametersIndex) + "\n\n";
-    writeObject(out, gainsIndex, QStringLiteral("Joint controller gains"), "0x9", gains);
-    writeObject(out, parametersIndex, QStringLiteral("Identified dynamic parameters"), "0x8",
-                parameters);
+    out += "1=0x" + hex(objects::gains) + "\n2=0x" + hex(objects::identifiedParameters) + "\n\n";
+    writeObject(out, objects::gains, QStringLiteral("Joint controller gains"), gains);
+    writeObject(out, objects::identifiedParameters,
+                QStringLiteral("Identified dynamic parameters"), parameters);
     return out;
 }
 

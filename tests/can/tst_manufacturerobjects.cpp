@@ -1,4 +1,5 @@
 #include "can/ManufacturerObjects.h"
+#include "can/SdoAbortCode.h"
 #include "model/Error.h"
 
 #include <QTest>
@@ -93,13 +94,30 @@ void TestManufacturerObjects::trialPdoMappings_fillEightBytes()
 
 void TestManufacturerObjects::manufacturerObjects_describeGainsParametersAndLimit()
 {
-    const QList<ObjectDescription> list = manufacturerObjects(3);
-    QCOMPARE(list.size(), 4 + 1 + 3 + 1);
+    const QList<ObjectDescription> list = manufacturerObjects({4500, 30, 600, 200, 8, 3});
+    QCOMPARE(list.size(), 5 + 1 + 3 + 1);
     QCOMPARE(list[0].index, gains);
-    QCOMPARE(list[3].subIndex, gainLambda);
-    QCOMPARE(list[4].type, canopen::DataType::Unsigned8);
-    QCOMPARE(list[7].name, QString("Identified parameter 3"));
+    QCOMPARE(list[0].subIndex, quint8(0));
+    QCOMPARE(list[0].access, ObjectDictionary::Access::ReadOnly);
+    QCOMPARE(list[0].defaultValue, 4.0); // sub 0 of a RECORD: its highest sub-index
+    QCOMPARE(list[4].subIndex, gainLambda);
+    QCOMPARE(list[4].defaultValue, 200.0);
+    QCOMPARE(list[5].type, canopen::DataType::Unsigned8);
+    QCOMPARE(list[5].access, ObjectDictionary::Access::ReadWrite); // the count apply writes
+    QCOMPARE(list[8].name, QString("Identified parameter 3"));
     QCOMPARE(list.last().index, torqueLimit);
+    QCOMPARE(list.last().defaultValue, 8.0);
+    // The write ranges of docs/can-protocol.md §2.2.
+    QCOMPARE(writeAbortCode(list[1], 0.0), sdoabort::valueTooLow);   // kp > 0
+    QCOMPARE(writeAbortCode(list[2], 0.0), 0u);                      // ki >= 0
+    QCOMPARE(writeAbortCode(list[3], -1e-3), sdoabort::valueTooLow); // kd >= 0
+    QCOMPARE(writeAbortCode(list[4], qQNaN()), sdoabort::invalidValue);
+    QCOMPARE(writeAbortCode(list[5], 3.0), 0u);
+    QCOMPARE(writeAbortCode(list[5], 4.0), sdoabort::valueTooHigh); // count <= m
+    QCOMPARE(writeAbortCode(list[6], -1e30), 0u);
+    QCOMPARE(writeAbortCode(list[6], qInf()), sdoabort::invalidValue);
+    QCOMPARE(writeAbortCode(list.last(), 1e6), 0u);
+    QCOMPARE(writeAbortCode(list.last(), 1.5e6), sdoabort::valueTooHigh);
 }
 
 QTEST_GUILESS_MAIN(TestManufacturerObjects)

@@ -86,14 +86,19 @@ void TestParameterDcf::jointFragment_holdsGainsAndParametersAsRealObjects()
         QCOMPARE(ini.value(section).value("DataType"), QStringLiteral("0x0008"));
         QCOMPARE(ini.value(section).value("AccessType"), QStringLiteral("rw"));
         QCOMPARE(real32(ini, section), float(gains[s - 1]));
+        // The drive is set up from the same controller: its default is the configured gain.
         QCOMPARE(ini.value(section).value("DefaultValue"),
                  ini.value(section).value("ParameterValue"));
     }
-    QCOMPARE(ini.value("2100sub1").value("ParameterName"), QStringLiteral("kp [N m/rad]"));
+    QCOMPARE(ini.value("2100sub1").value("ParameterName"), QStringLiteral("Gain kp [N m/rad]"));
     QCOMPARE(ini.value("2100sub1").value("ParameterValue"), QStringLiteral("5000"));
 
     QCOMPARE(ini.value("2200").value("ObjectType"), QStringLiteral("0x8"));
     QCOMPARE(ini.value("2200").value("SubNumber"), QStringLiteral("4"));
+    // Sub 0 is the count apply writes (read-write, 0 until then), as docs/can-protocol.md says.
+    QCOMPARE(ini.value("2200sub0").value("DataType"), QStringLiteral("0x0005"));
+    QCOMPARE(ini.value("2200sub0").value("AccessType"), QStringLiteral("rw"));
+    QCOMPARE(ini.value("2200sub0").value("DefaultValue"), QStringLiteral("0"));
     QCOMPARE(ini.value("2200sub0").value("ParameterValue"), QStringLiteral("3"));
     for (int i = 0; i < 3; ++i) {
         const QString section = QStringLiteral("2200sub%1").arg(i + 1);
@@ -101,6 +106,7 @@ void TestParameterDcf::jointFragment_holdsGainsAndParametersAsRealObjects()
         QCOMPARE(ini.value(section).value("ParameterName"),
                  c.parameters.at(i).name + QStringLiteral(" [kg m^2]"));
         QCOMPARE(real32(ini, section), float(c.values[i]));
+        QCOMPARE(ini.value(section).value("DefaultValue"), QStringLiteral("0"));
     }
     QVERIFY(!ini.contains("2200sub4"));
 }
