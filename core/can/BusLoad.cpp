@@ -35,14 +35,15 @@ int worstCaseFrameBits(int dlc, bool extended)
 BusLoad estimateBusLoad(const BusLoadConfig &config)
 {
     if (config.joints < 0 || config.framesPerJointPerSample < 0 || !(config.sampleRate > 0) ||
-        !(config.bitrate > 0) || config.payloadBytes < 0 || config.payloadBytes > 8) {
+        !(config.bitrate > 0) || config.payloadBytes < 0 || config.payloadBytes > 8 ||
+        config.syncPayloadBytes < 0 || config.syncPayloadBytes > 8) {
         throw Error(tr("Bus load: joints and frames must not be negative, rates must be positive "
                        "and a frame carries 0 to 8 bytes."));
     }
     const int pdoFrames = config.joints * config.framesPerJointPerSample;
     const int framesPerSample = pdoFrames + (config.sync ? 1 : 0);
     const int bitsPerSample = pdoFrames * worstCaseFrameBits(config.payloadBytes) +
-                              (config.sync ? worstCaseFrameBits(0) : 0);
+                              (config.sync ? worstCaseFrameBits(config.syncPayloadBytes) : 0);
     BusLoad load;
     load.framesPerSecond = framesPerSample * config.sampleRate;
     load.bitsPerSecond = bitsPerSample * config.sampleRate;

@@ -6,15 +6,17 @@
 
 namespace learnid {
 
-/// The cyclic traffic of a trial (DESIGN.md §4): per sample one SYNC, and per joint an RPDO
-/// (target position, torque offset, controlword) and a TPDO (position, torque, statusword).
+/// The cyclic traffic of a trial (docs/can-protocol.md §8.5): per sample one SYNC, and per
+/// joint an RPDO (target position, torque offset, controlword) and a TPDO (position, torque,
+/// statusword).
 struct BusLoadConfig
 {
     int joints = 2;
     double sampleRate = 500.0;       ///< SYNC rate [Hz]
     int framesPerJointPerSample = 2; ///< RPDO + TPDO
     int payloadBytes = 8;            ///< data bytes of each PDO frame (0..8)
-    bool sync = true;                ///< one SYNC frame (no data) per sample
+    bool sync = true;                ///< one SYNC frame per sample
+    int syncPayloadBytes = 1;        ///< its counter (0x1019 > 0, docs/can-protocol.md §4.3)
     double bitrate = 1'000'000.0;    ///< [bit/s]
 };
 
@@ -24,7 +26,7 @@ struct BusLoad
     double bitsPerSecond = 0; ///< worst case, with bit stuffing
     double percent = 0;       ///< of the bitrate
 
-    /// "29.8 % of 1000 kbit/s (2500 frames/s)", translated.
+    /// "30.3 % of 1000 kbit/s (2500 frames/s)", translated.
     QString text(double bitrate) const;
 };
 

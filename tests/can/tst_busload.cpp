@@ -43,12 +43,12 @@ void TestBusLoad::worstCaseFrameBits_matchesTheStuffingFormula()
 
 void TestBusLoad::twoJointsAt500HzOn1Mbit_isAbout30Percent()
 {
-    // per 2 ms: SYNC 55 bits + 4 PDOs of 8 bytes at 135 bits = 595 bits
+    // per 2 ms: SYNC with its 1-byte counter 65 bits (47 + 8 + floor(41/4)) + 4 PDOs of 8 bytes
+    // at 135 bits (47 + 64 + floor(97/4)) = 605 bits
     const BusLoad load = estimateBusLoad(BusLoadConfig{});
     QCOMPARE(load.framesPerSecond, 2500.0);
-    QCOMPARE(load.bitsPerSecond, 297500.0);
-    QCOMPARE(load.percent, 29.75);
-    QVERIFY(load.percent >= 25.0 && load.percent <= 30.0);
+    QCOMPARE(load.bitsPerSecond, 302500.0);
+    QCOMPARE(load.percent, 30.25);
 }
 
 void TestBusLoad::withoutSync_andOtherRates_scale()
@@ -68,7 +68,7 @@ void TestBusLoad::measuredLoad_ofRecordedFrames_matchesTheEstimate()
 {
     QList<QCanBusFrame> frames;
     for (int sample = 0; sample < 500; ++sample) { // one second at 500 Hz
-        frames.append(QCanBusFrame(0x080, QByteArray()));
+        frames.append(QCanBusFrame(0x080, QByteArray(1, char(sample % 240 + 1)))); // counter
         for (quint32 node : {1u, 2u}) {
             frames.append(QCanBusFrame(0x200 + node, QByteArray(8, '\0')));
             frames.append(QCanBusFrame(0x180 + node, QByteArray(8, '\0')));
@@ -95,7 +95,7 @@ void TestBusLoad::invalidConfiguration_throws()
 void TestBusLoad::text_reportsPercentBitrateAndFrames()
 {
     QCOMPARE(estimateBusLoad(BusLoadConfig{}).text(1e6),
-             QString("29.8 % of 1000 kbit/s (2500 frames/s)"));
+             QString("30.3 % of 1000 kbit/s (2500 frames/s)"));
 }
 
 QTEST_GUILESS_MAIN(TestBusLoad)
