@@ -35,8 +35,10 @@ void busLoadTable()
             o.nodes << j;
         const BusLoad load = configuredBusLoad(o);
         const QString error = canRobotOptionsError(o);
-        std::printf("| %d joints, 500 Hz | %.0f | %.0f | %.1f %% | %s |\n", joints,
-                    load.framesPerSecond, load.bitsPerSecond, load.percent,
+        // The percent as the tool prints it (Qt rounds 30.25 up, printf's %.1f to even).
+        std::printf("| %d joints, 500 Hz | %.0f | %.0f | %s %% | %s |\n", joints,
+                    load.framesPerSecond, load.bitsPerSecond,
+                    qPrintable(QString::number(load.percent, 'f', 1)),
                     error.isEmpty() ? "accepted" : "refused (above 70 %)");
     }
 }
