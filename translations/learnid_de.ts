@@ -656,6 +656,17 @@
     </message>
 </context>
 <context>
+    <name>OutputPath</name>
+    <message>
+        <source>%1: no path given</source>
+        <translation>%1: kein Pfad angegeben</translation>
+    </message>
+    <message>
+        <source>%1: %2 is relative, and the folder it is taken from, %3, does not exist or is not a folder</source>
+        <translation>%1: %2 ist relativ, und der Ordner, ab dem er gilt, %3, existiert nicht oder ist kein Ordner</translation>
+    </message>
+</context>
+<context>
     <name>ParameterFile</name>
     <message>
         <source>does not fit a REAL32 object entry, got %1</source>
@@ -1169,25 +1180,6 @@
     </message>
 </context>
 <context>
-    <name>Workspace</name>
-    <message>
-        <source>%1: %2: too many levels of symbolic links</source>
-        <translation>%1: %2: zu viele Ebenen symbolischer Links</translation>
-    </message>
-    <message>
-        <source>%1: no path given</source>
-        <translation>%1: kein Pfad angegeben</translation>
-    </message>
-    <message>
-        <source>%1: the workspace %2 does not exist or is not a folder</source>
-        <translation>%1: der Arbeitsbereich %2 existiert nicht oder ist kein Ordner</translation>
-    </message>
-    <message>
-        <source>%1: %2 is outside the workspace %3 (resolved to %4)</source>
-        <translation>%1: %2 liegt außerhalb des Arbeitsbereichs %3 (aufgelöst zu %4)</translation>
-    </message>
-</context>
-<context>
     <name>learnid-cli</name>
     <message>
         <source>learnid-cli: error: %1</source>
@@ -1201,9 +1193,9 @@
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--workspace DIR] [--quiet]
       Run a commissioning session on the simulated robot. The table goes to
-      stdout, progress to stderr. Output paths must lie inside the workspace
-      (default: the current directory). Files are written only when every
-      trial completed.
+      stdout, progress to stderr. Relative output paths are taken from
+      --workspace (default: the current directory). Files are written only
+      when every trial completed.
       --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
       runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
       --can-log writes every trial&apos;s frames as a candump log into DIR;
@@ -1213,6 +1205,8 @@
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
       Re-identify from recorded trials: the session runs again with each log
       (one per trial, in order) answering in place of the robot.
+  learnid-cli COMMAND --help
+      The options of one command.
 </source>
         <translation>Aufruf:
   learnid-cli scenario --print
@@ -1221,9 +1215,9 @@
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--workspace DIR] [--quiet]
       Führt eine Inbetriebnahmesitzung am simulierten Roboter aus. Tabelle nach
-      stdout, Fortschritt nach stderr. Ausgabepfade müssen im Arbeitsbereich
-      liegen (Standard: aktuelles Verzeichnis). Dateien werden nur geschrieben,
-      wenn jeder Versuch abgeschlossen wurde.
+      stdout, Fortschritt nach stderr. Relative Ausgabepfade gelten ab
+      --workspace (Standard: aktuelles Verzeichnis). Dateien werden nur
+      geschrieben, wenn jeder Versuch abgeschlossen wurde.
       --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
       führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);
       --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR;
@@ -1233,7 +1227,21 @@
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
       Identifiziert neu aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
       und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.
+  learnid-cli COMMAND --help
+      Die Optionen eines Befehls.
 </translation>
+    </message>
+    <message>
+        <source>Usage: learnid-cli %1 [options]
+
+%2
+
+%3</source>
+        <translation>Aufruf: learnid-cli %1 [Optionen]
+
+%2
+
+%3</translation>
     </message>
     <message>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
@@ -1268,72 +1276,80 @@
         <translation>--robot %1: %2</translation>
     </message>
     <message>
+        <source>Show this command&apos;s options.</source>
+        <translation>Die Optionen dieses Befehls anzeigen.</translation>
+    </message>
+    <message>
         <source>Print the default scenario.</source>
         <translation>Standardszenario ausgeben.</translation>
     </message>
     <message>
-        <source>Scenario file.</source>
-        <translation>Szenariodatei.</translation>
+        <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
+        <translation>Szenariodatei (JSON, docs/scenario.md); Standard: das Szenario des Artikels.</translation>
     </message>
     <message>
-        <source>Learning law.</source>
-        <translation>Lerngesetz.</translation>
+        <source>Learning law: paper or improved.</source>
+        <translation>Lerngesetz: paper oder improved.</translation>
     </message>
     <message>
-        <source>Learning trials.</source>
-        <translation>Lernversuche.</translation>
+        <source>Learning trials, 1 to 100.</source>
+        <translation>Lernversuche, 1 bis 100.</translation>
     </message>
     <message>
-        <source>JSON report.</source>
-        <translation>JSON-Bericht.</translation>
+        <source>Write the session report (JSON) to FILE.</source>
+        <translation>Den Sitzungsbericht (JSON) nach FILE schreiben.</translation>
     </message>
     <message>
-        <source>Parameter file.</source>
-        <translation>Parameterdatei.</translation>
+        <source>Write the parameter file (JSON and DCF) to FILE.</source>
+        <translation>Die Parameterdatei (JSON und DCF) nach FILE schreiben.</translation>
     </message>
     <message>
-        <source>Trial CSV folder.</source>
-        <translation>Ordner für Versuchs-CSV.</translation>
+        <source>Write each trial&apos;s samples as CSV into DIR.</source>
+        <translation>Die Abtastwerte jedes Versuchs als CSV nach DIR schreiben.</translation>
     </message>
     <message>
-        <source>Apply the final estimate.</source>
-        <translation>Die letzte Schätzung übertragen.</translation>
+        <source>Accept and apply the final estimate to the robot.</source>
+        <translation>Die letzte Schätzung übernehmen und auf den Roboter übertragen.</translation>
     </message>
     <message>
-        <source>Workspace folder.</source>
-        <translation>Arbeitsbereichsordner.</translation>
+        <source>Folder that relative output paths are taken from; default: the current directory.</source>
+        <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
-        <source>No progress on stderr.</source>
-        <translation>Kein Fortschritt auf stderr.</translation>
+        <source>No progress lines on stderr.</source>
+        <translation>Keine Fortschrittszeilen auf stderr.</translation>
     </message>
     <message>
-        <source>sim or can.</source>
-        <translation>sim oder can.</translation>
+        <source>sim (default) or can.</source>
+        <translation>sim (Standard) oder can.</translation>
     </message>
     <message>
-        <source>QCanBus plugin.</source>
-        <translation>QCanBus-Plugin.</translation>
+        <source>QCanBus plugin, e.g. socketcan or virtualcan.</source>
+        <translation>QCanBus-Plugin, z. B. socketcan oder virtualcan.</translation>
     </message>
     <message>
-        <source>CAN interface.</source>
-        <translation>CAN-Schnittstelle.</translation>
+        <source>CAN interface, e.g. can0.</source>
+        <translation>CAN-Schnittstelle, z. B. can0.</translation>
     </message>
     <message>
-        <source>CANopen node per joint.</source>
-        <translation>CANopen-Knoten pro Gelenk.</translation>
+        <source>CANopen node id of each joint&apos;s drive, e.g. 1,2.</source>
+        <translation>CANopen-Knotennummer des Antriebs jedes Gelenks, z. B. 1,2.</translation>
     </message>
     <message>
         <source>Longest SYNC gap in a trial [ms].</source>
         <translation>Längste SYNC-Lücke in einem Versuch [ms].</translation>
     </message>
     <message>
-        <source>Candump log folder.</source>
-        <translation>Ordner für candump-Logs.</translation>
+        <source>Write each trial&apos;s CAN frames as a candump log into DIR.</source>
+        <translation>Die CAN-Frames jedes Versuchs als candump-Log nach DIR schreiben.</translation>
     </message>
     <message>
-        <source>Recorded trial log.</source>
-        <translation>Aufgezeichnetes Versuchslog.</translation>
+        <source>A recorded trial (candump log); once per trial, in order.</source>
+        <translation>Ein aufgezeichneter Versuch (candump-Log); einmal pro Versuch, der Reihe nach.</translation>
+    </message>
+    <message>
+        <source>Print the default scenario as JSON.</source>
+        <translation>Das Standardszenario als JSON ausgeben.</translation>
     </message>
     <message>
         <source>&apos;scenario&apos; needs --print</source>
@@ -1346,6 +1362,18 @@
     <message>
         <source>unknown command &apos;%1&apos;</source>
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>Re-identify from recorded trials: the session runs again with each log
+answering in place of the robot.</source>
+        <translation>Neu identifizieren aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
+und jedes Log antwortet statt des Roboters.</translation>
+    </message>
+    <message>
+        <source>Run a commissioning session on the simulated robot, or with --robot can
+on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
+        <translation>Eine Inbetriebnahmesitzung am simulierten Roboter ausführen, oder mit --robot can
+an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <source>unexpected argument &apos;%1&apos;</source>
@@ -1394,6 +1422,10 @@
     <message>
         <source>trial %1: %2</source>
         <translation>Versuch %1: %2</translation>
+    </message>
+    <message>
+        <source>trial %1: %2, T = %3 s, no samples recorded</source>
+        <translation>Versuch %1: %2, T = %3 s, keine Abtastwerte aufgezeichnet</translation>
     </message>
     <message>
         <source>trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg</source>

@@ -656,6 +656,17 @@
     </message>
 </context>
 <context>
+    <name>OutputPath</name>
+    <message>
+        <source>%1: no path given</source>
+        <translation>%1：未给出路径</translation>
+    </message>
+    <message>
+        <source>%1: %2 is relative, and the folder it is taken from, %3, does not exist or is not a folder</source>
+        <translation>%1：%2 是相对路径，而其基准文件夹 %3 不存在或不是文件夹</translation>
+    </message>
+</context>
+<context>
     <name>ParameterFile</name>
     <message>
         <source>does not fit a REAL32 object entry, got %1</source>
@@ -1169,25 +1180,6 @@
     </message>
 </context>
 <context>
-    <name>Workspace</name>
-    <message>
-        <source>%1: %2: too many levels of symbolic links</source>
-        <translation>%1：%2：符号链接层级过多</translation>
-    </message>
-    <message>
-        <source>%1: no path given</source>
-        <translation>%1：未给出路径</translation>
-    </message>
-    <message>
-        <source>%1: the workspace %2 does not exist or is not a folder</source>
-        <translation>%1：工作区 %2 不存在或不是文件夹</translation>
-    </message>
-    <message>
-        <source>%1: %2 is outside the workspace %3 (resolved to %4)</source>
-        <translation>%1：%2 位于工作区 %3 之外（解析为 %4）</translation>
-    </message>
-</context>
-<context>
     <name>learnid-cli</name>
     <message>
         <source>learnid-cli: error: %1</source>
@@ -1201,9 +1193,9 @@
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--workspace DIR] [--quiet]
       Run a commissioning session on the simulated robot. The table goes to
-      stdout, progress to stderr. Output paths must lie inside the workspace
-      (default: the current directory). Files are written only when every
-      trial completed.
+      stdout, progress to stderr. Relative output paths are taken from
+      --workspace (default: the current directory). Files are written only
+      when every trial completed.
       --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
       runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
       --can-log writes every trial&apos;s frames as a candump log into DIR;
@@ -1213,6 +1205,8 @@
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
       Re-identify from recorded trials: the session runs again with each log
       (one per trial, in order) answering in place of the robot.
+  learnid-cli COMMAND --help
+      The options of one command.
 </source>
         <translation>用法：
   learnid-cli scenario --print
@@ -1221,7 +1215,7 @@
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--workspace DIR] [--quiet]
       在仿真机器人上运行一次调试会话。表格输出到 stdout，
-      进度输出到 stderr。输出路径必须位于工作区内
+      进度输出到 stderr。相对输出路径以 --workspace 为基准
       （默认：当前目录）。只有当所有试验都完成时
       才写入文件。
       --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
@@ -1233,7 +1227,21 @@
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
       根据记录的试验重新辨识：会话再次运行，由每个日志
       （每次试验一个，按顺序）代替机器人应答。
+  learnid-cli COMMAND --help
+      某个命令的选项。
 </translation>
+    </message>
+    <message>
+        <source>Usage: learnid-cli %1 [options]
+
+%2
+
+%3</source>
+        <translation>用法：learnid-cli %1 [选项]
+
+%2
+
+%3</translation>
     </message>
     <message>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
@@ -1268,72 +1276,80 @@
         <translation>--robot %1：%2</translation>
     </message>
     <message>
+        <source>Show this command&apos;s options.</source>
+        <translation>显示此命令的选项。</translation>
+    </message>
+    <message>
         <source>Print the default scenario.</source>
         <translation>输出默认场景。</translation>
     </message>
     <message>
-        <source>Scenario file.</source>
-        <translation>场景文件。</translation>
+        <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
+        <translation>场景文件（JSON，docs/scenario.md）；默认：论文场景。</translation>
     </message>
     <message>
-        <source>Learning law.</source>
-        <translation>学习律。</translation>
+        <source>Learning law: paper or improved.</source>
+        <translation>学习律：paper 或 improved。</translation>
     </message>
     <message>
-        <source>Learning trials.</source>
-        <translation>学习试验次数。</translation>
+        <source>Learning trials, 1 to 100.</source>
+        <translation>学习试验次数，1 到 100。</translation>
     </message>
     <message>
-        <source>JSON report.</source>
-        <translation>JSON 报告。</translation>
+        <source>Write the session report (JSON) to FILE.</source>
+        <translation>将会话报告（JSON）写入 FILE。</translation>
     </message>
     <message>
-        <source>Parameter file.</source>
-        <translation>参数文件。</translation>
+        <source>Write the parameter file (JSON and DCF) to FILE.</source>
+        <translation>将参数文件（JSON 和 DCF）写入 FILE。</translation>
     </message>
     <message>
-        <source>Trial CSV folder.</source>
-        <translation>试验 CSV 文件夹。</translation>
+        <source>Write each trial&apos;s samples as CSV into DIR.</source>
+        <translation>将每次试验的采样以 CSV 写入 DIR。</translation>
     </message>
     <message>
-        <source>Apply the final estimate.</source>
-        <translation>写入最终估计。</translation>
+        <source>Accept and apply the final estimate to the robot.</source>
+        <translation>接受最终估计并写入机器人。</translation>
     </message>
     <message>
-        <source>Workspace folder.</source>
-        <translation>工作区文件夹。</translation>
+        <source>Folder that relative output paths are taken from; default: the current directory.</source>
+        <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
-        <source>No progress on stderr.</source>
-        <translation>不在 stderr 上输出进度。</translation>
+        <source>No progress lines on stderr.</source>
+        <translation>不在 stderr 上输出进度行。</translation>
     </message>
     <message>
-        <source>sim or can.</source>
-        <translation>sim 或 can。</translation>
+        <source>sim (default) or can.</source>
+        <translation>sim（默认）或 can。</translation>
     </message>
     <message>
-        <source>QCanBus plugin.</source>
-        <translation>QCanBus 插件。</translation>
+        <source>QCanBus plugin, e.g. socketcan or virtualcan.</source>
+        <translation>QCanBus 插件，例如 socketcan 或 virtualcan。</translation>
     </message>
     <message>
-        <source>CAN interface.</source>
-        <translation>CAN 接口。</translation>
+        <source>CAN interface, e.g. can0.</source>
+        <translation>CAN 接口，例如 can0。</translation>
     </message>
     <message>
-        <source>CANopen node per joint.</source>
-        <translation>每个关节的 CANopen 节点。</translation>
+        <source>CANopen node id of each joint&apos;s drive, e.g. 1,2.</source>
+        <translation>每个关节驱动器的 CANopen 节点号，例如 1,2。</translation>
     </message>
     <message>
         <source>Longest SYNC gap in a trial [ms].</source>
         <translation>试验中最长的 SYNC 间隔 [ms]。</translation>
     </message>
     <message>
-        <source>Candump log folder.</source>
-        <translation>candump 日志文件夹。</translation>
+        <source>Write each trial&apos;s CAN frames as a candump log into DIR.</source>
+        <translation>将每次试验的 CAN 帧以 candump 日志写入 DIR。</translation>
     </message>
     <message>
-        <source>Recorded trial log.</source>
-        <translation>记录的试验日志。</translation>
+        <source>A recorded trial (candump log); once per trial, in order.</source>
+        <translation>一次记录的试验（candump 日志）；每次试验一个，按顺序。</translation>
+    </message>
+    <message>
+        <source>Print the default scenario as JSON.</source>
+        <translation>以 JSON 格式输出默认场景。</translation>
     </message>
     <message>
         <source>&apos;scenario&apos; needs --print</source>
@@ -1346,6 +1362,18 @@
     <message>
         <source>unknown command &apos;%1&apos;</source>
         <translation>未知命令 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>Re-identify from recorded trials: the session runs again with each log
+answering in place of the robot.</source>
+        <translation>根据记录的试验重新辨识：会话再次运行，
+由每个日志代替机器人应答。</translation>
+    </message>
+    <message>
+        <source>Run a commissioning session on the simulated robot, or with --robot can
+on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
+        <translation>在仿真机器人上运行调试会话，或使用 --robot can
+在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）。</translation>
     </message>
     <message>
         <source>unexpected argument &apos;%1&apos;</source>
@@ -1394,6 +1422,10 @@
     <message>
         <source>trial %1: %2</source>
         <translation>试验 %1：%2</translation>
+    </message>
+    <message>
+        <source>trial %1: %2, T = %3 s, no samples recorded</source>
+        <translation>试验 %1：%2，T = %3 s，未记录采样</translation>
     </message>
     <message>
         <source>trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg</source>

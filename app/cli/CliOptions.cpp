@@ -1,6 +1,6 @@
 #include "cli/CliOptions.h"
 
-#include "io/Workspace.h"
+#include "io/OutputPath.h"
 #include "model/Error.h"
 
 #include <QCommandLineParser>
@@ -26,9 +26,9 @@ QString usageText()
               "                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]\n"
               "                  [--workspace DIR] [--quiet]\n"
               "      Run a commissioning session on the simulated robot. The table goes to\n"
-              "      stdout, progress to stderr. Output paths must lie inside the workspace\n"
-              "      (default: the current directory). Files are written only when every\n"
-              "      trial completed.\n"
+              "      stdout, progress to stderr. Relative output paths are taken from\n"
+              "      --workspace (default: the current directory). Files are written only\n"
+              "      when every trial completed.\n"
               "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
               "      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);\n"
               "      --can-log writes every trial's frames as a candump log into DIR;\n"
@@ -37,7 +37,19 @@ QString usageText()
               "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
               "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
               "      Re-identify from recorded trials: the session runs again with each log\n"
-              "      (one per trial, in order) answering in place of the robot.\n");
+              "      (one per trial, in order) answering in place of the robot.\n"
+              "  learnid-cli COMMAND --help\n"
+              "      The options of one command.\n");
+}
+
+// `learnid-cli COMMAND --help`: what the command does and its options, as the parser lists them.
+QString commandHelp(const QString &command, const QString &summary,
+                    const QCommandLineParser &parser)
+{
+    QString options = parser.helpText();
+    const qsizetype at = options.indexOf(QLatin1String("Options:"));
+    options = at >= 0 ? options.mid(at) : options;
+    return tr("Usage: learnid-cli %1 [options]\n\n%2\n\n%3").arg(command, summary, options);
 }
 
 // --robot and the CAN options; returns the error naming the option and value. An empty
@@ -119,42 +131,51 @@ CommandLine parseCommandLine(const QStringList &args)
 
     QCommandLineParser parser;
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  tr("Show this command's options."));
     const QCommandLineOption print(QStringLiteral("print"), tr("Print the default scenario."));
-    const QCommandLineOption scenario(QStringLiteral("scenario"), tr("Scenario file."),
+    const QCommandLineOption scenario(QStringLiteral("scenario"),
+                                      tr("Scenario file (JSON, docs/scenario.md); default: the "
+                                         "paper scenario."),
                                       QStringLiteral("FILE"));
-    const QCommandLineOption estimator(QStringLiteral("estimator"), tr("Learning law."),
+    const QCommandLineOption estimator(QStringLiteral("estimator"), tr("Learning law: paper or improved."),
                                        QStringLiteral("LAW"));
-    const QCommandLineOption iterations(QStringLiteral("iterations"), tr("Learning trials."),
+    const QCommandLineOption iterations(QStringLiteral("iterations"), tr("Learning trials, 1 to 100."),
                                         QStringLiteral("N"));
-    const QCommandLineOption report(QStringLiteral("report"), tr("JSON report."),
+    const QCommandLineOption report(QStringLiteral("report"), tr("Write the session report (JSON) to FILE."),
                                     QStringLiteral("FILE"));
-    const QCommandLineOption exportFile(QStringLiteral("export"), tr("Parameter file."),
+    const QCommandLineOption exportFile(QStringLiteral("export"), tr("Write the parameter file (JSON and DCF) to FILE."),
                                         QStringLiteral("FILE"));
-    const QCommandLineOption trialCsv(QStringLiteral("trial-csv"), tr("Trial CSV folder."),
+    const QCommandLineOption trialCsv(QStringLiteral("trial-csv"), tr("Write each trial's samples as CSV into DIR."),
                                       QStringLiteral("DIR"));
-    const QCommandLineOption apply(QStringLiteral("apply"), tr("Apply the final estimate."));
-    const QCommandLineOption workspace(QStringLiteral("workspace"), tr("Workspace folder."),
+    const QCommandLineOption apply(QStringLiteral("apply"), tr("Accept and apply the final estimate to the robot."));
+    const QCommandLineOption workspace(QStringLiteral("workspace"), tr("Folder that relative output paths are taken from; default: "
+                                          "the current directory."),
                                        QStringLiteral("DIR"));
-    const QCommandLineOption quiet(QStringLiteral("quiet"), tr("No progress on stderr."));
-    const QCommandLineOption robot(QStringLiteral("robot"), tr("sim or can."), QStringLiteral("R"));
-    const QCommandLineOption canPlugin(QStringLiteral("can-plugin"), tr("QCanBus plugin."),
+    const QCommandLineOption quiet(QStringLiteral("quiet"), tr("No progress lines on stderr."));
+    const QCommandLineOption robot(QStringLiteral("robot"), tr("sim (default) or can."),
+                                    QStringLiteral("R"));
+    const QCommandLineOption canPlugin(QStringLiteral("can-plugin"), tr("QCanBus plugin, e.g. socketcan or virtualcan."),
                                        QStringLiteral("P"));
-    const QCommandLineOption canInterface(QStringLiteral("can-interface"), tr("CAN interface."),
+    const QCommandLineOption canInterface(QStringLiteral("can-interface"), tr("CAN interface, e.g. can0."),
                                           QStringLiteral("I"));
-    const QCommandLineOption nodes(QStringLiteral("nodes"), tr("CANopen node per joint."),
+    const QCommandLineOption nodes(QStringLiteral("nodes"), tr("CANopen node id of each joint's drive, e.g. 1,2."),
                                    QStringLiteral("LIST"));
     const QCommandLineOption canSyncTimeout(QStringLiteral("can-sync-timeout"),
                                             tr("Longest SYNC gap in a trial [ms]."),
                                             QStringLiteral("MS"));
-    const QCommandLineOption canLog(QStringLiteral("can-log"), tr("Candump log folder."),
+    const QCommandLineOption canLog(QStringLiteral("can-log"), tr("Write each trial's CAN frames as a candump log into DIR."),
                                     QStringLiteral("DIR"));
-    const QCommandLineOption candump(QStringLiteral("candump"), tr("Recorded trial log."),
+    const QCommandLineOption candump(QStringLiteral("candump"), tr("A recorded trial (candump log); once per trial, in order."),
                                      QStringLiteral("FILE"));
 
     if (command == QLatin1String("scenario")) {
-        parser.addOption(print);
+        parser.addOptions({print, help});
         if (!parser.parse(args.mid(1))) {
             cl.error = parser.errorText();
+        } else if (parser.isSet(help)) {
+            cl.command = CommandLine::Command::Help;
+            cl.usage = commandHelp(command, tr("Print the default scenario as JSON."), parser);
         } else if (!parser.isSet(print) || !parser.positionalArguments().isEmpty()) {
             cl.error = tr("'scenario' needs --print");
         } else {
@@ -169,8 +190,8 @@ CommandLine parseCommandLine(const QStringList &args)
         return cl;
     }
 
-    parser.addOptions(
-        {scenario, estimator, iterations, report, exportFile, trialCsv, apply, workspace, quiet});
+    parser.addOptions({scenario, estimator, iterations, report, exportFile, trialCsv, apply,
+                       workspace, quiet, help});
     parser.addOption(nodes);
     if (replay)
         parser.addOption(candump);
@@ -178,6 +199,17 @@ CommandLine parseCommandLine(const QStringList &args)
         parser.addOptions({robot, canPlugin, canInterface, canLog, canSyncTimeout});
     if (!parser.parse(args.mid(1))) {
         cl.error = parser.errorText();
+        return cl;
+    }
+    if (parser.isSet(help)) {
+        cl.command = CommandLine::Command::Help;
+        cl.usage = commandHelp(
+            command,
+            replay ? tr("Re-identify from recorded trials: the session runs again with each log\n"
+                        "answering in place of the robot.")
+                   : tr("Run a commissioning session on the simulated robot, or with --robot can\n"
+                        "on CiA 402 drives on a CAN bus (docs/can-protocol.md)."),
+            parser);
         return cl;
     }
     if (!parser.positionalArguments().isEmpty()) {
@@ -226,16 +258,16 @@ CommandLine parseCommandLine(const QStringList &args)
     try {
         if (parser.isSet(report))
             run.reportPath =
-                resolveInWorkspace(ws, parser.value(report), QStringLiteral("--report"));
+                resolveOutputPath(ws, parser.value(report), QStringLiteral("--report"));
         if (parser.isSet(exportFile))
             run.exportPath =
-                resolveInWorkspace(ws, parser.value(exportFile), QStringLiteral("--export"));
+                resolveOutputPath(ws, parser.value(exportFile), QStringLiteral("--export"));
         if (parser.isSet(trialCsv))
             run.trialCsvDir =
-                resolveInWorkspace(ws, parser.value(trialCsv), QStringLiteral("--trial-csv"));
+                resolveOutputPath(ws, parser.value(trialCsv), QStringLiteral("--trial-csv"));
         if (!replay && parser.isSet(canLog))
             run.can.candumpDir =
-                resolveInWorkspace(ws, parser.value(canLog), QStringLiteral("--can-log"));
+                resolveOutputPath(ws, parser.value(canLog), QStringLiteral("--can-log"));
     } catch (const Error &e) {
         cl.error = e.message();
         cl.errorCode = ExitBadInput;

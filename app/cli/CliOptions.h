@@ -17,7 +17,7 @@ enum ExitCode {
     ExitWriteFailed = 4, ///< an output could not be written; no output was left half-written
 };
 
-/// What `learnid-cli run` was asked to do. Output paths are already resolved in the workspace.
+/// What `learnid-cli run` was asked to do. Output paths are already absolute (resolveOutputPath).
 struct RunOptions
 {
     QString scenarioPath;          ///< empty: the built-in paper scenario
@@ -44,8 +44,8 @@ struct CommandLine
 };
 
 /// Parses arguments (without the program name's special handling: args[0] is the program).
-/// Output paths must lie inside the workspace directory (--workspace, default: the current
-/// directory); an error names the option and the path.
+/// Relative output paths are taken from --workspace (default: the current directory); an error
+/// names the option and the path. `COMMAND --help` gives Help with that command's usage.
 CommandLine parseCommandLine(const QStringList &args);
 
 } // namespace learnid::cli

@@ -77,6 +77,12 @@ QString trialSummary(const TrialResult &result)
     // A trial that did not complete ends the series: its reason follows as the error line.
     if (result.status() == TrialStatus::Refused)
         return tr("trial %1: %2").arg(result.index).arg(trialStatusName(result.status()));
+    if (result.record.samples() == 0) {
+        return tr("trial %1: %2, T = %3 s, no samples recorded")
+            .arg(result.index)
+            .arg(trialStatusName(result.status()))
+            .arg(result.check.rule.duration, 0, 'f', 3);
+    }
     QStringList errors;
     for (Eigen::Index j = 0; j < result.maxTrackingErrorDeg.size(); ++j)
         errors << QString::number(result.maxTrackingErrorDeg[j], 'f', 5);

@@ -4,14 +4,13 @@
 
 namespace learnid {
 
-/// Resolves an output path given by a user (--report, --export, --trial-csv): relative paths
-/// are taken relative to workspaceDir. The path is walked the way the OS will walk it: `..`
-/// steps up from where the walk really is, and every symbolic link on the way (a dangling one
-/// too, since writing through it would create its target) is replaced by its target. The part
-/// that does not exist yet is taken as written.
-/// Returns the resolved absolute path, which is what the caller should write to.
-/// Throws Error naming `what` (e.g. "--report") and the path when the result lies outside the
-/// workspace, when the workspace does not exist, or when the path is empty.
-QString resolveInWorkspace(const QString &workspaceDir, const QString &path, const QString &what);
+/// The absolute path of an output a user named (--report, --export, --trial-csv, --can-log):
+/// relative paths are taken relative to baseDir (learnid-cli's --workspace, default the current
+/// directory), absolute ones as given. Anywhere the user may write is allowed: the path is the
+/// user's choice; the writers keep every write atomic and all-or-nothing. The path is not cleaned
+/// lexically ("link/.." is left for the operating system to walk, as the user's shell would).
+/// Throws Error naming `what` (e.g. "--report") for an empty path, or a relative one when baseDir
+/// does not exist or is not a folder.
+QString resolveOutputPath(const QString &baseDir, const QString &path, const QString &what);
 
 } // namespace learnid

@@ -23,6 +23,9 @@ private slots:
     void badInput_exitsWithMessageAndWritesNothing();
     void unstableController_isRefusedAndWritesNothing();
     void unknownOption_printsUsage();
+    void commandHelp_listsThatCommandsOptions_data();
+    void commandHelp_listsThatCommandsOptions();
+    void outputPaths_anywhereTheUserChooses();
 
 private:
     using Result = learnid::test::ToolRun;
@@ -125,7 +128,8 @@ void TestCli::run_writesReportParameterFileAndTrialCsv()
     }
 }
 
-// DESIGN.md §1.2 and paper Table 1: after one learning, a within ~1 %, b about -25 %, c about -10 %.
+// docs/method.md §2.1 and paper Table 1: after one learning, a within ~1 %, b about -25 %,
+// c about -10 %.
 void TestCli::paperEstimator_showsTableOneShape()
 {
     QTemporaryDir dir;
@@ -160,7 +164,7 @@ void TestCli::badInput_exitsWithMessageAndWritesNothing_data()
     QTest::newRow("string for number") << QByteArray(R"({"controller": {"lambda": "nan"}})") << run << QStringLiteral("controller.lambda");
     QTest::newRow("unknown law") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--estimator"), QStringLiteral("magic")} << QStringLiteral("magic");
     QTest::newRow("zero iterations") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("0")} << QStringLiteral("--iterations");
-    QTest::newRow("report outside workspace") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--report"), QStringLiteral("../escape.json")} << QStringLiteral("--report");
+    QTest::newRow("empty report path") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--report"), QString()} << QStringLiteral("--report: no path given");
 }
 
 void TestCli::badInput_exitsWithMessageAndWritesNothing()
@@ -177,10 +181,9 @@ void TestCli::badInput_exitsWithMessageAndWritesNothing()
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.contains(expected), qPrintable(r.err));
     QVERIFY(!QFile::exists(QDir(ws).filePath(QStringLiteral("p.json"))));
-    QVERIFY(!QFile::exists(parent.filePath(QStringLiteral("escape.json"))));
 }
 
-// The paper's lambda = 40 is unstable for the true inertia (DESIGN.md §1.4): the session
+// The paper's lambda = 40 is unstable for the true inertia (docs/method.md §3): the session
 // refuses the trial once the estimate nears the truth, exits non-zero and writes nothing.
 void TestCli::unstableController_isRefusedAndWritesNothing()
 {
@@ -202,6 +205,59 @@ void TestCli::unknownOption_printsUsage()
     QCOMPARE(r.exitCode, 1);
     QVERIFY(r.err.contains(QStringLiteral("frobnicate")));
     QVERIFY(r.err.contains(QStringLiteral("Usage")));
+}
+
+void TestCli::commandHelp_listsThatCommandsOptions_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QStringList>("options"); // each must be listed
+    QTest::addColumn<QStringList>("absent");  // other commands' options, not listed
+    QTest::newRow("run --help") << QStringList{QStringLiteral("run"), QStringLiteral("--help")}
+                                << QStringList{QStringLiteral("--scenario"), QStringLiteral("--robot"), QStringLiteral("--can-sync-timeout"), QStringLiteral("--workspace")}
+                                << QStringList{QStringLiteral("--candump"), QStringLiteral("--print")};
+    QTest::newRow("replay -h") << QStringList{QStringLiteral("replay"), QStringLiteral("-h")}
+                               << QStringList{QStringLiteral("--candump"), QStringLiteral("--nodes")}
+                               << QStringList{QStringLiteral("--robot"), QStringLiteral("--print")};
+    QTest::newRow("scenario --help") << QStringList{QStringLiteral("scenario"), QStringLiteral("--help")}
+                                     << QStringList{QStringLiteral("--print")}
+                                     << QStringList{QStringLiteral("--scenario"), QStringLiteral("--robot")};
+}
+
+void TestCli::commandHelp_listsThatCommandsOptions()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QStringList, options);
+    QFETCH(QStringList, absent);
+    QTemporaryDir dir;
+    const Result r = cli(args, dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY2(r.out.startsWith(QStringLiteral("Usage: learnid-cli %1 [options]").arg(args.first())),
+             qPrintable(r.out));
+    for (const QString &o : options)
+        QVERIFY2(r.out.contains(o), qPrintable(o + QStringLiteral(" missing in:\n") + r.out));
+    for (const QString &o : absent)
+        QVERIFY2(!r.out.contains(o), qPrintable(o + QStringLiteral(" listed in:\n") + r.out));
+    QVERIFY(r.err.isEmpty());
+    QCOMPARE(QDir(dir.path()).entryList(QDir::NoDotAndDotDot | QDir::AllEntries).size(), 0);
+}
+
+// A path typed on the command line is the user's choice: outside the current folder, absolute,
+// or through "..", it is written there (all files or none, as ever).
+void TestCli::outputPaths_anywhereTheUserChooses()
+{
+    QTemporaryDir parent;
+    const QString cwd = parent.filePath(QStringLiteral("cwd"));
+    const QString elsewhere = parent.filePath(QStringLiteral("elsewhere"));
+    QVERIFY(QDir().mkpath(cwd) && QDir().mkpath(elsewhere));
+    const QString report = QDir(elsewhere).filePath(QStringLiteral("r.json"));
+    const Result r = cli({QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("1"),
+                          QStringLiteral("--report"), report, QStringLiteral("--export"),
+                          QStringLiteral("../p.json"), QStringLiteral("--quiet")},
+                         cwd);
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(readJson(report).value(QStringLiteral("estimator")).toString(), QStringLiteral("improved"));
+    QVERIFY(QFile::exists(parent.filePath(QStringLiteral("p.json"))));
+    QVERIFY(QFile::exists(parent.filePath(QStringLiteral("p.dcf"))));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

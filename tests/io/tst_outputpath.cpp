@@ -1,5 +1,5 @@
 #include "IoTestSupport.h"
-#include "io/Workspace.h"
+#include "io/OutputPath.h"
 
 #include <QDir>
 #include <QFile>
@@ -14,160 +14,87 @@ const QString what = QStringLiteral("--report");
 
 } // namespace
 
-class TestWorkspace : public QObject
+class TestOutputPath : public QObject
 {
     Q_OBJECT
 
 private slots:
     void init();
-    void relativePath_resolvesInsideTheWorkspace();
+    void relativePath_isTakenFromTheBaseFolder();
     void notYetExistingFolders_areAccepted();
-    void absolutePathInside_isAccepted();
-    void dotDotInside_isAccepted();
-    void dotDotEscape_isRejectedNamingOptionAndPath();
-    void absolutePathOutside_isRejected();
-    void symlinkToOutside_isRejected();
-    void danglingSymlinkToOutside_isRejected();
-    void relativeSymlinkUpwards_isRejected();
-    void symlinkInside_isAccepted();
-    void dotDotAfterSymlink_leavesTheLinkTarget();
-    void workspaceGivenThroughASymlink_isAccepted();
-    void missingWorkspace_isRejected();
+    void pathsOutsideTheBase_areTheUsersChoice();
+    void dotDot_isLeftForTheSystemToWalk();
+    void missingBase_isRejectedForARelativePath();
     void emptyPath_isRejected();
 
 private:
-    QString ws() const { return QDir(m_root->path()).canonicalPath() + QStringLiteral("/ws"); }
-    QString outside() const
-    {
-        return QDir(m_root->path()).canonicalPath() + QStringLiteral("/outside");
-    }
+    QString base() const { return QDir(m_root->path()).canonicalPath() + QStringLiteral("/ws"); }
 
     std::unique_ptr<QTemporaryDir> m_root;
 };
 
-void TestWorkspace::init()
+void TestOutputPath::init()
 {
     m_root = std::make_unique<QTemporaryDir>();
     QVERIFY(m_root->isValid());
-    QVERIFY(QDir().mkpath(ws() + QStringLiteral("/sub/deeper")));
-    QVERIFY(QDir().mkpath(outside()));
+    QVERIFY(QDir().mkpath(base() + QStringLiteral("/sub")));
 }
 
-void TestWorkspace::relativePath_resolvesInsideTheWorkspace()
+void TestOutputPath::relativePath_isTakenFromTheBaseFolder()
 {
-    QCOMPARE(resolveInWorkspace(ws(), QStringLiteral("out.json"), what),
-             ws() + QStringLiteral("/out.json"));
-    QCOMPARE(resolveInWorkspace(ws(), QStringLiteral("./sub//out.json"), what),
-             ws() + QStringLiteral("/sub/out.json"));
+    QCOMPARE(resolveOutputPath(base(), QStringLiteral("out.json"), what),
+             base() + QStringLiteral("/out.json"));
+    QCOMPARE(resolveOutputPath(base(), QStringLiteral("./sub//out.json"), what),
+             base() + QStringLiteral("/sub/out.json"));
 }
 
-void TestWorkspace::notYetExistingFolders_areAccepted()
+void TestOutputPath::notYetExistingFolders_areAccepted()
 {
-    QCOMPARE(resolveInWorkspace(ws(), QStringLiteral("new/trials"), what),
-             ws() + QStringLiteral("/new/trials"));
+    QCOMPARE(resolveOutputPath(base(), QStringLiteral("new/trials"), what),
+             base() + QStringLiteral("/new/trials"));
 }
 
-void TestWorkspace::absolutePathInside_isAccepted()
+void TestOutputPath::pathsOutsideTheBase_areTheUsersChoice()
 {
-    const QString path = ws() + QStringLiteral("/sub/out.json");
-    QCOMPARE(resolveInWorkspace(ws(), path, what), path);
+    const QString elsewhere = QDir(m_root->path()).canonicalPath() + QStringLiteral("/r.json");
+    QCOMPARE(resolveOutputPath(base(), elsewhere, what), elsewhere);
+    QCOMPARE(resolveOutputPath(base(), QStringLiteral("/tmp/r.json"), what),
+             QStringLiteral("/tmp/r.json"));
 }
 
-void TestWorkspace::dotDotInside_isAccepted()
+void TestOutputPath::dotDot_isLeftForTheSystemToWalk()
 {
-    QCOMPARE(resolveInWorkspace(ws(), QStringLiteral("sub/deeper/../../out.json"), what),
-             ws() + QStringLiteral("/out.json"));
+    // base/jump -> other/a/b: "jump/../x.json" is other/a/x.json for the system; a lexical
+    // clean would make it base/x.json. The resolved path must land where the system writes.
+    const QString other = QDir(m_root->path()).canonicalPath() + QStringLiteral("/other");
+    QVERIFY(QDir().mkpath(other + QStringLiteral("/a/b")));
+    QVERIFY(QFile::link(other + QStringLiteral("/a/b"), base() + QStringLiteral("/jump")));
+    const QString resolved = resolveOutputPath(base(), QStringLiteral("jump/../x.json"), what);
+    QFile f(resolved);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.close();
+    QVERIFY(QFile::exists(other + QStringLiteral("/a/x.json")));
+    QVERIFY(!QFile::exists(base() + QStringLiteral("/x.json")));
+    QCOMPARE(resolveOutputPath(base(), QStringLiteral("../up.json"), what),
+             base() + QStringLiteral("/../up.json"));
 }
 
-void TestWorkspace::dotDotEscape_isRejectedNamingOptionAndPath()
-{
-    const QString message = test::errorOf(
-        [&] { resolveInWorkspace(ws(), QStringLiteral("sub/../../out.json"), what); });
-    QVERIFY2(message.startsWith(
-                 QStringLiteral("--report: sub/../../out.json is outside the workspace ")),
-             qPrintable(message));
-    LEARNID_VERIFY_ERROR(resolveInWorkspace(ws(), QStringLiteral("../ws2/out.json"), what),
-                         QStringLiteral("is outside the workspace"));
-}
-
-void TestWorkspace::absolutePathOutside_isRejected()
-{
-    LEARNID_VERIFY_ERROR(resolveInWorkspace(ws(), outside() + QStringLiteral("/x.json"), what),
-                         QStringLiteral("is outside the workspace"));
-    LEARNID_VERIFY_ERROR(resolveInWorkspace(ws(), QStringLiteral("/etc/passwd"), what),
-                         QStringLiteral("--report: /etc/passwd is outside"));
-}
-
-void TestWorkspace::symlinkToOutside_isRejected()
-{
-    QVERIFY(QFile::link(outside(), ws() + QStringLiteral("/link")));
-    const QString message =
-        test::errorOf([&] { resolveInWorkspace(ws(), QStringLiteral("link/out.json"), what); });
-    QVERIFY2(message.contains(QStringLiteral("link/out.json is outside the workspace")),
-             qPrintable(message));
-    QVERIFY2(message.contains(outside() + QStringLiteral("/out.json")), qPrintable(message));
-}
-
-void TestWorkspace::danglingSymlinkToOutside_isRejected()
-{
-    // Writing through it would create the target outside.
-    QVERIFY(
-        QFile::link(outside() + QStringLiteral("/new.json"), ws() + QStringLiteral("/out.json")));
-    LEARNID_VERIFY_ERROR(resolveInWorkspace(ws(), QStringLiteral("out.json"), what),
-                         QStringLiteral("is outside the workspace"));
-}
-
-void TestWorkspace::relativeSymlinkUpwards_isRejected()
-{
-    QVERIFY(QFile::link(QStringLiteral("../../outside"), ws() + QStringLiteral("/sub/up")));
-    LEARNID_VERIFY_ERROR(resolveInWorkspace(ws(), QStringLiteral("sub/up/x.csv"), what),
-                         QStringLiteral("is outside the workspace"));
-}
-
-void TestWorkspace::symlinkInside_isAccepted()
-{
-    QVERIFY(QFile::link(QStringLiteral("sub/deeper"), ws() + QStringLiteral("/short")));
-    QCOMPARE(resolveInWorkspace(ws(), QStringLiteral("short/out.json"), what),
-             ws() + QStringLiteral("/sub/deeper/out.json"));
-}
-
-void TestWorkspace::dotDotAfterSymlink_leavesTheLinkTarget()
-{
-    // ws/jump -> outside/a/b: "jump/../x" is outside/a/x for the OS, although a lexical clean
-    // would make it ws/x.
-    QVERIFY(QDir().mkpath(outside() + QStringLiteral("/a/b")));
-    QVERIFY(QFile::link(outside() + QStringLiteral("/a/b"), ws() + QStringLiteral("/jump")));
-    const QString message =
-        test::errorOf([&] { resolveInWorkspace(ws(), QStringLiteral("jump/../x.json"), what); });
-    QVERIFY2(message.contains(outside() + QStringLiteral("/a/x.json")), qPrintable(message));
-    // and inside: ws/in -> ws/sub/deeper, "in/../x" is ws/sub/x
-    QVERIFY(QFile::link(ws() + QStringLiteral("/sub/deeper"), ws() + QStringLiteral("/in")));
-    QCOMPARE(resolveInWorkspace(ws(), QStringLiteral("in/../x.json"), what),
-             ws() + QStringLiteral("/sub/x.json"));
-}
-
-void TestWorkspace::workspaceGivenThroughASymlink_isAccepted()
-{
-    const QString alias = QDir(m_root->path()).canonicalPath() + QStringLiteral("/alias");
-    QVERIFY(QFile::link(ws(), alias));
-    QCOMPARE(resolveInWorkspace(alias, QStringLiteral("out.json"), what),
-             ws() + QStringLiteral("/out.json"));
-    QCOMPARE(resolveInWorkspace(alias, alias + QStringLiteral("/out.json"), what),
-             ws() + QStringLiteral("/out.json"));
-}
-
-void TestWorkspace::missingWorkspace_isRejected()
+void TestOutputPath::missingBase_isRejectedForARelativePath()
 {
     LEARNID_VERIFY_ERROR(
-        resolveInWorkspace(ws() + QStringLiteral("/none"), QStringLiteral("x"), what),
-        QStringLiteral("--report: the workspace"));
+        resolveOutputPath(QStringLiteral("/nonexistent/ws"), QStringLiteral("r.json"), what),
+        QStringLiteral("--report: r.json is relative, and the folder it is taken from, "
+                       "/nonexistent/ws, does not exist or is not a folder"));
+    QCOMPARE(resolveOutputPath(QStringLiteral("/nonexistent/ws"), QStringLiteral("/tmp/r.json"),
+                               what),
+             QStringLiteral("/tmp/r.json"));
 }
 
-void TestWorkspace::emptyPath_isRejected()
+void TestOutputPath::emptyPath_isRejected()
 {
-    LEARNID_VERIFY_ERROR(resolveInWorkspace(ws(), QString(), what),
+    LEARNID_VERIFY_ERROR(resolveOutputPath(base(), QString(), what),
                          QStringLiteral("--report: no path given"));
 }
 
-QTEST_GUILESS_MAIN(TestWorkspace)
-#include "tst_workspace.moc"
+QTEST_GUILESS_MAIN(TestOutputPath)
+#include "tst_outputpath.moc"

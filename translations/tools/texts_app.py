@@ -10,9 +10,9 @@ USAGE_EN = (
     "                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]\n"
     "                  [--workspace DIR] [--quiet]\n"
     "      Run a commissioning session on the simulated robot. The table goes to\n"
-    "      stdout, progress to stderr. Output paths must lie inside the workspace\n"
-    "      (default: the current directory). Files are written only when every\n"
-    "      trial completed.\n"
+    "      stdout, progress to stderr. Relative output paths are taken from\n"
+    "      --workspace (default: the current directory). Files are written only\n"
+    "      when every trial completed.\n"
     "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
     "      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);\n"
     "      --can-log writes every trial's frames as a candump log into DIR;\n"
@@ -21,7 +21,9 @@ USAGE_EN = (
     "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
     "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
     "      Re-identify from recorded trials: the session runs again with each log\n"
-    "      (one per trial, in order) answering in place of the robot.\n")
+    "      (one per trial, in order) answering in place of the robot.\n"
+    "  learnid-cli COMMAND --help\n"
+    "      The options of one command.\n")
 USAGE_DE = (
     "Aufruf:\n"
     "  learnid-cli scenario --print\n"
@@ -30,9 +32,9 @@ USAGE_DE = (
     "                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]\n"
     "                  [--workspace DIR] [--quiet]\n"
     "      Führt eine Inbetriebnahmesitzung am simulierten Roboter aus. Tabelle nach\n"
-    "      stdout, Fortschritt nach stderr. Ausgabepfade müssen im Arbeitsbereich\n"
-    "      liegen (Standard: aktuelles Verzeichnis). Dateien werden nur geschrieben,\n"
-    "      wenn jeder Versuch abgeschlossen wurde.\n"
+    "      stdout, Fortschritt nach stderr. Relative Ausgabepfade gelten ab\n"
+    "      --workspace (Standard: aktuelles Verzeichnis). Dateien werden nur\n"
+    "      geschrieben, wenn jeder Versuch abgeschlossen wurde.\n"
     "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
     "      führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);\n"
     "      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR;\n"
@@ -41,7 +43,9 @@ USAGE_DE = (
     "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
     "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
     "      Identifiziert neu aus aufgezeichneten Versuchen: die Sitzung läuft erneut,\n"
-    "      und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.\n")
+    "      und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.\n"
+    "  learnid-cli COMMAND --help\n"
+    "      Die Optionen eines Befehls.\n")
 USAGE_ZH = (
     "用法：\n"
     "  learnid-cli scenario --print\n"
@@ -50,7 +54,7 @@ USAGE_ZH = (
     "                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]\n"
     "                  [--workspace DIR] [--quiet]\n"
     "      在仿真机器人上运行一次调试会话。表格输出到 stdout，\n"
-    "      进度输出到 stderr。输出路径必须位于工作区内\n"
+    "      进度输出到 stderr。相对输出路径以 --workspace 为基准\n"
     "      （默认：当前目录）。只有当所有试验都完成时\n"
     "      才写入文件。\n"
     "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
@@ -61,7 +65,9 @@ USAGE_ZH = (
     "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
     "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
     "      根据记录的试验重新辨识：会话再次运行，由每个日志\n"
-    "      （每次试验一个，按顺序）代替机器人应答。\n")
+    "      （每次试验一个，按顺序）代替机器人应答。\n"
+    "  learnid-cli COMMAND --help\n"
+    "      某个命令的选项。\n")
 
 T = {
  USAGE_EN: (USAGE_DE, USAGE_ZH),
@@ -80,21 +86,30 @@ T = {
  '--nodes %1: %2': ('--nodes %1: %2', '--nodes %1：%2'),
  '--robot %1: %2': ('--robot %1: %2', '--robot %1：%2'),
  'Print the default scenario.': ('Standardszenario ausgeben.', '输出默认场景。'),
- 'Scenario file.': ('Szenariodatei.', '场景文件。'),
- 'Learning law.': ('Lerngesetz.', '学习律。'),
- 'Learning trials.': ('Lernversuche.', '学习试验次数。'),
- 'JSON report.': ('JSON-Bericht.', 'JSON 报告。'),
- 'Parameter file.': ('Parameterdatei.', '参数文件。'),
- 'Trial CSV folder.': ('Ordner für Versuchs-CSV.', '试验 CSV 文件夹。'),
- 'Apply the final estimate.': ('Die letzte Schätzung übertragen.', '写入最终估计。'),
- 'Workspace folder.': ('Arbeitsbereichsordner.', '工作区文件夹。'),
- 'No progress on stderr.': ('Kein Fortschritt auf stderr.', '不在 stderr 上输出进度。'),
- 'sim or can.': ('sim oder can.', 'sim 或 can。'),
- 'QCanBus plugin.': ('QCanBus-Plugin.', 'QCanBus 插件。'),
- 'CAN interface.': ('CAN-Schnittstelle.', 'CAN 接口。'),
- 'CANopen node per joint.': ('CANopen-Knoten pro Gelenk.', '每个关节的 CANopen 节点。'),
- 'Candump log folder.': ('Ordner für candump-Logs.', 'candump 日志文件夹。'),
- 'Recorded trial log.': ('Aufgezeichnetes Versuchslog.', '记录的试验日志。'),
+ 'Scenario file (JSON, docs/scenario.md); default: the paper scenario.':
+   ('Szenariodatei (JSON, docs/scenario.md); Standard: das Szenario des Artikels.', '场景文件（JSON，docs/scenario.md）；默认：论文场景。'),
+ 'Learning law: paper or improved.': ('Lerngesetz: paper oder improved.', '学习律：paper 或 improved。'),
+ 'Learning trials, 1 to 100.': ('Lernversuche, 1 bis 100.', '学习试验次数，1 到 100。'),
+ 'Write the session report (JSON) to FILE.': ('Den Sitzungsbericht (JSON) nach FILE schreiben.', '将会话报告（JSON）写入 FILE。'),
+ 'Write the parameter file (JSON and DCF) to FILE.': ('Die Parameterdatei (JSON und DCF) nach FILE schreiben.', '将参数文件（JSON 和 DCF）写入 FILE。'),
+ "Write each trial's samples as CSV into DIR.": ('Die Abtastwerte jedes Versuchs als CSV nach DIR schreiben.', '将每次试验的采样以 CSV 写入 DIR。'),
+ 'Accept and apply the final estimate to the robot.': ('Die letzte Schätzung übernehmen und auf den Roboter übertragen.', '接受最终估计并写入机器人。'),
+ 'Folder that relative output paths are taken from; default: the current directory.':
+   ('Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.', '相对输出路径的基准文件夹；默认：当前目录。'),
+ 'No progress lines on stderr.': ('Keine Fortschrittszeilen auf stderr.', '不在 stderr 上输出进度行。'),
+ 'sim (default) or can.': ('sim (Standard) oder can.', 'sim（默认）或 can。'),
+ 'CAN interface, e.g. can0.': ('CAN-Schnittstelle, z. B. can0.', 'CAN 接口，例如 can0。'),
+ "CANopen node id of each joint's drive, e.g. 1,2.": ('CANopen-Knotennummer des Antriebs jedes Gelenks, z. B. 1,2.', '每个关节驱动器的 CANopen 节点号，例如 1,2。'),
+ "Write each trial's CAN frames as a candump log into DIR.": ('Die CAN-Frames jedes Versuchs als candump-Log nach DIR schreiben.', '将每次试验的 CAN 帧以 candump 日志写入 DIR。'),
+ 'A recorded trial (candump log); once per trial, in order.': ('Ein aufgezeichneter Versuch (candump-Log); einmal pro Versuch, der Reihe nach.', '一次记录的试验（candump 日志）；每次试验一个，按顺序。'),
+ "Show this command's options.": ('Die Optionen dieses Befehls anzeigen.', '显示此命令的选项。'),
+ 'Print the default scenario as JSON.': ('Das Standardszenario als JSON ausgeben.', '以 JSON 格式输出默认场景。'),
+ 'Re-identify from recorded trials: the session runs again with each log\nanswering in place of the robot.':
+   ('Neu identifizieren aus aufgezeichneten Versuchen: die Sitzung läuft erneut,\nund jedes Log antwortet statt des Roboters.', '根据记录的试验重新辨识：会话再次运行，\n由每个日志代替机器人应答。'),
+ 'Run a commissioning session on the simulated robot, or with --robot can\non CiA 402 drives on a CAN bus (docs/can-protocol.md).':
+   ('Eine Inbetriebnahmesitzung am simulierten Roboter ausführen, oder mit --robot can\nan CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).', '在仿真机器人上运行调试会话，或使用 --robot can\n在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）。'),
+ 'Usage: learnid-cli %1 [options]\n\n%2\n\n%3': ('Aufruf: learnid-cli %1 [Optionen]\n\n%2\n\n%3', '用法：learnid-cli %1 [选项]\n\n%2\n\n%3'),
+ 'trial %1: %2, T = %3 s, no samples recorded': ('Versuch %1: %2, T = %3 s, keine Abtastwerte aufgezeichnet', '试验 %1：%2，T = %3 s，未记录采样'),
  "'scenario' needs --print": ("'scenario' braucht --print", "'scenario' 需要 --print"),
  'no command given': ('kein Befehl angegeben', '未给出命令'),
  "unknown command '%1'": ("unbekannter Befehl '%1'", "未知命令 '%1'"),

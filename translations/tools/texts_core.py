@@ -2,18 +2,16 @@
 robot): source text -> (German, Chinese)."""
 
 T = {
- # io/AtomicFile, io/Workspace
+ # io/AtomicFile, io/OutputPath
  'cannot write %1: %2': ('%1 kann nicht geschrieben werden: %2', '无法写入 %1：%2'),
  'no file name given': ('kein Dateiname angegeben', '未给出文件名'),
  'the same file is to be written twice': ('dieselbe Datei soll zweimal geschrieben werden', '同一文件将被写入两次'),
  '%1 (already written: %2)': ('%1 (bereits geschrieben: %2)', '%1（已写入：%2）'),
  'cannot read %1: %2': ('%1 kann nicht gelesen werden: %2', '无法读取 %1：%2'),
- '%1: %2: too many levels of symbolic links': ('%1: %2: zu viele Ebenen symbolischer Links', '%1：%2：符号链接层级过多'),
  '%1: no path given': ('%1: kein Pfad angegeben', '%1：未给出路径'),
- '%1: the workspace %2 does not exist or is not a folder':
-   ('%1: der Arbeitsbereich %2 existiert nicht oder ist kein Ordner', '%1：工作区 %2 不存在或不是文件夹'),
- '%1: %2 is outside the workspace %3 (resolved to %4)':
-   ('%1: %2 liegt außerhalb des Arbeitsbereichs %3 (aufgelöst zu %4)', '%1：%2 位于工作区 %3 之外（解析为 %4）'),
+ '%1: %2 is relative, and the folder it is taken from, %3, does not exist or is not a folder':
+   ('%1: %2 ist relativ, und der Ordner, ab dem er gilt, %3, existiert nicht oder ist kein Ordner',
+    '%1：%2 是相对路径，而其基准文件夹 %3 不存在或不是文件夹'),
  # io/JsonReader
  '%1 (beyond the range of a double)': ('%1 (außerhalb des Wertebereichs von double)', '%1（超出 double 的范围）'),
  'an array': ('ein Array', '数组'),
