@@ -20,7 +20,7 @@ public:
     /// The last scenario of the form, or the embedded paper scenario when none was stored or
     /// the stored one no longer reads.
     Scenario scenario() const;
-    /// The embedded default (:/scenarios/paper.json), the paper scenario of DESIGN.md §2.
+    /// The embedded default (:/scenarios/paper.json), the paper scenario of docs/design.md §2.
     static Scenario defaultScenario();
     void setScenario(const Scenario &scenario);
 

@@ -10,7 +10,7 @@
 namespace learnid {
 
 /// One SDO write as plain data: what "apply" and PDO configuration send, and what parameter
-/// files record (DESIGN.md §5).
+/// files record (canWrites, docs/file-formats.md#parameter-file).
 struct SdoWrite
 {
     quint8 node = 0;

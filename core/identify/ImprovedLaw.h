@@ -4,7 +4,7 @@
 
 namespace learnid {
 
-/// The improved estimator for recorded data (DESIGN.md §1.3):
+/// The improved estimator for recorded data (docs/method.md §2.2):
 ///  1. e = q_d - q filtered zero-phase, F(s)F(-s): q_hat = q_d - e_f, qd_hat = qd_d - e_f',
 ///     qdd_hat = qdd_d - e_f'' (no phase lag, so no path-dependent bias);
 ///  2. each torque sample, held over [t_k, t_k + Ts), is paired with the mid-point of its

@@ -63,8 +63,8 @@ Solved solveNormalEquations(const Eigen::MatrixXd &gram, const Eigen::MatrixXd &
     const Eigen::Index m = gram.cols();
     // Parameter scaling: a column times its parameter is the torque it explains. Columns are
     // scaled before any decision, which keeps the conditioning of the scaled Gram matrix near
-    // that of the problem (cond(W^T W) ~ 10-100 on a line, DESIGN.md §1.6); rankTolerance >=
-    // 1e-6 keeps sigma^2 ratios far above rounding.
+    // that of the problem (cond(W^T W) ~ 10-100 on a line, docs/design.md §1.6);
+    // rankTolerance >= 1e-6 keeps sigma^2 ratios far above rounding.
     const Eigen::VectorXd colNorm = gram.diagonal().cwiseSqrt();
     Solved s;
     s.scale = phiPrev.cwiseAbs();

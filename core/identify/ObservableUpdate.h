@@ -26,7 +26,7 @@ struct NoiseShaping
     Eigen::MatrixXd transposedApplied; ///< H^T applied to each column of A, per joint; empty: H = I
 };
 
-/// Least-squares update that changes only what the data observe (DESIGN.md §1.6):
+/// Least-squares update that changes only what the data observe (docs/method.md §2.3):
 ///   phi = phiPrev + D V_r x,  x = argmin || Wr (b - A phiPrev - A D V_r x) ||
 /// V_r: the right singular directions of A D whose singular value is above tolerance * the
 /// largest, D = diag(|phiPrev|), so singular values compare the torque each direction explains.

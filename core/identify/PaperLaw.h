@@ -4,7 +4,7 @@
 
 namespace learnid {
 
-/// The paper's learning law made consistent (DESIGN.md §1.2), causal as a robot controller
+/// The paper's learning law made consistent (docs/method.md §2.1), causal as a robot controller
 /// could run it online:
 ///   e = q_d - q,  qd_hat = qd_d - F s e,  qdd_hat = qdd_d - F s^2 e          (eq. 16-17)
 ///   tau_hat = tau_f + F (tau - tau_f)     (torque filtered like velocity; the printed F tau

@@ -11,7 +11,7 @@ namespace learnid {
 ///   W = [qdd1, qdd2 cos d - qd2^2 sin d, 0; 0, qdd1 cos d + qd1^2 sin d, qdd2],
 ///   phi = [a, b, c] [kg m^2].
 /// The paper's expressions of a, b, c in masses and lengths are not used: phi is identified as
-/// three free parameters (DESIGN.md §1.5).
+/// three free parameters (docs/method.md §4).
 class TwoLinkArm final : public RobotModel
 {
 public:

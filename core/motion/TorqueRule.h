@@ -6,7 +6,7 @@
 namespace learnid {
 
 /// Result of the torque rule: the shortest motion duration for which the planned peak torque,
-/// computed with a parameter estimate, is `fraction` of the torque limits (DESIGN.md §2).
+/// computed with a parameter estimate, is `fraction` of the torque limits (docs/method.md §1).
 struct TorqueRuleResult
 {
     double duration = 0.0;       ///< T [s]

@@ -7,7 +7,7 @@
 
 namespace learnid {
 
-/// The pre-trial check (DESIGN.md §6): before the robot moves.
+/// The pre-trial check (docs/method.md §3): before the robot moves.
 struct SafetyVerdict
 {
     bool physical = true;            ///< M(q, phi_hat) positive definite along the path

@@ -10,7 +10,8 @@
 namespace learnid {
 
 /// A commissioning scenario: the robot, the path, the controller, the estimator, the simulated
-/// robot's measurement and the safety limits. Defaults are the paper scenario (DESIGN.md §2).
+/// robot's measurement and the safety limits. Defaults are the paper scenario
+/// (docs/design.md §2).
 /// Every key of the JSON form is documented in docs/scenario.md.
 struct Scenario
 {

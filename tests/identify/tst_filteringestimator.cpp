@@ -13,7 +13,7 @@ namespace {
 
 using Complex = std::complex<double>;
 
-constexpr double rho = 40.0; // DESIGN.md §2
+constexpr double rho = 40.0; // docs/design.md §2
 constexpr double ts = 0.002;
 
 Eigen::MatrixXcd transferAt(const StateSpace &sys, Complex s)

@@ -18,8 +18,9 @@ private slots:
     void nonFiniteTorque_isRejectedNamingSampleAndJoint();
 };
 
-// DESIGN.md §1.2: after trial 1, a within ~1 %, b about -25 %, c about -10 % (paper Table 1:
-// 19.78, 3.76, 7.10). The bias comes from F delaying the desired-trajectory part of the torque.
+// docs/method.md §2.1: after trial 1, a within ~1 %, b about -25 %, c about -10 % (paper
+// Table 1: 19.78, 3.76, 7.10). The bias comes from F delaying the desired-trajectory part of
+// the torque.
 void TestPaperLaw::paperScenario_firstTrialHasTableOneShape()
 {
     Scenario s;
@@ -29,7 +30,7 @@ void TestPaperLaw::paperScenario_firstTrialHasTableOneShape()
     QVERIFY2(std::abs(rel[0]) < 0.02, qPrintable(QString::number(rel[0])));
     QVERIFY2(rel[1] > -0.30 && rel[1] < -0.20, qPrintable(QString::number(rel[1])));
     QVERIFY2(rel[2] > -0.14 && rel[2] < -0.06, qPrintable(QString::number(rel[2])));
-    // Trial 1 runs with phi_0: DESIGN.md §2 expects ~0.039 deg of tracking error.
+    // Trial 1 runs with phi_0: docs/design.md §2 expects ~0.039 deg of tracking error.
     QVERIFY(run.maxTrackingErrorDeg[0] > 0.030 && run.maxTrackingErrorDeg[0] < 0.048);
 }
 

@@ -21,7 +21,7 @@ double quintic(double u)
     return 10.0 * std::pow(u, 3) - 15.0 * std::pow(u, 4) + 6.0 * std::pow(u, 5);
 }
 
-// DESIGN.md §2: the paper's arm and line.
+// docs/design.md §2: the paper's arm and line.
 const TwoLinkKinematics paperArm(0.75, 0.75);
 
 } // namespace

@@ -53,7 +53,7 @@ private:
     TwoLinkArm m_arm;
 };
 
-// DESIGN.md §2.
+// docs/design.md §2.
 const TwoLinkKinematics paperArm(0.75, 0.75);
 const Eigen::Vector3d phiInitial(40.0, 20.0, 30.0);
 const Eigen::Vector3d phiTrue(20.0, 5.0, 8.0);
@@ -105,7 +105,7 @@ private slots:
     void zeroLengthLine_throws();
 };
 
-// DESIGN.md §2 reference: T_0 = 4.93 s with phi_0 (two decimals quoted, hence +- 0.005 s).
+// docs/design.md §2 reference: T_0 = 4.93 s with phi_0 (two decimals quoted, hence +- 0.005 s).
 void TestTorqueRule::paperScenario_initialEstimate_gives493Seconds()
 {
     const TwoLinkArm arm;

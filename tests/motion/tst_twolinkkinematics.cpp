@@ -11,7 +11,7 @@ using namespace learnid;
 namespace {
 
 constexpr double deg = M_PI / 180.0;
-constexpr double linkLength = 0.75; // DESIGN.md §2
+constexpr double linkLength = 0.75; // docs/design.md §2
 
 // A random point of the reachable annulus of two links l1, l2, away from its boundaries.
 Eigen::Vector2d randomReachablePoint(std::mt19937 &rng, double l1, double l2)
@@ -47,7 +47,7 @@ private slots:
     void near_keepsPathContinuousAcrossAngleCut();
 };
 
-// DESIGN.md §2: with equal links l, a point at distance r and bearing psi has
+// docs/design.md §2: with equal links l, a point at distance r and bearing psi has
 // th1 = psi - alpha, th2 = psi + alpha, cos alpha = r / (2 l). At (0.5, 0.5) m, l = 0.75 m:
 // psi = 45 deg, alpha = 61.87 deg, i.e. -16.87 deg / 106.87 deg.
 void TestTwoLinkKinematics::paperStart_givesPaperAngles()

@@ -53,9 +53,9 @@ void TestSafetyCheck::paperGainsWithLambda200_areStableAlongThePath()
     }
 }
 
-// DESIGN.md §1.4: the paper's gains were tuned on the initial model; with lambda = 40 the loop is
-// stable for phi_0 but not for the true inertia, so the check must refuse once the estimate
-// nears the truth.
+// docs/method.md §3: the paper's gains were tuned on the initial model; with lambda = 40 the
+// loop is stable for phi_0 but not for the true inertia, so the check must refuse once the
+// estimate nears the truth.
 void TestSafetyCheck::paperLambda40_isUnstableForTheTrueInertiaOnly()
 {
     Scenario s;
