@@ -96,6 +96,7 @@ void DriveNode::handleNmt(NmtCommand command)
         m_drive = Cia402Drive();
         m_drive.initialise();
         m_pid.reset();
+        m_followed = false; // statusword bit 12 belongs to Operation enabled only
         m_dictionary.setValue(ob::errorRegister, 0, 0);
         m_stored.restore(m_dictionary, m_settings);
         updateRatedTorque();
@@ -155,6 +156,8 @@ void DriveNode::applyControlword(quint16 controlword)
     const State before = m_drive.state();
     m_drive.applyControlword(controlword);
     m_dictionary.setValue(ob::controlword, 0, controlword);
+    if (m_drive.state() != before)
+        m_followed = false; // e.g. an SDO write of 0x6040 between SYNCs: bit 12 is OE's only
     if (before == State::Fault && m_drive.state() != State::Fault) {
         m_dictionary.setValue(ob::errorRegister, 0, 0);
         queueEmcy(0x0000); // error reset

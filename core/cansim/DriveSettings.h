@@ -38,7 +38,7 @@ struct DriveNodeSettings
     double kp = 4500.0;                          ///< [N m/rad]
     double ki = 30.0;                            ///< [N m/(rad s)]
     double kd = 600.0;                           ///< [N m s/rad]
-    double lambda = 200.0;                       ///< derivative filter [1/s]
+    double lambda = 200.0;                       ///< derivative filter [rad/s]
     double torqueLimit = 8.0;                    ///< [N m]
     qint64 increments = cansim::idealIncrements; ///< encoder increments per revolution
     int parameterCount = 3;                      ///< entries 0x2200:1..m

@@ -196,11 +196,11 @@ void TestCanE2e::fault_endsWithClearErrorQuickly()
             fault = us(log[i]);
     }
     if (tag != QLatin1String("emcy")) {
-        // The last frame of the robot side before the master's quick stop (RPDO 0x0002).
-        for (int i = log.size() - 1; i >= 0 && fault < 0; --i) {
+        // The last frame of the robot side before the master's first quick stop (RPDO
+        // 0x0002; the master repeats it at every SYNC until the drives report no power).
+        for (int i = 0; i < log.size() && fault < 0; ++i) {
             const QCanBusFrame &f = log[i].frame;
-            if (f.frameId() == 0x201 && f.payload().size() == 8 && f.payload().at(6) == 2 &&
-                (i == 0 || log[i - 1].frame.frameId() != 0x201)) {
+            if (f.frameId() == 0x201 && f.payload().size() == 8 && f.payload().at(6) == 2) {
                 int j = i - 1;
                 while (j >= 0 && (log[j].frame.frameId() & 0x780) == 0x200)
                     --j; // skip earlier set-points

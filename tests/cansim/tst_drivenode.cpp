@@ -88,6 +88,7 @@ private slots:
     void unpowered_appliesNoTorque();
     void quickStop_holdsThenSwitchesOnDisabledAfterTenSyncs();
     void leavingOperational_whileEnabled_quickStops();
+    void statuswordBit12_onlyInOperationEnabled_afterResetOrSdoControlword();
     void threeMissedSetPoints_faultWithEmcy_faultResetClearsIt();
     void injectedFault_atTheKthEnabledSync_sendsEmcy8611();
     void silentNode_sendsAndAnswersNothing();
@@ -393,6 +394,22 @@ void TestDriveNode::leavingOperational_whileEnabled_quickStops()
     d.enable(0.0);
     d.net.nmt(NmtCommand::EnterPreOperational, node);
     QCOMPARE(d.drive.driveState(), State::QuickStopActive);
+}
+
+// Bit 12 (set-point followed) belongs to Operation enabled: a state left between SYNCs, by NMT
+// reset node or an SDO write of the controlword, must not report it (docs/can-protocol.md §5.2).
+void TestDriveNode::statuswordBit12_onlyInOperationEnabled_afterResetOrSdoControlword()
+{
+    Drive d;
+    d.enable(0.0);
+    QCOMPARE(d.net.readValue(node, 0x6041, 0, DataType::Unsigned16), double(0x1237));
+    QVERIFY(d.net.write(node, 0x6040, 0, DataType::Unsigned16, 0x0002).ok()); // quick stop
+    QCOMPARE(d.net.readValue(node, 0x6041, 0, DataType::Unsigned16), double(0x0217));
+
+    Drive r;
+    r.enable(0.0);
+    r.net.nmt(NmtCommand::ResetNode, node);
+    QCOMPARE(r.net.readValue(node, 0x6041, 0, DataType::Unsigned16), double(0x0240));
 }
 
 void TestDriveNode::threeMissedSetPoints_faultWithEmcy_faultResetClearsIt()
