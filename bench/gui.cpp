@@ -6,9 +6,9 @@
 #include "ui/ConvergenceChart.h"
 #include "ui/ConvergenceTableModel.h"
 #include "ui/MainWindow.h"
-#include "ui/SessionController.h"
-#include "ui/SessionInfo.h"
-#include "ui/TrackingErrorData.h"
+#include "service/SessionController.h"
+#include "service/SessionInfo.h"
+#include "service/TrackingErrorData.h"
 #include "ui/TrackingErrorPlot.h"
 
 #include <QApplication>

@@ -10,7 +10,7 @@
 #include "ui/PlotImage.h"
 #include "ui/ReportWriter.h"
 #include "ui/ScenarioForm.h"
-#include "ui/SessionController.h"
+#include "service/SessionController.h"
 #include "ui/TrackingErrorPlot.h"
 #include "ui/UiLogging.h"
 #include "ui/UiSettings.h"
@@ -239,7 +239,7 @@ void FileController::exportReportTo(const QString &path)
     }
     c.trackingPlot = widgetImage(m_views.plot->chartView(), QSize(900, 560));
     c.convergencePlot = widgetImage(m_views.chart->chartView(), QSize(600, 560));
-    const int stored = m_session->storedEstimateIndex();
+    const int stored = m_session->appliedEstimateIndex();
     c.appliedSet = m_session->storedParameters().size() == 0
                        ? tr("none (nothing applied in this session)")
                        : tr("%1 (estimate %2)").arg(list(m_session->storedParameters())).arg(stored);

@@ -11,7 +11,7 @@
 #include "ui/RobotPanel.h"
 #include "ui/RunPanel.h"
 #include "ui/ScenarioForm.h"
-#include "ui/SessionController.h"
+#include "service/SessionController.h"
 #include "ui/SessionPresenter.h"
 #include "ui/TrackingErrorPlot.h"
 
@@ -189,7 +189,9 @@ void MainWindow::connectViews()
             return updateActions();
         m_settings.setScenario(*m_form->scenario());
         // Before the first trial the new settings replace the session, so the check is current.
-        if (m_controller->isOpen() && !m_controller->isBusy() && m_controller->history().isEmpty())
+        const SessionState state = m_controller->state();
+        if ((state == SessionState::Idle || state == SessionState::Connecting) &&
+            m_controller->history().isEmpty())
             m_controller->open(*m_form->scenario());
         updateActions();
     });
@@ -197,27 +199,30 @@ void MainWindow::connectViews()
 
 void MainWindow::updateActions()
 {
+    SessionFacts facts = m_controller->facts();
+    facts.scenarioValid = m_form->isValid();
+    const AllowedActions allowed = allowedActions(m_controller->state(), facts);
+    MainActions *a = m_actions;
+    a->connectRobot->setEnabled(allowed.connect || allowed.disconnect);
+    a->connectRobot->setText(m_controller->isOpen() ? tr("Dis&connect robot")
+                                                    : tr("&Connect robot"));
+    a->newSession->setEnabled(allowed.newSession);
+    a->runTrial->setEnabled(allowed.run);
+    a->runAll->setEnabled(allowed.run);
+    a->stop->setEnabled(allowed.stop);
+    a->accept->setEnabled(allowed.accept);
+    a->apply->setEnabled(allowed.apply);
+    a->revert->setEnabled(allowed.revert);
+    a->exportParameters->setEnabled(allowed.exportParameters);
+    a->exportTrialCsv->setEnabled(allowed.exportTrialData);
+    a->exportPlot->setEnabled(allowed.exportTrialData);
+    a->exportReport->setEnabled(allowed.exportReport);
+    a->openScenario->setEnabled(allowed.editScenario);
     const SessionController *c = m_controller;
     const bool open = c->isOpen(), busy = c->isBusy();
-    const bool learned = c->estimates().size() > 1, ran = !c->history().isEmpty();
-    MainActions *a = m_actions;
-    a->connectRobot->setEnabled(!busy);
-    a->connectRobot->setText(open ? tr("Dis&connect robot") : tr("&Connect robot"));
-    a->newSession->setEnabled(open && !busy && m_form->isValid());
-    a->runTrial->setEnabled(c->canRun());
-    a->runAll->setEnabled(c->canRun());
-    a->stop->setEnabled(busy);
-    a->accept->setEnabled(open && !busy && learned);
-    a->apply->setEnabled(open && !busy && c->acceptedIndex().has_value());
-    a->revert->setEnabled(open && !busy && c->appliedCount() > 0);
-    a->exportParameters->setEnabled(open && c->acceptedIndex().has_value());
-    a->exportTrialCsv->setEnabled(ran);
-    a->exportPlot->setEnabled(ran);
-    a->exportReport->setEnabled(open);
-    a->openScenario->setEnabled(!busy);
-    m_form->setEditable(!busy);
+    m_form->setEditable(allowed.editScenario);
     m_robot->setBusy(busy);
-    if (open && !busy && c->lastCheck() && !c->lastCheck()->passed())
+    if (c->state() == SessionState::Idle && c->lastCheck() && !c->lastCheck()->passed())
         m_run->setStatus(tr("Run disabled: %1").arg(c->lastCheck()->reason()));
     const QString robot = open ? c->info()->robotDescription : tr("no robot");
     m_statusRobot->setText(tr("Robot: %1 \u2013 %2").arg(robot, busy ? tr("busy") : open ? tr("idle") : tr("not connected")));
@@ -231,10 +236,10 @@ void MainWindow::connectOrDisconnect()
     const auto robot = m_robot->choice(&error);
     if (!robot)
         return m_message->showMessage(tr("Cannot connect: %1").arg(error), MessageBar::Severity::Error);
-    m_controller->setRobotChoice(*robot);
-    if (robot->can)
+    m_controller->setRobotRequest(*robot);
+    if (robot->kind == RobotRequest::Kind::Can)
         m_robot->setConnected(false, tr("connecting to %1/%2\u2026")
-                                         .arg(robot->canOptions.plugin, robot->canOptions.interface));
+                                         .arg(robot->can.plugin, robot->can.interface));
     if (const auto s = m_form->scenario())
         m_controller->open(*s);
     else

@@ -70,23 +70,23 @@ RobotPanel::RobotKind RobotPanel::robotKind() const
     return RobotKind(m_kind->currentData().toInt());
 }
 
-std::optional<RobotChoice> RobotPanel::choice(QString *error) const
+std::optional<RobotRequest> RobotPanel::choice(QString *error) const
 {
-    RobotChoice c;
-    c.can = robotKind() == RobotKind::Can;
-    if (!c.can)
+    RobotRequest c;
+    if (robotKind() != RobotKind::Can)
         return c;
-    c.canOptions.plugin = m_plugin->currentText();
-    c.canOptions.interface = m_interface->text().trimmed();
-    setSyncTimeoutMs(c.canOptions, m_syncTimeout->value());
+    c.kind = RobotRequest::Kind::Can;
+    c.can.plugin = m_plugin->currentText();
+    c.can.interface = m_interface->text().trimmed();
+    setSyncTimeoutMs(c.can, m_syncTimeout->value());
     QString why;
-    c.canOptions.nodes = parseNodeList(m_nodes->text(), &why);
-    if (c.canOptions.nodes.isEmpty())
+    c.can.nodes = parseNodeList(m_nodes->text(), &why);
+    if (c.can.nodes.isEmpty())
         *error = tr("CAN nodes: %1").arg(why);
-    else if (c.canOptions.interface.isEmpty())
+    else if (c.can.interface.isEmpty())
         *error = tr("CAN interface: enter one, e.g. can0");
     else
-        *error = canRobotOptionsError(c.canOptions);
+        *error = canRobotOptionsError(c.can);
     if (!error->isEmpty())
         return std::nullopt;
     return c;

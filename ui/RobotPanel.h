@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/RobotChoice.h"
+#include "service/RobotRequest.h"
 
 #include <QWidget>
 #include <optional>
@@ -27,7 +27,7 @@ public:
 
     RobotKind robotKind() const;
     /// The chosen robot, or nullopt with error saying which CAN setting is wrong.
-    std::optional<RobotChoice> choice(QString *error) const;
+    std::optional<RobotRequest> choice(QString *error) const;
     /// connected: the button offers Disconnect; state: one line such as "simulated paper-2link".
     void setConnected(bool connected, const QString &state);
     void setBusy(bool busy);

@@ -8,7 +8,7 @@
 #include "ui/RobotPanel.h"
 #include "ui/RunPanel.h"
 #include "ui/ScenarioForm.h"
-#include "ui/SessionController.h"
+#include "service/SessionController.h"
 #include "ui/TrackingErrorPlot.h"
 
 namespace learnid {
@@ -74,7 +74,7 @@ SessionPresenter::SessionPresenter(SessionController *controller, Views views, Q
     connect(c, &SessionController::applied, this, [this](const Eigen::VectorXd &) {
         m_views.message->showMessage(tr("Parameters written to the robot and read back."), MessageBar::Severity::Success);
     });
-    connect(c, &SessionController::operationFailed, this, [this](const QString &, const QString &text) {
+    connect(c, &SessionController::operationFailed, this, [this](SessionOperation, const QString &text) {
         m_views.message->showMessage(text, MessageBar::Severity::Error);
     });
 }
@@ -84,7 +84,7 @@ void SessionPresenter::refreshTables()
     const SessionController *c = m_controller;
     m_views.table->setHistory(c->history(), c->estimates());
     m_views.table->setAccepted(c->acceptedIndex());
-    m_views.table->setApplied(c->storedEstimateIndex());
+    m_views.table->setApplied(c->appliedEstimateIndex());
     if (c->info())
         m_views.chart->setData(c->info()->parameters, c->estimates(), c->info()->truth);
     m_views.apply->setEstimateCount(int(c->estimates().size()));
@@ -94,7 +94,7 @@ void SessionPresenter::refreshTables()
         values << QString::number(stored[i], 'g', 6);
     m_views.apply->setStored(stored.size() == 0 ? tr("nothing applied yet")
                                           : tr("%1 (estimate %2)").arg(values.join(QStringLiteral(", ")))
-                                                .arg(c->storedEstimateIndex()));
+                                                .arg(c->appliedEstimateIndex()));
 }
 
 } // namespace learnid

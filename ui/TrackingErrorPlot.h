@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/TrackingErrorData.h"
+#include "service/TrackingErrorData.h"
 
 #include <QWidget>
 

@@ -12,34 +12,31 @@ namespace learnid::cli {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("learnid-cli", text);
-}
-
 QString usageText()
 {
-    return tr("Usage:\n"
-              "  learnid-cli scenario --print\n"
-              "      Print the default scenario (the paper scenario) as JSON.\n"
-              "  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]\n"
-              "                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]\n"
-              "                  [--workspace DIR] [--quiet]\n"
-              "      Run a commissioning session on the simulated robot. The table goes to\n"
-              "      stdout, progress to stderr. Relative output paths are taken from\n"
-              "      --workspace (default: the current directory). Files are written only\n"
-              "      when every trial completed.\n"
-              "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
-              "      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);\n"
-              "      --can-log writes every trial's frames as a candump log into DIR;\n"
-              "      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).\n"
-              "  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]\n"
-              "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
-              "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
-              "      Re-identify from recorded trials: the session runs again with each log\n"
-              "      (one per trial, in order) answering in place of the robot.\n"
-              "  learnid-cli COMMAND --help\n"
-              "      The options of one command.\n");
+    return QCoreApplication::translate(
+        "learnid-cli",
+        "Usage:\n"
+        "  learnid-cli scenario --print\n"
+        "      Print the default scenario (the paper scenario) as JSON.\n"
+        "  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]\n"
+        "                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]\n"
+        "                  [--workspace DIR] [--quiet]\n"
+        "      Run a commissioning session on the simulated robot. The table goes to\n"
+        "      stdout, progress to stderr. Relative output paths are taken from\n"
+        "      --workspace (default: the current directory). Files are written only\n"
+        "      when every trial completed.\n"
+        "      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]\n"
+        "      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);\n"
+        "      --can-log writes every trial's frames as a candump log into DIR;\n"
+        "      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).\n"
+        "  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]\n"
+        "                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]\n"
+        "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
+        "      Re-identify from recorded trials: the session runs again with each log\n"
+        "      (one per trial, in order) answering in place of the robot.\n"
+        "  learnid-cli COMMAND --help\n"
+        "      The options of one command.\n");
 }
 
 // `learnid-cli COMMAND --help`: what the command does and its options, as the parser lists them.
@@ -49,7 +46,8 @@ QString commandHelp(const QString &command, const QString &summary,
     QString options = parser.helpText();
     const qsizetype at = options.indexOf(QLatin1String("Options:"));
     options = at >= 0 ? options.mid(at) : options;
-    return tr("Usage: learnid-cli %1 [options]\n\n%2\n\n%3").arg(command, summary, options);
+    return QCoreApplication::translate("learnid-cli", "Usage: learnid-cli %1 [options]\n\n%2\n\n%3")
+        .arg(command, summary, options);
 }
 
 // --robot and the CAN options; returns the error naming the option and value. An empty
@@ -61,29 +59,35 @@ QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOpti
     run->robot = replay ? QStringLiteral("replay")
                         : (parser.isSet(robot) ? parser.value(robot) : QStringLiteral("sim"));
     if (run->robot != QLatin1String("sim") && run->robot != QLatin1String("can") && !replay)
-        return tr("--robot: must be 'sim' or 'can', got '%1'").arg(run->robot);
+        return QCoreApplication::translate("learnid-cli",
+                                           "--robot: must be 'sim' or 'can', got '%1'")
+            .arg(run->robot);
     const bool can = run->robot == QLatin1String("can");
     if (!replay && !can) {
         for (const QCommandLineOption *o : {&plugin, &interface, &nodes}) {
             if (parser.isSet(*o)) {
                 const QString name = o->names().constFirst();
                 run->robot.clear();
-                return tr("--%1 needs --robot can").arg(name);
+                return QCoreApplication::translate("learnid-cli", "--%1 needs --robot can")
+                    .arg(name);
             }
         }
         for (const char *name : {"can-log", "can-sync-timeout"}) {
             if (parser.isSet(QLatin1String(name))) {
                 run->robot.clear();
-                return tr("--%1 needs --robot can").arg(QLatin1String(name));
+                return QCoreApplication::translate("learnid-cli", "--%1 needs --robot can")
+                    .arg(QLatin1String(name));
             }
         }
         return {};
     }
     if (can) {
         if (!parser.isSet(plugin) || parser.value(plugin).isEmpty())
-            return tr("--robot can needs --can-plugin (e.g. socketcan, virtualcan)");
+            return QCoreApplication::translate(
+                "learnid-cli", "--robot can needs --can-plugin (e.g. socketcan, virtualcan)");
         if (!parser.isSet(interface) || parser.value(interface).isEmpty())
-            return tr("--robot can needs --can-interface (e.g. can0)");
+            return QCoreApplication::translate("learnid-cli",
+                                               "--robot can needs --can-interface (e.g. can0)");
         run->can.plugin = parser.value(plugin);
         run->can.interface = parser.value(interface);
     } else {
@@ -94,21 +98,26 @@ QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOpti
         QString error;
         run->can.nodes = parseNodeList(parser.value(nodes), &error);
         if (run->can.nodes.isEmpty())
-            return tr("--nodes: %1 in '%2'").arg(error, parser.value(nodes));
+            return QCoreApplication::translate("learnid-cli", "--nodes: %1 in '%2'")
+                .arg(error, parser.value(nodes));
     }
     if (!replay && parser.isSet(QStringLiteral("can-sync-timeout"))) {
         const QString text = parser.value(QStringLiteral("can-sync-timeout"));
         bool ok = false;
         const int ms = text.trimmed().toInt(&ok);
         if (!ok || ms < 1 || ms > 60000)
-            return tr("--can-sync-timeout: must be a whole number of ms from 1 to 60000, got '%1'")
+            return QCoreApplication::translate(
+                       "learnid-cli",
+                       "--can-sync-timeout: must be a whole number of ms from 1 to 60000, got '%1'")
                 .arg(text);
         setSyncTimeoutMs(run->can, ms);
     }
     const QString invalid = canRobotOptionsError(run->can);
     if (!invalid.isEmpty())
-        return parser.isSet(nodes) ? tr("--nodes %1: %2").arg(parser.value(nodes), invalid)
-                                   : tr("--robot %1: %2").arg(run->robot, invalid);
+        return parser.isSet(nodes) ? QCoreApplication::translate("learnid-cli", "--nodes %1: %2")
+                                         .arg(parser.value(nodes), invalid)
+                                   : QCoreApplication::translate("learnid-cli", "--robot %1: %2")
+                                         .arg(run->robot, invalid);
     return {};
 }
 
@@ -131,43 +140,82 @@ CommandLine parseCommandLine(const QStringList &args)
 
     QCommandLineParser parser;
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
-                                  tr("Show this command's options."));
-    const QCommandLineOption print(QStringLiteral("print"), tr("Print the default scenario."));
-    const QCommandLineOption scenario(QStringLiteral("scenario"),
-                                      tr("Scenario file (JSON, docs/scenario.md); default: the "
-                                         "paper scenario."),
-                                      QStringLiteral("FILE"));
-    const QCommandLineOption estimator(QStringLiteral("estimator"), tr("Learning law: paper or improved."),
-                                       QStringLiteral("LAW"));
-    const QCommandLineOption iterations(QStringLiteral("iterations"), tr("Learning trials, 1 to 100."),
-                                        QStringLiteral("N"));
-    const QCommandLineOption report(QStringLiteral("report"), tr("Write the session report (JSON) to FILE."),
-                                    QStringLiteral("FILE"));
-    const QCommandLineOption exportFile(QStringLiteral("export"), tr("Write the parameter file (JSON and DCF) to FILE."),
-                                        QStringLiteral("FILE"));
-    const QCommandLineOption trialCsv(QStringLiteral("trial-csv"), tr("Write each trial's samples as CSV into DIR."),
-                                      QStringLiteral("DIR"));
-    const QCommandLineOption apply(QStringLiteral("apply"), tr("Accept and apply the final estimate to the robot."));
-    const QCommandLineOption workspace(QStringLiteral("workspace"), tr("Folder that relative output paths are taken from; default: "
-                                          "the current directory."),
-                                       QStringLiteral("DIR"));
-    const QCommandLineOption quiet(QStringLiteral("quiet"), tr("No progress lines on stderr."));
-    const QCommandLineOption robot(QStringLiteral("robot"), tr("sim (default) or can."),
-                                    QStringLiteral("R"));
-    const QCommandLineOption canPlugin(QStringLiteral("can-plugin"), tr("QCanBus plugin, e.g. socketcan or virtualcan."),
-                                       QStringLiteral("P"));
-    const QCommandLineOption canInterface(QStringLiteral("can-interface"), tr("CAN interface, e.g. can0."),
-                                          QStringLiteral("I"));
-    const QCommandLineOption nodes(QStringLiteral("nodes"), tr("CANopen node id of each joint's drive, e.g. 1,2."),
-                                   QStringLiteral("LIST"));
-    const QCommandLineOption canSyncTimeout(QStringLiteral("can-sync-timeout"),
-                                            tr("Longest SYNC gap in a trial [ms]."),
-                                            QStringLiteral("MS"));
-    const QCommandLineOption canLog(QStringLiteral("can-log"), tr("Write each trial's CAN frames as a candump log into DIR."),
-                                    QStringLiteral("DIR"));
-    const QCommandLineOption candump(QStringLiteral("candump"), tr("A recorded trial (candump log); once per trial, in order."),
-                                     QStringLiteral("FILE"));
+    const QCommandLineOption help(
+        {QStringLiteral("h"), QStringLiteral("help")},
+        QCoreApplication::translate("learnid-cli", "Show this command's options."));
+    const QCommandLineOption print(
+        QStringLiteral("print"),
+        QCoreApplication::translate("learnid-cli", "Print the default scenario."));
+    const QCommandLineOption scenario(
+        QStringLiteral("scenario"),
+        QCoreApplication::translate("learnid-cli",
+                                    "Scenario file (JSON, docs/scenario.md); default: the "
+                                    "paper scenario."),
+        QStringLiteral("FILE"));
+    const QCommandLineOption estimator(
+        QStringLiteral("estimator"),
+        QCoreApplication::translate("learnid-cli", "Learning law: paper or improved."),
+        QStringLiteral("LAW"));
+    const QCommandLineOption iterations(
+        QStringLiteral("iterations"),
+        QCoreApplication::translate("learnid-cli", "Learning trials, 1 to 100."),
+        QStringLiteral("N"));
+    const QCommandLineOption report(
+        QStringLiteral("report"),
+        QCoreApplication::translate("learnid-cli", "Write the session report (JSON) to FILE."),
+        QStringLiteral("FILE"));
+    const QCommandLineOption exportFile(
+        QStringLiteral("export"),
+        QCoreApplication::translate("learnid-cli",
+                                    "Write the parameter file (JSON and DCF) to FILE."),
+        QStringLiteral("FILE"));
+    const QCommandLineOption trialCsv(
+        QStringLiteral("trial-csv"),
+        QCoreApplication::translate("learnid-cli", "Write each trial's samples as CSV into DIR."),
+        QStringLiteral("DIR"));
+    const QCommandLineOption apply(
+        QStringLiteral("apply"),
+        QCoreApplication::translate("learnid-cli",
+                                    "Accept and apply the final estimate to the robot."));
+    const QCommandLineOption workspace(
+        QStringLiteral("workspace"),
+        QCoreApplication::translate("learnid-cli",
+                                    "Folder that relative output paths are taken from; default: "
+                                    "the current directory."),
+        QStringLiteral("DIR"));
+    const QCommandLineOption quiet(
+        QStringLiteral("quiet"),
+        QCoreApplication::translate("learnid-cli", "No progress lines on stderr."));
+    const QCommandLineOption robot(
+        QStringLiteral("robot"),
+        QCoreApplication::translate("learnid-cli", "sim (default) or can."), QStringLiteral("R"));
+    const QCommandLineOption canPlugin(
+        QStringLiteral("can-plugin"),
+        QCoreApplication::translate("learnid-cli", "QCanBus plugin, e.g. socketcan or virtualcan."),
+        QStringLiteral("P"));
+    const QCommandLineOption canInterface(
+        QStringLiteral("can-interface"),
+        QCoreApplication::translate("learnid-cli", "CAN interface, e.g. can0."),
+        QStringLiteral("I"));
+    const QCommandLineOption nodes(
+        QStringLiteral("nodes"),
+        QCoreApplication::translate("learnid-cli",
+                                    "CANopen node id of each joint's drive, e.g. 1,2."),
+        QStringLiteral("LIST"));
+    const QCommandLineOption canSyncTimeout(
+        QStringLiteral("can-sync-timeout"),
+        QCoreApplication::translate("learnid-cli", "Longest SYNC gap in a trial [ms]."),
+        QStringLiteral("MS"));
+    const QCommandLineOption canLog(
+        QStringLiteral("can-log"),
+        QCoreApplication::translate("learnid-cli",
+                                    "Write each trial's CAN frames as a candump log into DIR."),
+        QStringLiteral("DIR"));
+    const QCommandLineOption candump(
+        QStringLiteral("candump"),
+        QCoreApplication::translate("learnid-cli",
+                                    "A recorded trial (candump log); once per trial, in order."),
+        QStringLiteral("FILE"));
 
     if (command == QLatin1String("scenario")) {
         parser.addOptions({print, help});
@@ -175,9 +223,12 @@ CommandLine parseCommandLine(const QStringList &args)
             cl.error = parser.errorText();
         } else if (parser.isSet(help)) {
             cl.command = CommandLine::Command::Help;
-            cl.usage = commandHelp(command, tr("Print the default scenario as JSON."), parser);
+            cl.usage = commandHelp(
+                command,
+                QCoreApplication::translate("learnid-cli", "Print the default scenario as JSON."),
+                parser);
         } else if (!parser.isSet(print) || !parser.positionalArguments().isEmpty()) {
-            cl.error = tr("'scenario' needs --print");
+            cl.error = QCoreApplication::translate("learnid-cli", "'scenario' needs --print");
         } else {
             cl.command = CommandLine::Command::PrintScenario;
         }
@@ -186,7 +237,9 @@ CommandLine parseCommandLine(const QStringList &args)
     const bool replay = command == QLatin1String("replay");
     if (command != QLatin1String("run") && !replay) {
         cl.error =
-            command.isEmpty() ? tr("no command given") : tr("unknown command '%1'").arg(command);
+            command.isEmpty()
+                ? QCoreApplication::translate("learnid-cli", "no command given")
+                : QCoreApplication::translate("learnid-cli", "unknown command '%1'").arg(command);
         return cl;
     }
 
@@ -205,15 +258,20 @@ CommandLine parseCommandLine(const QStringList &args)
         cl.command = CommandLine::Command::Help;
         cl.usage = commandHelp(
             command,
-            replay ? tr("Re-identify from recorded trials: the session runs again with each log\n"
-                        "answering in place of the robot.")
-                   : tr("Run a commissioning session on the simulated robot, or with --robot can\n"
-                        "on CiA 402 drives on a CAN bus (docs/can-protocol.md)."),
+            replay ? QCoreApplication::translate(
+                         "learnid-cli",
+                         "Re-identify from recorded trials: the session runs again with each log\n"
+                         "answering in place of the robot.")
+                   : QCoreApplication::translate(
+                         "learnid-cli",
+                         "Run a commissioning session on the simulated robot, or with --robot can\n"
+                         "on CiA 402 drives on a CAN bus (docs/can-protocol.md)."),
             parser);
         return cl;
     }
     if (!parser.positionalArguments().isEmpty()) {
-        cl.error = tr("unexpected argument '%1'").arg(parser.positionalArguments().first());
+        cl.error = QCoreApplication::translate("learnid-cli", "unexpected argument '%1'")
+                       .arg(parser.positionalArguments().first());
         return cl;
     }
     RunOptions &run = cl.run;
@@ -224,8 +282,10 @@ CommandLine parseCommandLine(const QStringList &args)
         bool ok = false;
         const int n = parser.value(iterations).toInt(&ok);
         if (!ok || n < 1 || n > 100) {
-            cl.error = tr("--iterations: must be a whole number from 1 to 100, got '%1'")
-                           .arg(parser.value(iterations));
+            cl.error =
+                QCoreApplication::translate(
+                    "learnid-cli", "--iterations: must be a whole number from 1 to 100, got '%1'")
+                    .arg(parser.value(iterations));
             cl.errorCode = ExitBadInput;
             return cl;
         }
@@ -241,11 +301,13 @@ CommandLine parseCommandLine(const QStringList &args)
     if (replay) {
         run.candumpFiles = parser.values(candump);
         if (run.candumpFiles.isEmpty()) {
-            cl.error = tr("'replay' needs at least one --candump FILE");
+            cl.error = QCoreApplication::translate("learnid-cli",
+                                                   "'replay' needs at least one --candump FILE");
             return cl;
         }
         if (run.iterations && *run.iterations > run.candumpFiles.size()) {
-            cl.error = tr("--iterations: %1 trials need %1 logs, %2 given")
+            cl.error = QCoreApplication::translate("learnid-cli",
+                                                   "--iterations: %1 trials need %1 logs, %2 given")
                            .arg(*run.iterations)
                            .arg(run.candumpFiles.size());
             cl.errorCode = ExitBadInput;

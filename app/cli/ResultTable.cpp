@@ -10,11 +10,6 @@ namespace learnid::cli {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("learnid-cli", text);
-}
-
 QString cell(const QString &text, int width)
 {
     return text.rightJustified(width);
@@ -34,15 +29,16 @@ QString resultTable(const CommissioningSession &session)
     const int n = model.dof();
     const QList<ParameterInfo> params = model.parameters();
 
-    QStringList header{cell(tr("trial"), 5)};
+    QStringList header{cell(QCoreApplication::translate("learnid-cli", "trial"), 5)};
     for (const ParameterInfo &p : params)
         header << cell(QStringLiteral("%1 [%2]").arg(p.name, p.unit), 12);
-    header << cell(tr("change %"), 9);
+    header << cell(QCoreApplication::translate("learnid-cli", "change %"), 9);
     for (int j = 0; j < n; ++j)
-        header << cell(tr("max|e|%1 deg").arg(j + 1), 12);
-    header << cell(tr("T s"), 6) << cell(tr("cond"), 7);
+        header << cell(QCoreApplication::translate("learnid-cli", "max|e|%1 deg").arg(j + 1), 12);
+    header << cell(QCoreApplication::translate("learnid-cli", "T s"), 6)
+           << cell(QCoreApplication::translate("learnid-cli", "cond"), 7);
     if (truth)
-        header << cell(tr("vs truth %"), 10);
+        header << cell(QCoreApplication::translate("learnid-cli", "vs truth %"), 10);
     QStringList lines{header.join(QLatin1Char(' '))};
 
     const QVector<Eigen::VectorXd> &estimates = session.estimates();
@@ -66,7 +62,9 @@ QString resultTable(const CommissioningSession &session)
         if (t && !t->record.completed())
             line += QStringLiteral("  ") + trialStatusName(t->status());
         if (t && t->update && t->update->rank < phi.size())
-            line += QStringLiteral("  ") + tr("(rank %1: unobservable kept)").arg(t->update->rank);
+            line += QStringLiteral("  ") +
+                    QCoreApplication::translate("learnid-cli", "(rank %1: unobservable kept)")
+                        .arg(t->update->rank);
         lines << line;
     }
     return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
@@ -76,9 +74,12 @@ QString trialSummary(const TrialResult &result)
 {
     // A trial that did not complete ends the series: its reason follows as the error line.
     if (result.status() == TrialStatus::Refused)
-        return tr("trial %1: %2").arg(result.index).arg(trialStatusName(result.status()));
+        return QCoreApplication::translate("learnid-cli", "trial %1: %2")
+            .arg(result.index)
+            .arg(trialStatusName(result.status()));
     if (result.record.samples() == 0) {
-        return tr("trial %1: %2, T = %3 s, no samples recorded")
+        return QCoreApplication::translate("learnid-cli",
+                                           "trial %1: %2, T = %3 s, no samples recorded")
             .arg(result.index)
             .arg(trialStatusName(result.status()))
             .arg(result.check.rule.duration, 0, 'f', 3);
@@ -86,12 +87,14 @@ QString trialSummary(const TrialResult &result)
     QStringList errors;
     for (Eigen::Index j = 0; j < result.maxTrackingErrorDeg.size(); ++j)
         errors << QString::number(result.maxTrackingErrorDeg[j], 'f', 5);
-    QString line = tr("trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg")
-                       .arg(result.index)
-                       .arg(trialStatusName(result.status()))
-                       .arg(result.check.rule.duration, 0, 'f', 3)
-                       .arg(result.record.samples())
-                       .arg(errors.join(QStringLiteral(" / ")));
+    QString line =
+        QCoreApplication::translate("learnid-cli",
+                                    "trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg")
+            .arg(result.index)
+            .arg(trialStatusName(result.status()))
+            .arg(result.check.rule.duration, 0, 'f', 3)
+            .arg(result.record.samples())
+            .arg(errors.join(QStringLiteral(" / ")));
     if (!result.message.isEmpty() && result.status() == TrialStatus::Completed)
         line += QStringLiteral(": ") + result.message;
     return line;

@@ -1,40 +1,26 @@
 #include "cli/RunCommand.h"
 
-#include "can/CandumpLog.h"
-#include "canrobot/CanRobot.h"
-#include "canrobot/CandumpReplayDevice.h"
 #include "cli/ResultTable.h"
-#include "io/AtomicFile.h"
-#include "io/ParameterFile.h"
 #include "io/ScenarioFile.h"
-#include "io/SessionReport.h"
-#include "io/TrialCsv.h"
 #include "model/Error.h"
-#include "model/ModelFactory.h"
-#include "session/ScenarioRobot.h"
+#include "service/SessionWorker.h"
 
 #include <QCoreApplication>
 #include <QDir>
-#include <QFileInfo>
 #include <QLoggingCategory>
-#include <atomic>
 #include <csignal>
 
 namespace learnid::cli {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("learnid-cli", text);
-}
-
 // Ctrl-C stops the running trial at its next sample instead of killing the process.
 CommissioningSession *g_session = nullptr;
 extern "C" void onInterrupt(int)
 {
     if (g_session)
-        g_session->requestCancel(); // an atomic store: async-signal-safe
+        g_session->requestCancel(); // an atomic store: async-signal-safe (no lock, unlike
+                                    // SessionWorker::requestCancel)
 }
 
 Scenario loadScenario(const RunOptions &options)
@@ -46,52 +32,25 @@ Scenario loadScenario(const RunOptions &options)
     if (options.iterations)
         scenario.iterations = *options.iterations;
     if (!knownLearningLaws().contains(scenario.law)) {
-        throw Error(tr("--estimator: unknown law '%1' (known: %2)")
-                        .arg(scenario.law, knownLearningLaws().join(QStringLiteral(", "))));
+        throw Error(
+            QCoreApplication::translate("learnid-cli", "--estimator: unknown law '%1' (known: %2)")
+                .arg(scenario.law, knownLearningLaws().join(QStringLiteral(", "))));
     }
     validateScenario(scenario);
     return scenario;
 }
 
-// Every output of the run, built in memory so that nothing is written unless all can be.
-QList<QPair<QString, QByteArray>> buildOutputs(const RunOptions &options,
-                                               const CommissioningSession &session)
+// The robot the options ask for, as the session service's factory makes it.
+RobotRequest robotRequest(const RunOptions &options)
 {
-    QList<QPair<QString, QByteArray>> files;
-    if (!options.reportPath.isEmpty())
-        files.append({options.reportPath, sessionReportJson(session)});
-    if (!options.exportPath.isEmpty()) {
-        const int last = int(session.estimates().size()) - 1;
-        const ParameterFileContent content = parameterFileContent(session, last);
-        files.append({options.exportPath, parameterFileToJson(content)});
-        const QFileInfo info(options.exportPath);
-        files.append({info.dir().filePath(info.completeBaseName() + QStringLiteral(".dcf")),
-                      parameterDcfFragment(content)});
-    }
-    if (!options.trialCsvDir.isEmpty())
-        files += trialCsvFiles(session.history(), options.trialCsvDir);
-    return files;
-}
-
-// The robot the options ask for. A CAN robot is connected here, so that an unreachable bus is
-// reported before the session starts (connectError set, robot null).
-std::shared_ptr<Robot> makeRobot(const RunOptions &options, const Scenario &scenario,
-                                 std::shared_ptr<const RobotModel> model, QString *connectError)
-{
-    if (options.robot == QLatin1String("sim"))
-        return makeSimulatedRobot(scenario, model);
-    CanDeviceFactory factory;
-    if (options.robot == QLatin1String("replay")) {
-        QList<CandumpEntry> entries;
-        for (const QString &file : options.candumpFiles)
-            entries += candump::readFile(file); // throws Error naming file and line
-        factory = [entries](QString *) {
-            return new CandumpReplayDevice(entries);
-        };
-    }
-    auto robot = std::make_shared<CanRobot>(std::move(model), options.can, std::move(factory));
-    *connectError = robot->connectBus();
-    return connectError->isEmpty() ? robot : nullptr;
+    RobotRequest request;
+    if (options.robot == QLatin1String("can"))
+        request.kind = RobotRequest::Kind::Can;
+    else if (options.robot == QLatin1String("replay"))
+        request.kind = RobotRequest::Kind::Replay;
+    request.can = options.can;
+    request.candumpFiles = options.candumpFiles;
+    return request;
 }
 
 } // namespace
@@ -111,33 +70,42 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
         rules += QStringLiteral("learnid.*.info=false\nlearnid.*.debug=false\n");
     QLoggingCategory::setFilterRules(rules);
     Scenario scenario;
-    std::unique_ptr<CommissioningSession> session;
     try {
         scenario = loadScenario(options);
-        if (options.robot == QLatin1String("replay") && !options.iterations)
-            scenario.iterations = int(options.candumpFiles.size());
-        const auto model = makeRobotModel(scenario.model);
-        QString connectError;
-        std::shared_ptr<Robot> robot = makeRobot(options, scenario, model, &connectError);
-        if (!robot) {
-            err << tr("learnid-cli: error: %1").arg(connectError) << Qt::endl;
-            return ExitTrialFailed;
-        }
-        session = std::make_unique<CommissioningSession>(scenario, model, std::move(robot));
     } catch (const Error &e) {
-        err << tr("learnid-cli: error: %1").arg(e.message()) << Qt::endl;
+        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(e.message())
+            << Qt::endl;
         return ExitBadInput;
     }
+    if (options.robot == QLatin1String("replay") && !options.iterations)
+        scenario.iterations = int(options.candumpFiles.size());
+
+    // The session service, run synchronously in this thread: its robot factory, its session,
+    // its export path, as the window uses them from its worker thread.
+    SessionWorker worker;
+    worker.setRobotRequest(robotRequest(options));
+    std::optional<ExitCode> openFailure;
+    QObject::connect(
+        &worker, &SessionWorker::openFailed, [&](const QString &message, bool unreachable) {
+            err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(message)
+                << Qt::endl;
+            openFailure = unreachable ? ExitTrialFailed : ExitBadInput;
+        });
+    worker.open(scenario);
+    if (openFailure)
+        return *openFailure;
+    CommissioningSession *session = worker.session();
 
     if (!options.quiet) {
-        err << tr("learnid-cli: %1, law %2, %3 learning trials")
+        err << QCoreApplication::translate("learnid-cli",
+                                           "learnid-cli: %1, law %2, %3 learning trials")
                    .arg(session->robot().description(), scenario.law)
                    .arg(scenario.iterations)
             << Qt::endl;
-        QObject::connect(session.get(), &CommissioningSession::trialFinished,
+        QObject::connect(session, &CommissioningSession::trialFinished,
                          [&err](const TrialResult &t) { err << trialSummary(t) << Qt::endl; });
     }
-    g_session = session.get();
+    g_session = session;
     const auto previous = std::signal(SIGINT, onInterrupt);
     const bool completed = session->runTrials(scenario.iterations);
     std::signal(SIGINT, previous);
@@ -147,39 +115,58 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
     out.flush();
     if (!completed) {
         const TrialResult &last = session->history().constLast();
-        err << tr("learnid-cli: error: %1")
+        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1")
                    .arg(last.message.isEmpty() ? trialStatusName(last.status()) : last.message)
             << Qt::endl
-            << tr("learnid-cli: no files written") << Qt::endl;
+            << QCoreApplication::translate("learnid-cli", "learnid-cli: no files written")
+            << Qt::endl;
         return ExitTrialFailed;
     }
 
     if (options.apply) {
         const int last = int(session->estimates().size()) - 1;
-        QString error = session->accept(last);
+        QString error;
+        QObject::connect(&worker, &SessionWorker::operationFailed,
+                         [&error](SessionOperation, const QString &message) { error = message; });
+        worker.accept(last);
         if (error.isEmpty())
-            error = session->apply();
+            worker.apply();
         if (!error.isEmpty()) {
-            err << tr("learnid-cli: error: apply failed: %1").arg(error) << Qt::endl;
+            err << QCoreApplication::translate("learnid-cli",
+                                               "learnid-cli: error: apply failed: %1")
+                       .arg(error)
+                << Qt::endl;
             return ExitTrialFailed;
         }
         if (!options.quiet)
-            err << tr("learnid-cli: estimate %1 applied to the robot").arg(last) << Qt::endl;
+            err << QCoreApplication::translate("learnid-cli",
+                                               "learnid-cli: estimate %1 applied to the robot")
+                       .arg(last)
+                << Qt::endl;
     }
 
-    try {
-        const auto files = buildOutputs(options, *session);
-        if (!options.trialCsvDir.isEmpty() && !QDir().mkpath(options.trialCsvDir))
-            throw Error(tr("--trial-csv: cannot create the folder %1").arg(options.trialCsvDir));
-        writeFilesAtomically(files);
-        if (!options.quiet)
-            for (const auto &f : files)
-                err << tr("learnid-cli: wrote %1").arg(QDir::toNativeSeparators(f.first))
-                    << Qt::endl;
-    } catch (const Error &e) {
-        err << tr("learnid-cli: error: %1").arg(e.message()) << Qt::endl;
+    ExportRequest request;
+    request.reportPath = options.reportPath;
+    request.parameterPath = options.exportPath;
+    request.trialCsvDir = options.trialCsvDir;
+    QStringList written;
+    QString writeError;
+    QObject::connect(&worker, &SessionWorker::exported,
+                     [&](const QStringList &paths, const QString &error) {
+                         written = paths;
+                         writeError = error;
+                     });
+    worker.exportOutputs(request);
+    if (!writeError.isEmpty()) {
+        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(writeError)
+            << Qt::endl;
         return ExitWriteFailed;
     }
+    if (!options.quiet)
+        for (const QString &path : written)
+            err << QCoreApplication::translate("learnid-cli", "learnid-cli: wrote %1")
+                       .arg(QDir::toNativeSeparators(path))
+                << Qt::endl;
     return ExitOk;
 }
 

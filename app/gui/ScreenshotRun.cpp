@@ -6,7 +6,7 @@
 #include "ui/MainWindow.h"
 #include "ui/RobotPanel.h"
 #include "ui/ScenarioForm.h"
-#include "ui/SessionController.h"
+#include "service/SessionController.h"
 #include "ui/TrackingErrorPlot.h"
 
 #include <QAction>

@@ -28,6 +28,7 @@ public:
                    MeasurementOptions options = {});
 
     void setFaults(const SimulatedFaults &faults) { m_faults = faults; }
+    const SimulatedFaults &faults() const { return m_faults; }
 
     QString description() const override;
     TrialRecord runTrial(const TrialPlan &plan, const TrialMonitor &monitor) override;

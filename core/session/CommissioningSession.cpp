@@ -147,10 +147,11 @@ void CommissioningSession::learnFrom(TrialResult &result)
     }
 }
 
-bool CommissioningSession::runTrials(int count)
+bool CommissioningSession::runTrials(int count, bool keepEarlierStop)
 {
     // Reset once: a Stop that arrives between two trials of the series must end it.
-    m_cancel.store(false);
+    if (!keepEarlierStop)
+        m_cancel.store(false);
     for (int i = 0; i < count; ++i) {
         if (m_cancel.load())
             return false;
@@ -189,6 +190,7 @@ QString CommissioningSession::apply()
     if (!error.isEmpty())
         return error;
     m_storedBeforeApply.append(before);
+    m_appliedIndices.append(*m_accepted);
     m_applied.append(phi);
     emit parametersApplied(phi);
     return {};
@@ -206,6 +208,7 @@ QString CommissioningSession::revert()
     if (!error.isEmpty())
         return error;
     m_storedBeforeApply.removeLast();
+    m_appliedIndices.removeLast();
     m_applied.append(previous);
     emit parametersApplied(previous);
     return {};

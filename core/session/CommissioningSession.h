@@ -52,9 +52,14 @@ public:
     /// the history, marked, and leaves the estimate unchanged.
     const TrialResult &runTrial();
     /// Runs trials until `count` more have completed or one did not; returns whether all did.
-    bool runTrials(int count);
+    /// A Stop requested before the series starts is forgotten, unless keepEarlierStop: a caller
+    /// that clears it when the run is requested (clearCancel) passes true, so that a Stop sent
+    /// between the request and the start is not lost.
+    bool runTrials(int count, bool keepEarlierStop = false);
     /// Asks a running trial (and series) to stop at the next sample; thread-safe.
     void requestCancel();
+    /// Forgets a Stop requested earlier; thread-safe.
+    void clearCancel() { m_cancel.store(false); }
 
     /// Accepts estimate k (1 .. estimates().size()-1) for apply. Returns an error or empty.
     QString accept(int estimateIndex);
@@ -65,6 +70,12 @@ public:
     QString revert();
     /// Parameter sets applied so far, oldest first.
     const QVector<Eigen::VectorXd> &appliedHistory() const { return m_applied; }
+    /// The estimate the robot holds because of this session's applies: the accepted index of
+    /// the last apply not reverted, or -1 (nothing applied, or everything reverted).
+    int appliedEstimateIndex() const
+    {
+        return m_appliedIndices.isEmpty() ? -1 : m_appliedIndices.constLast();
+    }
 
 signals:
     void trialStarted(int index, int samples);
@@ -88,6 +99,7 @@ private:
     std::optional<int> m_accepted;
     QVector<Eigen::VectorXd> m_applied;
     QVector<Eigen::VectorXd> m_storedBeforeApply;
+    QVector<int> m_appliedIndices; ///< estimate index of each apply not reverted, oldest first
     std::atomic_bool m_cancel{false};
 };
 

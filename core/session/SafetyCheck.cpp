@@ -13,10 +13,10 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("SafetyCheck", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(SafetyCheck)
+};
 
 // Sizes of the check for N joints (N = Eigen::Dynamic: any count, known at run time).
 template <int N> struct CheckSizes
@@ -166,18 +166,19 @@ SafetyVerdict checkTrial(const RobotModel &model, const Eigen::VectorXd &phiHat,
     v.torqueWithinLimits = overJoint < 0;
 
     if (!v.physical) {
-        v.reason = tr("the estimate is not a physical robot: its mass matrix is not positive "
-                      "definite at t = %1 s")
+        v.reason = Text::tr("the estimate is not a physical robot: its mass matrix is not positive "
+                            "definite at t = %1 s")
                        .arg(v.worstTime, 0, 'f', 3);
     } else if (!v.stable) {
-        v.reason = tr("the closed loop would be unstable: linearised along the path with the "
-                      "current estimate, a pole has |z| = %1 (growth rate %2 1/s) at t = %3 s. "
-                      "Raise the derivative filter bandwidth lambda or lower the gains")
-                       .arg(v.worstSpectralRadius, 0, 'f', 5)
-                       .arg(v.worstDecayRate, 0, 'g', 3)
-                       .arg(v.worstTime, 0, 'f', 3);
+        v.reason =
+            Text::tr("the closed loop would be unstable: linearised along the path with the "
+                     "current estimate, a pole has |z| = %1 (growth rate %2 1/s) at t = %3 s. "
+                     "Raise the derivative filter bandwidth lambda or lower the gains")
+                .arg(v.worstSpectralRadius, 0, 'f', 5)
+                .arg(v.worstDecayRate, 0, 'g', 3)
+                .arg(v.worstTime, 0, 'f', 3);
     } else if (!v.torqueWithinLimits) {
-        v.reason = tr("planned torque of joint %1 is %2 N m, above its limit of %3 N m")
+        v.reason = Text::tr("planned torque of joint %1 is %2 N m, above its limit of %3 N m")
                        .arg(overJoint + 1)
                        .arg(v.peakTorque[overJoint], 0, 'f', 3)
                        .arg(v.torqueLimit[overJoint], 0, 'f', 3);

@@ -4,7 +4,7 @@
 #include "ui/ConvergenceTableModel.h"
 #include "ui/MessageBar.h"
 #include "ui/RobotPanel.h"
-#include "ui/SessionController.h"
+#include "service/SessionController.h"
 
 #include <QComboBox>
 #include <QLineEdit>
@@ -57,11 +57,11 @@ private slots:
         for (const int ms : {20, 21, 200}) {
             timeout->setValue(ms);
             QString error;
-            const std::optional<RobotChoice> choice = panel->choice(&error);
+            const std::optional<RobotRequest> choice = panel->choice(&error);
             QVERIFY2(choice.has_value(), qPrintable(error));
             // ceil(ms / period): a gap of exactly ms is still allowed
-            const int expected = int(std::ceil(ms / (1000.0 * choice->canOptions.syncPeriod)));
-            QCOMPARE(choice->canOptions.syncGapPeriods, expected);
+            const int expected = int(std::ceil(ms / (1000.0 * choice->can.syncPeriod)));
+            QCOMPARE(choice->can.syncGapPeriods, expected);
         }
     }
 

@@ -10,7 +10,7 @@
 #include "ui/MessageBar.h"
 #include "ui/PlotImage.h"
 #include "ui/PreTrialCheckView.h"
-#include "ui/SessionController.h"
+#include "service/SessionController.h"
 #include "ui/TrackingErrorPlot.h"
 
 #include <QAction>

@@ -7,7 +7,7 @@
 #include "ui/PreTrialCheckView.h"
 #include "ui/RunPanel.h"
 #include "ui/ScenarioForm.h"
-#include "ui/SessionController.h"
+#include "service/SessionController.h"
 #include "ui/TrackingErrorPlot.h"
 
 #include <QAction>

@@ -1,8 +1,10 @@
-#include "ui/SessionInfo.h"
+#include "service/SessionInfo.h"
 
 #include "robot/SimulatedRobot.h"
 #include "session/TrialResult.h"
-#include "ui/TrackingErrorData.h"
+#include "service/SessionExport.h"
+#include "service/SessionState.h"
+#include "service/TrackingErrorData.h"
 
 namespace learnid {
 
@@ -14,6 +16,9 @@ void registerSessionMetaTypes()
     qRegisterMetaType<QList<learnid::TrackingErrorCurve>>();
     qRegisterMetaType<Eigen::VectorXd>();
     qRegisterMetaType<QVector<Eigen::VectorXd>>();
+    qRegisterMetaType<learnid::SessionState>();
+    qRegisterMetaType<learnid::SessionOperation>();
+    qRegisterMetaType<learnid::ExportRequest>();
 }
 
 } // namespace learnid

@@ -1,10 +1,11 @@
 #pragma once
 
 #include "robot/SimulatedRobot.h"
+#include "service/RobotRequest.h"
+#include "service/SessionInfo.h"
+#include "service/SessionState.h"
+#include "service/TrackingErrorData.h"
 #include "session/TrialResult.h"
-#include "ui/RobotChoice.h"
-#include "ui/SessionInfo.h"
-#include "ui/TrackingErrorData.h"
 
 #include <QObject>
 #include <QThread>
@@ -18,8 +19,9 @@ class SessionWorker;
 /// The GUI thread's front of the session. It starts a SessionWorker in its own QThread, forwards
 /// requests to it by queued calls, and keeps value copies of what the views show (the history
 /// without its samples, see trialSummary(); estimates; the last pre-trial check). The samples
-/// stay with the session in the worker: exportTrialCsv() writes them there. stop() reaches the running trial directly: cancelling
-/// is thread-safe.
+/// stay with the session in the worker: exportTrialCsv() writes them there. stop() reaches the
+/// running trial directly: cancelling is thread-safe. It holds the workflow's state
+/// (SessionState); what may be done next is allowedActions(state(), facts()).
 class SessionController : public QObject
 {
     Q_OBJECT
@@ -28,9 +30,14 @@ public:
     explicit SessionController(QObject *parent = nullptr);
     ~SessionController() override;
 
-    bool isOpen() const { return m_info.has_value(); }
-    /// True from a run/apply request until the worker answers.
-    bool isBusy() const { return m_busy; }
+    SessionState state() const { return m_state; }
+    /// What decides the allowed actions besides the state (scenarioValid left true).
+    SessionFacts facts() const;
+    AllowedActions allowedActions() const { return learnid::allowedActions(m_state, facts()); }
+    bool isOpen() const { return isConnected(m_state); }
+    /// True while something runs: connecting, a trial or its stop, an apply or revert.
+    bool isBusy() const { return isOpen() ? m_state != SessionState::Idle
+                                          : m_state == SessionState::Connecting; }
     const std::optional<SessionInfo> &info() const { return m_info; }
     const QVector<TrialResult> &history() const { return m_history; }
     /// estimates()[0] is phi_0, [k] the estimate after k learning steps.
@@ -40,15 +47,15 @@ public:
     /// What the robot controller holds now (empty before the first apply).
     const Eigen::VectorXd &storedParameters() const { return m_stored; }
     int appliedCount() const { return m_appliedCount; }
-    /// Index of the estimate that equals the stored set, or -1.
-    int storedEstimateIndex() const;
+    /// The estimate the robot holds through this session's applies, or -1.
+    int appliedEstimateIndex() const { return m_appliedIndex; }
 
-    bool canRun() const;
+    bool canRun() const { return allowedActions().run; }
 
 public slots:
     void open(const learnid::Scenario &scenario);
     /// The robot the next open() connects (default: the simulated robot).
-    void setRobotChoice(const learnid::RobotChoice &choice);
+    void setRobotRequest(const learnid::RobotRequest &request);
     void close();
     void setSimulatedFaults(const learnid::SimulatedFaults &faults);
     void runTrial();
@@ -76,12 +83,12 @@ signals:
     void runFinished(bool allCompleted);
     void acceptedChanged(int estimateIndex);
     void applied(const Eigen::VectorXd &stored);
-    void operationFailed(const QString &operation, const QString &message);
+    void operationFailed(learnid::SessionOperation operation, const QString &message);
     void parameterFileExported(const QStringList &paths, const QString &error);
     void trialCsvExported(const QString &folder, int files, const QString &error);
 
 private:
-    void setBusy(bool busy);
+    void setState(SessionState state);
     template <typename F>
     void post(F &&call);
 
@@ -94,7 +101,8 @@ private:
     std::optional<int> m_accepted;
     Eigen::VectorXd m_stored;
     int m_appliedCount = 0;
-    bool m_busy = false;
+    int m_appliedIndex = -1;
+    SessionState m_state = SessionState::NotConnected;
 };
 
 } // namespace learnid

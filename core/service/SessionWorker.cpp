@@ -1,20 +1,12 @@
-#include "ui/SessionWorker.h"
-
-#include "session/ScenarioRobot.h"
-
-#include "canrobot/CanRobot.h"
+#include "service/SessionWorker.h"
 
 #include "io/AtomicFile.h"
-#include "io/ParameterFile.h"
-#include "io/SessionReport.h"
-#include "io/TrialCsv.h"
 #include "model/Error.h"
 #include "model/ModelFactory.h"
-#include "ui/TrialSummary.h"
-#include "ui/UiLogging.h"
+#include "service/RobotFactory.h"
+#include "service/ServiceLogging.h"
+#include "service/TrialSummary.h"
 
-#include <QDir>
-#include <QFileInfo>
 #include <QMutexLocker>
 
 namespace learnid {
@@ -32,6 +24,13 @@ void SessionWorker::requestCancel()
         m_session->requestCancel();
 }
 
+void SessionWorker::clearCancel()
+{
+    QMutexLocker lock(&m_sessionMutex);
+    if (m_session)
+        m_session->clearCancel();
+}
+
 void SessionWorker::open(const Scenario &scenario)
 {
     close();
@@ -39,26 +38,21 @@ void SessionWorker::open(const Scenario &scenario)
         const auto model = makeRobotModel(scenario.model);
         if (!model)
             throw Error(tr("unknown robot model \"%1\"").arg(scenario.model));
-        std::shared_ptr<SimulatedRobot> simulated;
-        std::shared_ptr<Robot> robot;
-        if (m_choice.can) {
-            auto can = std::make_shared<CanRobot>(model, m_choice.canOptions);
-            const QString error = can->connectBus();
-            if (!error.isEmpty())
-                throw Error(error);
-            robot = can;
-        } else {
-            simulated = makeSimulatedRobot(scenario, model);
-            simulated->setFaults(m_faults);
-            robot = simulated;
+        RobotConnection robot = makeRobot(m_request, scenario, model);
+        if (!robot.robot) {
+            qCWarning(lcService).noquote() << "connecting the robot failed:" << robot.connectError;
+            emit openFailed(robot.connectError, true);
+            return;
         }
-        auto session = std::make_unique<CommissioningSession>(scenario, model, robot);
+        if (robot.simulated)
+            robot.simulated->setFaults(m_faults);
+        auto session = std::make_unique<CommissioningSession>(scenario, model, robot.robot);
         QMutexLocker lock(&m_sessionMutex);
-        m_robot = simulated;
+        m_robot = robot.simulated;
         m_session = std::move(session);
     } catch (const Error &e) {
-        qCWarning(lcUi).noquote() << "opening the session failed:" << e.message();
-        emit openFailed(e.message());
+        qCWarning(lcService).noquote() << "opening the session failed:" << e.message();
+        emit openFailed(e.message(), false);
         return;
     }
     connectSession();
@@ -140,17 +134,12 @@ void SessionWorker::runTrial()
 void SessionWorker::runTrials(int count)
 {
     if (!m_session) {
-        emit operationFailed(QStringLiteral("run"), tr("no robot connected"));
+        emit operationFailed(SessionOperation::Run, tr("no robot connected"));
         emit runFinished(false);
         return;
     }
-    bool all = true;
-    if (count == 1) {
-        const TrialResult &t = m_session->runTrial();
-        all = t.learned();
-    } else {
-        all = m_session->runTrials(count);
-    }
+    // The Stop flag was cleared when the run was requested (clearCancel): keep a Stop sent since.
+    const bool all = m_session->runTrials(count, true);
     emit runFinished(all);
     emitCheck();
 }
@@ -163,7 +152,7 @@ void SessionWorker::accept(int estimateIndex)
     if (error.isEmpty())
         emit accepted(estimateIndex);
     else
-        emit operationFailed(QStringLiteral("accept"), error);
+        emit operationFailed(SessionOperation::Accept, error);
 }
 
 void SessionWorker::apply()
@@ -172,9 +161,9 @@ void SessionWorker::apply()
         return;
     const QString error = m_session->apply();
     if (error.isEmpty())
-        emit applied(m_session->robot().storedParameters());
+        emit applied(m_session->robot().storedParameters(), m_session->appliedEstimateIndex());
     else
-        emit operationFailed(QStringLiteral("apply"), error);
+        emit operationFailed(SessionOperation::Apply, error);
 }
 
 void SessionWorker::revert()
@@ -183,45 +172,48 @@ void SessionWorker::revert()
         return;
     const QString error = m_session->revert();
     if (error.isEmpty())
-        emit applied(m_session->robot().storedParameters());
+        emit applied(m_session->robot().storedParameters(), m_session->appliedEstimateIndex());
     else
-        emit operationFailed(QStringLiteral("revert"), error);
+        emit operationFailed(SessionOperation::Revert, error);
 }
 
 void SessionWorker::exportTrialCsv(const QString &folder)
 {
-    if (!m_session) {
-        emit trialCsvExported(folder, 0, tr("no session to export"));
-        return;
-    }
-    try {
-        if (!QDir().mkpath(folder))
-            throw Error(tr("cannot create the folder %1").arg(QDir::toNativeSeparators(folder)));
-        const QList<QPair<QString, QByteArray>> files = trialCsvFiles(m_session->history(), folder);
-        writeFilesAtomically(files);
-        emit trialCsvExported(folder, int(files.size()), {});
-    } catch (const Error &e) {
-        emit trialCsvExported(folder, 0, e.message());
-    }
+    ExportRequest request;
+    request.trialCsvDir = folder;
+    QStringList written;
+    const QString error = writeOutputs(request, &written);
+    emit trialCsvExported(folder, int(written.size()), error);
 }
 
 void SessionWorker::exportParameterFile(const QString &jsonPath, int estimateIndex)
 {
-    if (!m_session) {
-        emit parameterFileExported({}, tr("no session to export"));
-        return;
-    }
-    const QFileInfo info(jsonPath);
-    const QString dcfPath = info.dir().filePath(info.completeBaseName() + QStringLiteral(".dcf"));
+    ExportRequest request;
+    request.parameterPath = jsonPath;
+    request.estimateIndex = estimateIndex;
+    QStringList written;
+    const QString error = writeOutputs(request, &written);
+    emit parameterFileExported(written, error);
+}
+
+void SessionWorker::exportOutputs(const ExportRequest &request)
+{
+    QStringList written;
+    const QString error = writeOutputs(request, &written);
+    emit exported(written, error);
+}
+
+QString SessionWorker::writeOutputs(const ExportRequest &request, QStringList *written)
+{
+    written->clear();
+    if (!m_session)
+        return tr("no session to export");
     try {
-        const ParameterFileContent content = parameterFileContent(*m_session, estimateIndex);
-        writeFilesAtomically({{jsonPath, parameterFileToJson(content)},
-                              {dcfPath, parameterDcfFragment(content)}});
+        *written = writeExport(*m_session, request);
     } catch (const Error &e) {
-        emit parameterFileExported({}, e.message());
-        return;
+        return e.message();
     }
-    emit parameterFileExported({jsonPath, dcfPath}, {});
+    return {};
 }
 
 } // namespace learnid

@@ -1,5 +1,5 @@
 #include "io/TrialCsv.h"
-#include "ui/SessionController.h"
+#include "service/SessionController.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -104,6 +104,71 @@ private slots:
         QCOMPARE(c.estimates().size(), 1);
     }
 
+    // The explicit state through a whole workflow, and the applied estimate known by index.
+    void workflow_walksTheStatesAndKnowsTheAppliedEstimate()
+    {
+        SessionController c;
+        QList<SessionState> states;
+        connect(&c, &SessionController::stateChanged, &c, [&] {
+            if (states.isEmpty() || states.constLast() != c.state())
+                states << c.state();
+        });
+        QCOMPARE(c.state(), SessionState::NotConnected);
+        QVERIFY(c.allowedActions().connect && !c.allowedActions().run);
+        QVERIFY(openDefaultScenario(c));
+        QCOMPARE(states, (QList<SessionState>{SessionState::Connecting, SessionState::Idle}));
+        QVERIFY(c.allowedActions().run && !c.allowedActions().accept);
+
+        QSignalSpy finished(&c, &SessionController::runFinished);
+        c.runTrials(2);
+        QCOMPARE(c.state(), SessionState::RunningTrial);
+        QVERIFY(c.allowedActions().stop && !c.allowedActions().run);
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(c.state(), SessionState::Idle);
+        QVERIFY(c.allowedActions().accept && !c.allowedActions().apply);
+
+        QSignalSpy accepted(&c, &SessionController::acceptedChanged);
+        c.accept(1);
+        QVERIFY(accepted.wait(20000));
+        QVERIFY(c.allowedActions().apply);
+        states.clear();
+        QSignalSpy applied(&c, &SessionController::applied);
+        c.apply();
+        QCOMPARE(c.state(), SessionState::Applying);
+        QVERIFY(applied.wait(20000));
+        QCOMPARE(states, (QList<SessionState>{SessionState::Applying, SessionState::Idle}));
+        QCOMPARE(c.appliedEstimateIndex(), 1);
+        QVERIFY(c.allowedActions().revert);
+        c.accept(2);
+        QVERIFY(accepted.wait(20000));
+        c.apply();
+        QVERIFY(applied.wait(20000));
+        QCOMPARE(c.appliedEstimateIndex(), 2);
+        c.revert();
+        QVERIFY(applied.wait(20000));
+        QCOMPARE(c.appliedEstimateIndex(), 1); // back to the set applied before
+
+        // Stop at once after Run: even before the worker starts the series, it is not lost.
+        states.clear();
+        const qsizetype ran = c.history().size();
+        c.runTrials(3);
+        c.stop();
+        QCOMPARE(c.state(), SessionState::Stopping);
+        QVERIFY(!c.allowedActions().stop && !c.allowedActions().run);
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(finished.constLast().at(0).toBool(), false);
+        QCOMPARE(states, (QList<SessionState>{SessionState::RunningTrial, SessionState::Stopping,
+                                              SessionState::Idle}));
+        QVERIFY(c.history().size() <= ran + 1); // at most the trial under way when it came
+        QVERIFY(c.history().size() == ran ||
+                c.history().constLast().status() == TrialStatus::Cancelled);
+
+        QSignalSpy closed(&c, &SessionController::closed);
+        c.close();
+        QVERIFY(closed.wait(20000));
+        QCOMPARE(c.state(), SessionState::NotConnected);
+    }
+
     void applyWithoutAccept_isRefused()
     {
         SessionController c;
@@ -111,11 +176,11 @@ private slots:
         QSignalSpy failed(&c, &SessionController::operationFailed);
         c.apply();
         QVERIFY(failed.wait(20000));
-        QCOMPARE(failed.constFirst().at(0).toString(), QStringLiteral("apply"));
+        QCOMPARE(failed.constFirst().at(0).value<SessionOperation>(), SessionOperation::Apply);
         QVERIFY(!c.isBusy());
         QCOMPARE(c.storedParameters().size(), 0);
     }
 };
 
 QTEST_MAIN(TestSessionController)
-#include "tst_ui_sessioncontroller.moc"
+#include "tst_sessioncontroller.moc"

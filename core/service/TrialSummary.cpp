@@ -1,4 +1,4 @@
-#include "ui/TrialSummary.h"
+#include "service/TrialSummary.h"
 
 namespace learnid {
 

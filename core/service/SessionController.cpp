@@ -1,7 +1,7 @@
-#include "ui/SessionController.h"
+#include "service/SessionController.h"
 
-#include "ui/SessionWorker.h"
-#include "ui/UiLogging.h"
+#include "service/SessionWorker.h"
+#include "service/ServiceLogging.h"
 
 namespace learnid {
 
@@ -22,18 +22,24 @@ SessionController::SessionController(QObject *parent)
         m_accepted.reset();
         m_stored = info.storedParameters;
         m_appliedCount = 0;
+        m_appliedIndex = -1;
+        m_state = SessionState::Idle;
         emit opened();
         emit historyChanged();
         emit stateChanged();
     });
     connect(m_worker, &SessionWorker::openFailed, this, [this](const QString &message) {
         m_info.reset();
+        m_state = SessionState::NotConnected;
         emit openFailed(message);
         emit stateChanged();
     });
     connect(m_worker, &SessionWorker::closed, this, [this] {
         m_info.reset();
         m_check.reset();
+        // A new open() may be on its way already (closed comes first from the worker's open).
+        if (m_state != SessionState::Connecting)
+            m_state = SessionState::NotConnected;
         emit closed();
         emit stateChanged();
     });
@@ -53,7 +59,7 @@ SessionController::SessionController(QObject *parent)
                 emit historyChanged();
             });
     connect(m_worker, &SessionWorker::runFinished, this, [this](bool all) {
-        setBusy(false);
+        setState(SessionState::Idle);
         emit runFinished(all);
     });
     connect(m_worker, &SessionWorker::accepted, this, [this](int k) {
@@ -62,17 +68,22 @@ SessionController::SessionController(QObject *parent)
         emit historyChanged();
         emit stateChanged();
     });
-    connect(m_worker, &SessionWorker::applied, this, [this](const Eigen::VectorXd &stored) {
-        m_stored = stored;
-        ++m_appliedCount;
-        setBusy(false);
-        emit applied(stored);
-        emit historyChanged();
-    });
+    connect(m_worker, &SessionWorker::applied, this,
+            [this](const Eigen::VectorXd &stored, int estimateIndex) {
+                m_stored = stored;
+                m_appliedIndex = estimateIndex;
+                ++m_appliedCount;
+                setState(SessionState::Idle);
+                emit applied(stored);
+                emit historyChanged();
+            });
     connect(m_worker, &SessionWorker::operationFailed, this,
-            [this](const QString &operation, const QString &message) {
-                if (operation != QLatin1String("accept"))
-                    setBusy(false);
+            [this](SessionOperation operation, const QString &message) {
+                // A failed apply or revert ends the Applying state; a failed run ends with
+                // runFinished; a refused accept changes nothing.
+                if (m_state == SessionState::Applying &&
+                    (operation == SessionOperation::Apply || operation == SessionOperation::Revert))
+                    setState(SessionState::Idle);
                 emit operationFailed(operation, message);
             });
     connect(m_worker, &SessionWorker::parameterFileExported, this,
@@ -94,46 +105,43 @@ void SessionController::post(F &&call)
     QMetaObject::invokeMethod(m_worker, std::forward<F>(call), Qt::QueuedConnection);
 }
 
-int SessionController::storedEstimateIndex() const
+SessionFacts SessionController::facts() const
 {
-    if (m_stored.size() == 0)
-        return -1;
-    for (int k = int(m_estimates.size()) - 1; k >= 0; --k)
-        if (m_estimates.at(k).size() == m_stored.size() && m_estimates.at(k) == m_stored)
-            return k;
-    return -1;
+    SessionFacts f;
+    f.checkPassed = m_check && m_check->passed();
+    f.learned = m_estimates.size() > 1;
+    f.ranTrial = !m_history.isEmpty();
+    f.accepted = m_accepted.has_value();
+    f.applied = m_appliedCount > 0;
+    return f;
 }
 
-bool SessionController::canRun() const
+void SessionController::setState(SessionState state)
 {
-    return isOpen() && !m_busy && m_check && m_check->passed();
-}
-
-void SessionController::setBusy(bool busy)
-{
-    if (m_busy == busy)
+    if (m_state == state)
         return;
-    m_busy = busy;
+    m_state = state;
     emit stateChanged();
 }
 
 void SessionController::open(const Scenario &scenario)
 {
-    if (m_busy)
-        return;
+    if (isConnected(m_state) && m_state != SessionState::Idle)
+        return; // something runs; the worker opens nothing in between
+    setState(SessionState::Connecting);
     SessionWorker *w = m_worker;
     post([w, scenario] { w->open(scenario); });
 }
 
-void SessionController::setRobotChoice(const RobotChoice &choice)
+void SessionController::setRobotRequest(const RobotRequest &request)
 {
     SessionWorker *w = m_worker;
-    post([w, choice] { w->setRobotChoice(choice); });
+    post([w, request] { w->setRobotRequest(request); });
 }
 
 void SessionController::close()
 {
-    if (m_busy)
+    if (m_state == SessionState::RunningTrial)
         stop();
     SessionWorker *w = m_worker;
     post([w] { w->close(); });
@@ -152,18 +160,21 @@ void SessionController::runTrial()
 
 void SessionController::runTrials(int count)
 {
-    if (!isOpen() || m_busy || count < 1)
+    if (m_state != SessionState::Idle || count < 1)
         return;
-    qCInfo(lcUi) << "running" << count << "trial(s)";
-    setBusy(true);
+    qCInfo(lcService) << "running" << count << "trial(s)";
+    setState(SessionState::RunningTrial);
+    m_worker->clearCancel();
     SessionWorker *w = m_worker;
     post([w, count] { w->runTrials(count); });
 }
 
 void SessionController::stop()
 {
-    qCInfo(lcUi) << "stop requested";
+    qCInfo(lcService) << "stop requested";
     m_worker->requestCancel();
+    if (m_state == SessionState::RunningTrial)
+        setState(SessionState::Stopping);
 }
 
 void SessionController::accept(int estimateIndex)
@@ -174,18 +185,18 @@ void SessionController::accept(int estimateIndex)
 
 void SessionController::apply()
 {
-    if (m_busy)
+    if (m_state != SessionState::Idle)
         return;
-    setBusy(true);
+    setState(SessionState::Applying);
     SessionWorker *w = m_worker;
     post([w] { w->apply(); });
 }
 
 void SessionController::revert()
 {
-    if (m_busy)
+    if (m_state != SessionState::Idle)
         return;
-    setBusy(true);
+    setState(SessionState::Applying);
     SessionWorker *w = m_worker;
     post([w] { w->revert(); });
 }

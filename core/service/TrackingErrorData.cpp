@@ -1,4 +1,4 @@
-#include "ui/TrackingErrorData.h"
+#include "service/TrackingErrorData.h"
 
 #include <algorithm>
 #include <cmath>

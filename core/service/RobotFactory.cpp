@@ -1,0 +1,40 @@
+#include "service/RobotFactory.h"
+
+#include "can/CandumpLog.h"
+#include "canrobot/CanRobot.h"
+#include "canrobot/CandumpReplayDevice.h"
+#include "session/ScenarioRobot.h"
+
+namespace learnid {
+
+RobotConnection makeRobot(const RobotRequest &request, const Scenario &scenario,
+                          std::shared_ptr<const RobotModel> model)
+{
+    RobotConnection c;
+    if (request.kind == RobotRequest::Kind::Simulated) {
+        c.simulated = makeSimulatedRobot(scenario, std::move(model));
+        c.robot = c.simulated;
+        return c;
+    }
+    CanDeviceFactory factory; // empty: the plugin and interface of request.can
+    if (request.kind == RobotRequest::Kind::Replay) {
+        QList<CandumpEntry> entries;
+        for (const QString &file : request.candumpFiles)
+            entries += candump::readFile(file); // throws Error naming file and line
+        factory = [entries](QString *) {
+            return new CandumpReplayDevice(entries);
+        };
+    }
+    CanRobotOptions options = request.can;
+    if (request.kind == RobotRequest::Kind::Replay) {
+        options.plugin = QStringLiteral("candump");
+        options.interface = QStringLiteral("replay");
+    }
+    auto robot = std::make_shared<CanRobot>(std::move(model), options, std::move(factory));
+    c.connectError = robot->connectBus();
+    if (c.connectError.isEmpty())
+        c.robot = std::move(robot);
+    return c;
+}
+
+} // namespace learnid

@@ -1,0 +1,53 @@
+#include "service/SessionExport.h"
+
+#include "io/AtomicFile.h"
+#include "io/ParameterFile.h"
+#include "model/Error.h"
+#include "io/SessionReport.h"
+#include "io/TrialCsv.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+
+namespace learnid {
+
+QString dcfPathFor(const QString &parameterPath)
+{
+    const QFileInfo info(parameterPath);
+    return info.dir().filePath(info.completeBaseName() + QStringLiteral(".dcf"));
+}
+
+QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &session,
+                                              const ExportRequest &request)
+{
+    QList<QPair<QString, QByteArray>> files;
+    if (!request.reportPath.isEmpty())
+        files.append({request.reportPath, sessionReportJson(session)});
+    if (!request.parameterPath.isEmpty()) {
+        const int k = request.estimateIndex >= 0 ? request.estimateIndex
+                                                 : int(session.estimates().size()) - 1;
+        const ParameterFileContent content = parameterFileContent(session, k);
+        files.append({request.parameterPath, parameterFileToJson(content)});
+        files.append({dcfPathFor(request.parameterPath), parameterDcfFragment(content)});
+    }
+    if (!request.trialCsvDir.isEmpty())
+        files += trialCsvFiles(session.history(), request.trialCsvDir);
+    return files;
+}
+
+QStringList writeExport(const CommissioningSession &session, const ExportRequest &request)
+{
+    const QList<QPair<QString, QByteArray>> files = exportFiles(session, request);
+    if (!request.trialCsvDir.isEmpty() && !QDir().mkpath(request.trialCsvDir)) {
+        throw Error(QCoreApplication::translate("SessionExport", "cannot create the folder %1")
+                        .arg(QDir::toNativeSeparators(request.trialCsvDir)));
+    }
+    writeFilesAtomically(files);
+    QStringList paths;
+    for (const auto &file : files)
+        paths << file.first;
+    return paths;
+}
+
+} // namespace learnid

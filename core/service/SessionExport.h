@@ -1,0 +1,35 @@
+#pragma once
+
+#include "session/CommissioningSession.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QPair>
+#include <QString>
+
+namespace learnid {
+
+/// What to export from a session; an empty path leaves that output out.
+struct ExportRequest
+{
+    QString reportPath;    ///< the session report (JSON, docs/file-formats.md)
+    QString parameterPath; ///< the parameter file (JSON); its DCF fragment goes beside it (.dcf)
+    int estimateIndex = -1; ///< the estimate of the parameter file; -1: the last one
+    QString trialCsvDir;   ///< trial-NNN.csv of every trial that moved
+};
+
+/// The files of a request, built in memory (path, content), so that the caller writes all or
+/// none (writeFilesAtomically). The one export path of the window and learnid-cli. Throws
+/// Error naming what cannot be exported (an estimate that does not exist, a value a DCF cannot
+/// carry).
+QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &session,
+                                              const ExportRequest &request);
+
+/// Writes the files of a request, all or none (the trial CSV folder is created first), and
+/// returns their paths. Throws Error naming the file or folder that could not be written.
+QStringList writeExport(const CommissioningSession &session, const ExportRequest &request);
+
+/// Where the DCF fragment of a parameter file goes: beside it, same base name, .dcf.
+QString dcfPathFor(const QString &parameterPath);
+
+} // namespace learnid
