@@ -4,22 +4,28 @@
 <context>
     <name>AtomicFile</name>
     <message>
+        <location filename="../core/io/AtomicFile.cpp" line="+24"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>no file name given</source>
         <translation>kein Dateiname angegeben</translation>
     </message>
     <message>
+        <location line="+24"/>
         <source>the same file is to be written twice</source>
         <translation>dieselbe Datei soll zweimal geschrieben werden</translation>
     </message>
     <message>
+        <location line="+13"/>
         <source>%1 (already written: %2)</source>
         <translation>%1 (bereits geschrieben: %2)</translation>
     </message>
     <message>
+        <location line="+13"/>
+        <location line="+5"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
@@ -27,14 +33,17 @@
 <context>
     <name>BusLoad</name>
     <message>
+        <location filename="../core/can/BusLoad.cpp" line="+41"/>
         <source>Bus load: joints and frames must not be negative, rates must be positive and a frame carries 0 to 8 bytes.</source>
         <translation>Buslast: Gelenke und Frames dürfen nicht negativ, Raten müssen positiv sein, und ein Frame trägt 0 bis 8 Bytes.</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>Bus load: the time window and the bitrate must be positive.</source>
         <translation>Buslast: Zeitfenster und Bitrate müssen positiv sein.</translation>
     </message>
     <message>
+        <location line="-38"/>
         <source>%1 % of %2 kbit/s (%3 frames/s)</source>
         <translation>%1 % von %2 kbit/s (%3 Frames/s)</translation>
     </message>
@@ -42,26 +51,32 @@
 <context>
     <name>CanArmSimulator</name>
     <message>
+        <location filename="../core/cansim/CanArmSimulator.cpp" line="+23"/>
         <source>The simulated arm has no robot model.</source>
         <translation>Der simulierte Arm hat kein Robotermodell.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>--nodes: the %1 arm has %2 joints, so %2 node ids are needed, not %3.</source>
         <translation>--nodes: der Arm %1 hat %2 Gelenke, also werden %2 Knoten-IDs gebraucht, nicht %3.</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>--nodes: %1 is not a CANopen node id (1 to 127).</source>
         <translation>--nodes: %1 ist keine CANopen-Knoten-ID (1 bis 127).</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>--nodes: node %1 is listed twice.</source>
         <translation>--nodes: Knoten %1 ist zweimal aufgeführt.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>The simulated arm&apos;s parameters, torque limits, initial pose or gains do not fit the %1 model.</source>
         <translation>Parameter, Momentengrenzen, Anfangsstellung oder Verstärkungen des simulierten Arms passen nicht zum Modell %1.</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>The SYNC period must be 1 to 100 ms, not %1 s.</source>
         <translation>Die SYNC-Periode muss 1 bis 100 ms betragen, nicht %1 s.</translation>
     </message>
@@ -69,26 +84,33 @@
 <context>
     <name>CanOpen</name>
     <message>
+        <location filename="../core/can/CanOpen.cpp" line="+51"/>
         <source>Unknown CANopen data type 0x%1.</source>
         <translation>Unbekannter CANopen-Datentyp 0x%1.</translation>
     </message>
     <message>
+        <location line="+26"/>
         <source>Unknown CANopen data type &quot;%1&quot;.</source>
         <translation>Unbekannter CANopen-Datentyp „%1“.</translation>
     </message>
     <message>
+        <location line="+17"/>
+        <location line="+40"/>
         <source>%1 is not a numeric type.</source>
         <translation>%1 ist kein numerischer Typ.</translation>
     </message>
     <message>
+        <location line="-38"/>
         <source>The value %1 does not fit the type %2 (range %3 to %4%5).</source>
         <translation>Der Wert %1 passt nicht in den Typ %2 (Bereich %3 bis %4%5).</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>, integers only</source>
         <translation>, nur ganze Zahlen</translation>
     </message>
     <message>
+        <location line="+35"/>
         <source>%1 needs %2 bytes at offset %3, but only %4 bytes are present.</source>
         <translation>%1 braucht %2 Bytes ab Offset %3, aber nur %4 Bytes sind vorhanden.</translation>
     </message>
@@ -96,86 +118,108 @@
 <context>
     <name>CanRobot</name>
     <message>
+        <location filename="../core/canrobot/ApplySteps.cpp" line="+23"/>
         <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
         <translation>Knoten %1, Objekt %2: nach dem Schreiben von %4 (%5 %6) %3 zurückgelesen: nichts wurde gespeichert</translation>
     </message>
     <message>
+        <location filename="../core/canrobot/CanRobot.cpp" line="+58"/>
         <source>CAN %1/%2, nodes %3</source>
         <translation>CAN %1/%2, Knoten %3</translation>
     </message>
     <message>
+        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+29"/>
         <source>cannot create the CAN device %1/%2: %3</source>
         <translation>das CAN-Gerät %1/%2 kann nicht angelegt werden: %3</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>unknown plugin or interface</source>
         <translation>unbekanntes Plugin oder unbekannte Schnittstelle</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>no CAN node given: one node per joint is needed</source>
         <translation>kein CAN-Knoten angegeben: ein Knoten pro Gelenk ist nötig</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>%1 is not a valid CANopen node id (1 to 127)</source>
         <translation>%1 ist keine gültige CANopen-Knoten-ID (1 bis 127)</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <location line="+39"/>
         <source>node %1 is listed twice</source>
         <translation>Knoten %1 ist zweimal aufgeführt</translation>
     </message>
     <message>
+        <location line="-32"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN-Zeitoptionen müssen positiv sein (Heartbeat-Periode höchstens 65535 ms)</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>the configuration of %1 nodes at %2 Hz needs %3 of the bus, more than the %4 % the tool allows: use fewer nodes per bus or a longer SYNC period</source>
         <translation>die Konfiguration mit %1 Knoten bei %2 Hz braucht %3 des Busses, mehr als die %4 %, die das Werkzeug zulässt: weniger Knoten pro Bus oder eine längere SYNC-Periode verwenden</translation>
     </message>
     <message>
+        <location line="+24"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; ist keine CANopen-Knoten-ID (1 bis 127)</translation>
     </message>
     <message>
+        <location filename="../core/canrobot/NodeConfiguration.cpp" line="+30"/>
         <source>node %1, object %2: the answer holds %3 bytes, UNSIGNED32 needs 4</source>
         <translation>Knoten %1, Objekt %2: die Antwort enthält %3 Bytes, UNSIGNED32 braucht 4</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>node %1, object %2 is 0: the drive&apos;s units are unusable</source>
         <translation>Knoten %1, Objekt %2 ist 0: die Einheiten des Antriebs sind unbrauchbar</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>the plan is for %1 joints but %2 CAN nodes are configured</source>
         <translation>der Plan ist für %1 Gelenke, aber %2 CAN-Knoten sind konfiguriert</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>the sample period %1 ms cannot be sent to 0x60C2 (whole ms, 1 to 255)</source>
         <translation>die Abtastzeit %1 ms kann nicht an 0x60C2 gesendet werden (ganze ms, 1 bis 255)</translation>
     </message>
     <message>
+        <location line="+34"/>
         <source>node %1, object 0x1006:00: the robot&apos;s SYNC period is %2 us, the plan needs %3 us</source>
         <translation>Knoten %1, Objekt 0x1006:00: die SYNC-Periode des Roboters ist %2 us, der Plan braucht %3 us</translation>
     </message>
     <message>
+        <location filename="../core/canrobot/TrialCollector.cpp" line="+41"/>
         <source>%1: the TPDO answering SYNC %2 (counter %3) did not arrive before the next SYNC: sample missing</source>
         <translation>%1: das TPDO als Antwort auf SYNC %2 (Zähler %3) kam nicht vor dem nächsten SYNC: Abtastwert fehlt</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>joint %1</source>
         <translation>Gelenk %1</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>SYNC counter jumped from %1 to %2 after SYNC %3: %4 SYNC(s) lost</source>
         <translation>SYNC-Zähler sprang nach SYNC %3 von %1 auf %2: %4 SYNC verloren</translation>
     </message>
     <message>
+        <location line="+19"/>
         <source>joint %1: TPDO of %2 bytes, the mapping needs %3 (SYNC %4)</source>
         <translation>Gelenk %1: TPDO mit %2 Bytes, das Mapping braucht %3 (SYNC %4)</translation>
     </message>
     <message>
+        <location line="+46"/>
         <source>at SYNC %1 (counter %2), plan sample %3, t = %4 s</source>
         <translation>bei SYNC %1 (Zähler %2), Planabtastwert %3, t = %4 s</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>at SYNC %1 (counter %2), %3 s after NMT start</source>
         <translation>bei SYNC %1 (Zähler %2), %3 s nach NMT-Start</translation>
     </message>
@@ -183,62 +227,77 @@
 <context>
     <name>CandumpLog</name>
     <message>
+        <location filename="../core/can/CandumpLog.cpp" line="+52"/>
         <source>the line must start with a timestamp in parentheses, e.g. (1700000000.123456)</source>
         <translation>die Zeile muss mit einem Zeitstempel in Klammern beginnen, z. B. (1700000000.123456)</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>&quot;%1&quot; is not a timestamp of the form (seconds.microseconds)</source>
         <translation>„%1“ ist kein Zeitstempel der Form (Sekunden.Mikrosekunden)</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>&quot;%1&quot; has no &apos;#&apos; between identifier and data</source>
         <translation>„%1“ hat kein &apos;#&apos; zwischen Identifier und Daten</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>CAN FD frames are not supported</source>
         <translation>CAN-FD-Frames werden nicht unterstützt</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>&quot;%1&quot; is not an identifier of 3 (standard) or 8 (extended) hex digits</source>
         <translation>„%1“ ist kein Identifier aus 3 (Standard) oder 8 (erweitert) Hexadezimalziffern</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>the standard identifier %1 exceeds 7FF</source>
         <translation>der Standard-Identifier %1 überschreitet 7FF</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>the extended identifier %1 exceeds 1FFFFFFF</source>
         <translation>der erweiterte Identifier %1 überschreitet 1FFFFFFF</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>&quot;%1&quot; is not a remote request (R, optionally with a length 0 to 8)</source>
         <translation>„%1“ ist keine Remote-Anfrage (R, wahlweise mit einer Länge 0 bis 8)</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>&quot;%1&quot; is not data of whole bytes in hex digits</source>
         <translation>„%1“ sind keine Daten aus ganzen Bytes in Hexadezimalziffern</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>%1 data bytes; a classic CAN frame carries at most 8</source>
         <translation>%1 Datenbytes; ein klassischer CAN-Frame trägt höchstens 8</translation>
     </message>
     <message>
+        <location line="+53"/>
         <source>expected &quot;(timestamp) interface id#data&quot;, found %1 fields</source>
         <translation>erwartet „(Zeitstempel) Schnittstelle id#Daten“, gefunden: %1 Felder</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>unexpected text after the frame: &quot;%1&quot;</source>
         <translation>unerwarteter Text nach dem Frame: „%1“</translation>
     </message>
     <message>
+        <location line="+37"/>
         <source>Cannot open the candump log %1: %2</source>
         <translation>Das candump-Log %1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>Writing the candump log failed: %1</source>
         <translation>Schreiben des candump-Logs fehlgeschlagen: %1</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>Cannot write the candump log %1: %2</source>
         <translation>Das candump-Log %1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -246,10 +305,12 @@
 <context>
     <name>CartesianLine</name>
     <message>
+        <location filename="../core/motion/CartesianLine.cpp" line="+60"/>
         <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
         <translation>ungültiger Zeitablauf: Abtastzeit und Dauer müssen positiv sein, Ruhezeiten nicht negativ</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>a planar line needs 2 joints</source>
         <translation>eine ebene Gerade braucht 2 Gelenke</translation>
     </message>
@@ -257,38 +318,47 @@
 <context>
     <name>Cia402</name>
     <message>
+        <location filename="../core/can/Cia402.cpp" line="+34"/>
         <source>Not ready to switch on</source>
         <translation>Nicht einschaltbereit</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Switch on disabled</source>
         <translation>Einschaltsperre</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Ready to switch on</source>
         <translation>Einschaltbereit</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Switched on</source>
         <translation>Eingeschaltet</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Operation enabled</source>
         <translation>Betrieb freigegeben</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Quick stop active</source>
         <translation>Schnellhalt aktiv</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Fault reaction active</source>
         <translation>Fehlerreaktion aktiv</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Fault</source>
         <translation>Fehler</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Unknown drive state</source>
         <translation>Unbekannter Antriebszustand</translation>
     </message>
@@ -296,202 +366,256 @@
 <context>
     <name>EmcyConsumer</name>
     <message>
+        <location filename="../core/can/EmcyConsumer.cpp" line="+26"/>
         <source>error reset or no error</source>
         <translation>Fehler zurückgesetzt oder kein Fehler</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>generic error</source>
         <translation>allgemeiner Fehler</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location line="+45"/>
         <source>current</source>
         <translation>Strom</translation>
     </message>
     <message>
+        <location line="-44"/>
         <source>current, device input side</source>
         <translation>Strom, Geräteeingangsseite</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>current inside the device</source>
         <translation>Strom im Gerät</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>current, device output side</source>
         <translation>Strom, Geräteausgangsseite</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>continuous over-current</source>
         <translation>Dauerüberstrom</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>short circuit or earth leakage</source>
         <translation>Kurzschluss oder Erdschluss</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location line="+40"/>
         <source>voltage</source>
         <translation>Spannung</translation>
     </message>
     <message>
+        <location line="-39"/>
         <source>mains voltage</source>
         <translation>Netzspannung</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>voltage inside the device</source>
         <translation>Spannung im Gerät</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>DC link over-voltage</source>
         <translation>Zwischenkreisüberspannung</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>DC link under-voltage</source>
         <translation>Zwischenkreisunterspannung</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>output voltage</source>
         <translation>Ausgangsspannung</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location line="+35"/>
         <source>temperature</source>
         <translation>Temperatur</translation>
     </message>
     <message>
+        <location line="-34"/>
         <source>ambient temperature</source>
         <translation>Umgebungstemperatur</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>device temperature</source>
         <translation>Gerätetemperatur</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>drive excess temperature</source>
         <translation>Übertemperatur des Antriebs</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>device hardware</source>
         <translation>Gerätehardware</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>device software</source>
         <translation>Gerätesoftware</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>internal software</source>
         <translation>interne Software</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>user software</source>
         <translation>Anwendersoftware</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>data set</source>
         <translation>Datensatz</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>additional modules</source>
         <translation>Zusatzmodule</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>sensor</source>
         <translation>Sensor</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>incremental sensor 1 fault</source>
         <translation>Fehler Inkrementalgeber 1</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>monitoring</source>
         <translation>Überwachung</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location line="+23"/>
         <source>communication</source>
         <translation>Kommunikation</translation>
     </message>
     <message>
+        <location line="-22"/>
         <source>CAN overrun (objects lost)</source>
         <translation>CAN-Überlauf (Objekte verloren)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>CAN in error passive mode</source>
         <translation>CAN im Zustand Error Passive</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>life guard or heartbeat error</source>
         <translation>Life-Guarding- oder Heartbeat-Fehler</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>recovered from bus off</source>
         <translation>von Bus-Off erholt</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>CAN-ID collision</source>
         <translation>CAN-ID-Kollision</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>protocol error</source>
         <translation>Protokollfehler</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>PDO not processed due to length error</source>
         <translation>PDO wegen Längenfehler nicht verarbeitet</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>PDO length exceeded</source>
         <translation>PDO-Länge überschritten</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>unexpected SYNC data length</source>
         <translation>unerwartete SYNC-Datenlänge</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>RPDO timeout</source>
         <translation>RPDO-Zeitüberschreitung</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>positioning controller</source>
         <translation>Lageregler</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>following error</source>
         <translation>Schleppfehler</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>external error</source>
         <translation>externer Fehler</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>additional functions</source>
         <translation>Zusatzfunktionen</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>device specific</source>
         <translation>gerätespezifisch</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>generic</source>
         <translation>allgemein</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>device profile</source>
         <translation>Geräteprofil</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>reserved</source>
         <translation>reserviert</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>manufacturer</source>
         <translation>herstellerspezifisch</translation>
     </message>
     <message>
+        <location line="+28"/>
         <source>unknown error code</source>
         <translation>unbekannter Fehlercode</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>no error</source>
         <translation>kein Fehler</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Node %1 emergency %2: %3; error register %4: %5; manufacturer data %6</source>
         <translation>Knoten %1 EMCY %2: %3; Fehlerregister %4: %5; Herstellerdaten %6</translation>
     </message>
@@ -499,78 +623,98 @@
 <context>
     <name>JsonReader</name>
     <message>
+        <location filename="../core/io/JsonReader.cpp" line="+90"/>
         <source>%1 (beyond the range of a double)</source>
         <translation>%1 (außerhalb des Wertebereichs von double)</translation>
     </message>
     <message>
+        <location line="+7"/>
+        <location line="+45"/>
         <source>an array</source>
         <translation>ein Array</translation>
     </message>
     <message>
+        <location line="-43"/>
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>nothing</source>
         <translation>nichts</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>an integer from %1 to %2</source>
         <translation>eine ganze Zahl von %1 bis %2</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>%1: the file is empty; expected a JSON object</source>
         <translation>%1: die Datei ist leer; erwartet wird ein JSON-Objekt</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>%1: invalid JSON at line %2, column %3 (byte offset %4): %5</source>
         <translation>%1: ungültiges JSON in Zeile %2, Spalte %3 (Byte-Offset %4): %5</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>%1: the top level must be a JSON object, got %2</source>
         <translation>%1: die oberste Ebene muss ein JSON-Objekt sein, gefunden: %2</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>a single value</source>
         <translation>ein einzelner Wert</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>must be a finite number, got %1, which is beyond the range of a double</source>
         <translation>muss eine endliche Zahl sein, gefunden: %1, außerhalb des Wertebereichs von double</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>must be a number, got %1</source>
         <translation>muss eine Zahl sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>must be a finite number, got %1</source>
         <translation>muss eine endliche Zahl sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>must be a string, got %1</source>
         <translation>muss eine Zeichenkette sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>must be true or false, got %1</source>
         <translation>muss true oder false sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>must be an array, got %1</source>
         <translation>muss ein Array sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+22"/>
         <source>must be an object, got %1</source>
         <translation>muss ein Objekt sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>is missing; this key is required</source>
         <translation>fehlt; dieser Schlüssel ist erforderlich</translation>
     </message>
     <message>
+        <location line="+51"/>
         <source>unknown key; allowed here: %1</source>
         <translation>unbekannter Schlüssel; hier erlaubt: %1</translation>
     </message>
@@ -578,26 +722,33 @@
 <context>
     <name>LearningLaw</name>
     <message>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+110"/>
+        <location filename="../core/identify/PaperLaw.cpp" line="+18"/>
         <source>no completed trial to learn from</source>
         <translation>kein abgeschlossener Versuch, aus dem gelernt werden kann</translation>
     </message>
     <message>
+        <location filename="../core/identify/LearningLaw.cpp" line="+61"/>
         <source>trial record does not match its plan: %1 of %2 samples, %3 joints recorded for a %4-joint model</source>
         <translation>Versuchsaufzeichnung passt nicht zu ihrem Plan: %1 von %2 Abtastwerten, %3 Gelenke aufgezeichnet für ein Modell mit %4 Gelenken</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>trial record has only %1 samples</source>
         <translation>Versuchsaufzeichnung hat nur %1 Abtastwerte</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>trial record has a non-finite %1 at sample %2, joint %3</source>
         <translation>Versuchsaufzeichnung hat einen nicht endlichen Wert (%1) bei Abtastwert %2, Gelenk %3</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>torque</source>
         <translation>Moment</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>angle</source>
         <translation>Winkel</translation>
     </message>
@@ -605,22 +756,27 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+99"/>
         <source>No node to write the parameters to.</source>
         <translation>Kein Knoten, in den die Parameter geschrieben werden können.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>A parameter set holds 1 to %1 parameters, not %2.</source>
         <translation>Ein Parametersatz enthält 1 bis %1 Parameter, nicht %2.</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>%1 is not a valid CANopen node id (1 to 127).</source>
         <translation>%1 ist keine gültige CANopen-Knoten-ID (1 bis 127).</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Node %1 is listed twice.</source>
         <translation>Knoten %1 ist zweimal aufgeführt.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Parameter %1 (%2) cannot be sent as REAL32.</source>
         <translation>Parameter %1 (%2) kann nicht als REAL32 gesendet werden.</translation>
     </message>
@@ -628,18 +784,22 @@
 <context>
     <name>Nmt</name>
     <message>
+        <location filename="../core/can/Nmt.cpp" line="+14"/>
         <source>boot-up</source>
         <translation>Boot-up</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>stopped</source>
         <translation>Stopped</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>operational</source>
         <translation>Operational</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>pre-operational</source>
         <translation>Pre-Operational</translation>
     </message>
@@ -647,10 +807,12 @@
 <context>
     <name>ObservableUpdate</name>
     <message>
+        <location filename="../core/identify/GramBlock.cpp" line="+13"/>
         <source>least squares sizes do not match: %1 x %2 regressor, %3 targets, %4 joints, %5 parameters</source>
         <translation>Größen der kleinsten Quadrate passen nicht: %1 x %2 Regressor, %3 Zielwerte, %4 Gelenke, %5 Parameter</translation>
     </message>
     <message>
+        <location filename="../core/identify/ObservableUpdate.cpp" line="+19"/>
         <source>the regressor or the torque contains non-finite values</source>
         <translation>der Regressor oder das Moment enthält nicht endliche Werte</translation>
     </message>
@@ -658,10 +820,12 @@
 <context>
     <name>OutputPath</name>
     <message>
+        <location filename="../core/io/OutputPath.cpp" line="+23"/>
         <source>%1: no path given</source>
         <translation>%1: kein Pfad angegeben</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>%1: %2 is relative, and the folder it is taken from, %3, does not exist or is not a folder</source>
         <translation>%1: %2 ist relativ, und der Ordner, ab dem er gilt, %3, existiert nicht oder ist kein Ordner</translation>
     </message>
@@ -669,98 +833,122 @@
 <context>
     <name>ParameterFile</name>
     <message>
+        <location filename="../core/io/ParameterDcf.cpp" line="+32"/>
         <source>does not fit a REAL32 object entry, got %1</source>
         <translation>passt nicht in einen REAL32-Objekteintrag, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+96"/>
         <source>DCF fragment: joint %1 does not exist; the robot has %2 joints</source>
         <translation>DCF-Fragment: Gelenk %1 existiert nicht; der Roboter hat %2 Gelenke</translation>
     </message>
     <message>
+        <location filename="../core/io/ParameterFile.cpp" line="+131"/>
         <source>must be given for every parameter or for none</source>
         <translation>muss für jeden Parameter oder für keinen angegeben sein</translation>
     </message>
     <message>
+        <location line="+22"/>
         <source>must be an object index written as &quot;0x&quot; and four hex digits, got &quot;%1&quot;</source>
         <translation>muss ein Objektindex aus „0x“ und vier Hexadezimalziffern sein, gefunden: „%1“</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>must be the bytes written as pairs of hex digits, got &quot;%1&quot;</source>
         <translation>müssen die geschriebenen Bytes als Paare von Hexadezimalziffern sein, gefunden: „%1“</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>must be a date and time as in 2024-05-01T12:00:00.000Z, got &quot;%1&quot;</source>
         <translation>muss Datum und Uhrzeit wie 2024-05-01T12:00:00.000Z sein, gefunden: „%1“</translation>
     </message>
     <message>
+        <location line="+51"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>fehlt; dies ist keine learnid-Parameterdatei</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>this version of learnid reads &quot;%1&quot;, got %2</source>
         <translation>diese Version von learnid liest „%1“, gefunden: %2</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>is missing; this key is required</source>
         <translation>fehlt; dieser Schlüssel ist erforderlich</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>does not match the content: the file was changed after learnid wrote it, or is damaged</source>
         <translation>passt nicht zum Inhalt: die Datei wurde nach dem Schreiben durch learnid geändert oder ist beschädigt</translation>
     </message>
     <message>
+        <location line="+34"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
+        <location filename="../core/io/ParameterFileValidation.cpp" line="+49"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>one per joint of %1</source>
         <translation>einer pro Gelenk von %1</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>node %1 is given to two joints</source>
         <translation>Knoten %1 ist zwei Gelenken zugeordnet</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>must be a valid date and time</source>
         <translation>muss ein gültiges Datum mit Uhrzeit sein</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>must not be empty</source>
         <translation>darf nicht leer sein</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>must be a trial index or -1 (not recorded), got %1</source>
         <translation>muss ein Versuchsindex oder -1 (nicht aufgezeichnet) sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>one per parameter of %1</source>
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>must be &quot;%1&quot; (parameter %2 of %3), got &quot;%4&quot;</source>
         <translation>muss „%1“ sein (Parameter %2 von %3), gefunden: „%4“</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>values, %1</source>
         <translation>Werte, %1</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>standard deviations, %1</source>
         <translation>Standardabweichungen, %1</translation>
     </message>
     <message>
+        <location line="+19"/>
         <source>must name the CANopen data type</source>
         <translation>muss den CANopen-Datentyp nennen</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>must hold the bytes written</source>
         <translation>muss die geschriebenen Bytes enthalten</translation>
     </message>
@@ -768,26 +956,32 @@
 <context>
     <name>Pdo</name>
     <message>
+        <location filename="../core/can/Pdo.cpp" line="+24"/>
         <source>PDO %1 does not exist; learnid uses PDO 1 to 4.</source>
         <translation>PDO %1 existiert nicht; learnid nutzt PDO 1 bis 4.</translation>
     </message>
     <message>
+        <location line="+26"/>
         <source>Object %1 of type %2 cannot be mapped into a PDO.</source>
         <translation>Objekt %1 vom Typ %2 kann nicht in ein PDO gemappt werden.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>The mapped objects need %1 bits; a PDO holds at most %2 bits (8 bytes).</source>
         <translation>Die gemappten Objekte brauchen %1 Bit; ein PDO fasst höchstens %2 Bit (8 Bytes).</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>The PDO maps %1 objects but %2 values were given.</source>
         <translation>Das PDO mappt %1 Objekte, aber %2 Werte wurden angegeben.</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>PDO object %1: %2</source>
         <translation>PDO-Objekt %1: %2</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>The PDO carries %1 bytes; its mapping needs %2.</source>
         <translation>Das PDO trägt %1 Bytes; sein Mapping braucht %2.</translation>
     </message>
@@ -795,14 +989,17 @@
 <context>
     <name>SafetyCheck</name>
     <message>
+        <location filename="../core/session/SafetyCheck.cpp" line="+169"/>
         <source>the estimate is not a physical robot: its mass matrix is not positive definite at t = %1 s</source>
         <translation>die Schätzung ist kein physikalischer Roboter: ihre Massenmatrix ist bei t = %1 s nicht positiv definit</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>the closed loop would be unstable: linearised along the path with the current estimate, a pole has |z| = %1 (growth rate %2 1/s) at t = %3 s. Raise the derivative filter bandwidth lambda or lower the gains</source>
         <translation>der Regelkreis wäre instabil: entlang der Bahn mit der aktuellen Schätzung linearisiert, hat ein Pol bei t = %3 s |z| = %1 (Wachstumsrate %2 1/s). Die Bandbreite lambda des Differenzierfilters erhöhen oder die Verstärkungen senken</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>planned torque of joint %1 is %2 N m, above its limit of %3 N m</source>
         <translation>geplantes Moment von Gelenk %1 ist %2 N m, über seiner Grenze von %3 N m</translation>
     </message>
@@ -810,50 +1007,62 @@
 <context>
     <name>ScenarioFile</name>
     <message>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+93"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
+        <location filename="../core/io/ScenarioFile.cpp" line="+100"/>
         <source>this version of learnid reads &quot;%1&quot;, got %2</source>
         <translation>diese Version von learnid liest „%1“, gefunden: %2</translation>
     </message>
     <message>
+        <location line="+86"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-51"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>one per joint of %1</source>
         <translation>einer pro Gelenk von %1</translation>
     </message>
     <message>
+        <location line="+23"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
     <message>
+        <location line="-22"/>
         <source>one per parameter of %1</source>
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
+        <location filename="../core/io/ScenarioFile.cpp" line="-157"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>must have 2 entries (x and y), got %1</source>
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-22"/>
         <source>one per joint</source>
         <translation>einer pro Gelenk</translation>
     </message>
     <message>
+        <location line="+26"/>
         <source>must be 1 or -1, got %1</source>
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+33"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>muss 0 (idealer Encoder) oder eine ganze Zahl von %1 bis %2 sein, gefunden: %3</translation>
     </message>
@@ -861,130 +1070,162 @@
 <context>
     <name>SdoAbortCode</name>
     <message>
+        <location filename="../core/can/SdoAbortCode.cpp" line="+17"/>
         <source>Toggle bit not alternated.</source>
         <translation>Toggle-Bit nicht gewechselt.</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>SDO protocol timed out.</source>
         <translation>Zeitüberschreitung im SDO-Protokoll.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Client/server command specifier not valid or unknown.</source>
         <translation>Client/Server-Kommandokennung ungültig oder unbekannt.</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Invalid block size (block mode only).</source>
         <translation>Ungültige Blockgröße (nur Blockmodus).</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Invalid sequence number (block mode only).</source>
         <translation>Ungültige Sequenznummer (nur Blockmodus).</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>CRC error (block mode only).</source>
         <translation>CRC-Fehler (nur Blockmodus).</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Out of memory.</source>
         <translation>Kein Speicher mehr.</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Unsupported access to an object.</source>
         <translation>Nicht unterstützter Zugriff auf ein Objekt.</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Attempt to read a write-only object.</source>
         <translation>Versuch, ein nur schreibbares Objekt zu lesen.</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Attempt to write a read-only object.</source>
         <translation>Versuch, ein nur lesbares Objekt zu schreiben.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Object does not exist in the object dictionary.</source>
         <translation>Objekt existiert nicht im Objektverzeichnis.</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Object cannot be mapped to the PDO.</source>
         <translation>Objekt kann nicht in das PDO gemappt werden.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The number and length of the objects to be mapped would exceed the PDO length.</source>
         <translation>Anzahl und Länge der zu mappenden Objekte würden die PDO-Länge überschreiten.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>General parameter incompatibility.</source>
         <translation>Allgemeine Parameterunverträglichkeit.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>General internal incompatibility in the device.</source>
         <translation>Allgemeine interne Unverträglichkeit im Gerät.</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Access failed due to a hardware error.</source>
         <translation>Zugriff wegen eines Hardwarefehlers fehlgeschlagen.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Data type does not match: the length of the service parameter does not match.</source>
         <translation>Datentyp passt nicht: die Länge des Dienstparameters passt nicht.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Data type does not match: the length of the service parameter is too high.</source>
         <translation>Datentyp passt nicht: die Länge des Dienstparameters ist zu groß.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Data type does not match: the length of the service parameter is too low.</source>
         <translation>Datentyp passt nicht: die Länge des Dienstparameters ist zu klein.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Sub-index does not exist.</source>
         <translation>Subindex existiert nicht.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Invalid value for the parameter (download only).</source>
         <translation>Ungültiger Wert für den Parameter (nur Download).</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Value of the parameter written too high (download only).</source>
         <translation>Geschriebener Parameterwert zu hoch (nur Download).</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Value of the parameter written too low (download only).</source>
         <translation>Geschriebener Parameterwert zu niedrig (nur Download).</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Maximum value is less than minimum value.</source>
         <translation>Maximalwert ist kleiner als Minimalwert.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Resource not available: SDO connection.</source>
         <translation>Ressource nicht verfügbar: SDO-Verbindung.</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>General error.</source>
         <translation>Allgemeiner Fehler.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Data cannot be transferred or stored to the application.</source>
         <translation>Daten können nicht zur Anwendung übertragen oder dort gespeichert werden.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Data cannot be transferred or stored to the application because of local control.</source>
         <translation>Daten können wegen lokaler Steuerung nicht zur Anwendung übertragen oder dort gespeichert werden.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Data cannot be transferred or stored to the application because of the present device state.</source>
         <translation>Daten können wegen des aktuellen Gerätezustands nicht zur Anwendung übertragen oder dort gespeichert werden.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Object dictionary dynamic generation failed or no object dictionary is present.</source>
         <translation>Dynamisches Erzeugen des Objektverzeichnisses fehlgeschlagen oder kein Objektverzeichnis vorhanden.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>No data available.</source>
         <translation>Keine Daten verfügbar.</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>Unknown abort code %1.</source>
         <translation>Unbekannter Abbruchcode %1.</translation>
     </message>
@@ -992,17 +1233,28 @@
 <context>
     <name>SdoWrite</name>
     <message>
+        <location filename="../core/can/SdoWrite.cpp" line="+14"/>
         <source>%1 is not a valid CANopen node id (1 to 127).</source>
         <translation>%1 ist keine gültige CANopen-Knoten-ID (1 bis 127).</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>Node %1, object %2: %3</source>
         <translation>Knoten %1, Objekt %2: %3</translation>
     </message>
 </context>
 <context>
+    <name>SessionExport</name>
+    <message>
+        <location filename="../core/service/SessionExport.cpp" line="+43"/>
+        <source>cannot create the folder %1</source>
+        <translation>Ordner %1 kann nicht angelegt werden</translation>
+    </message>
+</context>
+<context>
     <name>SessionReport</name>
     <message>
+        <location filename="../core/io/SessionReport.cpp" line="+82"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>Schätzung %1 existiert in dieser Sitzung nicht</translation>
     </message>
@@ -1010,26 +1262,32 @@
 <context>
     <name>SimulatedRobot</name>
     <message>
+        <location filename="../core/robot/SimulatedRobot.cpp" line="+32"/>
         <source>simulated %1</source>
         <translation>Simulation %1</translation>
     </message>
     <message>
+        <location line="+52"/>
         <source>tracking error of joint %1 reached %2 deg at t = %3 s (limit %4 deg): quick stop</source>
         <translation>Folgefehler von Gelenk %1 erreichte %2° bei t = %3 s (Grenze %4°): Schnellhalt</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>drive of joint 1 reported a fault at t = %1 s (injected)</source>
         <translation>Antrieb von Gelenk 1 meldete bei t = %1 s einen Fehler (eingespeist)</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>stopped by the operator at t = %1 s</source>
         <translation>vom Bediener gestoppt bei t = %1 s</translation>
     </message>
     <message>
+        <location line="+22"/>
         <source>the simulated controller refused the parameter write (injected fault); its stored parameters are unchanged</source>
         <translation>die simulierte Steuerung lehnte das Schreiben der Parameter ab (eingespeister Fehler); ihre gespeicherten Parameter sind unverändert</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>parameter set has %1 values, the model needs %2 finite values</source>
         <translation>der Parametersatz hat %1 Werte, das Modell braucht %2 endliche Werte</translation>
     </message>
@@ -1037,18 +1295,22 @@
 <context>
     <name>TorqueRule</name>
     <message>
+        <location filename="../core/motion/TorqueRule.cpp" line="+28"/>
         <source>torque rule needs 2 grid points</source>
         <translation>die Momentenregel braucht 2 Stützstellen</translation>
     </message>
     <message>
+        <location line="+25"/>
         <source>torque rule needs one positive limit per joint and a positive fraction</source>
         <translation>die Momentenregel braucht eine positive Grenze pro Gelenk und einen positiven Anteil</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>gravity alone needs more than %1 % of a joint&apos;s torque limit</source>
         <translation>die Schwerkraft allein braucht mehr als %1 % der Momentengrenze eines Gelenks</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>the path needs no torque: check its length and the parameters</source>
         <translation>die Bahn braucht kein Moment: Länge und Parameter prüfen</translation>
     </message>
@@ -1056,30 +1318,37 @@
 <context>
     <name>TrialCsv</name>
     <message>
+        <location filename="../core/io/TrialCsv.cpp" line="+46"/>
         <source>%1: line %2: %3</source>
         <translation>%1: Zeile %2: %3</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>trial CSV: the record (%1 joints, %2 samples) does not fit its plan (%3 joints, %4 samples)</source>
         <translation>Versuchs-CSV: die Aufzeichnung (%1 Gelenke, %2 Abtastwerte) passt nicht zu ihrem Plan (%3 Gelenke, %4 Abtastwerte)</translation>
     </message>
     <message>
+        <location line="+51"/>
         <source>the file is empty; expected the header line</source>
         <translation>die Datei ist leer; erwartet wird die Kopfzeile</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>the header must be %1 (for one or more joints), got %2</source>
         <translation>die Kopfzeile muss %1 lauten (für ein oder mehrere Gelenke), gefunden: %2</translation>
     </message>
     <message>
+        <location line="+16"/>
         <source>expected %1 fields, got %2</source>
         <translation>%1 Felder erwartet, gefunden: %2</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>%1 is not a number: &quot;%2&quot;</source>
         <translation>%1 ist keine Zahl: „%2“</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>t_s must be finite and increase from line to line, got %1</source>
         <translation>t_s muss endlich sein und von Zeile zu Zeile zunehmen, gefunden: %1</translation>
     </message>
@@ -1087,6 +1356,7 @@
 <context>
     <name>TrialPlanner</name>
     <message>
+        <location filename="../core/session/TrialPlanner.cpp" line="+16"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>nur ebene Zweigelenkarme haben eine kartesische Geradenkinematik</translation>
     </message>
@@ -1094,22 +1364,27 @@
 <context>
     <name>TrialStatus</name>
     <message>
+        <location filename="../core/robot/Trial.cpp" line="+21"/>
         <source>completed</source>
         <translation>abgeschlossen</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>aborted</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>robot fault</source>
         <translation>Roboterfehler</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>cancelled</source>
         <translation>vom Bediener gestoppt</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>refused</source>
         <translation>abgelehnt</translation>
     </message>
@@ -1117,14 +1392,17 @@
 <context>
     <name>TwoLinkArm</name>
     <message>
+        <location filename="../core/model/TwoLinkArm.cpp" line="+15"/>
         <source>inertia of the base axis</source>
         <translation>Trägheit der Basisachse</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>coupling inertia of the two links</source>
         <translation>Koppelträgheit der beiden Glieder</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>inertia of the second link</source>
         <translation>Trägheit des zweiten Glieds</translation>
     </message>
@@ -1132,6 +1410,7 @@
 <context>
     <name>TwoLinkKinematics</name>
     <message>
+        <location filename="../core/motion/TwoLinkKinematics.cpp" line="+39"/>
         <source>point (%1, %2) m is out of reach or at a singularity of the arm (link lengths %3 m and %4 m)</source>
         <translation>Punkt (%1, %2) m ist außer Reichweite oder in einer Singularität des Arms (Gliedlängen %3 m und %4 m)</translation>
     </message>
@@ -1139,42 +1418,52 @@
 <context>
     <name>ValueChecks</name>
     <message>
+        <location filename="../core/io/ValueChecks.cpp" line="+22"/>
         <source>must be a finite number, got %1</source>
         <translation>muss eine endliche Zahl sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+52"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
+        <location line="-46"/>
         <source>must be a positive number, got %1</source>
         <translation>muss eine positive Zahl sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>must be zero or a positive number, got %1</source>
         <translation>muss null oder eine positive Zahl sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>must be zero, a positive number or unbounded (null), got %1</source>
         <translation>muss null, eine positive Zahl oder unbegrenzt (null) sein, gefunden: %1</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>must be from %1 to %2</source>
         <translation>muss zwischen %1 und %2 liegen</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>must be greater than %1 and at most %2</source>
         <translation>muss größer als %1 und höchstens %2 sein</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>must be greater than %1 and less than %2</source>
         <translation>muss größer als %1 und kleiner als %2 sein</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>%1, got %2</source>
         <translation>%1, gefunden: %2</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>must have %1 entries (%2), got %3</source>
         <translation>muss %1 Einträge haben (%2), gefunden: %3</translation>
     </message>
@@ -1182,10 +1471,16 @@
 <context>
     <name>learnid-cli</name>
     <message>
+        <location filename="../app/cli/RunCommand.cpp" line="+76"/>
+        <location line="+14"/>
+        <location line="+28"/>
+        <location line="+43"/>
+        <location filename="../app/cli/main.cpp" line="+36"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli: Fehler: %1</translation>
     </message>
     <message>
+        <location filename="../app/cli/CliOptions.cpp" line="+17"/>
         <source>Usage:
   learnid-cli scenario --print
       Print the default scenario (the paper scenario) as JSON.
@@ -1232,6 +1527,7 @@
 </translation>
     </message>
     <message>
+        <location line="+32"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -1244,218 +1540,267 @@
 %3</translation>
     </message>
     <message>
+        <location line="+13"/>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
         <translation>--robot: muss &apos;sim&apos; oder &apos;can&apos; sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+9"/>
+        <location line="+7"/>
         <source>--%1 needs --robot can</source>
         <translation>--%1 braucht --robot can</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>--robot can needs --can-plugin (e.g. socketcan, virtualcan)</source>
         <translation>--robot can braucht --can-plugin (z. B. socketcan, virtualcan)</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>--robot can needs --can-interface (e.g. can0)</source>
         <translation>--robot can braucht --can-interface (z. B. can0)</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes: %1 in &apos;%2&apos;</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>--can-sync-timeout: must be a whole number of ms from 1 to 60000, got &apos;%1&apos;</source>
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>--robot %1: %2</source>
         <translation>--robot %1: %2</translation>
     </message>
     <message>
+        <location line="+26"/>
         <source>Show this command&apos;s options.</source>
         <translation>Die Optionen dieses Befehls anzeigen.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Print the default scenario.</source>
         <translation>Standardszenario ausgeben.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
         <translation>Szenariodatei (JSON, docs/scenario.md); Standard: das Szenario des Artikels.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Learning law: paper or improved.</source>
         <translation>Lerngesetz: paper oder improved.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Learning trials, 1 to 100.</source>
         <translation>Lernversuche, 1 bis 100.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Write the session report (JSON) to FILE.</source>
         <translation>Den Sitzungsbericht (JSON) nach FILE schreiben.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Write the parameter file (JSON and DCF) to FILE.</source>
         <translation>Die Parameterdatei (JSON und DCF) nach FILE schreiben.</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Write each trial&apos;s samples as CSV into DIR.</source>
         <translation>Die Abtastwerte jedes Versuchs als CSV nach DIR schreiben.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Accept and apply the final estimate to the robot.</source>
         <translation>Die letzte Schätzung übernehmen und auf den Roboter übertragen.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Folder that relative output paths are taken from; default: the current directory.</source>
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>No progress lines on stderr.</source>
         <translation>Keine Fortschrittszeilen auf stderr.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>sim (default) or can.</source>
         <translation>sim (Standard) oder can.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>QCanBus plugin, e.g. socketcan or virtualcan.</source>
         <translation>QCanBus-Plugin, z. B. socketcan oder virtualcan.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>CAN interface, e.g. can0.</source>
         <translation>CAN-Schnittstelle, z. B. can0.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>CANopen node id of each joint&apos;s drive, e.g. 1,2.</source>
         <translation>CANopen-Knotennummer des Antriebs jedes Gelenks, z. B. 1,2.</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Longest SYNC gap in a trial [ms].</source>
         <translation>Längste SYNC-Lücke in einem Versuch [ms].</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Write each trial&apos;s CAN frames as a candump log into DIR.</source>
         <translation>Die CAN-Frames jedes Versuchs als candump-Log nach DIR schreiben.</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>A recorded trial (candump log); once per trial, in order.</source>
         <translation>Ein aufgezeichneter Versuch (candump-Log); einmal pro Versuch, der Reihe nach.</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>Print the default scenario as JSON.</source>
         <translation>Das Standardszenario als JSON ausgeben.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>&apos;scenario&apos; needs --print</source>
         <translation>&apos;scenario&apos; braucht --print</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+19"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>Neu identifizieren aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
 und jedes Log antwortet statt des Roboters.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Run a commissioning session on the simulated robot, or with --robot can
 on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>Eine Inbetriebnahmesitzung am simulierten Roboter ausführen, oder mit --robot can
 an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+13"/>
         <source>--iterations: must be a whole number from 1 to 100, got &apos;%1&apos;</source>
         <translation>--iterations: muss eine ganze Zahl von 1 bis 100 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>&apos;replay&apos; needs at least one --candump FILE</source>
         <translation>&apos;replay&apos; braucht mindestens ein --candump FILE</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>--iterations: %1 trials need %1 logs, %2 given</source>
         <translation>--iterations: %1 Versuche brauchen %1 Logs, %2 angegeben</translation>
     </message>
     <message>
+        <location filename="../app/cli/ResultTable.cpp" line="+32"/>
         <source>trial</source>
         <translation>Vers.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>change %</source>
         <translation>Änd. %</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>max|e|%1 deg</source>
         <translation>max|e|%1 °</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>T s</source>
         <translation>T s</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>cond</source>
         <translation>cond</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>vs truth %</source>
         <translation>vs. wahr %</translation>
     </message>
     <message>
+        <location line="+25"/>
         <source>(rank %1: unobservable kept)</source>
         <translation>(Rang %1: nicht beobachtbare beibehalten)</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>trial %1: %2</source>
         <translation>Versuch %1: %2</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>trial %1: %2, T = %3 s, no samples recorded</source>
         <translation>Versuch %1: %2, T = %3 s, keine Abtastwerte aufgezeichnet</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg</source>
         <translation>Versuch %1: %2, T = %3 s, %4 Abtastwerte, max. Folgefehler %5°</translation>
     </message>
     <message>
+        <location filename="../app/cli/RunCommand.cpp" line="-125"/>
         <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
         <translation>--estimator: unbekanntes Gesetz &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
+        <location line="+64"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
     <message>
+        <location line="+21"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli: keine Dateien geschrieben</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>learnid-cli: error: apply failed: %1</source>
         <translation>learnid-cli: Fehler: Übertragen fehlgeschlagen: %1</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>learnid-cli: estimate %1 applied to the robot</source>
         <translation>learnid-cli: Schätzung %1 auf den Roboter übertragen</translation>
     </message>
     <message>
-        <source>--trial-csv: cannot create the folder %1</source>
-        <translation>--trial-csv: Ordner %1 kann nicht angelegt werden</translation>
-    </message>
-    <message>
+        <location line="+25"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
@@ -1463,150 +1808,189 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid-robot-sim</name>
     <message>
+        <location filename="../app/robot-sim/StopRequests.cpp" line="+67"/>
         <source>SIGINT</source>
         <translation>SIGINT</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>SIGTERM</source>
         <translation>SIGTERM</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>stdin closed</source>
         <translation>stdin geschlossen</translation>
     </message>
     <message>
+        <location filename="../app/robot-sim/main.cpp" line="+34"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim: Fehler: %1</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Try &apos;learnid-robot-sim --help&apos; for the options.</source>
         <translation>Die Optionen zeigt &apos;learnid-robot-sim --help&apos;.</translation>
     </message>
     <message>
+        <location filename="../app/robot-sim/SimOptions.cpp" line="+22"/>
         <source>--nodes: &apos;%1&apos; is not a CANopen node id (1 to 127) in &apos;%2&apos;</source>
         <translation>--nodes: &apos;%1&apos; ist keine CANopen-Knoten-ID (1 bis 127) in &apos;%2&apos;</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>--nodes: node %1 is listed twice in &apos;%2&apos;</source>
         <translation>--nodes: Knoten %1 ist in &apos;%2&apos; zweimal aufgeführt</translation>
     </message>
     <message>
+        <location line="+25"/>
         <source>--refuse-sdo: &apos;%1&apos; is not an object address INDEX:SUB such as 0x2200:1 (index in hex, sub-index 0 to 255)</source>
         <translation>--refuse-sdo: &apos;%1&apos; ist keine Objektadresse INDEX:SUB wie 0x2200:1 (Index hexadezimal, Subindex 0 bis 255)</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>--%1: &apos;%2&apos; is not a whole number of at least %3</source>
         <translation>--%1: &apos;%2&apos; ist keine ganze Zahl von mindestens %3</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>The robot on a CAN bus: one simulated CiA 402 drive per joint, the SYNC producer and the scenario&apos;s simulated arm. Prints &quot;ready&quot; once connected; runs until SIGINT, SIGTERM or stdin closes.</source>
         <translation>Der Roboter an einem CAN-Bus: ein simulierter CiA-402-Antrieb pro Gelenk, der SYNC-Erzeuger und der simulierte Arm des Szenarios. Gibt „ready“ aus, sobald verbunden; läuft bis SIGINT, SIGTERM oder bis stdin geschlossen wird.</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>Show this help.</source>
         <translation>Diese Hilfe anzeigen.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Show the version.</source>
         <translation>Die Version anzeigen.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>QCanBus plugin, e.g. socketcan or virtualcan.</source>
         <translation>QCanBus-Plugin, z. B. socketcan oder virtualcan.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>plugin</source>
         <translation>Plugin</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>CAN interface, e.g. can0 or tcp://127.0.0.1:35468/can0.</source>
         <translation>CAN-Schnittstelle, z. B. can0 oder tcp://127.0.0.1:35468/can0.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>interface</source>
         <translation>Schnittstelle</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Node ids of joint 1, 2, ... (default 1,2).</source>
         <translation>Knoten-IDs von Gelenk 1, 2, ... (Standard 1,2).</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>ids</source>
         <translation>IDs</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Scenario file (default: the paper scenario).</source>
         <translation>Szenariodatei (Standard: das Szenario des Artikels).</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <location line="+6"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
     <message>
+        <location line="-3"/>
         <source>JSON file of the nodes&apos; stored parameters, written at start and after every store.</source>
         <translation>JSON-Datei der gespeicherten Parameter der Knoten, geschrieben beim Start und nach jedem Speichern.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Fault: lose this fraction (0 to 1) of the TPDOs.</source>
         <translation>Fehler: diesen Anteil (0 bis 1) der TPDOs verlieren.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Fault: send nothing at all after N frames.</source>
         <translation>Fehler: nach N Frames gar nichts mehr senden.</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <location line="+18"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
+        <location line="-15"/>
         <source>Fault: the first node faults with EMCY 0x8611 at the K-th SYNC in Operation enabled.</source>
         <translation>Fehler: der erste Knoten geht beim K-ten SYNC in Betrieb freigegeben mit EMCY 0x8611 in Fehler.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>K</source>
         <translation>K</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Fault: SDO writes to this object abort with 0x08000020.</source>
         <translation>Fehler: SDO-Schreibzugriffe auf dieses Objekt brechen mit 0x08000020 ab.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>IDX:SUB</source>
         <translation>IDX:SUB</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default 3; raise it on a heavily loaded machine).</source>
         <translation>SYNC-Perioden in Betrieb freigegeben ohne Sollwert, bevor ein Antrieb mit EMCY 0x8100 in Fehler geht (Standard 3; auf einem stark ausgelasteten Rechner erhöhen).</translation>
     </message>
     <message>
+        <location line="+22"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>--can-plugin is required (available: %1)</source>
         <translation>--can-plugin ist erforderlich (verfügbar: %1)</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>--can-plugin: unknown plugin &apos;%1&apos; (available: %2)</source>
         <translation>--can-plugin: unbekanntes Plugin &apos;%1&apos; (verfügbar: %2)</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>--can-interface is required, e.g. can0 or tcp://127.0.0.1:35468/can0</source>
         <translation>--can-interface ist erforderlich, z. B. can0 oder tcp://127.0.0.1:35468/can0</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>--drop-fraction: &apos;%1&apos; is not a fraction from 0 to 1</source>
         <translation>--drop-fraction: &apos;%1&apos; ist kein Anteil von 0 bis 1</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>--emcy-at-sample: &apos;%1&apos; is too large</source>
         <translation>--emcy-at-sample: &apos;%1&apos; ist zu groß</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>--setpoint-timeout: &apos;%1&apos; is too large (at most 100000)</source>
         <translation>--setpoint-timeout: &apos;%1&apos; ist zu groß (höchstens 100000)</translation>
     </message>
@@ -1614,34 +1998,42 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::ApplyConfirmDialog</name>
     <message>
+        <location filename="../ui/ApplyConfirmDialog.cpp" line="+16"/>
         <source>Apply parameters to the robot</source>
         <translation>Parameter auf den Roboter übertragen</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Write estimate %1 to the robot controller? The controller&apos;s feedforward changes at once.</source>
         <translation>Schätzung %1 in die Robotersteuerung schreiben? Die Vorsteuerung der Steuerung ändert sich sofort.</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>On robot</source>
         <translation>Auf dem Roboter</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Change</source>
         <translation>Änderung</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>Apply to robot</source>
         <translation>Auf Roboter übertragen</translation>
     </message>
@@ -1649,30 +2041,37 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::ApplyPanel</name>
     <message>
+        <location filename="../ui/ApplyPanel.cpp" line="+22"/>
         <source>estimate </source>
         <translation>Schätzung </translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>Choose:</source>
         <translation>Auswahl:</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Accepted:</source>
         <translation>Akzeptiert:</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Robot holds:</source>
         <translation>Roboter hat:</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>nothing applied yet</source>
         <translation>noch nichts übertragen</translation>
     </message>
     <message>
+        <location line="+26"/>
         <source>estimate %1</source>
         <translation>Schätzung %1</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
@@ -1680,26 +2079,32 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::CanConnection</name>
     <message>
+        <location filename="../core/canrobot/CanConnection.cpp" line="+29"/>
         <source>the CAN device %1 did not connect within %2 ms (is the bus or the robot side running?)</source>
         <translation>das CAN-Gerät %1 hat sich nicht innerhalb von %2 ms verbunden (läuft der Bus oder die Roboterseite?)</translation>
     </message>
     <message>
+        <location line="+35"/>
         <source>no CAN device for %1</source>
         <translation>kein CAN-Gerät für %1</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>cannot connect the CAN device %1: %2</source>
         <translation>das CAN-Gerät %1 kann nicht verbunden werden: %2</translation>
     </message>
     <message>
+        <location line="+49"/>
         <source>no error reported (the other side may have exited)</source>
         <translation>kein Fehler gemeldet (die Gegenseite wurde vielleicht beendet)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>the CAN device %1 went unconnected: %2</source>
         <translation>das CAN-Gerät %1 ist nicht mehr verbunden: %2</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>the CAN device %1 reported a connection error: %2</source>
         <translation>das CAN-Gerät %1 meldete einen Verbindungsfehler: %2</translation>
     </message>
@@ -1707,14 +2112,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::CanLink</name>
     <message>
+        <location filename="../core/can/CanLink.cpp" line="+24"/>
         <source>The CAN device no longer exists.</source>
         <translation>Das CAN-Gerät existiert nicht mehr.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The CAN device %1 is not connected.</source>
         <translation>Das CAN-Gerät %1 ist nicht verbunden.</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The CAN device refused the frame: %1</source>
         <translation>Das CAN-Gerät hat den Frame abgelehnt: %1</translation>
     </message>
@@ -1722,34 +2130,43 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::CanRobotWorker</name>
     <message>
+        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+116"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>the model has %1 joints but %2 CAN nodes are configured, or the plan is empty</source>
         <translation>das Modell hat %1 Gelenke, aber %2 CAN-Knoten sind konfiguriert, oder der Plan ist leer</translation>
     </message>
     <message>
+        <location line="+13"/>
+        <location line="+27"/>
         <source>stopped by the operator before the drives moved</source>
         <translation>vom Bediener gestoppt, bevor sich die Antriebe bewegten</translation>
     </message>
     <message>
+        <location line="-3"/>
         <source>configuring the drives failed, nothing moved: %1</source>
         <translation>Konfigurieren der Antriebe fehlgeschlagen, nichts hat sich bewegt: %1</translation>
     </message>
     <message>
+        <location line="+28"/>
         <source>the trial&apos;s candump log could not be written: %1</source>
         <translation>das candump-Log des Versuchs konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
+        <location line="+21"/>
         <source>%1; the stored parameters are unchanged</source>
         <translation>%1; die gespeicherten Parameter sind unverändert</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1; nichts wurde gespeichert (0x1010 nicht geschrieben)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>%1; storing stopped at node %2 of the list</source>
         <translation>%1; das Speichern stoppte bei Knoten %2 der Liste</translation>
     </message>
@@ -1757,14 +2174,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::CandumpReplayDevice</name>
     <message>
+        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+38"/>
         <source>Cannot write a frame: the replay is not connected.</source>
         <translation>Frame kann nicht geschrieben werden: die Wiedergabe ist nicht verbunden.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>The master wrote %1 after the end of the log.</source>
         <translation>Der Master schrieb %1 nach dem Ende des Logs.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
         <translation>Der Master schrieb %1, wo das Log %2 enthält (Log-Frame %3): der wiedergegebene Versuch weicht vom aufgezeichneten ab.</translation>
     </message>
@@ -1772,46 +2192,57 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::CommissioningSession</name>
     <message>
+        <location filename="../core/session/CommissioningSession.cpp" line="+22"/>
         <source>unknown estimator law &apos;%1&apos; (known: %2)</source>
         <translation>unbekanntes Schätzgesetz &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
         <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
     </message>
     <message>
+        <location line="+56"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
     <message>
+        <location line="+31"/>
         <source>repetition %1 of %2: %3</source>
         <translation>Wiederholung %1 von %2: %3</translation>
     </message>
     <message>
+        <location line="+27"/>
         <source>the update produced non-finite parameters</source>
         <translation>die Aktualisierung ergab nicht endliche Parameter</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>trial %1 not learned from: %2</source>
         <translation>aus Versuch %1 nicht gelernt: %2</translation>
     </message>
     <message>
+        <location line="+27"/>
         <source>there is no learned estimate to accept yet: run a trial first</source>
         <translation>es gibt noch keine gelernte Schätzung zum Akzeptieren: zuerst einen Versuch ausführen</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>estimate %1 does not exist: choose 1 to %2</source>
         <translation>Schätzung %1 existiert nicht: 1 bis %2 wählen</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>nothing accepted: accept an estimate before applying it</source>
         <translation>nichts akzeptiert: eine Schätzung akzeptieren, bevor sie übertragen wird</translation>
     </message>
     <message>
+        <location line="+16"/>
         <source>nothing to revert: no parameter set has been applied in this session</source>
         <translation>nichts zurückzunehmen: in dieser Sitzung wurde kein Parametersatz übertragen</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>the robot held no parameter set before the first apply; there is nothing to restore</source>
         <translation>der Roboter hatte vor dem ersten Übertragen keinen Parametersatz; es gibt nichts wiederherzustellen</translation>
     </message>
@@ -1819,22 +2250,27 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::ConvergenceChart</name>
     <message>
+        <location filename="../ui/ConvergenceChart.cpp" line="+30"/>
         <source>Estimate k</source>
         <translation>Schätzung k</translation>
     </message>
     <message>
+        <location line="+43"/>
         <source>|error| [%]</source>
         <translation>|Fehler| [%]</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>change [%]</source>
         <translation>Änderung [%]</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Convergence to the truth</source>
         <translation>Konvergenz zum wahren Wert</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Convergence</source>
         <translation>Konvergenz</translation>
     </message>
@@ -1842,58 +2278,72 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::ConvergenceTableModel</name>
     <message>
+        <location filename="../ui/ConvergenceTableModel.cpp" line="+174"/>
         <source>all (rank %1)</source>
         <translation>alle (Rang %1)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>⚠ kept: %1</source>
         <translation>⚠ beibehalten: %1</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>accepted</source>
         <translation>akzeptiert</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>on robot</source>
         <translation>auf dem Roboter</translation>
     </message>
     <message>
+        <location line="+44"/>
         <source>%1 = %2 ± %3 (1 sigma)</source>
         <translation>%1 = %2 ± %3 (1 Sigma)</translation>
     </message>
     <message>
+        <location line="+23"/>
         <source>Estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Rel. change [%]</source>
         <translation>Rel. Änderung [%]</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Max |e| [deg]</source>
         <translation>Max. |e| [°]</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>cond(WᵀW)</source>
         <translation>cond(WᵀW)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Observable</source>
         <translation>Beobachtbar</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>%1 vs truth [%]</source>
         <translation>%1 ggü. wahrem Wert [%]</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Trials run</source>
         <translation>Versuche</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>State</source>
         <translation>Status</translation>
     </message>
@@ -1901,86 +2351,108 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::FileController</name>
     <message>
+        <location filename="../ui/FileController.cpp" line="+36"/>
         <source>Parameter file written: %1</source>
         <translation>Parameterdatei geschrieben: %1</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Parameter file not written: %1</source>
         <translation>Parameterdatei nicht geschrieben: %1</translation>
     </message>
     <message>
+        <location line="+25"/>
         <source>Open scenario</source>
         <translation>Szenario öffnen</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Scenario files (*.json);;All files (*)</source>
         <translation>Szenariodateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Save scenario</source>
         <translation>Szenario speichern</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Scenario files (*.json)</source>
         <translation>Szenariodateien (*.json)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Export parameter file</source>
         <translation>Parameterdatei exportieren</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Parameter files (*.json)</source>
         <translation>Parameterdateien (*.json)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Folder for the trial CSV files</source>
         <translation>Ordner für die CSV-Dateien der Versuche</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Export plot</source>
         <translation>Diagramm exportieren</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>PNG image (*.png);;SVG drawing (*.svg)</source>
         <translation>PNG-Bild (*.png);;SVG-Zeichnung (*.svg)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Export commissioning report</source>
         <translation>Inbetriebnahmebericht exportieren</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
+        <location line="+59"/>
         <source>Scenario loaded: %1</source>
         <translation>Szenario geladen: %1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Scenario not loaded: %1</source>
         <translation>Szenario nicht geladen: %1</translation>
     </message>
     <message>
+        <location line="+8"/>
+        <location line="+8"/>
         <source>Scenario not saved: %1</source>
         <translation>Szenario nicht gespeichert: %1</translation>
     </message>
     <message>
+        <location line="-2"/>
         <source>Scenario saved: %1</source>
         <translation>Szenario gespeichert: %1</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>Parameter file not written: accept an estimate first</source>
         <translation>Parameterdatei nicht geschrieben: zuerst eine Schätzung akzeptieren</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>No trial CSV written: no trial has run yet</source>
         <translation>Keine Versuchs-CSV geschrieben: noch kein Versuch gelaufen</translation>
     </message>
     <message numerus="yes">
+        <location line="-131"/>
         <source>%n trial CSV file(s) written to %1</source>
         <translation>
             <numerusform>%n Versuchs-CSV-Datei nach %1 geschrieben</numerusform>
@@ -1988,66 +2460,82 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         </translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Trial CSV not written: %1</source>
         <translation>Versuchs-CSV nicht geschrieben: %1</translation>
     </message>
     <message>
+        <location line="+137"/>
         <source>Plot not written: this build has no SVG support (Qt6::Svg); export as PNG instead</source>
         <translation>Diagramm nicht geschrieben: diese Version kann kein SVG (Qt6::Svg); bitte als PNG exportieren</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>Tracking error</source>
         <translation>Folgefehler</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Plot written: %1</source>
         <translation>Diagramm geschrieben: %1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Plot not written: %1</source>
         <translation>Diagramm nicht geschrieben: %1</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>Report not written: no session</source>
         <translation>Bericht nicht geschrieben: keine Sitzung</translation>
     </message>
     <message>
+        <location line="+16"/>
         <source>Path: from (%1, %2) m, %3 m at %4 deg</source>
         <translation>Bahn: ab (%1, %2) m, %3 m unter %4°</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Torque limits: %1 N m, planning fraction %2</source>
         <translation>Momentengrenzen: %1 N m, Planungsanteil %2</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>kp: %1 N m/rad; ki: %2</source>
         <translation>kp: %1 N m/rad; ki: %2</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>kd: %1 N m s/rad; lambda %2 rad/s</source>
         <translation>kd: %1 N m s/rad; lambda %2 rad/s</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Estimator: %1, rho %2 rad/s, %3 trials</source>
         <translation>Schätzer: %1, rho %2 rad/s, %3 Versuche</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Initial parameters: %1</source>
         <translation>Anfangsparameter: %1</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>none (nothing applied in this session)</source>
         <translation>keine (in dieser Sitzung nichts übertragen)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>%1 (estimate %2)</source>
         <translation>%1 (Schätzung %2)</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Report written: %1</source>
         <translation>Bericht geschrieben: %1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Report not written: %1</source>
         <translation>Bericht nicht geschrieben: %1</translation>
     </message>
@@ -2055,210 +2543,262 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::MainActions</name>
     <message>
+        <location filename="../ui/MainActions.cpp" line="+34"/>
         <source>&amp;Connect robot</source>
         <translation>Roboter &amp;verbinden</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Connect to the chosen robot and plan the first trial</source>
         <translation>Mit dem gewählten Roboter verbinden und den ersten Versuch planen</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;New session</source>
         <translation>&amp;Neue Sitzung</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Start a new session with the settings of the form (the history is discarded)</source>
         <translation>Neue Sitzung mit den Einstellungen des Formulars beginnen (der Verlauf wird verworfen)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Open scenario...</source>
         <translation>Szenario ö&amp;ffnen...</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Load a scenario file into the form</source>
         <translation>Eine Szenariodatei in das Formular laden</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Save scenario...</source>
         <translation>Szenario &amp;speichern...</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Save the form&apos;s scenario to a file</source>
         <translation>Das Szenario des Formulars in eine Datei speichern</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Export &amp;parameter file...</source>
         <translation>&amp;Parameterdatei exportieren...</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Write the accepted estimate as a parameter file (JSON and DCF)</source>
         <translation>Die akzeptierte Schätzung als Parameterdatei schreiben (JSON und DCF)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Export trial &amp;CSV...</source>
         <translation>Versuchs-&amp;CSV exportieren...</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Write one CSV file per trial</source>
         <translation>Eine CSV-Datei je Versuch schreiben</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Export p&amp;lot...</source>
         <translation>&amp;Diagramm exportieren...</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Save the tracking-error plot as PNG or SVG</source>
         <translation>Das Folgefehler-Diagramm als PNG oder SVG speichern</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Save the tracking-error plot as PNG (SVG needs Qt6::Svg)</source>
         <translation>Das Folgefehler-Diagramm als PNG speichern (SVG braucht Qt6::Svg)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Export &amp;report (PDF)...</source>
         <translation>&amp;Bericht exportieren (PDF)...</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Write the one-page commissioning report</source>
         <translation>Den einseitigen Inbetriebnahmebericht schreiben</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Quit learnid</source>
         <translation>learnid beenden</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Run trial</source>
         <translation>Versuch &amp;starten</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Run the next trial and learn from it</source>
         <translation>Den nächsten Versuch fahren und daraus lernen</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Run &amp;all</source>
         <translation>&amp;Alle starten</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+F5</source>
         <translation>Ctrl+F5</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Run the scenario&apos;s number of trials</source>
         <translation>Die im Szenario festgelegte Zahl von Versuchen fahren</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Stop</source>
         <translation>&amp;Stopp</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Shift+F5</source>
         <translation>Shift+F5</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Stop the running trial safely at the next sample</source>
         <translation>Den laufenden Versuch beim nächsten Abtastschritt sicher anhalten</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>A&amp;ccept</source>
         <translation>A&amp;kzeptieren</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Accept the chosen estimate for apply</source>
         <translation>Die gewählte Schätzung zum Übertragen akzeptieren</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>A&amp;pply...</source>
         <translation>Ü&amp;bertragen...</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+Shift+A</source>
         <translation>Ctrl+Shift+A</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Write the accepted estimate to the robot controller</source>
         <translation>Die akzeptierte Schätzung in die Robotersteuerung schreiben</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Re&amp;vert</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+Shift+Z</source>
         <translation>Ctrl+Shift+Z</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Restore the parameter set the robot held before the last apply</source>
         <translation>Den Parametersatz vor der letzten Übertragung wiederherstellen</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;About learnid</source>
         <translation>Ü&amp;ber learnid</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Version and licence</source>
         <translation>Version und Lizenz</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>About &amp;Qt</source>
         <translation>Über &amp;Qt</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Qt version</source>
         <translation>Qt-Version</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>System language</source>
         <translation>Systemsprache</translation>
     </message>
     <message>
+        <location line="+19"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>&amp;Robot</source>
         <translation>&amp;Roboter</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>&amp;Trials</source>
         <translation>&amp;Versuche</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>&amp;Parameters</source>
         <translation>&amp;Parameter</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -2266,98 +2806,122 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::MainWindow</name>
     <message>
+        <location filename="../ui/MainWindow.cpp" line="+78"/>
         <source>learnid – commissioning</source>
         <translation>learnid – Inbetriebnahme</translation>
     </message>
     <message>
+        <location line="+21"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>Pre-trial check</source>
         <translation>Prüfung vor dem Versuch</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Run</source>
         <translation>Ausführen</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Accept / apply</source>
         <translation>Akzeptieren / übertragen</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>Robot</source>
         <translation>Roboter</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Scenario</source>
         <translation>Szenario</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Setup</source>
         <translation>Einrichtung</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Parameter convergence</source>
         <translation>Parameterkonvergenz</translation>
     </message>
     <message>
+        <location line="+42"/>
         <source>The language changes when learnid is started again.</source>
         <translation>Die Sprache wechselt beim nächsten Start von learnid.</translation>
     </message>
     <message>
+        <location line="+27"/>
         <source>Dis&amp;connect robot</source>
         <translation>Roboter &amp;trennen</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Connect robot</source>
         <translation>Roboter &amp;verbinden</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>Run disabled: %1</source>
         <translation>Start gesperrt: %1</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>no robot</source>
         <translation>kein Roboter</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Robot: %1 – %2</source>
         <translation>Roboter: %1 – %2</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>busy</source>
         <translation>beschäftigt</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>Cannot connect: %1</source>
         <translation>Verbindung nicht möglich: %1</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>connecting to %1/%2…</source>
         <translation>verbinde mit %1/%2…</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Correct the scenario first: %1</source>
         <translation>Zuerst das Szenario korrigieren: %1</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>Apply cancelled; the robot is unchanged.</source>
         <translation>Übertragen abgebrochen; der Roboter ist unverändert.</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>About learnid</source>
         <translation>Über learnid</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&lt;h3&gt;learnid %1&lt;/h3&gt;&lt;p&gt;Learning identification of robot dynamics: a commissioning tool.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;learnid %1&lt;/h3&gt;&lt;p&gt;Lernende Identifikation der Roboterdynamik: ein Inbetriebnahmewerkzeug.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2.&lt;/p&gt;</translation>
     </message>
@@ -2365,30 +2929,37 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::MemoryCanDevice</name>
     <message>
+        <location filename="../core/can/MemoryCanDevice.cpp" line="+27"/>
         <source>The memory CAN device %1 is not attached to a bus.</source>
         <translation>Das Speicher-CAN-Gerät %1 hängt an keinem Bus.</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>The memory CAN device %1 refused to connect.</source>
         <translation>Das Speicher-CAN-Gerät %1 hat die Verbindung abgelehnt.</translation>
     </message>
     <message>
+        <location line="+16"/>
         <source>Cannot write a frame: the device %1 is not connected.</source>
         <translation>Frame kann nicht geschrieben werden: das Gerät %1 ist nicht verbunden.</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Cannot write an invalid or CAN FD frame: %1.</source>
         <translation>Ein ungültiger oder CAN-FD-Frame kann nicht geschrieben werden: %1.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Only data and remote request frames can be written.</source>
         <translation>Nur Daten- und Remote-Frames können geschrieben werden.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>The memory CAN device %1 failed to write the frame.</source>
         <translation>Das Speicher-CAN-Gerät %1 konnte den Frame nicht schreiben.</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>CAN error frame, error classes 0x%1.</source>
         <translation>CAN-Fehlerframe, Fehlerklassen 0x%1.</translation>
     </message>
@@ -2396,6 +2967,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::MessageBar</name>
     <message>
+        <location filename="../ui/MessageBar.cpp" line="+20"/>
         <source>Dismiss</source>
         <translation>Schließen</translation>
     </message>
@@ -2403,22 +2975,27 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::ObjectDictionary</name>
     <message>
+        <location filename="../core/can/ObjectDictionary.cpp" line="+18"/>
         <source>Object %1: %2 is not numeric; use addBytes().</source>
         <translation>Objekt %1: %2 ist nicht numerisch; addBytes() verwenden.</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>Object %1: %2 is numeric; use add().</source>
         <translation>Objekt %1: %2 ist numerisch; add() verwenden.</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>Object %1 is defined twice.</source>
         <translation>Objekt %1 ist zweimal definiert.</translation>
     </message>
     <message>
+        <location line="+87"/>
         <source>Object %1 holds %2 bytes, not %3.</source>
         <translation>Objekt %1 enthält %2 Bytes, nicht %3.</translation>
     </message>
     <message>
+        <location line="+30"/>
         <source>Object %1 is not in the object dictionary.</source>
         <translation>Objekt %1 ist nicht im Objektverzeichnis.</translation>
     </message>
@@ -2426,58 +3003,72 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+35"/>
         <source>Joint</source>
         <translation>Gelenk</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Peak [N m]</source>
         <translation>Spitze [N m]</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Limit [N m]</source>
         <translation>Grenze [N m]</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Use</source>
         <translation>Auslastung</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>Planned motion:</source>
         <translation>Geplante Bewegung:</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Closed loop:</source>
         <translation>Regelkreis:</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Connect a robot to plan the first trial.</source>
         <translation>Einen Roboter verbinden, um den ersten Versuch zu planen.</translation>
     </message>
     <message>
+        <location line="+20"/>
         <source>Trial %1: check passed, the trial may run.</source>
         <translation>Versuch %1: Prüfung bestanden, der Versuch darf laufen.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Trial %1 refused: %2</source>
         <translation>Versuch %1 abgelehnt: %2</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>no plan</source>
         <translation>kein Plan</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>%1 s motion, %2 s with rests, %3 samples</source>
         <translation>%1 s Bewegung, %2 s mit Ruhezeiten, %3 Abtastwerte</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>estimate not physical (mass matrix not positive definite)</source>
         <translation>Schätzung nicht physikalisch (Massenmatrix nicht positiv definit)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>stable: max |z| = %1, decay rate %2 1/s</source>
         <translation>stabil: max |z| = %1, Abklingrate %2 1/s</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>UNSTABLE: max |z| = %1 at t = %2 s (growth %3 1/s)</source>
         <translation>INSTABIL: max |z| = %1 bei t = %2 s (Anstieg %3 1/s)</translation>
     </message>
@@ -2485,30 +3076,37 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::ReportWriter</name>
     <message>
+        <location filename="../ui/ReportWriter.cpp" line="+51"/>
         <source>learnid commissioning report</source>
         <translation>learnid-Inbetriebnahmebericht</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>Robot: %1</source>
         <translation>Roboter: %1</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Scenario</source>
         <translation>Szenario</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>Parameter convergence</source>
         <translation>Parameterkonvergenz</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>Applied set: %1</source>
         <translation>Übertragener Satz: %1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>learnid %1</source>
         <translation>learnid %1</translation>
     </message>
@@ -2516,74 +3114,93 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::RobotPanel</name>
     <message>
+        <location filename="../ui/RobotPanel.cpp" line="+22"/>
+        <location line="+81"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
+        <location line="-72"/>
         <source>Simulated (paper 2-link arm)</source>
         <translation>Simuliert (2-Glied-Arm aus dem Artikel)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>CAN (CANopen / CiA 402)</source>
         <translation>CAN (CANopen / CiA 402)</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>QCanBus plugin: socketcan for a CAN adapter on Linux; virtualcan to try learnid-robot-sim first</source>
         <translation>QCanBus-Plugin: socketcan für einen CAN-Adapter unter Linux; virtualcan, um zuerst learnid-robot-sim auszuprobieren</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>e.g. can0 (socketcan) or tcp://127.0.0.1:35468/can0 (virtualcan)</source>
         <translation>z. B. can0 (socketcan) oder tcp://127.0.0.1:35468/can0 (virtualcan)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>CANopen node id of joint 1, 2, ... (docs/can-protocol.md)</source>
         <translation>CANopen-Knoten-ID von Gelenk 1, 2, ... (docs/can-protocol.md)</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>A trial stops when no SYNC arrives for this long</source>
         <translation>Ein Versuch endet, wenn so lange kein SYNC eintrifft</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Plugin:</source>
         <translation>Plugin:</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Interface:</source>
         <translation>Schnittstelle:</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Nodes:</source>
         <translation>Knoten:</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>SYNC timeout:</source>
         <translation>SYNC-Zeitlimit:</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Robot:</source>
         <translation>Roboter:</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>State:</source>
         <translation>Zustand:</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
+        <location line="+29"/>
         <source>CAN nodes: %1</source>
         <translation>CAN-Knoten: %1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>CAN interface: enter one, e.g. can0</source>
         <translation>CAN-Schnittstelle: bitte eine eingeben, z. B. can0</translation>
     </message>
     <message>
+        <location line="+16"/>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
@@ -2591,22 +3208,27 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::RunPanel</name>
     <message>
+        <location filename="../ui/RunPanel.cpp" line="+27"/>
         <source>%p %</source>
         <translation>%p %</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>%v of %m trials</source>
         <translation>%v von %m Versuchen</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Trial:</source>
         <translation>Versuch:</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Series:</source>
         <translation>Serie:</translation>
     </message>
     <message>
+        <location line="+22"/>
         <source>trial %1: %p %</source>
         <translation>Versuch %1: %p %</translation>
     </message>
@@ -2614,114 +3236,142 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::ScenarioFields</name>
     <message>
+        <location filename="../ui/ScenarioFields.cpp" line="+82"/>
         <source>Start (x, y)</source>
         <translation>Start (x, y)</translation>
     </message>
     <message>
+        <location line="+13"/>
         <source>Number of trials</source>
         <translation>Anzahl Versuche</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Path (straight line)</source>
         <translation>Bahn (Gerade)</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Length</source>
         <translation>Länge</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Direction</source>
         <translation>Richtung</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Rest before the motion</source>
         <translation>Ruhezeit vor der Bewegung</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Rest after the motion</source>
         <translation>Ruhezeit nach der Bewegung</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Torque limits</source>
         <translation>Momentengrenzen</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Limit per joint</source>
         <translation>Grenze je Gelenk</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Planning fraction</source>
         <translation>Planungsanteil</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Controller</source>
         <translation>Regler</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>lambda (derivative filter)</source>
         <translation>lambda (D-Filter)</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Estimator</source>
         <translation>Schätzer</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>rho (filter F)</source>
         <translation>rho (Filter F)</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Rank tolerance</source>
         <translation>Rangtoleranz</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Repetitions per trial</source>
         <translation>Wiederholungen pro Versuch</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Initial parameters</source>
         <translation>Anfangsparameter</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Safety</source>
         <translation>Sicherheit</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Abort at tracking error</source>
         <translation>Abbruch bei Folgefehler</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Required stability margin</source>
         <translation>Geforderte Stabilitätsreserve</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Simulated robot</source>
         <translation>Simulierter Roboter</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>True parameters</source>
         <translation>Wahre Parameter</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Encoder counts per revolution (0: ideal)</source>
         <translation>Encoder-Inkremente pro Umdrehung (0: ideal)</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Torque noise (fraction of limit)</source>
         <translation>Momentenrauschen (Anteil der Grenze)</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Noise seed</source>
         <translation>Startwert des Rauschens</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>RK4 steps per sample</source>
         <translation>RK4-Schritte pro Abtastwert</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>enter a value</source>
         <translation>einen Wert eingeben</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>&quot;%1&quot; is not a number</source>
         <translation>„%1“ ist keine Zahl</translation>
     </message>
@@ -2729,42 +3379,52 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::ScenarioForm</name>
     <message>
+        <location filename="../ui/ScenarioForm.cpp" line="+48"/>
         <source>Scenario key %1</source>
         <translation>Szenario-Schlüssel %1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>values separated by commas</source>
         <translation>Werte durch Kommas getrennt</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>paper-consistent</source>
         <translation>artikelkonsistent</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>improved (zero-phase, WLS)</source>
         <translation>verbessert (nullphasig, WLS)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Estimator law</source>
         <translation>Lerngesetz</translation>
     </message>
     <message>
+        <location line="+33"/>
         <source>Initial parameters (%1)</source>
         <translation>Anfangsparameter (%1)</translation>
     </message>
     <message>
+        <location line="+33"/>
         <source>enter one number</source>
         <translation>eine Zahl eingeben</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>enter %1 numbers, got %2</source>
         <translation>%1 Zahlen eingeben, erhalten: %2</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>enter a whole number</source>
         <translation>eine ganze Zahl eingeben</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>enter a whole number from %1 to %2</source>
         <translation>eine ganze Zahl von %1 bis %2 eingeben</translation>
     </message>
@@ -2772,50 +3432,63 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::SdoClient</name>
     <message>
+        <location filename="../core/can/SdoClient.cpp" line="+132"/>
         <source>%1 is not a valid CANopen node id (1 to 127).</source>
         <translation>%1 ist keine gültige CANopen-Knoten-ID (1 bis 127).</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>There are no data to write.</source>
         <translation>Es gibt keine Daten zum Schreiben.</translation>
     </message>
     <message>
+        <location line="+34"/>
+        <location line="+23"/>
         <source>The answer names another object.</source>
         <translation>Die Antwort nennt ein anderes Objekt.</translation>
     </message>
     <message>
+        <location line="+21"/>
         <source>The node announced %1 bytes but sent %2%3.</source>
         <translation>Der Knoten kündigte %1 Bytes an, sandte aber %2%3.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source> or more</source>
         <translation> oder mehr</translation>
     </message>
     <message>
+        <location line="+55"/>
         <source>SDO read of %1 from node %2</source>
         <translation>SDO-Lesen von %1 aus Knoten %2</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>SDO write of %1 to node %2</source>
         <translation>SDO-Schreiben von %1 in Knoten %2</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source> (abort code %1)</source>
         <translation> (Abbruchcode %1)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The %1 was refused by the node%2: %3</source>
         <translation>%1 wurde vom Knoten abgelehnt%2: %3</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The %1 was aborted%2: %3</source>
         <translation>%1 wurde abgebrochen%2: %3</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The %1 failed: %2</source>
         <translation>%1 ist fehlgeschlagen: %2</translation>
     </message>
     <message>
+        <location line="+34"/>
         <source>node %1 did not answer within %2 ms.</source>
         <translation>Knoten %1 hat nicht innerhalb von %2 ms geantwortet.</translation>
     </message>
@@ -2823,50 +3496,63 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::SessionPresenter</name>
     <message>
+        <location filename="../ui/SessionPresenter.cpp" line="+30"/>
         <source>connected: %1</source>
         <translation>verbunden: %1</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <location line="+4"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
+        <location line="-3"/>
         <source>Cannot start the session: %1</source>
         <translation>Sitzung kann nicht gestartet werden: %1</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Connect a robot to plan the first trial.</source>
         <translation>Einen Roboter verbinden, um den ersten Versuch zu planen.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Trial %1 running…</source>
         <translation>Versuch %1 läuft…</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>Trial %1 %2: %3. Its data are kept.</source>
         <translation>Versuch %1 %2: %3. Seine Daten bleiben erhalten.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Finished; %1 estimate(s) learned.</source>
         <translation>Fertig; %1 Schätzung(en) gelernt.</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Stopped; see the message above.</source>
         <translation>Angehalten; siehe Meldung oben.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Estimate %1 accepted.</source>
         <translation>Schätzung %1 akzeptiert.</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Parameters written to the robot and read back.</source>
         <translation>Parameter in den Roboter geschrieben und zurückgelesen.</translation>
     </message>
     <message>
+        <location line="+20"/>
         <source>nothing applied yet</source>
         <translation>noch nichts übertragen</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>%1 (estimate %2)</source>
         <translation>%1 (Schätzung %2)</translation>
     </message>
@@ -2874,69 +3560,81 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::SessionWorker</name>
     <message>
+        <location filename="../core/service/SessionWorker.cpp" line="+33"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>unbekanntes Robotermodell „%1“</translation>
     </message>
     <message>
+        <location line="+95"/>
         <source>no robot connected</source>
         <translation>kein Roboter verbunden</translation>
     </message>
     <message>
+        <location line="+78"/>
         <source>no session to export</source>
         <translation>keine Sitzung zum Exportieren</translation>
-    </message>
-    <message>
-        <source>cannot create the folder %1</source>
-        <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
 </context>
 <context>
     <name>learnid::TrackingErrorPlot</name>
     <message>
+        <location filename="../ui/TrackingErrorPlot.cpp" line="+37"/>
         <source>Auto-scale</source>
         <translation>Automatisch skalieren</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>Off: symmetric axis on a 0.02 deg grid, as in the paper</source>
         <translation>Aus: symmetrische Achse mit 0,02°-Raster wie im Artikel</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Time [s]</source>
         <translation>Zeit [s]</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Tracking error [deg]</source>
         <translation>Folgefehler [°]</translation>
     </message>
     <message>
+        <location line="+13"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
+        <location line="+24"/>
+        <location line="+19"/>
         <source>All trials (overlay)</source>
         <translation>Alle Versuche (überlagert)</translation>
     </message>
     <message>
+        <location line="-10"/>
         <source>Trial %1</source>
         <translation>Versuch %1</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Trial %1 (%2)</source>
         <translation>Versuch %1 (%2)</translation>
     </message>
     <message>
+        <location line="+92"/>
         <source>Tracking error, all trials (solid: joint 1, dashed: joint 2; darker: later)</source>
         <translation>Folgefehler, alle Versuche (durchgezogen: Gelenk 1, gestrichelt: Gelenk 2; dunkler: später)</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Tracking error, %1</source>
         <translation>Folgefehler, %1</translation>
     </message>
     <message>
+        <location line="+20"/>
         <source>trial %1, joint %2</source>
         <translation>Versuch %1, Gelenk %2</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>joint %1</source>
         <translation>Gelenk %1</translation>
     </message>
@@ -2944,42 +3642,55 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::TrialStreamer</name>
     <message>
+        <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
+        <location line="+90"/>
+        <location line="+66"/>
+        <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
+        <location line="-143"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 erreichte Betrieb freigegeben nicht innerhalb von %2 ms: meldet %3 (Statuswort 0x%4)</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>no TPDO</source>
         <translation>kein TPDO</translation>
     </message>
     <message>
+        <location line="+75"/>
         <source>stopped by the operator %1</source>
         <translation>vom Bediener gestoppt %1</translation>
     </message>
     <message>
+        <location line="+24"/>
         <source>%1: %2 %3</source>
         <translation>%1: %2 %3</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>%1 left Operation enabled: it reports %2 (0x6041 = 0x%3) %4</source>
         <translation>%1 hat Betrieb freigegeben verlassen: meldet %2 (0x6041 = 0x%3) %4</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>tracking error of %1 reached %2 deg (limit %3 deg) %4: quick stop</source>
         <translation>Folgefehler von %1 erreichte %2° (Grenze %3°) %4: Schnellhalt</translation>
     </message>
     <message>
+        <location line="+66"/>
         <source>only %1 of %2 samples were recorded</source>
         <translation>nur %1 von %2 Abtastwerten wurden aufgezeichnet</translation>
     </message>
     <message>
+        <location line="+19"/>
         <source>an unknown node</source>
         <translation>ein unbekannter Knoten</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>node %1 (joint %2)</source>
         <translation>Knoten %1 (Gelenk %2)</translation>
     </message>
@@ -2987,18 +3698,22 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::TrialWatchdog</name>
     <message>
+        <location filename="../core/canrobot/TrialWatchdog.cpp" line="+25"/>
         <source>no SYNC for %1 ms: the robot side stopped sending</source>
         <translation>kein SYNC seit %1 ms: die Roboterseite sendet nicht mehr</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>heartbeat of %1 lost: none for %2 ms (timeout %3 ms)</source>
         <translation>Heartbeat von %1 verloren: keiner seit %2 ms (Zeitgrenze %3 ms)</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>%1 restarted on its own (boot-up message 0x%2)</source>
         <translation>%1 hat selbst neu gestartet (Boot-up-Nachricht 0x%2)</translation>
     </message>
     <message>
+        <location line="+23"/>
         <source>node %1 (joint %2)</source>
         <translation>Knoten %1 (Gelenk %2)</translation>
     </message>
@@ -3006,38 +3721,51 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::robotsim::SimProcess</name>
     <message>
+        <location filename="../app/robot-sim/SimProcess.cpp" line="+43"/>
         <source>learnid-robot-sim: stopping (%1)</source>
         <translation>learnid-robot-sim: wird beendet (%1)</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <location line="+88"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>die CAN-Schnittstelle %1 mit Plugin %2 kann nicht verbunden werden: %3</translation>
     </message>
     <message>
+        <location line="-61"/>
+        <location line="+16"/>
+        <location line="+75"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim: Fehler: %1</translation>
     </message>
     <message>
+        <location line="-84"/>
         <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
         <translation>learnid-robot-sim: Fehler: das CAN-Gerät %1 mit Plugin %2 kann nicht angelegt werden: %3</translation>
     </message>
     <message>
+        <location line="+16"/>
+        <location line="+58"/>
         <source>learnid-robot-sim: error: --state: %1</source>
         <translation>learnid-robot-sim: Fehler: --state: %1</translation>
     </message>
     <message>
+        <location line="-51"/>
         <source>learnid-robot-sim: silent after %1 frames (injected fault)</source>
         <translation>learnid-robot-sim: still nach %1 Frames (eingespeister Fehler)</translation>
     </message>
     <message>
+        <location line="+21"/>
         <source>the CAN device %1 disconnected</source>
         <translation>das CAN-Gerät %1 hat die Verbindung getrennt</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>learnid-robot-sim: CAN device error: %1</source>
         <translation>learnid-robot-sim: Fehler des CAN-Geräts: %1</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>the CAN interface %1 with plugin %2 did not connect within %3 s</source>
         <translation>die CAN-Schnittstelle %1 mit Plugin %2 hat sich nicht innerhalb von %3 s verbunden</translation>
     </message>
@@ -3045,22 +3773,27 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>main</name>
     <message>
+        <location filename="../app/gui/main.cpp" line="+38"/>
         <source>Commissioning tool: learning identification of robot dynamics.</source>
         <translation>Inbetriebnahmewerkzeug: lernende Identifikation der Roboterdynamik.</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Run a simulated session, save the window as PNG to &lt;file&gt; and exit.</source>
         <translation>Eine simulierte Sitzung ausführen, das Fenster als PNG nach &lt;file&gt; speichern und beenden.</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>User interface language, e.g. de or zh_CN (default: as chosen in the app, else the system&apos;s).</source>
         <translation>Sprache der Oberfläche, z. B. de oder zh_CN (Standard: wie in der Anwendung gewählt, sonst die des Systems).</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>What --screenshot shows: %1 (default: main).</source>
         <translation>Was --screenshot zeigt: %1 (Standard: main).</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>learnid: unknown --screenshot-view &apos;%1&apos;; known: %2</source>
         <translation>learnid: unbekannte --screenshot-view &apos;%1&apos;; bekannt: %2</translation>
     </message>

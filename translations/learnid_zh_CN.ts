@@ -4,22 +4,28 @@
 <context>
     <name>AtomicFile</name>
     <message>
+        <location filename="../core/io/AtomicFile.cpp" line="+24"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>no file name given</source>
         <translation>未给出文件名</translation>
     </message>
     <message>
+        <location line="+24"/>
         <source>the same file is to be written twice</source>
         <translation>同一文件将被写入两次</translation>
     </message>
     <message>
+        <location line="+13"/>
         <source>%1 (already written: %2)</source>
         <translation>%1（已写入：%2）</translation>
     </message>
     <message>
+        <location line="+13"/>
+        <location line="+5"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
@@ -27,14 +33,17 @@
 <context>
     <name>BusLoad</name>
     <message>
+        <location filename="../core/can/BusLoad.cpp" line="+41"/>
         <source>Bus load: joints and frames must not be negative, rates must be positive and a frame carries 0 to 8 bytes.</source>
         <translation>总线负载：关节数和帧数不得为负，速率必须为正，且每帧携带 0 到 8 个字节。</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>Bus load: the time window and the bitrate must be positive.</source>
         <translation>总线负载：时间窗口和比特率必须为正。</translation>
     </message>
     <message>
+        <location line="-38"/>
         <source>%1 % of %2 kbit/s (%3 frames/s)</source>
         <translation>%2 kbit/s 的 %1 %（%3 帧/秒）</translation>
     </message>
@@ -42,26 +51,32 @@
 <context>
     <name>CanArmSimulator</name>
     <message>
+        <location filename="../core/cansim/CanArmSimulator.cpp" line="+23"/>
         <source>The simulated arm has no robot model.</source>
         <translation>仿真机械臂没有机器人模型。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>--nodes: the %1 arm has %2 joints, so %2 node ids are needed, not %3.</source>
         <translation>--nodes：%1 机械臂有 %2 个关节，因此需要 %2 个节点 ID，而不是 %3 个。</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>--nodes: %1 is not a CANopen node id (1 to 127).</source>
         <translation>--nodes：%1 不是 CANopen 节点 ID（1 到 127）。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>--nodes: node %1 is listed twice.</source>
         <translation>--nodes：节点 %1 被列出两次。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>The simulated arm&apos;s parameters, torque limits, initial pose or gains do not fit the %1 model.</source>
         <translation>仿真机械臂的参数、力矩限值、初始位姿或增益不适合 %1 模型。</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>The SYNC period must be 1 to 100 ms, not %1 s.</source>
         <translation>SYNC 周期必须为 1 到 100 ms，而不是 %1 s。</translation>
     </message>
@@ -69,26 +84,33 @@
 <context>
     <name>CanOpen</name>
     <message>
+        <location filename="../core/can/CanOpen.cpp" line="+51"/>
         <source>Unknown CANopen data type 0x%1.</source>
         <translation>未知的 CANopen 数据类型 0x%1。</translation>
     </message>
     <message>
+        <location line="+26"/>
         <source>Unknown CANopen data type &quot;%1&quot;.</source>
         <translation>未知的 CANopen 数据类型“%1”。</translation>
     </message>
     <message>
+        <location line="+17"/>
+        <location line="+40"/>
         <source>%1 is not a numeric type.</source>
         <translation>%1 不是数值类型。</translation>
     </message>
     <message>
+        <location line="-38"/>
         <source>The value %1 does not fit the type %2 (range %3 to %4%5).</source>
         <translation>值 %1 不符合类型 %2（范围 %3 到 %4%5）。</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>, integers only</source>
         <translation>，仅限整数</translation>
     </message>
     <message>
+        <location line="+35"/>
         <source>%1 needs %2 bytes at offset %3, but only %4 bytes are present.</source>
         <translation>%1 需要从偏移 %3 开始的 %2 个字节，但只有 %4 个字节。</translation>
     </message>
@@ -96,86 +118,108 @@
 <context>
     <name>CanRobot</name>
     <message>
+        <location filename="../core/canrobot/ApplySteps.cpp" line="+23"/>
         <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
         <translation>节点 %1，对象 %2：写入 %4（%5 %6）后回读为 %3：未存储任何内容</translation>
     </message>
     <message>
+        <location filename="../core/canrobot/CanRobot.cpp" line="+58"/>
         <source>CAN %1/%2, nodes %3</source>
         <translation>CAN %1/%2，节点 %3</translation>
     </message>
     <message>
+        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+29"/>
         <source>cannot create the CAN device %1/%2: %3</source>
         <translation>无法创建 CAN 设备 %1/%2：%3</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>unknown plugin or interface</source>
         <translation>未知插件或接口</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>no CAN node given: one node per joint is needed</source>
         <translation>未给出 CAN 节点：每个关节需要一个节点</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>%1 is not a valid CANopen node id (1 to 127)</source>
         <translation>%1 不是有效的 CANopen 节点 ID（1 到 127）</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <location line="+39"/>
         <source>node %1 is listed twice</source>
         <translation>节点 %1 被列出两次</translation>
     </message>
     <message>
+        <location line="-32"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN 定时选项必须为正（心跳周期最多 65535 ms）</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>the configuration of %1 nodes at %2 Hz needs %3 of the bus, more than the %4 % the tool allows: use fewer nodes per bus or a longer SYNC period</source>
         <translation>%1 个节点、%2 Hz 的配置需要总线的 %3，超过本工具允许的 %4 %：请减少每条总线的节点数或延长 SYNC 周期</translation>
     </message>
     <message>
+        <location line="+24"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; 不是 CANopen 节点 ID（1 到 127）</translation>
     </message>
     <message>
+        <location filename="../core/canrobot/NodeConfiguration.cpp" line="+30"/>
         <source>node %1, object %2: the answer holds %3 bytes, UNSIGNED32 needs 4</source>
         <translation>节点 %1，对象 %2：应答包含 %3 个字节，UNSIGNED32 需要 4 个</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>node %1, object %2 is 0: the drive&apos;s units are unusable</source>
         <translation>节点 %1，对象 %2 为 0：驱动器的单位不可用</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>the plan is for %1 joints but %2 CAN nodes are configured</source>
         <translation>计划针对 %1 个关节，但配置了 %2 个 CAN 节点</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>the sample period %1 ms cannot be sent to 0x60C2 (whole ms, 1 to 255)</source>
         <translation>采样周期 %1 ms 无法发送到 0x60C2（整数毫秒，1 到 255）</translation>
     </message>
     <message>
+        <location line="+34"/>
         <source>node %1, object 0x1006:00: the robot&apos;s SYNC period is %2 us, the plan needs %3 us</source>
         <translation>节点 %1，对象 0x1006:00：机器人的 SYNC 周期为 %2 us，计划需要 %3 us</translation>
     </message>
     <message>
+        <location filename="../core/canrobot/TrialCollector.cpp" line="+41"/>
         <source>%1: the TPDO answering SYNC %2 (counter %3) did not arrive before the next SYNC: sample missing</source>
         <translation>%1：响应 SYNC %2（计数器 %3）的 TPDO 未在下一个 SYNC 之前到达：采样点缺失</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>joint %1</source>
         <translation>关节 %1</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>SYNC counter jumped from %1 to %2 after SYNC %3: %4 SYNC(s) lost</source>
         <translation>SYNC %3 之后 SYNC 计数器从 %1 跳到 %2：丢失 %4 个 SYNC</translation>
     </message>
     <message>
+        <location line="+19"/>
         <source>joint %1: TPDO of %2 bytes, the mapping needs %3 (SYNC %4)</source>
         <translation>关节 %1：TPDO 为 %2 个字节，映射需要 %3 个（SYNC %4）</translation>
     </message>
     <message>
+        <location line="+46"/>
         <source>at SYNC %1 (counter %2), plan sample %3, t = %4 s</source>
         <translation>于 SYNC %1（计数器 %2），计划采样点 %3，t = %4 s</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>at SYNC %1 (counter %2), %3 s after NMT start</source>
         <translation>于 SYNC %1（计数器 %2），NMT 启动后 %3 s</translation>
     </message>
@@ -183,62 +227,77 @@
 <context>
     <name>CandumpLog</name>
     <message>
+        <location filename="../core/can/CandumpLog.cpp" line="+52"/>
         <source>the line must start with a timestamp in parentheses, e.g. (1700000000.123456)</source>
         <translation>该行必须以括号中的时间戳开头，例如 (1700000000.123456)</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>&quot;%1&quot; is not a timestamp of the form (seconds.microseconds)</source>
         <translation>“%1”不是 (秒.微秒) 形式的时间戳</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>&quot;%1&quot; has no &apos;#&apos; between identifier and data</source>
         <translation>“%1”在标识符和数据之间没有 &apos;#&apos;</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>CAN FD frames are not supported</source>
         <translation>不支持 CAN FD 帧</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>&quot;%1&quot; is not an identifier of 3 (standard) or 8 (extended) hex digits</source>
         <translation>“%1”不是由 3 位（标准）或 8 位（扩展）十六进制数字组成的标识符</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>the standard identifier %1 exceeds 7FF</source>
         <translation>标准标识符 %1 超过 7FF</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>the extended identifier %1 exceeds 1FFFFFFF</source>
         <translation>扩展标识符 %1 超过 1FFFFFFF</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>&quot;%1&quot; is not a remote request (R, optionally with a length 0 to 8)</source>
         <translation>“%1”不是远程请求（R，可带 0 到 8 的长度）</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>&quot;%1&quot; is not data of whole bytes in hex digits</source>
         <translation>“%1”不是以十六进制数字表示的整字节数据</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>%1 data bytes; a classic CAN frame carries at most 8</source>
         <translation>%1 个数据字节；经典 CAN 帧最多携带 8 个</translation>
     </message>
     <message>
+        <location line="+53"/>
         <source>expected &quot;(timestamp) interface id#data&quot;, found %1 fields</source>
         <translation>应为“(时间戳) 接口 id#数据”，实际有 %1 个字段</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>unexpected text after the frame: &quot;%1&quot;</source>
         <translation>帧之后有意外文本：“%1”</translation>
     </message>
     <message>
+        <location line="+37"/>
         <source>Cannot open the candump log %1: %2</source>
         <translation>无法打开 candump 日志 %1：%2</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>Writing the candump log failed: %1</source>
         <translation>写入 candump 日志失败：%1</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>Cannot write the candump log %1: %2</source>
         <translation>无法写入 candump 日志 %1：%2</translation>
     </message>
@@ -246,10 +305,12 @@
 <context>
     <name>CartesianLine</name>
     <message>
+        <location filename="../core/motion/CartesianLine.cpp" line="+60"/>
         <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
         <translation>时序无效：采样周期和持续时间必须为正，静止时间不得为负</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>a planar line needs 2 joints</source>
         <translation>平面直线需要 2 个关节</translation>
     </message>
@@ -257,38 +318,47 @@
 <context>
     <name>Cia402</name>
     <message>
+        <location filename="../core/can/Cia402.cpp" line="+34"/>
         <source>Not ready to switch on</source>
         <translation>未准备好接通</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Switch on disabled</source>
         <translation>接通禁止</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Ready to switch on</source>
         <translation>准备接通</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Switched on</source>
         <translation>已接通</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Operation enabled</source>
         <translation>运行使能</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Quick stop active</source>
         <translation>快速停止激活</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Fault reaction active</source>
         <translation>故障反应激活</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Unknown drive state</source>
         <translation>未知驱动器状态</translation>
     </message>
@@ -296,202 +366,256 @@
 <context>
     <name>EmcyConsumer</name>
     <message>
+        <location filename="../core/can/EmcyConsumer.cpp" line="+26"/>
         <source>error reset or no error</source>
         <translation>错误复位或无错误</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>generic error</source>
         <translation>一般错误</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location line="+45"/>
         <source>current</source>
         <translation>电流</translation>
     </message>
     <message>
+        <location line="-44"/>
         <source>current, device input side</source>
         <translation>电流，设备输入侧</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>current inside the device</source>
         <translation>设备内部电流</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>current, device output side</source>
         <translation>电流，设备输出侧</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>continuous over-current</source>
         <translation>持续过流</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>short circuit or earth leakage</source>
         <translation>短路或接地泄漏</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location line="+40"/>
         <source>voltage</source>
         <translation>电压</translation>
     </message>
     <message>
+        <location line="-39"/>
         <source>mains voltage</source>
         <translation>电网电压</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>voltage inside the device</source>
         <translation>设备内部电压</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>DC link over-voltage</source>
         <translation>直流母线过压</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>DC link under-voltage</source>
         <translation>直流母线欠压</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>output voltage</source>
         <translation>输出电压</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location line="+35"/>
         <source>temperature</source>
         <translation>温度</translation>
     </message>
     <message>
+        <location line="-34"/>
         <source>ambient temperature</source>
         <translation>环境温度</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>device temperature</source>
         <translation>设备温度</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>drive excess temperature</source>
         <translation>驱动器过温</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>device hardware</source>
         <translation>设备硬件</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>device software</source>
         <translation>设备软件</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>internal software</source>
         <translation>内部软件</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>user software</source>
         <translation>用户软件</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>data set</source>
         <translation>数据集</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>additional modules</source>
         <translation>附加模块</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>sensor</source>
         <translation>传感器</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>incremental sensor 1 fault</source>
         <translation>增量传感器 1 故障</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>monitoring</source>
         <translation>监控</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location line="+23"/>
         <source>communication</source>
         <translation>通信</translation>
     </message>
     <message>
+        <location line="-22"/>
         <source>CAN overrun (objects lost)</source>
         <translation>CAN 溢出（对象丢失）</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>CAN in error passive mode</source>
         <translation>CAN 处于错误被动模式</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>life guard or heartbeat error</source>
         <translation>节点保护或心跳错误</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>recovered from bus off</source>
         <translation>已从总线关闭恢复</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>CAN-ID collision</source>
         <translation>CAN-ID 冲突</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>protocol error</source>
         <translation>协议错误</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>PDO not processed due to length error</source>
         <translation>因长度错误未处理 PDO</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>PDO length exceeded</source>
         <translation>超出 PDO 长度</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>unexpected SYNC data length</source>
         <translation>意外的 SYNC 数据长度</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>RPDO timeout</source>
         <translation>RPDO 超时</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>positioning controller</source>
         <translation>位置控制器</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>following error</source>
         <translation>跟随误差</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>external error</source>
         <translation>外部错误</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>additional functions</source>
         <translation>附加功能</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>device specific</source>
         <translation>设备特定</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>generic</source>
         <translation>一般</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>device profile</source>
         <translation>设备行规</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>reserved</source>
         <translation>保留</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>manufacturer</source>
         <translation>制造商特定</translation>
     </message>
     <message>
+        <location line="+28"/>
         <source>unknown error code</source>
         <translation>未知错误代码</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>no error</source>
         <translation>无错误</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Node %1 emergency %2: %3; error register %4: %5; manufacturer data %6</source>
         <translation>节点 %1 紧急报文（EMCY）%2：%3；错误寄存器 %4：%5；制造商数据 %6</translation>
     </message>
@@ -499,78 +623,98 @@
 <context>
     <name>JsonReader</name>
     <message>
+        <location filename="../core/io/JsonReader.cpp" line="+90"/>
         <source>%1 (beyond the range of a double)</source>
         <translation>%1（超出 double 的范围）</translation>
     </message>
     <message>
+        <location line="+7"/>
+        <location line="+45"/>
         <source>an array</source>
         <translation>数组</translation>
     </message>
     <message>
+        <location line="-43"/>
         <source>an object</source>
         <translation>对象</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>nothing</source>
         <translation>空</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>an integer from %1 to %2</source>
         <translation>%1 到 %2 之间的整数</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>%1: the file is empty; expected a JSON object</source>
         <translation>%1：文件为空；应为 JSON 对象</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>%1: invalid JSON at line %2, column %3 (byte offset %4): %5</source>
         <translation>%1：第 %2 行第 %3 列（字节偏移 %4）处 JSON 无效：%5</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>%1: the top level must be a JSON object, got %2</source>
         <translation>%1：顶层必须是 JSON 对象，实际为 %2</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>a single value</source>
         <translation>单个值</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>must be a finite number, got %1, which is beyond the range of a double</source>
         <translation>必须是有限数，实际为 %1，超出 double 的范围</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>must be a number, got %1</source>
         <translation>必须是数字，实际为 %1</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>must be a finite number, got %1</source>
         <translation>必须是有限数，实际为 %1</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>must be a string, got %1</source>
         <translation>必须是字符串，实际为 %1</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>must be true or false, got %1</source>
         <translation>必须是 true 或 false，实际为 %1</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>must be an array, got %1</source>
         <translation>必须是数组，实际为 %1</translation>
     </message>
     <message>
+        <location line="+22"/>
         <source>must be an object, got %1</source>
         <translation>必须是对象，实际为 %1</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>is missing; this key is required</source>
         <translation>缺失；此键为必需项</translation>
     </message>
     <message>
+        <location line="+51"/>
         <source>unknown key; allowed here: %1</source>
         <translation>未知的键；此处允许：%1</translation>
     </message>
@@ -578,26 +722,33 @@
 <context>
     <name>LearningLaw</name>
     <message>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+110"/>
+        <location filename="../core/identify/PaperLaw.cpp" line="+18"/>
         <source>no completed trial to learn from</source>
         <translation>没有可供学习的已完成试验</translation>
     </message>
     <message>
+        <location filename="../core/identify/LearningLaw.cpp" line="+61"/>
         <source>trial record does not match its plan: %1 of %2 samples, %3 joints recorded for a %4-joint model</source>
         <translation>试验记录与其计划不符：%2 个采样点中记录了 %1 个，%4 关节模型记录了 %3 个关节</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>trial record has only %1 samples</source>
         <translation>试验记录只有 %1 个采样点</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>trial record has a non-finite %1 at sample %2, joint %3</source>
         <translation>试验记录在采样点 %2、关节 %3 处有非有限的%1</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>torque</source>
         <translation>力矩</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>angle</source>
         <translation>角度</translation>
     </message>
@@ -605,22 +756,27 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+99"/>
         <source>No node to write the parameters to.</source>
         <translation>没有可写入参数的节点。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>A parameter set holds 1 to %1 parameters, not %2.</source>
         <translation>参数组包含 1 到 %1 个参数，而不是 %2 个。</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>%1 is not a valid CANopen node id (1 to 127).</source>
         <translation>%1 不是有效的 CANopen 节点 ID（1 到 127）。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Node %1 is listed twice.</source>
         <translation>节点 %1 被列出两次。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Parameter %1 (%2) cannot be sent as REAL32.</source>
         <translation>参数 %1（%2）无法以 REAL32 发送。</translation>
     </message>
@@ -628,18 +784,22 @@
 <context>
     <name>Nmt</name>
     <message>
+        <location filename="../core/can/Nmt.cpp" line="+14"/>
         <source>boot-up</source>
         <translation>启动（boot-up）</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>stopped</source>
         <translation>停止（stopped）</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>operational</source>
         <translation>运行（operational）</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>pre-operational</source>
         <translation>预运行（pre-operational）</translation>
     </message>
@@ -647,10 +807,12 @@
 <context>
     <name>ObservableUpdate</name>
     <message>
+        <location filename="../core/identify/GramBlock.cpp" line="+13"/>
         <source>least squares sizes do not match: %1 x %2 regressor, %3 targets, %4 joints, %5 parameters</source>
         <translation>最小二乘维度不匹配：%1 x %2 回归矩阵，%3 个目标值，%4 个关节，%5 个参数</translation>
     </message>
     <message>
+        <location filename="../core/identify/ObservableUpdate.cpp" line="+19"/>
         <source>the regressor or the torque contains non-finite values</source>
         <translation>回归矩阵或力矩包含非有限值</translation>
     </message>
@@ -658,10 +820,12 @@
 <context>
     <name>OutputPath</name>
     <message>
+        <location filename="../core/io/OutputPath.cpp" line="+23"/>
         <source>%1: no path given</source>
         <translation>%1：未给出路径</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>%1: %2 is relative, and the folder it is taken from, %3, does not exist or is not a folder</source>
         <translation>%1：%2 是相对路径，而其基准文件夹 %3 不存在或不是文件夹</translation>
     </message>
@@ -669,98 +833,122 @@
 <context>
     <name>ParameterFile</name>
     <message>
+        <location filename="../core/io/ParameterDcf.cpp" line="+32"/>
         <source>does not fit a REAL32 object entry, got %1</source>
         <translation>无法放入 REAL32 对象条目，实际为 %1</translation>
     </message>
     <message>
+        <location line="+96"/>
         <source>DCF fragment: joint %1 does not exist; the robot has %2 joints</source>
         <translation>DCF 片段：关节 %1 不存在；机器人有 %2 个关节</translation>
     </message>
     <message>
+        <location filename="../core/io/ParameterFile.cpp" line="+131"/>
         <source>must be given for every parameter or for none</source>
         <translation>必须为每个参数都给出，或都不给出</translation>
     </message>
     <message>
+        <location line="+22"/>
         <source>must be an object index written as &quot;0x&quot; and four hex digits, got &quot;%1&quot;</source>
         <translation>必须是以“0x”加四位十六进制数字写成的对象索引，实际为“%1”</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>must be the bytes written as pairs of hex digits, got &quot;%1&quot;</source>
         <translation>必须是以成对十六进制数字表示的写入字节，实际为“%1”</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>must be a date and time as in 2024-05-01T12:00:00.000Z, got &quot;%1&quot;</source>
         <translation>必须是形如 2024-05-01T12:00:00.000Z 的日期时间，实际为“%1”</translation>
     </message>
     <message>
+        <location line="+51"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>缺失；这不是 learnid 参数文件</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>this version of learnid reads &quot;%1&quot;, got %2</source>
         <translation>此版本的 learnid 读取“%1”，实际为 %2</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>is missing; this key is required</source>
         <translation>缺失；此键为必需项</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>does not match the content: the file was changed after learnid wrote it, or is damaged</source>
         <translation>与内容不符：文件在 learnid 写入后被修改，或已损坏</translation>
     </message>
     <message>
+        <location line="+34"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
+        <location filename="../core/io/ParameterFileValidation.cpp" line="+49"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>one per joint of %1</source>
         <translation>%1 的每个关节一个</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>node %1 is given to two joints</source>
         <translation>节点 %1 被分配给两个关节</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>must be a valid date and time</source>
         <translation>必须是有效的日期时间</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>must not be empty</source>
         <translation>不得为空</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>未知学习律“%1”；已知学习律：%2</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>must be a trial index or -1 (not recorded), got %1</source>
         <translation>必须是试验索引或 -1（未记录），实际为 %1</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>one per parameter of %1</source>
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>must be &quot;%1&quot; (parameter %2 of %3), got &quot;%4&quot;</source>
         <translation>必须是“%1”（%3 的参数 %2），实际为“%4”</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>values, %1</source>
         <translation>数值，%1</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>standard deviations, %1</source>
         <translation>标准差，%1</translation>
     </message>
     <message>
+        <location line="+19"/>
         <source>must name the CANopen data type</source>
         <translation>必须指明 CANopen 数据类型</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>must hold the bytes written</source>
         <translation>必须包含写入的字节</translation>
     </message>
@@ -768,26 +956,32 @@
 <context>
     <name>Pdo</name>
     <message>
+        <location filename="../core/can/Pdo.cpp" line="+24"/>
         <source>PDO %1 does not exist; learnid uses PDO 1 to 4.</source>
         <translation>PDO %1 不存在；learnid 使用 PDO 1 到 4。</translation>
     </message>
     <message>
+        <location line="+26"/>
         <source>Object %1 of type %2 cannot be mapped into a PDO.</source>
         <translation>类型为 %2 的对象 %1 无法映射到 PDO。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>The mapped objects need %1 bits; a PDO holds at most %2 bits (8 bytes).</source>
         <translation>映射的对象需要 %1 位；一个 PDO 最多容纳 %2 位（8 字节）。</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>The PDO maps %1 objects but %2 values were given.</source>
         <translation>该 PDO 映射了 %1 个对象，但给出了 %2 个值。</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>PDO object %1: %2</source>
         <translation>PDO 对象 %1：%2</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>The PDO carries %1 bytes; its mapping needs %2.</source>
         <translation>该 PDO 携带 %1 个字节；其映射需要 %2 个。</translation>
     </message>
@@ -795,14 +989,17 @@
 <context>
     <name>SafetyCheck</name>
     <message>
+        <location filename="../core/session/SafetyCheck.cpp" line="+169"/>
         <source>the estimate is not a physical robot: its mass matrix is not positive definite at t = %1 s</source>
         <translation>该估计不是物理上可能的机器人：其质量矩阵在 t = %1 s 时不是正定的</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>the closed loop would be unstable: linearised along the path with the current estimate, a pole has |z| = %1 (growth rate %2 1/s) at t = %3 s. Raise the derivative filter bandwidth lambda or lower the gains</source>
         <translation>闭环将不稳定：用当前估计沿路径线性化后，在 t = %3 s 时有一个极点 |z| = %1（增长率 %2 1/s）。请提高微分滤波器带宽 lambda 或降低增益</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>planned torque of joint %1 is %2 N m, above its limit of %3 N m</source>
         <translation>关节 %1 的计划力矩为 %2 N m，超过其限值 %3 N m</translation>
     </message>
@@ -810,50 +1007,62 @@
 <context>
     <name>ScenarioFile</name>
     <message>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+93"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
+        <location filename="../core/io/ScenarioFile.cpp" line="+100"/>
         <source>this version of learnid reads &quot;%1&quot;, got %2</source>
         <translation>此版本的 learnid 读取“%1”，实际为 %2</translation>
     </message>
     <message>
+        <location line="+86"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-51"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>one per joint of %1</source>
         <translation>%1 的每个关节一个</translation>
     </message>
     <message>
+        <location line="+23"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>未知学习律“%1”；已知学习律：%2</translation>
     </message>
     <message>
+        <location line="-22"/>
         <source>one per parameter of %1</source>
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
+        <location filename="../core/io/ScenarioFile.cpp" line="-157"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>must have 2 entries (x and y), got %1</source>
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-22"/>
         <source>one per joint</source>
         <translation>每个关节一个</translation>
     </message>
     <message>
+        <location line="+26"/>
         <source>must be 1 or -1, got %1</source>
         <translation>必须是 1 或 -1，实际为 %1</translation>
     </message>
     <message>
+        <location line="+33"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>必须是 0（理想编码器）或 %1 到 %2 之间的整数，实际为 %3</translation>
     </message>
@@ -861,130 +1070,162 @@
 <context>
     <name>SdoAbortCode</name>
     <message>
+        <location filename="../core/can/SdoAbortCode.cpp" line="+17"/>
         <source>Toggle bit not alternated.</source>
         <translation>触发位未交替。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>SDO protocol timed out.</source>
         <translation>SDO 协议超时。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Client/server command specifier not valid or unknown.</source>
         <translation>客户端/服务器命令说明符无效或未知。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Invalid block size (block mode only).</source>
         <translation>块大小无效（仅块模式）。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Invalid sequence number (block mode only).</source>
         <translation>序列号无效（仅块模式）。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>CRC error (block mode only).</source>
         <translation>CRC 错误（仅块模式）。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Out of memory.</source>
         <translation>内存不足。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Unsupported access to an object.</source>
         <translation>不支持的对象访问。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Attempt to read a write-only object.</source>
         <translation>试图读取只写对象。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Attempt to write a read-only object.</source>
         <translation>试图写入只读对象。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Object does not exist in the object dictionary.</source>
         <translation>对象字典中不存在该对象。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Object cannot be mapped to the PDO.</source>
         <translation>对象无法映射到 PDO。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The number and length of the objects to be mapped would exceed the PDO length.</source>
         <translation>待映射对象的数量和长度将超出 PDO 长度。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>General parameter incompatibility.</source>
         <translation>一般参数不兼容。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>General internal incompatibility in the device.</source>
         <translation>设备内部一般不兼容。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Access failed due to a hardware error.</source>
         <translation>因硬件错误访问失败。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Data type does not match: the length of the service parameter does not match.</source>
         <translation>数据类型不匹配：服务参数的长度不匹配。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Data type does not match: the length of the service parameter is too high.</source>
         <translation>数据类型不匹配：服务参数的长度过长。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Data type does not match: the length of the service parameter is too low.</source>
         <translation>数据类型不匹配：服务参数的长度过短。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Sub-index does not exist.</source>
         <translation>子索引不存在。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Invalid value for the parameter (download only).</source>
         <translation>参数值无效（仅下载）。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Value of the parameter written too high (download only).</source>
         <translation>写入的参数值过高（仅下载）。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Value of the parameter written too low (download only).</source>
         <translation>写入的参数值过低（仅下载）。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Maximum value is less than minimum value.</source>
         <translation>最大值小于最小值。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Resource not available: SDO connection.</source>
         <translation>资源不可用：SDO 连接。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>General error.</source>
         <translation>一般错误。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Data cannot be transferred or stored to the application.</source>
         <translation>数据无法传输或存储到应用。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Data cannot be transferred or stored to the application because of local control.</source>
         <translation>因本地控制，数据无法传输或存储到应用。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Data cannot be transferred or stored to the application because of the present device state.</source>
         <translation>因当前设备状态，数据无法传输或存储到应用。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Object dictionary dynamic generation failed or no object dictionary is present.</source>
         <translation>对象字典动态生成失败或不存在对象字典。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>No data available.</source>
         <translation>无可用数据。</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>Unknown abort code %1.</source>
         <translation>未知中止代码 %1。</translation>
     </message>
@@ -992,17 +1233,28 @@
 <context>
     <name>SdoWrite</name>
     <message>
+        <location filename="../core/can/SdoWrite.cpp" line="+14"/>
         <source>%1 is not a valid CANopen node id (1 to 127).</source>
         <translation>%1 不是有效的 CANopen 节点 ID（1 到 127）。</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>Node %1, object %2: %3</source>
         <translation>节点 %1，对象 %2：%3</translation>
     </message>
 </context>
 <context>
+    <name>SessionExport</name>
+    <message>
+        <location filename="../core/service/SessionExport.cpp" line="+43"/>
+        <source>cannot create the folder %1</source>
+        <translation>无法创建文件夹 %1</translation>
+    </message>
+</context>
+<context>
     <name>SessionReport</name>
     <message>
+        <location filename="../core/io/SessionReport.cpp" line="+82"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>本会话中不存在估计 %1</translation>
     </message>
@@ -1010,26 +1262,32 @@
 <context>
     <name>SimulatedRobot</name>
     <message>
+        <location filename="../core/robot/SimulatedRobot.cpp" line="+32"/>
         <source>simulated %1</source>
         <translation>仿真 %1</translation>
     </message>
     <message>
+        <location line="+52"/>
         <source>tracking error of joint %1 reached %2 deg at t = %3 s (limit %4 deg): quick stop</source>
         <translation>关节 %1 的跟踪误差在 t = %3 s 时达到 %2 度（限值 %4 度）：快速停止</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>drive of joint 1 reported a fault at t = %1 s (injected)</source>
         <translation>关节 1 的驱动器在 t = %1 s 时报告故障（注入）</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>stopped by the operator at t = %1 s</source>
         <translation>操作员在 t = %1 s 时停止</translation>
     </message>
     <message>
+        <location line="+22"/>
         <source>the simulated controller refused the parameter write (injected fault); its stored parameters are unchanged</source>
         <translation>仿真控制器拒绝写入参数（注入故障）；其已存储参数未改变</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>parameter set has %1 values, the model needs %2 finite values</source>
         <translation>参数组有 %1 个值，模型需要 %2 个有限值</translation>
     </message>
@@ -1037,18 +1295,22 @@
 <context>
     <name>TorqueRule</name>
     <message>
+        <location filename="../core/motion/TorqueRule.cpp" line="+28"/>
         <source>torque rule needs 2 grid points</source>
         <translation>力矩规则需要 2 个网格点</translation>
     </message>
     <message>
+        <location line="+25"/>
         <source>torque rule needs one positive limit per joint and a positive fraction</source>
         <translation>力矩规则需要每个关节一个正的限值和一个正的比例</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>gravity alone needs more than %1 % of a joint&apos;s torque limit</source>
         <translation>仅重力就需要超过某关节力矩限值的 %1 %</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>the path needs no torque: check its length and the parameters</source>
         <translation>该路径不需要力矩：请检查其长度和参数</translation>
     </message>
@@ -1056,30 +1318,37 @@
 <context>
     <name>TrialCsv</name>
     <message>
+        <location filename="../core/io/TrialCsv.cpp" line="+46"/>
         <source>%1: line %2: %3</source>
         <translation>%1：第 %2 行：%3</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>trial CSV: the record (%1 joints, %2 samples) does not fit its plan (%3 joints, %4 samples)</source>
         <translation>试验 CSV：记录（%1 个关节，%2 个采样点）与其计划（%3 个关节，%4 个采样点）不符</translation>
     </message>
     <message>
+        <location line="+51"/>
         <source>the file is empty; expected the header line</source>
         <translation>文件为空；应有表头行</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>the header must be %1 (for one or more joints), got %2</source>
         <translation>表头必须是 %1（适用于一个或多个关节），实际为 %2</translation>
     </message>
     <message>
+        <location line="+16"/>
         <source>expected %1 fields, got %2</source>
         <translation>应有 %1 个字段，实际为 %2</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>%1 is not a number: &quot;%2&quot;</source>
         <translation>%1 不是数字：“%2”</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>t_s must be finite and increase from line to line, got %1</source>
         <translation>t_s 必须有限且逐行递增，实际为 %1</translation>
     </message>
@@ -1087,6 +1356,7 @@
 <context>
     <name>TrialPlanner</name>
     <message>
+        <location filename="../core/session/TrialPlanner.cpp" line="+16"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>只有平面二连杆机械臂具有笛卡尔直线运动学</translation>
     </message>
@@ -1094,22 +1364,27 @@
 <context>
     <name>TrialStatus</name>
     <message>
+        <location filename="../core/robot/Trial.cpp" line="+21"/>
         <source>completed</source>
         <translation>已完成</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>robot fault</source>
         <translation>机器人故障</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>refused</source>
         <translation>已拒绝</translation>
     </message>
@@ -1117,14 +1392,17 @@
 <context>
     <name>TwoLinkArm</name>
     <message>
+        <location filename="../core/model/TwoLinkArm.cpp" line="+15"/>
         <source>inertia of the base axis</source>
         <translation>基座轴的惯量</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>coupling inertia of the two links</source>
         <translation>两连杆的耦合惯量</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>inertia of the second link</source>
         <translation>第二连杆的惯量</translation>
     </message>
@@ -1132,6 +1410,7 @@
 <context>
     <name>TwoLinkKinematics</name>
     <message>
+        <location filename="../core/motion/TwoLinkKinematics.cpp" line="+39"/>
         <source>point (%1, %2) m is out of reach or at a singularity of the arm (link lengths %3 m and %4 m)</source>
         <translation>点 (%1, %2) m 超出机械臂的工作范围或处于奇异位形（连杆长度 %3 m 和 %4 m）</translation>
     </message>
@@ -1139,42 +1418,52 @@
 <context>
     <name>ValueChecks</name>
     <message>
+        <location filename="../core/io/ValueChecks.cpp" line="+22"/>
         <source>must be a finite number, got %1</source>
         <translation>必须是有限数，实际为 %1</translation>
     </message>
     <message>
+        <location line="+52"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
+        <location line="-46"/>
         <source>must be a positive number, got %1</source>
         <translation>必须是正数，实际为 %1</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>must be zero or a positive number, got %1</source>
         <translation>必须是零或正数，实际为 %1</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>must be zero, a positive number or unbounded (null), got %1</source>
         <translation>必须是零、正数或无界（null），实际为 %1</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>must be from %1 to %2</source>
         <translation>必须在 %1 到 %2 之间</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>must be greater than %1 and at most %2</source>
         <translation>必须大于 %1 且不超过 %2</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>must be greater than %1 and less than %2</source>
         <translation>必须大于 %1 且小于 %2</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>%1, got %2</source>
         <translation>%1，实际为 %2</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>must have %1 entries (%2), got %3</source>
         <translation>必须有 %1 个条目（%2），实际为 %3</translation>
     </message>
@@ -1182,10 +1471,16 @@
 <context>
     <name>learnid-cli</name>
     <message>
+        <location filename="../app/cli/RunCommand.cpp" line="+76"/>
+        <location line="+14"/>
+        <location line="+28"/>
+        <location line="+43"/>
+        <location filename="../app/cli/main.cpp" line="+36"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli：错误：%1</translation>
     </message>
     <message>
+        <location filename="../app/cli/CliOptions.cpp" line="+17"/>
         <source>Usage:
   learnid-cli scenario --print
       Print the default scenario (the paper scenario) as JSON.
@@ -1232,6 +1527,7 @@
 </translation>
     </message>
     <message>
+        <location line="+32"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -1244,218 +1540,267 @@
 %3</translation>
     </message>
     <message>
+        <location line="+13"/>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
         <translation>--robot：必须是 &apos;sim&apos; 或 &apos;can&apos;，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+9"/>
+        <location line="+7"/>
         <source>--%1 needs --robot can</source>
         <translation>--%1 需要 --robot can</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>--robot can needs --can-plugin (e.g. socketcan, virtualcan)</source>
         <translation>--robot can 需要 --can-plugin（例如 socketcan、virtualcan）</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>--robot can needs --can-interface (e.g. can0)</source>
         <translation>--robot can 需要 --can-interface（例如 can0）</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes：&apos;%2&apos; 中 %1</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>--can-sync-timeout: must be a whole number of ms from 1 to 60000, got &apos;%1&apos;</source>
         <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1：%2</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>--robot %1: %2</source>
         <translation>--robot %1：%2</translation>
     </message>
     <message>
+        <location line="+26"/>
         <source>Show this command&apos;s options.</source>
         <translation>显示此命令的选项。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Print the default scenario.</source>
         <translation>输出默认场景。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
         <translation>场景文件（JSON，docs/scenario.md）；默认：论文场景。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Learning law: paper or improved.</source>
         <translation>学习律：paper 或 improved。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Learning trials, 1 to 100.</source>
         <translation>学习试验次数，1 到 100。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Write the session report (JSON) to FILE.</source>
         <translation>将会话报告（JSON）写入 FILE。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Write the parameter file (JSON and DCF) to FILE.</source>
         <translation>将参数文件（JSON 和 DCF）写入 FILE。</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Write each trial&apos;s samples as CSV into DIR.</source>
         <translation>将每次试验的采样以 CSV 写入 DIR。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Accept and apply the final estimate to the robot.</source>
         <translation>接受最终估计并写入机器人。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Folder that relative output paths are taken from; default: the current directory.</source>
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>No progress lines on stderr.</source>
         <translation>不在 stderr 上输出进度行。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>sim (default) or can.</source>
         <translation>sim（默认）或 can。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>QCanBus plugin, e.g. socketcan or virtualcan.</source>
         <translation>QCanBus 插件，例如 socketcan 或 virtualcan。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>CAN interface, e.g. can0.</source>
         <translation>CAN 接口，例如 can0。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>CANopen node id of each joint&apos;s drive, e.g. 1,2.</source>
         <translation>每个关节驱动器的 CANopen 节点号，例如 1,2。</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Longest SYNC gap in a trial [ms].</source>
         <translation>试验中最长的 SYNC 间隔 [ms]。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Write each trial&apos;s CAN frames as a candump log into DIR.</source>
         <translation>将每次试验的 CAN 帧以 candump 日志写入 DIR。</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>A recorded trial (candump log); once per trial, in order.</source>
         <translation>一次记录的试验（candump 日志）；每次试验一个，按顺序。</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>Print the default scenario as JSON.</source>
         <translation>以 JSON 格式输出默认场景。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>&apos;scenario&apos; needs --print</source>
         <translation>&apos;scenario&apos; 需要 --print</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>no command given</source>
         <translation>未给出命令</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>unknown command &apos;%1&apos;</source>
         <translation>未知命令 &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+19"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>根据记录的试验重新辨识：会话再次运行，
 由每个日志代替机器人应答。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Run a commissioning session on the simulated robot, or with --robot can
 on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>在仿真机器人上运行调试会话，或使用 --robot can
 在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）。</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+13"/>
         <source>--iterations: must be a whole number from 1 to 100, got &apos;%1&apos;</source>
         <translation>--iterations：必须是 1 到 100 之间的整数，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>&apos;replay&apos; needs at least one --candump FILE</source>
         <translation>&apos;replay&apos; 至少需要一个 --candump FILE</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>--iterations: %1 trials need %1 logs, %2 given</source>
         <translation>--iterations：%1 次试验需要 %1 个日志，给出了 %2 个</translation>
     </message>
     <message>
+        <location filename="../app/cli/ResultTable.cpp" line="+32"/>
         <source>trial</source>
         <translation>试验</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>change %</source>
         <translation>变化 %</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>max|e|%1 deg</source>
         <translation>最大|e|%1 度</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>T s</source>
         <translation>T s</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>cond</source>
         <translation>cond</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>vs truth %</source>
         <translation>相对真值 %</translation>
     </message>
     <message>
+        <location line="+25"/>
         <source>(rank %1: unobservable kept)</source>
         <translation>（秩 %1：保留不可观测参数）</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>trial %1: %2</source>
         <translation>试验 %1：%2</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>trial %1: %2, T = %3 s, no samples recorded</source>
         <translation>试验 %1：%2，T = %3 s，未记录采样</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg</source>
         <translation>试验 %1：%2，T = %3 s，%4 个采样点，最大跟踪误差 %5 度</translation>
     </message>
     <message>
+        <location filename="../app/cli/RunCommand.cpp" line="-125"/>
         <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
         <translation>--estimator：未知学习律 &apos;%1&apos;（已知：%2）</translation>
     </message>
     <message>
+        <location line="+64"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
     <message>
+        <location line="+21"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli：未写入文件</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>learnid-cli: error: apply failed: %1</source>
         <translation>learnid-cli：错误：写入失败：%1</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>learnid-cli: estimate %1 applied to the robot</source>
         <translation>learnid-cli：估计 %1 已写入机器人</translation>
     </message>
     <message>
-        <source>--trial-csv: cannot create the folder %1</source>
-        <translation>--trial-csv：无法创建文件夹 %1</translation>
-    </message>
-    <message>
+        <location line="+25"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
@@ -1463,150 +1808,189 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid-robot-sim</name>
     <message>
+        <location filename="../app/robot-sim/StopRequests.cpp" line="+67"/>
         <source>SIGINT</source>
         <translation>SIGINT</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>SIGTERM</source>
         <translation>SIGTERM</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>stdin closed</source>
         <translation>stdin 已关闭</translation>
     </message>
     <message>
+        <location filename="../app/robot-sim/main.cpp" line="+34"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim：错误：%1</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Try &apos;learnid-robot-sim --help&apos; for the options.</source>
         <translation>选项请见 &apos;learnid-robot-sim --help&apos;。</translation>
     </message>
     <message>
+        <location filename="../app/robot-sim/SimOptions.cpp" line="+22"/>
         <source>--nodes: &apos;%1&apos; is not a CANopen node id (1 to 127) in &apos;%2&apos;</source>
         <translation>--nodes：&apos;%2&apos; 中的 &apos;%1&apos; 不是 CANopen 节点 ID（1 到 127）</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>--nodes: node %1 is listed twice in &apos;%2&apos;</source>
         <translation>--nodes：节点 %1 在 &apos;%2&apos; 中被列出两次</translation>
     </message>
     <message>
+        <location line="+25"/>
         <source>--refuse-sdo: &apos;%1&apos; is not an object address INDEX:SUB such as 0x2200:1 (index in hex, sub-index 0 to 255)</source>
         <translation>--refuse-sdo：&apos;%1&apos; 不是形如 0x2200:1 的对象地址 INDEX:SUB（索引为十六进制，子索引 0 到 255）</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>--%1: &apos;%2&apos; is not a whole number of at least %3</source>
         <translation>--%1：&apos;%2&apos; 不是不小于 %3 的整数</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>The robot on a CAN bus: one simulated CiA 402 drive per joint, the SYNC producer and the scenario&apos;s simulated arm. Prints &quot;ready&quot; once connected; runs until SIGINT, SIGTERM or stdin closes.</source>
         <translation>CAN 总线上的机器人：每个关节一个仿真 CiA 402 驱动器、SYNC 生产者以及场景的仿真机械臂。连接后输出“ready”；运行直到收到 SIGINT、SIGTERM 或 stdin 关闭。</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>Show this help.</source>
         <translation>显示此帮助。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Show the version.</source>
         <translation>显示版本。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>QCanBus plugin, e.g. socketcan or virtualcan.</source>
         <translation>QCanBus 插件，例如 socketcan 或 virtualcan。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>plugin</source>
         <translation>插件</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>CAN interface, e.g. can0 or tcp://127.0.0.1:35468/can0.</source>
         <translation>CAN 接口，例如 can0 或 tcp://127.0.0.1:35468/can0。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>interface</source>
         <translation>接口</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Node ids of joint 1, 2, ... (default 1,2).</source>
         <translation>关节 1、2……的节点 ID（默认 1,2）。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>ids</source>
         <translation>ID</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Scenario file (default: the paper scenario).</source>
         <translation>场景文件（默认：论文场景）。</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <location line="+6"/>
         <source>file</source>
         <translation>文件</translation>
     </message>
     <message>
+        <location line="-3"/>
         <source>JSON file of the nodes&apos; stored parameters, written at start and after every store.</source>
         <translation>节点已存储参数的 JSON 文件，在启动时及每次存储后写入。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Fault: lose this fraction (0 to 1) of the TPDOs.</source>
         <translation>故障：丢失此比例（0 到 1）的 TPDO。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Fault: send nothing at all after N frames.</source>
         <translation>故障：N 帧之后完全停止发送。</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <location line="+18"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
+        <location line="-15"/>
         <source>Fault: the first node faults with EMCY 0x8611 at the K-th SYNC in Operation enabled.</source>
         <translation>故障：第一个节点在运行使能状态下的第 K 个 SYNC 时以 EMCY 0x8611 报故障。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>K</source>
         <translation>K</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Fault: SDO writes to this object abort with 0x08000020.</source>
         <translation>故障：对此对象的 SDO 写入以 0x08000020 中止。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>IDX:SUB</source>
         <translation>IDX:SUB</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default 3; raise it on a heavily loaded machine).</source>
         <translation>驱动器在运行使能状态下无设定值多少个 SYNC 周期后以 EMCY 0x8100 报故障（默认 3；在负载很重的机器上请调高）。</translation>
     </message>
     <message>
+        <location line="+22"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>--can-plugin is required (available: %1)</source>
         <translation>必须给出 --can-plugin（可用：%1）</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>--can-plugin: unknown plugin &apos;%1&apos; (available: %2)</source>
         <translation>--can-plugin：未知插件 &apos;%1&apos;（可用：%2）</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>--can-interface is required, e.g. can0 or tcp://127.0.0.1:35468/can0</source>
         <translation>必须给出 --can-interface，例如 can0 或 tcp://127.0.0.1:35468/can0</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>--drop-fraction: &apos;%1&apos; is not a fraction from 0 to 1</source>
         <translation>--drop-fraction：&apos;%1&apos; 不是 0 到 1 之间的比例</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>--emcy-at-sample: &apos;%1&apos; is too large</source>
         <translation>--emcy-at-sample：&apos;%1&apos; 过大</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>--setpoint-timeout: &apos;%1&apos; is too large (at most 100000)</source>
         <translation>--setpoint-timeout：&apos;%1&apos; 过大（最多 100000）</translation>
     </message>
@@ -1614,34 +1998,42 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::ApplyConfirmDialog</name>
     <message>
+        <location filename="../ui/ApplyConfirmDialog.cpp" line="+16"/>
         <source>Apply parameters to the robot</source>
         <translation>将参数写入机器人</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Write estimate %1 to the robot controller? The controller&apos;s feedforward changes at once.</source>
         <translation>将估计 %1 写入机器人控制器？控制器的前馈将立即改变。</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>On robot</source>
         <translation>机器人当前值</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>New</source>
         <translation>新值</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Change</source>
         <translation>变化</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>Apply to robot</source>
         <translation>写入机器人</translation>
     </message>
@@ -1649,30 +2041,37 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::ApplyPanel</name>
     <message>
+        <location filename="../ui/ApplyPanel.cpp" line="+22"/>
         <source>estimate </source>
         <translation>估计 </translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>Choose:</source>
         <translation>选择：</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Accepted:</source>
         <translation>已接受：</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Robot holds:</source>
         <translation>机器人参数：</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>nothing applied yet</source>
         <translation>尚未写入</translation>
     </message>
     <message>
+        <location line="+26"/>
         <source>estimate %1</source>
         <translation>估计 %1</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>none</source>
         <translation>无</translation>
     </message>
@@ -1680,26 +2079,32 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::CanConnection</name>
     <message>
+        <location filename="../core/canrobot/CanConnection.cpp" line="+29"/>
         <source>the CAN device %1 did not connect within %2 ms (is the bus or the robot side running?)</source>
         <translation>CAN 设备 %1 未在 %2 ms 内连接（总线或机器人端是否在运行？）</translation>
     </message>
     <message>
+        <location line="+35"/>
         <source>no CAN device for %1</source>
         <translation>没有用于 %1 的 CAN 设备</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>cannot connect the CAN device %1: %2</source>
         <translation>无法连接 CAN 设备 %1：%2</translation>
     </message>
     <message>
+        <location line="+49"/>
         <source>no error reported (the other side may have exited)</source>
         <translation>未报告错误（对端可能已退出）</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>the CAN device %1 went unconnected: %2</source>
         <translation>CAN 设备 %1 已断开连接：%2</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>the CAN device %1 reported a connection error: %2</source>
         <translation>CAN 设备 %1 报告连接错误：%2</translation>
     </message>
@@ -1707,14 +2112,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::CanLink</name>
     <message>
+        <location filename="../core/can/CanLink.cpp" line="+24"/>
         <source>The CAN device no longer exists.</source>
         <translation>CAN 设备已不存在。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The CAN device %1 is not connected.</source>
         <translation>CAN 设备 %1 未连接。</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The CAN device refused the frame: %1</source>
         <translation>CAN 设备拒绝了该帧：%1</translation>
     </message>
@@ -1722,34 +2130,43 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::CanRobotWorker</name>
     <message>
+        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+116"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>the model has %1 joints but %2 CAN nodes are configured, or the plan is empty</source>
         <translation>模型有 %1 个关节，但配置了 %2 个 CAN 节点，或计划为空</translation>
     </message>
     <message>
+        <location line="+13"/>
+        <location line="+27"/>
         <source>stopped by the operator before the drives moved</source>
         <translation>在驱动器运动前被操作员停止</translation>
     </message>
     <message>
+        <location line="-3"/>
         <source>configuring the drives failed, nothing moved: %1</source>
         <translation>配置驱动器失败，未发生任何运动：%1</translation>
     </message>
     <message>
+        <location line="+28"/>
         <source>the trial&apos;s candump log could not be written: %1</source>
         <translation>无法写入该试验的 candump 日志：%1</translation>
     </message>
     <message>
+        <location line="+21"/>
         <source>%1; the stored parameters are unchanged</source>
         <translation>%1；已存储参数未改变</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1；未存储任何内容（未写入 0x1010）</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>%1; storing stopped at node %2 of the list</source>
         <translation>%1；存储在列表中的节点 %2 处停止</translation>
     </message>
@@ -1757,14 +2174,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::CandumpReplayDevice</name>
     <message>
+        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+38"/>
         <source>Cannot write a frame: the replay is not connected.</source>
         <translation>无法写入帧：回放未连接。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>The master wrote %1 after the end of the log.</source>
         <translation>主站在日志结束后写入了 %1。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
         <translation>主站写入了 %1，而日志此处为 %2（日志帧 %3）：回放的试验与记录的不同。</translation>
     </message>
@@ -1772,46 +2192,57 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::CommissioningSession</name>
     <message>
+        <location filename="../core/session/CommissioningSession.cpp" line="+22"/>
         <source>unknown estimator law &apos;%1&apos; (known: %2)</source>
         <translation>未知估计律 &apos;%1&apos;（已知：%2）</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
         <translation>场景不适合 %1 模型：它需要 %2 个参数以及 %3 个关节的限值和增益</translation>
     </message>
     <message>
+        <location line="+56"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
     <message>
+        <location line="+31"/>
         <source>repetition %1 of %2: %3</source>
         <translation>第 %1 次重复（共 %2 次）：%3</translation>
     </message>
     <message>
+        <location line="+27"/>
         <source>the update produced non-finite parameters</source>
         <translation>更新产生了非有限参数</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>trial %1 not learned from: %2</source>
         <translation>未从试验 %1 学习：%2</translation>
     </message>
     <message>
+        <location line="+27"/>
         <source>there is no learned estimate to accept yet: run a trial first</source>
         <translation>尚无可接受的学习估计：请先运行一次试验</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>estimate %1 does not exist: choose 1 to %2</source>
         <translation>估计 %1 不存在：请选择 1 到 %2</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>nothing accepted: accept an estimate before applying it</source>
         <translation>未接受任何估计：请先接受估计再写入</translation>
     </message>
     <message>
+        <location line="+16"/>
         <source>nothing to revert: no parameter set has been applied in this session</source>
         <translation>无可撤销内容：本会话中尚未写入任何参数组</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>the robot held no parameter set before the first apply; there is nothing to restore</source>
         <translation>首次写入前机器人没有参数组；无可恢复内容</translation>
     </message>
@@ -1819,22 +2250,27 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::ConvergenceChart</name>
     <message>
+        <location filename="../ui/ConvergenceChart.cpp" line="+30"/>
         <source>Estimate k</source>
         <translation>估计 k</translation>
     </message>
     <message>
+        <location line="+43"/>
         <source>|error| [%]</source>
         <translation>|误差| [%]</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>change [%]</source>
         <translation>变化 [%]</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Convergence to the truth</source>
         <translation>向真值收敛</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Convergence</source>
         <translation>收敛</translation>
     </message>
@@ -1842,58 +2278,72 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::ConvergenceTableModel</name>
     <message>
+        <location filename="../ui/ConvergenceTableModel.cpp" line="+174"/>
         <source>all (rank %1)</source>
         <translation>全部（秩 %1）</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>⚠ kept: %1</source>
         <translation>⚠ 保留：%1</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>accepted</source>
         <translation>已接受</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>on robot</source>
         <translation>已写入机器人</translation>
     </message>
     <message>
+        <location line="+44"/>
         <source>%1 = %2 ± %3 (1 sigma)</source>
         <translation>%1 = %2 ± %3（1 sigma）</translation>
     </message>
     <message>
+        <location line="+23"/>
         <source>Estimate</source>
         <translation>估计</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Rel. change [%]</source>
         <translation>相对变化 [%]</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Max |e| [deg]</source>
         <translation>最大 |e| [度]</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>cond(WᵀW)</source>
         <translation>cond(WᵀW)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Observable</source>
         <translation>可观测</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>%1 vs truth [%]</source>
         <translation>%1 相对真值 [%]</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Trials run</source>
         <translation>已运行试验</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
@@ -1901,152 +2351,190 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::FileController</name>
     <message>
+        <location filename="../ui/FileController.cpp" line="+36"/>
         <source>Parameter file written: %1</source>
         <translation>参数文件已写入：%1</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Parameter file not written: %1</source>
         <translation>参数文件未写入：%1</translation>
     </message>
     <message>
+        <location line="+25"/>
         <source>Open scenario</source>
         <translation>打开场景</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Scenario files (*.json);;All files (*)</source>
         <translation>场景文件 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Save scenario</source>
         <translation>保存场景</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Scenario files (*.json)</source>
         <translation>场景文件 (*.json)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Export parameter file</source>
         <translation>导出参数文件</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Parameter files (*.json)</source>
         <translation>参数文件 (*.json)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Folder for the trial CSV files</source>
         <translation>试验 CSV 文件的文件夹</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Export plot</source>
         <translation>导出图表</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>PNG image (*.png);;SVG drawing (*.svg)</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>PNG image (*.png)</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Export commissioning report</source>
         <translation>导出调试报告</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
+        <location line="+59"/>
         <source>Scenario loaded: %1</source>
         <translation>场景已加载：%1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Scenario not loaded: %1</source>
         <translation>场景未加载：%1</translation>
     </message>
     <message>
+        <location line="+8"/>
+        <location line="+8"/>
         <source>Scenario not saved: %1</source>
         <translation>场景未保存：%1</translation>
     </message>
     <message>
+        <location line="-2"/>
         <source>Scenario saved: %1</source>
         <translation>场景已保存：%1</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>Parameter file not written: accept an estimate first</source>
         <translation>参数文件未写入：请先接受一个估计</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>No trial CSV written: no trial has run yet</source>
         <translation>未写入试验 CSV：尚未运行任何试验</translation>
     </message>
     <message numerus="yes">
+        <location line="-131"/>
         <source>%n trial CSV file(s) written to %1</source>
         <translation>
             <numerusform>已将 %n 个试验 CSV 文件写入 %1</numerusform>
         </translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Trial CSV not written: %1</source>
         <translation>试验 CSV 未写入：%1</translation>
     </message>
     <message>
+        <location line="+137"/>
         <source>Plot not written: this build has no SVG support (Qt6::Svg); export as PNG instead</source>
         <translation>图表未写入：此版本不支持 SVG（Qt6::Svg），请导出为 PNG</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>Tracking error</source>
         <translation>跟踪误差</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Plot written: %1</source>
         <translation>图表已写入：%1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Plot not written: %1</source>
         <translation>图表未写入：%1</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>Report not written: no session</source>
         <translation>报告未写入：没有会话</translation>
     </message>
     <message>
+        <location line="+16"/>
         <source>Path: from (%1, %2) m, %3 m at %4 deg</source>
         <translation>路径：从 (%1, %2) m 起，长 %3 m，方向 %4 度</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Torque limits: %1 N m, planning fraction %2</source>
         <translation>力矩限值：%1 N m，规划比例 %2</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>kp: %1 N m/rad; ki: %2</source>
         <translation>kp：%1 N m/rad；ki：%2</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>kd: %1 N m s/rad; lambda %2 rad/s</source>
         <translation>kd：%1 N m s/rad；lambda %2 rad/s</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Estimator: %1, rho %2 rad/s, %3 trials</source>
         <translation>估计器：%1，rho %2 rad/s，%3 次试验</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Initial parameters: %1</source>
         <translation>初始参数：%1</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>none (nothing applied in this session)</source>
         <translation>无（本次会话未写入）</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>%1 (estimate %2)</source>
         <translation>%1（估计 %2）</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Report written: %1</source>
         <translation>报告已写入：%1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Report not written: %1</source>
         <translation>报告未写入：%1</translation>
     </message>
@@ -2054,210 +2542,262 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::MainActions</name>
     <message>
+        <location filename="../ui/MainActions.cpp" line="+34"/>
         <source>&amp;Connect robot</source>
         <translation>连接机器人(&amp;C)</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Connect to the chosen robot and plan the first trial</source>
         <translation>连接所选机器人并规划第一次试验</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;New session</source>
         <translation>新建会话(&amp;N)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Start a new session with the settings of the form (the history is discarded)</source>
         <translation>以表单中的设置开始新会话（历史记录将被丢弃）</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Open scenario...</source>
         <translation>打开场景(&amp;O)...</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Load a scenario file into the form</source>
         <translation>将场景文件加载到表单</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Save scenario...</source>
         <translation>保存场景(&amp;S)...</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Save the form&apos;s scenario to a file</source>
         <translation>将表单中的场景保存到文件</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Export &amp;parameter file...</source>
         <translation>导出参数文件(&amp;P)...</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Write the accepted estimate as a parameter file (JSON and DCF)</source>
         <translation>将已接受的估计写为参数文件（JSON 和 DCF）</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Export trial &amp;CSV...</source>
         <translation>导出试验 CSV(&amp;C)...</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Write one CSV file per trial</source>
         <translation>每次试验写一个 CSV 文件</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Export p&amp;lot...</source>
         <translation>导出图表(&amp;L)...</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Save the tracking-error plot as PNG or SVG</source>
         <translation>将跟踪误差图保存为 PNG 或 SVG</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Save the tracking-error plot as PNG (SVG needs Qt6::Svg)</source>
         <translation>将跟踪误差图保存为 PNG（SVG 需要 Qt6::Svg）</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Export &amp;report (PDF)...</source>
         <translation>导出报告 (PDF)(&amp;R)...</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Write the one-page commissioning report</source>
         <translation>写出一页调试报告</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Quit learnid</source>
         <translation>退出 learnid</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Run trial</source>
         <translation>运行试验(&amp;R)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Run the next trial and learn from it</source>
         <translation>运行下一次试验并从中学习</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Run &amp;all</source>
         <translation>全部运行(&amp;A)</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+F5</source>
         <translation>Ctrl+F5</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Run the scenario&apos;s number of trials</source>
         <translation>运行场景规定次数的试验</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Shift+F5</source>
         <translation>Shift+F5</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Stop the running trial safely at the next sample</source>
         <translation>在下一个采样点安全停止当前试验</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>A&amp;ccept</source>
         <translation>接受(&amp;C)</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Accept the chosen estimate for apply</source>
         <translation>接受所选估计以便写入</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>A&amp;pply...</source>
         <translation>写入(&amp;P)...</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+Shift+A</source>
         <translation>Ctrl+Shift+A</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Write the accepted estimate to the robot controller</source>
         <translation>将已接受的估计写入机器人控制器</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Re&amp;vert</source>
         <translation>恢复(&amp;V)</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Ctrl+Shift+Z</source>
         <translation>Ctrl+Shift+Z</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Restore the parameter set the robot held before the last apply</source>
         <translation>恢复上次写入前机器人的参数组</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;About learnid</source>
         <translation>关于 learnid(&amp;A)</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Version and licence</source>
         <translation>版本和许可</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>About &amp;Qt</source>
         <translation>关于 &amp;Qt</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Qt version</source>
         <translation>Qt 版本</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>System language</source>
         <translation>系统语言</translation>
     </message>
     <message>
+        <location line="+19"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>&amp;Robot</source>
         <translation>机器人(&amp;R)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>&amp;Trials</source>
         <translation>试验(&amp;T)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>&amp;Parameters</source>
         <translation>参数(&amp;P)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
@@ -2265,98 +2805,122 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::MainWindow</name>
     <message>
+        <location filename="../ui/MainWindow.cpp" line="+78"/>
         <source>learnid – commissioning</source>
         <translation>learnid – 调试</translation>
     </message>
     <message>
+        <location line="+21"/>
         <source>Main</source>
         <translation>主工具栏</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>Pre-trial check</source>
         <translation>试验前检查</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Run</source>
         <translation>运行</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Accept / apply</source>
         <translation>接受 / 写入</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>Robot</source>
         <translation>机器人</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Scenario</source>
         <translation>场景</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Setup</source>
         <translation>设置</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Parameter convergence</source>
         <translation>参数收敛</translation>
     </message>
     <message>
+        <location line="+42"/>
         <source>The language changes when learnid is started again.</source>
         <translation>语言将在下次启动 learnid 时切换。</translation>
     </message>
     <message>
+        <location line="+27"/>
         <source>Dis&amp;connect robot</source>
         <translation>断开机器人(&amp;C)</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&amp;Connect robot</source>
         <translation>连接机器人(&amp;C)</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>Run disabled: %1</source>
         <translation>禁止运行：%1</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>no robot</source>
         <translation>无机器人</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Robot: %1 – %2</source>
         <translation>机器人：%1 – %2</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>busy</source>
         <translation>忙</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>idle</source>
         <translation>空闲</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>Cannot connect: %1</source>
         <translation>无法连接：%1</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>connecting to %1/%2…</source>
         <translation>正在连接 %1/%2…</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Correct the scenario first: %1</source>
         <translation>请先修正场景：%1</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>Apply cancelled; the robot is unchanged.</source>
         <translation>已取消写入；机器人未改变。</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>About learnid</source>
         <translation>关于 learnid</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>&lt;h3&gt;learnid %1&lt;/h3&gt;&lt;p&gt;Learning identification of robot dynamics: a commissioning tool.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;learnid %1&lt;/h3&gt;&lt;p&gt;机器人动力学的学习辨识：调试工具。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
     </message>
@@ -2364,30 +2928,37 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::MemoryCanDevice</name>
     <message>
+        <location filename="../core/can/MemoryCanDevice.cpp" line="+27"/>
         <source>The memory CAN device %1 is not attached to a bus.</source>
         <translation>内存 CAN 设备 %1 未连接到总线。</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>The memory CAN device %1 refused to connect.</source>
         <translation>内存 CAN 设备 %1 拒绝连接。</translation>
     </message>
     <message>
+        <location line="+16"/>
         <source>Cannot write a frame: the device %1 is not connected.</source>
         <translation>无法写入帧：设备 %1 未连接。</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Cannot write an invalid or CAN FD frame: %1.</source>
         <translation>无法写入无效帧或 CAN FD 帧：%1。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Only data and remote request frames can be written.</source>
         <translation>只能写入数据帧和远程请求帧。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>The memory CAN device %1 failed to write the frame.</source>
         <translation>内存 CAN 设备 %1 写入帧失败。</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>CAN error frame, error classes 0x%1.</source>
         <translation>CAN 错误帧，错误类别 0x%1。</translation>
     </message>
@@ -2395,6 +2966,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::MessageBar</name>
     <message>
+        <location filename="../ui/MessageBar.cpp" line="+20"/>
         <source>Dismiss</source>
         <translation>关闭</translation>
     </message>
@@ -2402,22 +2974,27 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::ObjectDictionary</name>
     <message>
+        <location filename="../core/can/ObjectDictionary.cpp" line="+18"/>
         <source>Object %1: %2 is not numeric; use addBytes().</source>
         <translation>对象 %1：%2 不是数值类型；请使用 addBytes()。</translation>
     </message>
     <message>
+        <location line="+11"/>
         <source>Object %1: %2 is numeric; use add().</source>
         <translation>对象 %1：%2 是数值类型；请使用 add()。</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>Object %1 is defined twice.</source>
         <translation>对象 %1 被定义了两次。</translation>
     </message>
     <message>
+        <location line="+87"/>
         <source>Object %1 holds %2 bytes, not %3.</source>
         <translation>对象 %1 包含 %2 个字节，而不是 %3 个。</translation>
     </message>
     <message>
+        <location line="+30"/>
         <source>Object %1 is not in the object dictionary.</source>
         <translation>对象 %1 不在对象字典中。</translation>
     </message>
@@ -2425,58 +3002,72 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+35"/>
         <source>Joint</source>
         <translation>关节</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Peak [N m]</source>
         <translation>峰值 [N m]</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Limit [N m]</source>
         <translation>限值 [N m]</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>Use</source>
         <translation>占用</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>Planned motion:</source>
         <translation>规划运动：</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Closed loop:</source>
         <translation>闭环：</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>Connect a robot to plan the first trial.</source>
         <translation>连接机器人以规划第一次试验。</translation>
     </message>
     <message>
+        <location line="+20"/>
         <source>Trial %1: check passed, the trial may run.</source>
         <translation>试验 %1：检查通过，可以运行。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Trial %1 refused: %2</source>
         <translation>试验 %1 被拒绝：%2</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>no plan</source>
         <translation>无规划</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>%1 s motion, %2 s with rests, %3 samples</source>
         <translation>运动 %1 s，含静止 %2 s，%3 个采样</translation>
     </message>
     <message>
+        <location line="+5"/>
         <source>estimate not physical (mass matrix not positive definite)</source>
         <translation>估计不符合物理（质量矩阵非正定）</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>stable: max |z| = %1, decay rate %2 1/s</source>
         <translation>稳定：max |z| = %1，衰减率 %2 1/s</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>UNSTABLE: max |z| = %1 at t = %2 s (growth %3 1/s)</source>
         <translation>不稳定：max |z| = %1，t = %2 s（增长 %3 1/s）</translation>
     </message>
@@ -2484,30 +3075,37 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::ReportWriter</name>
     <message>
+        <location filename="../ui/ReportWriter.cpp" line="+51"/>
         <source>learnid commissioning report</source>
         <translation>learnid 调试报告</translation>
     </message>
     <message>
+        <location line="+12"/>
         <source>Commissioning report</source>
         <translation>调试报告</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>Robot: %1</source>
         <translation>机器人：%1</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Scenario</source>
         <translation>场景</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>Parameter convergence</source>
         <translation>参数收敛</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>Applied set: %1</source>
         <translation>已写入参数组：%1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>learnid %1</source>
         <translation>learnid %1</translation>
     </message>
@@ -2515,74 +3113,93 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::RobotPanel</name>
     <message>
+        <location filename="../ui/RobotPanel.cpp" line="+22"/>
+        <location line="+81"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
+        <location line="-72"/>
         <source>Simulated (paper 2-link arm)</source>
         <translation>仿真（论文中的两连杆臂）</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>CAN (CANopen / CiA 402)</source>
         <translation>CAN（CANopen / CiA 402）</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>QCanBus plugin: socketcan for a CAN adapter on Linux; virtualcan to try learnid-robot-sim first</source>
         <translation>QCanBus 插件：Linux 下的 CAN 适配器用 socketcan；先试用 learnid-robot-sim 用 virtualcan</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>e.g. can0 (socketcan) or tcp://127.0.0.1:35468/can0 (virtualcan)</source>
         <translation>例如 can0（socketcan）或 tcp://127.0.0.1:35468/can0（virtualcan）</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>CANopen node id of joint 1, 2, ... (docs/can-protocol.md)</source>
         <translation>关节 1、2……的 CANopen 节点 ID（docs/can-protocol.md）</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source> ms</source>
         <translation> 毫秒</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>A trial stops when no SYNC arrives for this long</source>
         <translation>若超过此时间未收到 SYNC，试验即停止</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Plugin:</source>
         <translation>插件：</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Interface:</source>
         <translation>接口：</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Nodes:</source>
         <translation>节点：</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>SYNC timeout:</source>
         <translation>SYNC 超时：</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Robot:</source>
         <translation>机器人：</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>State:</source>
         <translation>状态：</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
+        <location line="+29"/>
         <source>CAN nodes: %1</source>
         <translation>CAN 节点：%1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>CAN interface: enter one, e.g. can0</source>
         <translation>CAN 接口：请输入一个，例如 can0</translation>
     </message>
     <message>
+        <location line="+16"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
@@ -2590,22 +3207,27 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::RunPanel</name>
     <message>
+        <location filename="../ui/RunPanel.cpp" line="+27"/>
         <source>%p %</source>
         <translation>%p %</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>%v of %m trials</source>
         <translation>%v / %m 次试验</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Trial:</source>
         <translation>试验：</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Series:</source>
         <translation>系列：</translation>
     </message>
     <message>
+        <location line="+22"/>
         <source>trial %1: %p %</source>
         <translation>试验 %1：%p %</translation>
     </message>
@@ -2613,114 +3235,142 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::ScenarioFields</name>
     <message>
+        <location filename="../ui/ScenarioFields.cpp" line="+82"/>
         <source>Start (x, y)</source>
         <translation>起点 (x, y)</translation>
     </message>
     <message>
+        <location line="+13"/>
         <source>Number of trials</source>
         <translation>试验次数</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Path (straight line)</source>
         <translation>路径（直线）</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Length</source>
         <translation>长度</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Rest before the motion</source>
         <translation>运动前静止时间</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Rest after the motion</source>
         <translation>运动后静止时间</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Torque limits</source>
         <translation>力矩限值</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Limit per joint</source>
         <translation>各关节限值</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Planning fraction</source>
         <translation>规划比例</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>lambda (derivative filter)</source>
         <translation>lambda（微分滤波）</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Estimator</source>
         <translation>估计器</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>rho (filter F)</source>
         <translation>rho（滤波器 F）</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Rank tolerance</source>
         <translation>秩容差</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Repetitions per trial</source>
         <translation>每次试验的重复次数</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Initial parameters</source>
         <translation>初始参数</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Safety</source>
         <translation>安全</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Abort at tracking error</source>
         <translation>跟踪误差中止阈值</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Required stability margin</source>
         <translation>所需稳定裕度</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Simulated robot</source>
         <translation>仿真机器人</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>True parameters</source>
         <translation>真实参数</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Encoder counts per revolution (0: ideal)</source>
         <translation>编码器每转计数（0：理想）</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Torque noise (fraction of limit)</source>
         <translation>力矩噪声（占限值的比例）</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Noise seed</source>
         <translation>噪声种子</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>RK4 steps per sample</source>
         <translation>每个采样的 RK4 步数</translation>
     </message>
     <message>
+        <location line="+10"/>
         <source>enter a value</source>
         <translation>请输入数值</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>&quot;%1&quot; is not a number</source>
         <translation>“%1”不是数字</translation>
     </message>
@@ -2728,42 +3378,52 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::ScenarioForm</name>
     <message>
+        <location filename="../ui/ScenarioForm.cpp" line="+48"/>
         <source>Scenario key %1</source>
         <translation>场景键 %1</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>values separated by commas</source>
         <translation>用逗号分隔的数值</translation>
     </message>
     <message>
+        <location line="+15"/>
         <source>paper-consistent</source>
         <translation>与论文一致</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>improved (zero-phase, WLS)</source>
         <translation>改进（零相位，WLS）</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>Estimator law</source>
         <translation>学习律</translation>
     </message>
     <message>
+        <location line="+33"/>
         <source>Initial parameters (%1)</source>
         <translation>初始参数（%1）</translation>
     </message>
     <message>
+        <location line="+33"/>
         <source>enter one number</source>
         <translation>请输入一个数</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>enter %1 numbers, got %2</source>
         <translation>请输入 %1 个数，实际 %2 个</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>enter a whole number</source>
         <translation>请输入整数</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>enter a whole number from %1 to %2</source>
         <translation>请输入 %1 到 %2 之间的整数</translation>
     </message>
@@ -2771,50 +3431,63 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::SdoClient</name>
     <message>
+        <location filename="../core/can/SdoClient.cpp" line="+132"/>
         <source>%1 is not a valid CANopen node id (1 to 127).</source>
         <translation>%1 不是有效的 CANopen 节点 ID（1 到 127）。</translation>
     </message>
     <message>
+        <location line="+7"/>
         <source>There are no data to write.</source>
         <translation>没有要写入的数据。</translation>
     </message>
     <message>
+        <location line="+34"/>
+        <location line="+23"/>
         <source>The answer names another object.</source>
         <translation>应答指向了另一个对象。</translation>
     </message>
     <message>
+        <location line="+21"/>
         <source>The node announced %1 bytes but sent %2%3.</source>
         <translation>节点声明 %1 个字节，但发送了 %2%3。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source> or more</source>
         <translation> 或更多</translation>
     </message>
     <message>
+        <location line="+55"/>
         <source>SDO read of %1 from node %2</source>
         <translation>从节点 %2 SDO 读取 %1</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>SDO write of %1 to node %2</source>
         <translation>向节点 %2 SDO 写入 %1</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source> (abort code %1)</source>
         <translation>（中止代码 %1）</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The %1 was refused by the node%2: %3</source>
         <translation>%1 被节点拒绝%2：%3</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The %1 was aborted%2: %3</source>
         <translation>%1 已中止%2：%3</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>The %1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
+        <location line="+34"/>
         <source>node %1 did not answer within %2 ms.</source>
         <translation>节点 %1 未在 %2 ms 内应答。</translation>
     </message>
@@ -2822,50 +3495,63 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::SessionPresenter</name>
     <message>
+        <location filename="../ui/SessionPresenter.cpp" line="+30"/>
         <source>connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <location line="+4"/>
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
+        <location line="-3"/>
         <source>Cannot start the session: %1</source>
         <translation>无法启动会话：%1</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Connect a robot to plan the first trial.</source>
         <translation>连接机器人以规划第一次试验。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Trial %1 running…</source>
         <translation>试验 %1 运行中…</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>Trial %1 %2: %3. Its data are kept.</source>
         <translation>试验 %1 %2：%3。其数据已保留。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Finished; %1 estimate(s) learned.</source>
         <translation>完成；已学习 %1 个估计。</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Stopped; see the message above.</source>
         <translation>已停止；请查看上方消息。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>Estimate %1 accepted.</source>
         <translation>已接受估计 %1。</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Parameters written to the robot and read back.</source>
         <translation>参数已写入机器人并回读确认。</translation>
     </message>
     <message>
+        <location line="+20"/>
         <source>nothing applied yet</source>
         <translation>尚未写入</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>%1 (estimate %2)</source>
         <translation>%1（估计 %2）</translation>
     </message>
@@ -2873,69 +3559,81 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::SessionWorker</name>
     <message>
+        <location filename="../core/service/SessionWorker.cpp" line="+33"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>未知机器人模型“%1”</translation>
     </message>
     <message>
+        <location line="+95"/>
         <source>no robot connected</source>
         <translation>未连接机器人</translation>
     </message>
     <message>
+        <location line="+78"/>
         <source>no session to export</source>
         <translation>没有可导出的会话</translation>
-    </message>
-    <message>
-        <source>cannot create the folder %1</source>
-        <translation>无法创建文件夹 %1</translation>
     </message>
 </context>
 <context>
     <name>learnid::TrackingErrorPlot</name>
     <message>
+        <location filename="../ui/TrackingErrorPlot.cpp" line="+37"/>
         <source>Auto-scale</source>
         <translation>自动缩放</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>Off: symmetric axis on a 0.02 deg grid, as in the paper</source>
         <translation>关闭：对称坐标轴，0.02 度网格，与论文相同</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Tracking error [deg]</source>
         <translation>跟踪误差 [度]</translation>
     </message>
     <message>
+        <location line="+13"/>
         <source>Show:</source>
         <translation>显示：</translation>
     </message>
     <message>
+        <location line="+24"/>
+        <location line="+19"/>
         <source>All trials (overlay)</source>
         <translation>所有试验（叠加）</translation>
     </message>
     <message>
+        <location line="-10"/>
         <source>Trial %1</source>
         <translation>试验 %1</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>Trial %1 (%2)</source>
         <translation>试验 %1（%2）</translation>
     </message>
     <message>
+        <location line="+92"/>
         <source>Tracking error, all trials (solid: joint 1, dashed: joint 2; darker: later)</source>
         <translation>跟踪误差，所有试验（实线：关节 1，虚线：关节 2；颜色越深越晚）</translation>
     </message>
     <message>
+        <location line="+3"/>
         <source>Tracking error, %1</source>
         <translation>跟踪误差，%1</translation>
     </message>
     <message>
+        <location line="+20"/>
         <source>trial %1, joint %2</source>
         <translation>试验 %1，关节 %2</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>joint %1</source>
         <translation>关节 %1</translation>
     </message>
@@ -2943,42 +3641,55 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::TrialStreamer</name>
     <message>
+        <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
+        <location line="+90"/>
+        <location line="+66"/>
+        <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
+        <location line="-143"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 未在 %2 ms 内达到运行使能：报告为 %3（状态字 0x%4）</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>no TPDO</source>
         <translation>无 TPDO</translation>
     </message>
     <message>
+        <location line="+75"/>
         <source>stopped by the operator %1</source>
         <translation>被操作员停止 %1</translation>
     </message>
     <message>
+        <location line="+24"/>
         <source>%1: %2 %3</source>
         <translation>%1：%2 %3</translation>
     </message>
     <message>
+        <location line="+17"/>
         <source>%1 left Operation enabled: it reports %2 (0x6041 = 0x%3) %4</source>
         <translation>%1 离开了运行使能：报告为 %2（0x6041 = 0x%3）%4</translation>
     </message>
     <message>
+        <location line="+9"/>
         <source>tracking error of %1 reached %2 deg (limit %3 deg) %4: quick stop</source>
         <translation>%1 的跟踪误差达到 %2 度（限值 %3 度）%4：快速停止</translation>
     </message>
     <message>
+        <location line="+66"/>
         <source>only %1 of %2 samples were recorded</source>
         <translation>%2 个采样点中只记录了 %1 个</translation>
     </message>
     <message>
+        <location line="+19"/>
         <source>an unknown node</source>
         <translation>未知节点</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>node %1 (joint %2)</source>
         <translation>节点 %1（关节 %2）</translation>
     </message>
@@ -2986,18 +3697,22 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::TrialWatchdog</name>
     <message>
+        <location filename="../core/canrobot/TrialWatchdog.cpp" line="+25"/>
         <source>no SYNC for %1 ms: the robot side stopped sending</source>
         <translation>%1 ms 内无 SYNC：机器人端已停止发送</translation>
     </message>
     <message>
+        <location line="+18"/>
         <source>heartbeat of %1 lost: none for %2 ms (timeout %3 ms)</source>
         <translation>%1 的心跳丢失：%2 ms 内没有心跳（超时 %3 ms）</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>%1 restarted on its own (boot-up message 0x%2)</source>
         <translation>%1 自行重启（boot-up 报文 0x%2）</translation>
     </message>
     <message>
+        <location line="+23"/>
         <source>node %1 (joint %2)</source>
         <translation>节点 %1（关节 %2）</translation>
     </message>
@@ -3005,38 +3720,51 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::robotsim::SimProcess</name>
     <message>
+        <location filename="../app/robot-sim/SimProcess.cpp" line="+43"/>
         <source>learnid-robot-sim: stopping (%1)</source>
         <translation>learnid-robot-sim：正在停止（%1）</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <location line="+88"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>无法用插件 %2 连接 CAN 接口 %1：%3</translation>
     </message>
     <message>
+        <location line="-61"/>
+        <location line="+16"/>
+        <location line="+75"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim：错误：%1</translation>
     </message>
     <message>
+        <location line="-84"/>
         <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
         <translation>learnid-robot-sim：错误：无法用插件 %2 创建 CAN 设备 %1：%3</translation>
     </message>
     <message>
+        <location line="+16"/>
+        <location line="+58"/>
         <source>learnid-robot-sim: error: --state: %1</source>
         <translation>learnid-robot-sim：错误：--state：%1</translation>
     </message>
     <message>
+        <location line="-51"/>
         <source>learnid-robot-sim: silent after %1 frames (injected fault)</source>
         <translation>learnid-robot-sim：%1 帧后静默（注入故障）</translation>
     </message>
     <message>
+        <location line="+21"/>
         <source>the CAN device %1 disconnected</source>
         <translation>CAN 设备 %1 已断开</translation>
     </message>
     <message>
+        <location line="+14"/>
         <source>learnid-robot-sim: CAN device error: %1</source>
         <translation>learnid-robot-sim：CAN 设备错误：%1</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>the CAN interface %1 with plugin %2 did not connect within %3 s</source>
         <translation>使用插件 %2 的 CAN 接口 %1 未在 %3 s 内连接</translation>
     </message>
@@ -3044,22 +3772,27 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>main</name>
     <message>
+        <location filename="../app/gui/main.cpp" line="+38"/>
         <source>Commissioning tool: learning identification of robot dynamics.</source>
         <translation>调试工具：机器人动力学的学习辨识。</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>Run a simulated session, save the window as PNG to &lt;file&gt; and exit.</source>
         <translation>运行一次仿真会话，将窗口保存为 PNG 到 &lt;file&gt; 后退出。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>User interface language, e.g. de or zh_CN (default: as chosen in the app, else the system&apos;s).</source>
         <translation>界面语言，例如 de 或 zh_CN（默认：应用中选择的语言，否则为系统语言）。</translation>
     </message>
     <message>
+        <location line="+4"/>
         <source>What --screenshot shows: %1 (default: main).</source>
         <translation>--screenshot 显示的内容：%1（默认：main）。</translation>
     </message>
     <message>
+        <location line="+8"/>
         <source>learnid: unknown --screenshot-view &apos;%1&apos;; known: %2</source>
         <translation>learnid：未知的 --screenshot-view &apos;%1&apos;；已知：%2</translation>
     </message>

@@ -10,11 +10,6 @@ namespace learnid::robotsim {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("learnid-robot-sim", text);
-}
-
 // Each returns an empty string or the error naming the option and its value.
 QString parseNodes(const QString &text, QList<int> *nodes)
 {
@@ -24,9 +19,15 @@ QString parseNodes(const QString &text, QList<int> *nodes)
         bool ok = false;
         const int id = part.trimmed().toInt(&ok);
         if (!ok || id < 1 || id > 127)
-            return tr("--nodes: '%1' is not a CANopen node id (1 to 127) in '%2'").arg(part, text);
+            return QCoreApplication::translate(
+                       "learnid-robot-sim",
+                       "--nodes: '%1' is not a CANopen node id (1 to 127) in '%2'")
+                .arg(part, text);
         if (seen.contains(id))
-            return tr("--nodes: node %1 is listed twice in '%2'").arg(id).arg(text);
+            return QCoreApplication::translate("learnid-robot-sim",
+                                               "--nodes: node %1 is listed twice in '%2'")
+                .arg(id)
+                .arg(text);
         seen.insert(id);
         nodes->append(id);
     }
@@ -48,8 +49,10 @@ QString parseRefusal(const QString &text, CanSimFaults *faults)
         sub = parts[1].trimmed().toUInt(&okSub, 0);
     }
     if (!okIndex || !okSub || index > 0xFFFF || sub > 0xFF)
-        return tr("--refuse-sdo: '%1' is not an object address INDEX:SUB such as 0x2200:1 "
-                  "(index in hex, sub-index 0 to 255)")
+        return QCoreApplication::translate(
+                   "learnid-robot-sim",
+                   "--refuse-sdo: '%1' is not an object address INDEX:SUB such as 0x2200:1 "
+                   "(index in hex, sub-index 0 to 255)")
             .arg(text);
     faults->refusedWrite = qMakePair(quint16(index), quint8(sub));
     return {};
@@ -60,7 +63,10 @@ QString parseInteger(const QString &option, const QString &text, qint64 min, qin
     bool ok = false;
     const qint64 v = text.trimmed().toLongLong(&ok);
     if (!ok || v < min)
-        return tr("--%1: '%2' is not a whole number of at least %3").arg(option, text).arg(min);
+        return QCoreApplication::translate("learnid-robot-sim",
+                                           "--%1: '%2' is not a whole number of at least %3")
+            .arg(option, text)
+            .arg(min);
     *out = v;
     return {};
 }
@@ -71,43 +77,71 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
 {
     SimCommandLine cl;
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        tr("The robot on a CAN bus: one simulated CiA 402 drive per joint, the SYNC producer and "
-           "the scenario's simulated arm. Prints \"ready\" once connected; runs until SIGINT, "
-           "SIGTERM or stdin closes."));
-    const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")},
-                                  tr("Show this help."));
-    const QCommandLineOption version(QStringLiteral("version"), tr("Show the version."));
-    const QCommandLineOption plugin(QStringLiteral("can-plugin"),
-                                    tr("QCanBus plugin, e.g. socketcan or virtualcan."),
-                                    tr("plugin"));
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "learnid-robot-sim",
+        "The robot on a CAN bus: one simulated CiA 402 drive per joint, the SYNC producer and "
+        "the scenario's simulated arm. Prints \"ready\" once connected; runs until SIGINT, "
+        "SIGTERM or stdin closes."));
+    const QCommandLineOption help(
+        QStringList{QStringLiteral("h"), QStringLiteral("help")},
+        QCoreApplication::translate("learnid-robot-sim", "Show this help."));
+    const QCommandLineOption version(
+        QStringLiteral("version"),
+        QCoreApplication::translate("learnid-robot-sim", "Show the version."));
+    const QCommandLineOption plugin(
+        QStringLiteral("can-plugin"),
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "QCanBus plugin, e.g. socketcan or virtualcan."),
+        QCoreApplication::translate("learnid-robot-sim", "plugin"));
     const QCommandLineOption interface(
         QStringLiteral("can-interface"),
-        tr("CAN interface, e.g. can0 or tcp://127.0.0.1:35468/can0."), tr("interface"));
-    const QCommandLineOption nodes(QStringLiteral("nodes"),
-                                   tr("Node ids of joint 1, 2, ... (default 1,2)."), tr("ids"));
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "CAN interface, e.g. can0 or tcp://127.0.0.1:35468/can0."),
+        QCoreApplication::translate("learnid-robot-sim", "interface"));
+    const QCommandLineOption nodes(
+        QStringLiteral("nodes"),
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "Node ids of joint 1, 2, ... (default 1,2)."),
+        QCoreApplication::translate("learnid-robot-sim", "ids"));
     const QCommandLineOption scenario(
-        QStringLiteral("scenario"), tr("Scenario file (default: the paper scenario)."), tr("file"));
-    const QCommandLineOption state(QStringLiteral("state"),
-                                   tr("JSON file of the nodes' stored parameters, written at start "
-                                      "and after every store."),
-                                   tr("file"));
-    const QCommandLineOption drop(QStringLiteral("drop-fraction"),
-                                  tr("Fault: lose this fraction (0 to 1) of the TPDOs."), tr("F"));
-    const QCommandLineOption silent(QStringLiteral("silent-after"),
-                                    tr("Fault: send nothing at all after N frames."), tr("N"));
-    const QCommandLineOption emcy(QStringLiteral("emcy-at-sample"),
-                                  tr("Fault: the first node faults with EMCY 0x8611 at the K-th "
-                                     "SYNC in Operation enabled."),
-                                  tr("K"));
-    const QCommandLineOption refuse(QStringLiteral("refuse-sdo"),
-                                    tr("Fault: SDO writes to this object abort with 0x08000020."),
-                                    tr("IDX:SUB"));
+        QStringLiteral("scenario"),
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "Scenario file (default: the paper scenario)."),
+        QCoreApplication::translate("learnid-robot-sim", "file"));
+    const QCommandLineOption state(
+        QStringLiteral("state"),
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "JSON file of the nodes' stored parameters, written at start "
+                                    "and after every store."),
+        QCoreApplication::translate("learnid-robot-sim", "file"));
+    const QCommandLineOption drop(
+        QStringLiteral("drop-fraction"),
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "Fault: lose this fraction (0 to 1) of the TPDOs."),
+        QCoreApplication::translate("learnid-robot-sim", "F"));
+    const QCommandLineOption silent(
+        QStringLiteral("silent-after"),
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "Fault: send nothing at all after N frames."),
+        QCoreApplication::translate("learnid-robot-sim", "N"));
+    const QCommandLineOption emcy(
+        QStringLiteral("emcy-at-sample"),
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "Fault: the first node faults with EMCY 0x8611 at the K-th "
+                                    "SYNC in Operation enabled."),
+        QCoreApplication::translate("learnid-robot-sim", "K"));
+    const QCommandLineOption refuse(
+        QStringLiteral("refuse-sdo"),
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "Fault: SDO writes to this object abort with 0x08000020."),
+        QCoreApplication::translate("learnid-robot-sim", "IDX:SUB"));
     const QCommandLineOption setPointTimeout(
         QStringLiteral("setpoint-timeout"),
-        tr("SYNC periods in Operation enabled without a set-point before a drive faults with "
-           "EMCY 0x8100 (default 3; raise it on a heavily loaded machine)."),
-        tr("N"));
+        QCoreApplication::translate(
+            "learnid-robot-sim",
+            "SYNC periods in Operation enabled without a set-point before a drive faults with "
+            "EMCY 0x8100 (default 3; raise it on a heavily loaded machine)."),
+        QCoreApplication::translate("learnid-robot-sim", "N"));
     parser.addOptions({help, version, plugin, interface, nodes, scenario, state, drop, silent,
                        emcy, refuse, setPointTimeout});
     cl.usage = parser.helpText();
@@ -125,7 +159,8 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
         return cl;
     }
     if (!parser.positionalArguments().isEmpty()) {
-        cl.error = tr("unexpected argument '%1'").arg(parser.positionalArguments().first());
+        cl.error = QCoreApplication::translate("learnid-robot-sim", "unexpected argument '%1'")
+                       .arg(parser.positionalArguments().first());
         return cl;
     }
     SimOptions &o = cl.options;
@@ -133,21 +168,26 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
     o.interface = parser.value(interface);
     QString error;
     if (o.plugin.isEmpty())
-        error = tr("--can-plugin is required (available: %1)")
+        error = QCoreApplication::translate("learnid-robot-sim",
+                                            "--can-plugin is required (available: %1)")
                     .arg(QCanBus::instance()->plugins().join(QStringLiteral(", ")));
     else if (!QCanBus::instance()->plugins().contains(o.plugin))
-        error = tr("--can-plugin: unknown plugin '%1' (available: %2)")
+        error = QCoreApplication::translate("learnid-robot-sim",
+                                            "--can-plugin: unknown plugin '%1' (available: %2)")
                     .arg(o.plugin, QCanBus::instance()->plugins().join(QStringLiteral(", ")));
     else if (o.interface.isEmpty())
-        error = tr("--can-interface is required, e.g. can0 or tcp://127.0.0.1:35468/can0");
+        error = QCoreApplication::translate(
+            "learnid-robot-sim",
+            "--can-interface is required, e.g. can0 or tcp://127.0.0.1:35468/can0");
     if (error.isEmpty() && parser.isSet(nodes))
         error = parseNodes(parser.value(nodes), &o.nodes);
     if (error.isEmpty() && parser.isSet(drop)) {
         bool ok = false;
         const double f = parser.value(drop).trimmed().toDouble(&ok);
         if (!ok || !(f >= 0.0 && f <= 1.0))
-            error =
-                tr("--drop-fraction: '%1' is not a fraction from 0 to 1").arg(parser.value(drop));
+            error = QCoreApplication::translate(
+                        "learnid-robot-sim", "--drop-fraction: '%1' is not a fraction from 0 to 1")
+                        .arg(parser.value(drop));
         o.faults.dropFraction = f;
     }
     if (error.isEmpty() && parser.isSet(silent))
@@ -157,15 +197,19 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
         qint64 k = 0;
         error = parseInteger(QStringLiteral("emcy-at-sample"), parser.value(emcy), 1, &k);
         if (error.isEmpty() && k > std::numeric_limits<int>::max())
-            error = tr("--emcy-at-sample: '%1' is too large").arg(parser.value(emcy));
+            error = QCoreApplication::translate("learnid-robot-sim",
+                                                "--emcy-at-sample: '%1' is too large")
+                        .arg(parser.value(emcy));
         o.faults.emcyAtSample = int(k);
     }
     if (error.isEmpty() && parser.isSet(setPointTimeout)) {
         qint64 n = 0;
         error = parseInteger(QStringLiteral("setpoint-timeout"), parser.value(setPointTimeout), 1, &n);
         if (error.isEmpty() && n > 100000)
-            error = tr("--setpoint-timeout: '%1' is too large (at most 100000)")
-                        .arg(parser.value(setPointTimeout));
+            error =
+                QCoreApplication::translate(
+                    "learnid-robot-sim", "--setpoint-timeout: '%1' is too large (at most 100000)")
+                    .arg(parser.value(setPointTimeout));
         o.setPointTimeoutSyncs = int(n);
     }
     if (error.isEmpty() && parser.isSet(refuse))

@@ -8,16 +8,16 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("BusLoad", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(BusLoad)
+};
 
 } // namespace
 
 QString BusLoad::text(double bitrate) const
 {
-    return tr("%1 % of %2 kbit/s (%3 frames/s)")
+    return Text::tr("%1 % of %2 kbit/s (%3 frames/s)")
         .arg(percent, 0, 'f', 1)
         .arg(bitrate / 1000.0, 0, 'f', 0)
         .arg(framesPerSecond, 0, 'f', 0);
@@ -37,8 +37,9 @@ BusLoad estimateBusLoad(const BusLoadConfig &config)
     if (config.joints < 0 || config.framesPerJointPerSample < 0 || !(config.sampleRate > 0) ||
         !(config.bitrate > 0) || config.payloadBytes < 0 || config.payloadBytes > 8 ||
         config.syncPayloadBytes < 0 || config.syncPayloadBytes > 8) {
-        throw Error(tr("Bus load: joints and frames must not be negative, rates must be positive "
-                       "and a frame carries 0 to 8 bytes."));
+        throw Error(
+            Text::tr("Bus load: joints and frames must not be negative, rates must be positive "
+                     "and a frame carries 0 to 8 bytes."));
     }
     const int pdoFrames = config.joints * config.framesPerJointPerSample;
     const int framesPerSample = pdoFrames + (config.sync ? 1 : 0);
@@ -54,7 +55,7 @@ BusLoad estimateBusLoad(const BusLoadConfig &config)
 BusLoad measureBusLoad(const QList<QCanBusFrame> &frames, double seconds, double bitrate)
 {
     if (!(seconds > 0) || !(bitrate > 0))
-        throw Error(tr("Bus load: the time window and the bitrate must be positive."));
+        throw Error(Text::tr("Bus load: the time window and the bitrate must be positive."));
     double bits = 0;
     for (const QCanBusFrame &f : frames) {
         const int dlc =

@@ -12,10 +12,10 @@ namespace learnid::canopen {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("CanOpen", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(CanOpen)
+};
 
 struct TypeInfo
 {
@@ -47,7 +47,8 @@ const TypeInfo &info(DataType type)
         if (t.type == type)
             return t;
     }
-    throw Error(tr("Unknown CANopen data type 0x%1.").arg(quint16(type), 4, 16, QLatin1Char('0')));
+    throw Error(
+        Text::tr("Unknown CANopen data type 0x%1.").arg(quint16(type), 4, 16, QLatin1Char('0')));
 }
 
 } // namespace
@@ -73,7 +74,7 @@ DataType dataTypeFromName(const QString &name)
         if (name == QLatin1String(t.name))
             return t.type;
     }
-    throw Error(tr("Unknown CANopen data type \"%1\".").arg(name));
+    throw Error(Text::tr("Unknown CANopen data type \"%1\".").arg(name));
 }
 
 bool fitsType(DataType type, double value)
@@ -90,14 +91,14 @@ QByteArray encodeValue(DataType type, double value)
 {
     const TypeInfo &t = info(type);
     if (t.size == 0)
-        throw Error(tr("%1 is not a numeric type.").arg(dataTypeName(type)));
+        throw Error(Text::tr("%1 is not a numeric type.").arg(dataTypeName(type)));
     if (!fitsType(type, value)) {
-        throw Error(tr("The value %1 does not fit the type %2 (range %3 to %4%5).")
+        throw Error(Text::tr("The value %1 does not fit the type %2 (range %3 to %4%5).")
                         .arg(value)
                         .arg(dataTypeName(type))
                         .arg(t.min)
                         .arg(t.max)
-                        .arg(type == DataType::Real32 ? QString() : tr(", integers only")));
+                        .arg(type == DataType::Real32 ? QString() : Text::tr(", integers only")));
     }
     QByteArray bytes(t.size, '\0');
     switch (type) {
@@ -130,9 +131,9 @@ double decodeValue(DataType type, const QByteArray &bytes, int offset)
 {
     const TypeInfo &t = info(type);
     if (t.size == 0)
-        throw Error(tr("%1 is not a numeric type.").arg(dataTypeName(type)));
+        throw Error(Text::tr("%1 is not a numeric type.").arg(dataTypeName(type)));
     if (offset < 0 || offset + t.size > bytes.size()) {
-        throw Error(tr("%1 needs %2 bytes at offset %3, but only %4 bytes are present.")
+        throw Error(Text::tr("%1 needs %2 bytes at offset %3, but only %4 bytes are present.")
                         .arg(dataTypeName(type))
                         .arg(t.size)
                         .arg(offset)

@@ -11,10 +11,10 @@ namespace learnid::candump {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("CandumpLog", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(CandumpLog)
+};
 
 constexpr quint32 errorFlag = 0x20000000u; // CAN_ERR_FLAG of linux/can.h
 constexpr quint32 extendedMask = 0x1FFFFFFFu;
@@ -49,8 +49,8 @@ bool parseTimestamp(const QString &field, QCanBusFrame::TimeStamp *stamp, QStrin
 {
     if (field.size() < 3 || !field.startsWith(QLatin1Char('(')) ||
         !field.endsWith(QLatin1Char(')'))) {
-        *reason =
-            tr("the line must start with a timestamp in parentheses, e.g. (1700000000.123456)");
+        *reason = Text::tr(
+            "the line must start with a timestamp in parentheses, e.g. (1700000000.123456)");
         return false;
     }
     const QStringList parts = field.mid(1, field.size() - 2).split(QLatin1Char('.'));
@@ -59,7 +59,8 @@ bool parseTimestamp(const QString &field, QCanBusFrame::TimeStamp *stamp, QStrin
     const qint64 seconds = parts.value(0).toLongLong(&okSeconds);
     if (parts.size() != 2 || !allDigits(parts[0]) || !okSeconds || !allDigits(fraction) ||
         fraction.size() > 9) {
-        *reason = tr("\"%1\" is not a timestamp of the form (seconds.microseconds)").arg(field);
+        *reason =
+            Text::tr("\"%1\" is not a timestamp of the form (seconds.microseconds)").arg(field);
         return false;
     }
     const qint64 micro = fraction.left(6).leftJustified(6, QLatin1Char('0')).toLongLong();
@@ -71,17 +72,17 @@ bool parseFrame(const QString &text, QCanBusFrame *frame, QString *reason)
 {
     const qsizetype hash = text.indexOf(QLatin1Char('#'));
     if (hash < 0) {
-        *reason = tr("\"%1\" has no '#' between identifier and data").arg(text);
+        *reason = Text::tr("\"%1\" has no '#' between identifier and data").arg(text);
         return false;
     }
     const QString idText = text.left(hash);
     QString data = text.mid(hash + 1);
     if (data.startsWith(QLatin1Char('#'))) {
-        *reason = tr("CAN FD frames are not supported");
+        *reason = Text::tr("CAN FD frames are not supported");
         return false;
     }
     if ((idText.size() != 3 && idText.size() != 8) || !isHex(idText)) {
-        *reason = tr("\"%1\" is not an identifier of 3 (standard) or 8 (extended) hex digits")
+        *reason = Text::tr("\"%1\" is not an identifier of 3 (standard) or 8 (extended) hex digits")
                       .arg(idText);
         return false;
     }
@@ -89,11 +90,11 @@ bool parseFrame(const QString &text, QCanBusFrame *frame, QString *reason)
     const bool extended = idText.size() == 8;
     const bool error = extended && (id & errorFlag);
     if (!extended && id > 0x7FF) {
-        *reason = tr("the standard identifier %1 exceeds 7FF").arg(idText);
+        *reason = Text::tr("the standard identifier %1 exceeds 7FF").arg(idText);
         return false;
     }
     if (extended && !error && id > extendedMask) {
-        *reason = tr("the extended identifier %1 exceeds 1FFFFFFF").arg(idText);
+        *reason = Text::tr("the extended identifier %1 exceeds 1FFFFFFF").arg(idText);
         return false;
     }
     QCanBusFrame f;
@@ -102,7 +103,8 @@ bool parseFrame(const QString &text, QCanBusFrame *frame, QString *reason)
         if (length.size() > 1 || (length.size() == 1 &&
                                   (length[0] < QLatin1Char('0') || length[0] > QLatin1Char('8')))) {
             *reason =
-                tr("\"%1\" is not a remote request (R, optionally with a length 0 to 8)").arg(data);
+                Text::tr("\"%1\" is not a remote request (R, optionally with a length 0 to 8)")
+                    .arg(data);
             return false;
         }
         f.setFrameType(QCanBusFrame::RemoteRequestFrame);
@@ -110,12 +112,13 @@ bool parseFrame(const QString &text, QCanBusFrame *frame, QString *reason)
     } else {
         data.remove(QLatin1Char('.')); // can-utils accepts dots between data bytes
         if (data.size() % 2 != 0 || (!data.isEmpty() && !isHex(data))) {
-            *reason = tr("\"%1\" is not data of whole bytes in hex digits").arg(text.mid(hash + 1));
+            *reason =
+                Text::tr("\"%1\" is not data of whole bytes in hex digits").arg(text.mid(hash + 1));
             return false;
         }
         if (data.size() > 16) {
-            *reason =
-                tr("%1 data bytes; a classic CAN frame carries at most 8").arg(data.size() / 2);
+            *reason = Text::tr("%1 data bytes; a classic CAN frame carries at most 8")
+                          .arg(data.size() / 2);
             return false;
         }
         f.setFrameType(error ? QCanBusFrame::ErrorFrame : QCanBusFrame::DataFrame);
@@ -165,10 +168,11 @@ bool parseLine(const QString &line, CandumpEntry *entry, QString *reason)
     const bool direction =
         fields.size() == 4 && (fields[3] == QLatin1String("R") || fields[3] == QLatin1String("T"));
     if (fields.size() != 3 && !direction) {
-        *reason = fields.size() < 3
-                      ? tr("expected \"(timestamp) interface id#data\", found %1 fields")
-                            .arg(fields.size())
-                      : tr("unexpected text after the frame: \"%1\"").arg(fields.mid(3).join(' '));
+        *reason =
+            fields.size() < 3
+                ? Text::tr("expected \"(timestamp) interface id#data\", found %1 fields")
+                      .arg(fields.size())
+                : Text::tr("unexpected text after the frame: \"%1\"").arg(fields.mid(3).join(' '));
         return false;
     }
     QCanBusFrame::TimeStamp stamp;
@@ -204,7 +208,8 @@ QList<CandumpEntry> readFile(const QString &fileName)
 {
     QFile file(fileName);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
-        throw Error(tr("Cannot open the candump log %1: %2").arg(fileName, file.errorString()));
+        throw Error(
+            Text::tr("Cannot open the candump log %1: %2").arg(fileName, file.errorString()));
     return read(file, fileName);
 }
 
@@ -215,14 +220,15 @@ void write(QIODevice &device, const QList<CandumpEntry> &entries)
         out << formatLine(e.frame, e.interface) << '\n';
     out.flush();
     if (out.status() != QTextStream::Ok)
-        throw Error(tr("Writing the candump log failed: %1").arg(device.errorString()));
+        throw Error(Text::tr("Writing the candump log failed: %1").arg(device.errorString()));
 }
 
 void writeFile(const QString &fileName, const QList<CandumpEntry> &entries)
 {
     QFile file(fileName);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text | QIODevice::Truncate))
-        throw Error(tr("Cannot write the candump log %1: %2").arg(fileName, file.errorString()));
+        throw Error(
+            Text::tr("Cannot write the candump log %1: %2").arg(fileName, file.errorString()));
     write(file, entries);
 }
 

@@ -11,10 +11,10 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("EmcyConsumer", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(EmcyConsumer)
+};
 
 struct CodeText
 {
@@ -102,9 +102,9 @@ QString emcyErrorCodeText(quint16 errorCode)
     for (const quint16 code :
          {errorCode, quint16(errorCode & 0xFF00), quint16(errorCode & 0xF000)}) {
         if (const char *text = lookup(code); text && (code != 0 || errorCode == 0))
-            return tr(text);
+            return Text::tr(text);
     }
-    return tr("unknown error code");
+    return Text::tr("unknown error code");
 }
 
 QString errorRegisterText(quint8 errorRegister)
@@ -112,14 +112,14 @@ QString errorRegisterText(quint8 errorRegister)
     QStringList names;
     for (int bit = 0; bit < 8; ++bit) {
         if (errorRegister & (1u << bit))
-            names.append(tr(registerBits[bit]));
+            names.append(Text::tr(registerBits[bit]));
     }
-    return names.isEmpty() ? tr("no error") : names.join(QLatin1String(", "));
+    return names.isEmpty() ? Text::tr("no error") : names.join(QLatin1String(", "));
 }
 
 QString EmcyMessage::text() const
 {
-    return tr("Node %1 emergency %2: %3; error register %4: %5; manufacturer data %6")
+    return Text::tr("Node %1 emergency %2: %3; error register %4: %5; manufacturer data %6")
         .arg(node)
         .arg(hex(errorCode, 4), emcyErrorCodeText(errorCode), hex(errorRegister, 2),
              errorRegisterText(errorRegister), canopen::hexBytes(manufacturerData));

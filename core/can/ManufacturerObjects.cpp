@@ -14,10 +14,10 @@ using canopen::DataType;
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("ManufacturerObjects", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(ManufacturerObjects)
+};
 
 } // namespace
 
@@ -96,23 +96,24 @@ PdoMapping trialTpdoMapping()
 SdoWriteSequence parameterWriteSequence(const QList<int> &nodes, const Eigen::VectorXd &phi)
 {
     if (nodes.isEmpty())
-        throw Error(tr("No node to write the parameters to."));
+        throw Error(Text::tr("No node to write the parameters to."));
     if (phi.size() == 0 || phi.size() > maxIdentifiedParameters) {
-        throw Error(tr("A parameter set holds 1 to %1 parameters, not %2.")
+        throw Error(Text::tr("A parameter set holds 1 to %1 parameters, not %2.")
                         .arg(maxIdentifiedParameters)
                         .arg(phi.size()));
     }
     QSet<int> seen;
     for (const int node : nodes) {
         if (!canopen::isValidNodeId(node))
-            throw Error(tr("%1 is not a valid CANopen node id (1 to 127).").arg(node));
+            throw Error(Text::tr("%1 is not a valid CANopen node id (1 to 127).").arg(node));
         if (seen.contains(node))
-            throw Error(tr("Node %1 is listed twice.").arg(node));
+            throw Error(Text::tr("Node %1 is listed twice.").arg(node));
         seen.insert(node);
     }
     for (Eigen::Index i = 0; i < phi.size(); ++i) {
         if (!canopen::fitsType(DataType::Real32, phi[i])) {
-            throw Error(tr("Parameter %1 (%2) cannot be sent as REAL32.").arg(i + 1).arg(phi[i]));
+            throw Error(
+                Text::tr("Parameter %1 (%2) cannot be sent as REAL32.").arg(i + 1).arg(phi[i]));
         }
     }
     SdoWriteSequence writes;

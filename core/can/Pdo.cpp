@@ -10,10 +10,10 @@ using canopen::DataType;
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("Pdo", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(Pdo)
+};
 
 constexpr int maxPdoBits = 64;
 constexpr quint32 pdoInvalidBit = 0x80000000u;
@@ -21,7 +21,7 @@ constexpr quint32 pdoInvalidBit = 0x80000000u;
 void checkPdoNumber(int pdo)
 {
     if (pdo < 1 || pdo > 4)
-        throw Error(tr("PDO %1 does not exist; learnid uses PDO 1 to 4.").arg(pdo));
+        throw Error(Text::tr("PDO %1 does not exist; learnid uses PDO 1 to 4.").arg(pdo));
 }
 
 } // namespace
@@ -47,13 +47,13 @@ QString PdoMapping::validationError(const QList<PdoMappingEntry> &entries)
     int bits = 0;
     for (const PdoMappingEntry &e : entries) {
         if (!canopen::isNumeric(e.type)) {
-            return tr("Object %1 of type %2 cannot be mapped into a PDO.")
+            return Text::tr("Object %1 of type %2 cannot be mapped into a PDO.")
                 .arg(canopen::objectAddress(e.index, e.subIndex), canopen::dataTypeName(e.type));
         }
         bits += e.bitLength();
     }
     if (bits > maxPdoBits) {
-        return tr("The mapped objects need %1 bits; a PDO holds at most %2 bits (8 bytes).")
+        return Text::tr("The mapped objects need %1 bits; a PDO holds at most %2 bits (8 bytes).")
             .arg(bits)
             .arg(maxPdoBits);
     }
@@ -63,7 +63,7 @@ QString PdoMapping::validationError(const QList<PdoMappingEntry> &entries)
 QByteArray PdoMapping::pack(const QList<double> &values) const
 {
     if (values.size() != m_entries.size()) {
-        throw Error(tr("The PDO maps %1 objects but %2 values were given.")
+        throw Error(Text::tr("The PDO maps %1 objects but %2 values were given.")
                         .arg(m_entries.size())
                         .arg(values.size()));
     }
@@ -74,7 +74,7 @@ QByteArray PdoMapping::pack(const QList<double> &values) const
         try {
             payload.append(canopen::encodeValue(e.type, values[i]));
         } catch (const Error &error) {
-            throw Error(tr("PDO object %1: %2")
+            throw Error(Text::tr("PDO object %1: %2")
                             .arg(canopen::objectAddress(e.index, e.subIndex), error.message()));
         }
     }
@@ -84,7 +84,7 @@ QByteArray PdoMapping::pack(const QList<double> &values) const
 QList<double> PdoMapping::unpack(const QByteArray &payload) const
 {
     if (payload.size() < byteLength()) {
-        throw Error(tr("The PDO carries %1 bytes; its mapping needs %2.")
+        throw Error(Text::tr("The PDO carries %1 bytes; its mapping needs %2.")
                         .arg(payload.size())
                         .arg(byteLength()));
     }

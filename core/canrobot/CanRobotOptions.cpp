@@ -13,10 +13,10 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("CanRobot", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(CanRobot)
+};
 
 } // namespace
 
@@ -26,9 +26,9 @@ CanDeviceFactory qcanbusDeviceFactory(const QString &plugin, const QString &inte
         QString reason;
         QCanBusDevice *device = QCanBus::instance()->createDevice(plugin, interface, &reason);
         if (!device && error) {
-            *error = tr("cannot create the CAN device %1/%2: %3")
+            *error = Text::tr("cannot create the CAN device %1/%2: %3")
                          .arg(plugin, interface,
-                              reason.isEmpty() ? tr("unknown plugin or interface") : reason);
+                              reason.isEmpty() ? Text::tr("unknown plugin or interface") : reason);
         }
         return device;
     };
@@ -46,24 +46,24 @@ BusLoad configuredBusLoad(const CanRobotOptions &options)
 QString canRobotOptionsError(const CanRobotOptions &options)
 {
     if (options.nodes.isEmpty())
-        return tr("no CAN node given: one node per joint is needed");
+        return Text::tr("no CAN node given: one node per joint is needed");
     QSet<int> seen;
     for (const int node : options.nodes) {
         if (!canopen::isValidNodeId(node))
-            return tr("%1 is not a valid CANopen node id (1 to 127)").arg(node);
+            return Text::tr("%1 is not a valid CANopen node id (1 to 127)").arg(node);
         if (seen.contains(node))
-            return tr("node %1 is listed twice").arg(node);
+            return Text::tr("node %1 is listed twice").arg(node);
         seen.insert(node);
     }
     if (options.connectTimeoutMs <= 0 || options.sdoTimeoutMs <= 0 ||
         options.heartbeatPeriodMs <= 0 || options.heartbeatPeriodMs > 65535 ||
         options.heartbeatTimeoutFactor < 1 || options.enableTimeoutMs <= 0 ||
         options.syncGapPeriods < 2 || !(options.syncPeriod > 0) || !(options.bitrate > 0))
-        return tr("CAN timing options must be positive (heartbeat period at most 65535 ms)");
+        return Text::tr("CAN timing options must be positive (heartbeat period at most 65535 ms)");
     const BusLoad load = configuredBusLoad(options);
     if (load.percent > options.maxBusLoadPercent) {
-        return tr("the configuration of %1 nodes at %2 Hz needs %3 of the bus, more than the "
-                  "%4 % the tool allows: use fewer nodes per bus or a longer SYNC period")
+        return Text::tr("the configuration of %1 nodes at %2 Hz needs %3 of the bus, more than the "
+                        "%4 % the tool allows: use fewer nodes per bus or a longer SYNC period")
             .arg(options.nodes.size())
             .arg(1.0 / options.syncPeriod, 0, 'f', 0)
             .arg(load.text(options.bitrate))
@@ -86,12 +86,12 @@ QList<int> parseNodeList(const QString &text, QString *error)
         const int node = part.trimmed().toInt(&ok);
         if (!ok || !canopen::isValidNodeId(node)) {
             if (error)
-                *error = tr("'%1' is not a CANopen node id (1 to 127)").arg(part.trimmed());
+                *error = Text::tr("'%1' is not a CANopen node id (1 to 127)").arg(part.trimmed());
             return {};
         }
         if (nodes.contains(node)) {
             if (error)
-                *error = tr("node %1 is listed twice").arg(node);
+                *error = Text::tr("node %1 is listed twice").arg(node);
             return {};
         }
         nodes.append(node);

@@ -14,10 +14,10 @@ using canopen::DataType;
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("CanRobot", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(CanRobot)
+};
 
 constexpr quint16 positionEncoderResolution = 0x608F;
 constexpr quint16 motorRatedTorque = 0x6076;
@@ -27,13 +27,13 @@ SdoStep readPositive(quint8 node, quint16 index, quint8 sub, quint32 *target)
 {
     return SdoStep::read(node, index, sub, [node, index, sub, target](const QByteArray &data) {
         if (data.size() < 4)
-            return tr("node %1, object %2: the answer holds %3 bytes, UNSIGNED32 needs 4")
+            return Text::tr("node %1, object %2: the answer holds %3 bytes, UNSIGNED32 needs 4")
                 .arg(node)
                 .arg(canopen::objectAddress(index, sub))
                 .arg(data.size());
         const quint32 v = canopen::readU32(data, 0);
         if (v == 0)
-            return tr("node %1, object %2 is 0: the drive's units are unusable")
+            return Text::tr("node %1, object %2 is 0: the drive's units are unusable")
                 .arg(node)
                 .arg(canopen::objectAddress(index, sub));
         *target = v;
@@ -50,14 +50,15 @@ QList<SdoStep> trialConfigurationSteps(const QList<int> &nodes, const TrialPlan 
     const int n = int(nodes.size());
     const ControllerSettings &c = plan.controller;
     if (c.kp.size() != n || c.ki.size() != n || c.kd.size() != n || plan.torqueLimit.size() != n)
-        throw Error(tr("the plan is for %1 joints but %2 CAN nodes are configured")
+        throw Error(Text::tr("the plan is for %1 joints but %2 CAN nodes are configured")
                         .arg(c.kp.size())
                         .arg(n));
     const double periodMs = c.samplePeriod * 1000.0;
     const double wholeMs = std::round(periodMs);
     if (wholeMs < 1 || wholeMs > 255 || std::abs(periodMs - wholeMs) > 1e-9)
-        throw Error(tr("the sample period %1 ms cannot be sent to 0x60C2 (whole ms, 1 to 255)")
-                        .arg(periodMs));
+        throw Error(
+            Text::tr("the sample period %1 ms cannot be sent to 0x60C2 (whole ms, 1 to 255)")
+                .arg(periodMs));
     result->scaling = QVector<DriveScaling>(n);
 
     QList<SdoStep> steps;
@@ -90,8 +91,9 @@ QList<SdoStep> trialConfigurationSteps(const QList<int> &nodes, const TrialPlan 
             node, objects::communicationCyclePeriod, 0, [node, periodUs](const QByteArray &d) {
                 const double us = d.size() >= 4 ? double(canopen::readU32(d, 0)) : -1.0;
                 if (std::abs(us - periodUs) > 0.5)
-                    return tr("node %1, object 0x1006:00: the robot's SYNC period is %2 us, the "
-                              "plan needs %3 us")
+                    return Text::tr(
+                               "node %1, object 0x1006:00: the robot's SYNC period is %2 us, the "
+                               "plan needs %3 us")
                         .arg(node)
                         .arg(us)
                         .arg(periodUs);

@@ -8,10 +8,10 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("CanRobot", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(CanRobot)
+};
 
 constexpr int tpdoBytes = 8;
 constexpr int syncCounterOverflow = 240; // 0x1019
@@ -37,11 +37,12 @@ QString TrialCollector::beginCycle(quint8 counter, int planSample, bool requireC
     if (requireComplete && m_syncs > 0) {
         for (int j = 0; j < m_received.size() && error.isEmpty(); ++j) {
             if (!m_received[j]) {
-                error = tr("%1: the TPDO answering SYNC %2 (counter %3) did not arrive before "
-                           "the next SYNC: sample missing")
-                            .arg(jointNames.value(j, tr("joint %1").arg(j + 1)))
-                            .arg(m_syncs)
-                            .arg(m_counter);
+                error =
+                    Text::tr("%1: the TPDO answering SYNC %2 (counter %3) did not arrive before "
+                             "the next SYNC: sample missing")
+                        .arg(jointNames.value(j, Text::tr("joint %1").arg(j + 1)))
+                        .arg(m_syncs)
+                        .arg(m_counter);
             }
         }
     }
@@ -49,7 +50,7 @@ QString TrialCollector::beginCycle(quint8 counter, int planSample, bool requireC
         const int expected = m_counter % syncCounterOverflow + 1;
         if (counter != expected) {
             const int lost = (counter - expected + syncCounterOverflow) % syncCounterOverflow;
-            error = tr("SYNC counter jumped from %1 to %2 after SYNC %3: %4 SYNC(s) lost")
+            error = Text::tr("SYNC counter jumped from %1 to %2 after SYNC %3: %4 SYNC(s) lost")
                         .arg(m_counter)
                         .arg(counter)
                         .arg(m_syncs)
@@ -68,7 +69,7 @@ QString TrialCollector::addTpdo(int joint, const QByteArray &payload)
     if (joint < 0 || joint >= m_latest.size())
         return {};
     if (payload.size() < tpdoBytes)
-        return tr("joint %1: TPDO of %2 bytes, the mapping needs %3 (SYNC %4)")
+        return Text::tr("joint %1: TPDO of %2 bytes, the mapping needs %3 (SYNC %4)")
             .arg(joint + 1)
             .arg(payload.size())
             .arg(tpdoBytes)
@@ -114,12 +115,12 @@ void TrialCollector::storeSample()
 QString TrialCollector::where() const
 {
     if (m_planSample >= 0)
-        return tr("at SYNC %1 (counter %2), plan sample %3, t = %4 s")
+        return Text::tr("at SYNC %1 (counter %2), plan sample %3, t = %4 s")
             .arg(m_syncs)
             .arg(m_counter)
             .arg(m_planSample)
             .arg(m_planSample * m_ts, 0, 'f', 3);
-    return tr("at SYNC %1 (counter %2), %3 s after NMT start")
+    return Text::tr("at SYNC %1 (counter %2), %3 s after NMT start")
         .arg(m_syncs)
         .arg(m_counter)
         .arg(m_syncs * m_ts, 0, 'f', 3);

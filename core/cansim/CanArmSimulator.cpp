@@ -12,39 +12,41 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("CanArmSimulator", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(CanArmSimulator)
+};
 
 void checkSettings(const CanArmSettings &s)
 {
     if (!s.model)
-        throw Error(tr("The simulated arm has no robot model."));
+        throw Error(Text::tr("The simulated arm has no robot model."));
     const int n = s.model->dof();
     if (s.nodes.size() != n) {
-        throw Error(tr("--nodes: the %1 arm has %2 joints, so %2 node ids are needed, not %3.")
-                        .arg(s.model->id())
-                        .arg(n)
-                        .arg(s.nodes.size()));
+        throw Error(
+            Text::tr("--nodes: the %1 arm has %2 joints, so %2 node ids are needed, not %3.")
+                .arg(s.model->id())
+                .arg(n)
+                .arg(s.nodes.size()));
     }
     QSet<int> seen;
     for (const int id : s.nodes) {
         if (!canopen::isValidNodeId(id))
-            throw Error(tr("--nodes: %1 is not a CANopen node id (1 to 127).").arg(id));
+            throw Error(Text::tr("--nodes: %1 is not a CANopen node id (1 to 127).").arg(id));
         if (seen.contains(id))
-            throw Error(tr("--nodes: node %1 is listed twice.").arg(id));
+            throw Error(Text::tr("--nodes: node %1 is listed twice.").arg(id));
         seen.insert(id);
     }
     if (s.trueParameters.size() != s.model->parameterCount() || s.torqueLimits.size() != n ||
         s.initialPose.size() != n || s.controller.dof() != n) {
-        throw Error(tr("The simulated arm's parameters, torque limits, initial pose or gains do "
-                       "not fit the %1 model.")
-                        .arg(s.model->id()));
+        throw Error(
+            Text::tr("The simulated arm's parameters, torque limits, initial pose or gains do "
+                     "not fit the %1 model.")
+                .arg(s.model->id()));
     }
     if (!(s.controller.samplePeriod >= 1e-3 && s.controller.samplePeriod <= 0.1))
-        throw Error(
-            tr("The SYNC period must be 1 to 100 ms, not %1 s.").arg(s.controller.samplePeriod));
+        throw Error(Text::tr("The SYNC period must be 1 to 100 ms, not %1 s.")
+                        .arg(s.controller.samplePeriod));
 }
 
 } // namespace

@@ -10,6 +10,15 @@
 
 namespace learnid {
 
+namespace {
+
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(LearningLaw)
+};
+
+} // namespace
+
 QStringList knownLearningLaws()
 {
     return {QStringLiteral("paper"), QStringLiteral("improved")};
@@ -45,22 +54,19 @@ JointStateEstimate estimateJointStates(const FilteringEstimator &filter, const T
 
 void validateRecord(const RobotModel &model, const TrialPlan &plan, const TrialRecord &record)
 {
-    const auto tr = [](const char *s) {
-        return QCoreApplication::translate("LearningLaw", s);
-    };
     const int n = model.dof();
     if (record.q.rows() != n || record.tau.rows() != n || record.tau.cols() != record.q.cols() ||
         plan.desired.dof() != n || plan.feedforward.rows() != n ||
         plan.feedforward.cols() != plan.samples() || record.samples() != plan.samples()) {
-        throw Error(tr("trial record does not match its plan: %1 of %2 samples, %3 joints "
-                       "recorded for a %4-joint model")
+        throw Error(Text::tr("trial record does not match its plan: %1 of %2 samples, %3 joints "
+                             "recorded for a %4-joint model")
                         .arg(record.samples())
                         .arg(plan.samples())
                         .arg(record.q.rows())
                         .arg(n));
     }
     if (record.samples() < 16)
-        throw Error(tr("trial record has only %1 samples").arg(record.samples()));
+        throw Error(Text::tr("trial record has only %1 samples").arg(record.samples()));
     // A sum is finite when every term is (one vectorised pass); otherwise, or on overflow, the
     // loop below names the first bad value, if any.
     if (std::isfinite(record.q.sum() + record.tau.sum()))
@@ -68,10 +74,11 @@ void validateRecord(const RobotModel &model, const TrialPlan &plan, const TrialR
     for (int k = 0; k < record.samples(); ++k) {
         for (int j = 0; j < n; ++j) {
             if (!std::isfinite(record.q(j, k)) || !std::isfinite(record.tau(j, k))) {
-                throw Error(tr("trial record has a non-finite %1 at sample %2, joint %3")
-                                .arg(std::isfinite(record.q(j, k)) ? tr("torque") : tr("angle"))
-                                .arg(k)
-                                .arg(j + 1));
+                throw Error(
+                    Text::tr("trial record has a non-finite %1 at sample %2, joint %3")
+                        .arg(std::isfinite(record.q(j, k)) ? Text::tr("torque") : Text::tr("angle"))
+                        .arg(k)
+                        .arg(j + 1));
             }
         }
     }

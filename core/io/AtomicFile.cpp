@@ -14,14 +14,14 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("AtomicFile", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(AtomicFile)
+};
 
 [[noreturn]] void throwWriteError(const QString &path, const QString &reason)
 {
-    throw Error(tr("cannot write %1: %2").arg(QDir::toNativeSeparators(path), reason));
+    throw Error(Text::tr("cannot write %1: %2").arg(QDir::toNativeSeparators(path), reason));
 }
 
 // Opens, writes and flushes; the caller commits. The QSaveFile discards its temporary file when
@@ -29,7 +29,7 @@ QString tr(const char *text)
 std::unique_ptr<QSaveFile> writeUncommitted(const QString &path, const QByteArray &data)
 {
     if (path.isEmpty())
-        throwWriteError(path, tr("no file name given"));
+        throwWriteError(path, Text::tr("no file name given"));
     auto file = std::make_unique<QSaveFile>(path);
     if (!file->open(QIODevice::WriteOnly))
         throwWriteError(path, file->errorString());
@@ -53,7 +53,7 @@ void writeFilesAtomically(const QList<QPair<QString, QByteArray>> &files)
     for (const auto &f : files) {
         const QString absolute = QFileInfo(f.first).absoluteFilePath();
         if (seen.contains(absolute))
-            throwWriteError(f.first, tr("the same file is to be written twice"));
+            throwWriteError(f.first, Text::tr("the same file is to be written twice"));
         seen.append(absolute);
     }
     std::vector<std::unique_ptr<QSaveFile>> pending;
@@ -66,7 +66,7 @@ void writeFilesAtomically(const QList<QPair<QString, QByteArray>> &files)
                 committed.append(QDir::toNativeSeparators(files.at(qsizetype(j)).first));
             QString reason = pending[i]->errorString();
             if (!committed.isEmpty()) {
-                reason = tr("%1 (already written: %2)")
+                reason = Text::tr("%1 (already written: %2)")
                              .arg(reason, committed.join(QStringLiteral(", ")));
             }
             throwWriteError(files.at(qsizetype(i)).first, reason);
@@ -79,12 +79,12 @@ QByteArray readFile(const QString &path)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         const QString reason = file.errorString();
-        throw Error(tr("cannot read %1: %2").arg(QDir::toNativeSeparators(path), reason));
+        throw Error(Text::tr("cannot read %1: %2").arg(QDir::toNativeSeparators(path), reason));
     }
     QByteArray data = file.readAll();
     if (file.error() != QFileDevice::NoError) {
         const QString reason = file.errorString();
-        throw Error(tr("cannot read %1: %2").arg(QDir::toNativeSeparators(path), reason));
+        throw Error(Text::tr("cannot read %1: %2").arg(QDir::toNativeSeparators(path), reason));
     }
     return data;
 }

@@ -12,10 +12,10 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("JsonReader", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(JsonReader)
+};
 
 // Qt's parser refuses a well-formed number beyond the range of a double (1e999) as a syntax
 // error, which cannot name the key. parseJsonObject() puts such a number in a string behind this
@@ -87,31 +87,31 @@ QString describeJsonValue(const QJsonValue &value)
     case QJsonValue::String: {
         const QString outOfRange = outOfRangeNumber(value);
         if (!outOfRange.isEmpty())
-            return tr("%1 (beyond the range of a double)").arg(outOfRange);
+            return Text::tr("%1 (beyond the range of a double)").arg(outOfRange);
         QString s = value.toString();
         if (s.size() > 40)
             s = s.left(37) + QStringLiteral("...");
         return QLatin1Char('"') + s + QLatin1Char('"');
     }
     case QJsonValue::Array:
-        return tr("an array");
+        return Text::tr("an array");
     case QJsonValue::Object:
-        return tr("an object");
+        return Text::tr("an object");
     case QJsonValue::Undefined:
         break;
     }
-    return tr("nothing");
+    return Text::tr("nothing");
 }
 
 QString integerRangeText(qint64 lo, qint64 hi)
 {
-    return tr("an integer from %1 to %2").arg(lo).arg(hi);
+    return Text::tr("an integer from %1 to %2").arg(lo).arg(hi);
 }
 
 QJsonObject parseJsonObject(const QByteArray &json, const QString &sourceName)
 {
     if (json.trimmed().isEmpty())
-        throw Error(tr("%1: the file is empty; expected a JSON object").arg(sourceName));
+        throw Error(Text::tr("%1: the file is empty; expected a JSON object").arg(sourceName));
     QByteArray text = json;
     int added = 0; // by marking numbers; all of them lie before a later syntax error
     QJsonParseError parseError;
@@ -129,7 +129,7 @@ QJsonObject parseJsonObject(const QByteArray &json, const QString &sourceName)
         const QByteArray before = json.left(offset);
         const int line = int(before.count('\n')) + 1;
         const int column = offset - int(before.lastIndexOf('\n') + 1) + 1;
-        throw Error(tr("%1: invalid JSON at line %2, column %3 (byte offset %4): %5")
+        throw Error(Text::tr("%1: invalid JSON at line %2, column %3 (byte offset %4): %5")
                         .arg(sourceName)
                         .arg(line)
                         .arg(column)
@@ -137,8 +137,9 @@ QJsonObject parseJsonObject(const QByteArray &json, const QString &sourceName)
                         .arg(parseError.errorString()));
     }
     if (!doc.isObject()) {
-        throw Error(tr("%1: the top level must be a JSON object, got %2")
-                        .arg(sourceName, doc.isArray() ? tr("an array") : tr("a single value")));
+        throw Error(Text::tr("%1: the top level must be a JSON object, got %2")
+                        .arg(sourceName,
+                             doc.isArray() ? Text::tr("an array") : Text::tr("a single value")));
     }
     return doc.object();
 }
@@ -147,15 +148,15 @@ double jsonNumber(const QJsonValue &value, const QString &path)
 {
     const QString outOfRange = outOfRangeNumber(value);
     if (!outOfRange.isEmpty()) {
-        throwAtKey(path,
-                   tr("must be a finite number, got %1, which is beyond the range of a double")
-                       .arg(outOfRange));
+        throwAtKey(
+            path, Text::tr("must be a finite number, got %1, which is beyond the range of a double")
+                      .arg(outOfRange));
     }
     if (!value.isDouble())
-        throwAtKey(path, tr("must be a number, got %1").arg(describeJsonValue(value)));
+        throwAtKey(path, Text::tr("must be a number, got %1").arg(describeJsonValue(value)));
     const double v = value.toDouble();
     if (!std::isfinite(v))
-        throwAtKey(path, tr("must be a finite number, got %1").arg(describeNumber(v)));
+        throwAtKey(path, Text::tr("must be a finite number, got %1").arg(describeNumber(v)));
     return v;
 }
 
@@ -164,7 +165,7 @@ qint64 jsonInteger(const QJsonValue &value, const QString &path, qint64 lo, qint
 {
     const QString expected = allowed.isEmpty() ? integerRangeText(lo, hi) : allowed;
     const auto fail = [&] {
-        throwAtKey(path, tr("must be %1, got %2").arg(expected, describeJsonValue(value)));
+        throwAtKey(path, Text::tr("must be %1, got %2").arg(expected, describeJsonValue(value)));
     };
     if (!value.isDouble())
         fail();
@@ -181,21 +182,21 @@ qint64 jsonInteger(const QJsonValue &value, const QString &path, qint64 lo, qint
 QString jsonString(const QJsonValue &value, const QString &path)
 {
     if (!value.isString())
-        throwAtKey(path, tr("must be a string, got %1").arg(describeJsonValue(value)));
+        throwAtKey(path, Text::tr("must be a string, got %1").arg(describeJsonValue(value)));
     return value.toString();
 }
 
 bool jsonBool(const QJsonValue &value, const QString &path)
 {
     if (!value.isBool())
-        throwAtKey(path, tr("must be true or false, got %1").arg(describeJsonValue(value)));
+        throwAtKey(path, Text::tr("must be true or false, got %1").arg(describeJsonValue(value)));
     return value.toBool();
 }
 
 QJsonArray jsonArray(const QJsonValue &value, const QString &path)
 {
     if (!value.isArray())
-        throwAtKey(path, tr("must be an array, got %1").arg(describeJsonValue(value)));
+        throwAtKey(path, Text::tr("must be an array, got %1").arg(describeJsonValue(value)));
     return value.toArray();
 }
 
@@ -217,7 +218,7 @@ JsonObjectReader::JsonObjectReader(const QJsonValue &value, const QString &path)
     : m_path(path)
 {
     if (!value.isObject())
-        throwAtKey(path, tr("must be an object, got %1").arg(describeJsonValue(value)));
+        throwAtKey(path, Text::tr("must be an object, got %1").arg(describeJsonValue(value)));
     m_object = value.toObject();
 }
 
@@ -232,7 +233,7 @@ QJsonValue JsonObjectReader::require(const QString &key)
 {
     const QJsonValue v = value(key);
     if (v.isUndefined())
-        throwAtKey(keyPath(key), tr("is missing; this key is required"));
+        throwAtKey(keyPath(key), Text::tr("is missing; this key is required"));
     return v;
 }
 
@@ -281,8 +282,9 @@ void JsonObjectReader::rejectUnknownKeys() const
 {
     for (auto it = m_object.begin(); it != m_object.end(); ++it) {
         if (!m_known.contains(it.key())) {
-            throwAtKey(jsonKeyPath(m_path, it.key()),
-                       tr("unknown key; allowed here: %1").arg(m_known.join(QStringLiteral(", "))));
+            throwAtKey(
+                jsonKeyPath(m_path, it.key()),
+                Text::tr("unknown key; allowed here: %1").arg(m_known.join(QStringLiteral(", "))));
         }
     }
 }

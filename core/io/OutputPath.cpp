@@ -10,17 +10,17 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("OutputPath", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(OutputPath)
+};
 
 } // namespace
 
 QString resolveOutputPath(const QString &baseDir, const QString &path, const QString &what)
 {
     if (path.isEmpty())
-        throw Error(tr("%1: no path given").arg(what));
+        throw Error(Text::tr("%1: no path given").arg(what));
     const QString given = QDir::fromNativeSeparators(path);
     // "." and "//" go; ".." stays for the OS to walk: lexically "link/.." is not link's parent.
     const auto tidy = [](const QString &p) {
@@ -30,10 +30,10 @@ QString resolveOutputPath(const QString &baseDir, const QString &path, const QSt
         return tidy(given);
     const QFileInfo base(baseDir);
     if (!base.isDir()) {
-        throw Error(tr("%1: %2 is relative, and the folder it is taken from, %3, does not exist "
-                       "or is not a folder")
-                        .arg(what, QDir::toNativeSeparators(path),
-                             QDir::toNativeSeparators(baseDir)));
+        throw Error(
+            Text::tr("%1: %2 is relative, and the folder it is taken from, %3, does not exist "
+                     "or is not a folder")
+                .arg(what, QDir::toNativeSeparators(path), QDir::toNativeSeparators(baseDir)));
     }
     return tidy(base.absoluteFilePath() + QLatin1Char('/') + given);
 }

@@ -18,17 +18,18 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("ParameterFile", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(ParameterFile)
+};
 
 // The shortest decimal text that reads back to the same REAL32 as value.
 QByteArray real32Text(double value, const QString &path)
 {
     if (!std::isfinite(value) || std::abs(value) > double(std::numeric_limits<float>::max())) {
-        throwAtKey(path,
-                   tr("does not fit a REAL32 object entry, got %1").arg(describeNumber(value)));
+        throwAtKey(
+            path,
+            Text::tr("does not fit a REAL32 object entry, got %1").arg(describeNumber(value)));
     }
     const float f = float(value);
     if (f == std::floor(f) && std::abs(f) < 16777216.0f) // integral and exact in a float
@@ -124,7 +125,7 @@ QByteArray parameterDcfFragment(const ParameterFileContent &content, int joint)
     validateParameterFileContent(content);
     const QList<int> nodes = content.nodes();
     if (joint < 0 || joint >= int(nodes.size())) {
-        throw Error(tr("DCF fragment: joint %1 does not exist; the robot has %2 joints")
+        throw Error(Text::tr("DCF fragment: joint %1 does not exist; the robot has %2 joints")
                         .arg(joint + 1)
                         .arg(nodes.size()));
     }

@@ -16,10 +16,10 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("ParameterFile", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(ParameterFile)
+};
 
 QString key(const char *name)
 {
@@ -128,7 +128,7 @@ void readParameters(const QJsonValue &value, const QString &path, ParameterFileC
         const QJsonValue sd = p.value(key("standardDeviation"));
         if (i > 0 && sd.isUndefined() != (withStd == 0))
             throwAtKey(p.keyPath(key("standardDeviation")),
-                       tr("must be given for every parameter or for none"));
+                       Text::tr("must be given for every parameter or for none"));
         if (!sd.isUndefined()) {
             ++withStd;
             c.standardDeviations[i] =
@@ -148,9 +148,10 @@ SdoWrite readWrite(JsonObjectReader r)
     w.node = quint8(jsonInteger(r.require(key("node")), r.keyPath(key("node")), 1, 127));
     const QString index = jsonString(r.require(key("index")), r.keyPath(key("index")));
     if (!indexPattern.match(index).hasMatch()) {
-        throwAtKey(r.keyPath(key("index")),
-                   tr("must be an object index written as \"0x\" and four hex digits, got \"%1\"")
-                       .arg(index));
+        throwAtKey(
+            r.keyPath(key("index")),
+            Text::tr("must be an object index written as \"0x\" and four hex digits, got \"%1\"")
+                .arg(index));
     }
     w.index = quint16(index.mid(2).toUInt(nullptr, 16));
     w.subIndex =
@@ -159,8 +160,9 @@ SdoWrite readWrite(JsonObjectReader r)
     w.value = jsonNumber(r.require(key("value")), r.keyPath(key("value")));
     const QString raw = jsonString(r.require(key("raw")), r.keyPath(key("raw")));
     if (!hexPattern.match(raw).hasMatch()) {
-        throwAtKey(r.keyPath(key("raw")),
-                   tr("must be the bytes written as pairs of hex digits, got \"%1\"").arg(raw));
+        throwAtKey(
+            r.keyPath(key("raw")),
+            Text::tr("must be the bytes written as pairs of hex digits, got \"%1\"").arg(raw));
     }
     w.raw = QByteArray::fromHex(raw.toLatin1());
     r.rejectUnknownKeys();
@@ -176,9 +178,10 @@ ParameterFileContent readContent(const QJsonObject &root)
     const QString created = jsonString(r.require(key("created")), key("created"));
     c.created = QDateTime::fromString(created, Qt::ISODateWithMs);
     if (!c.created.isValid()) {
-        throwAtKey(key("created"), tr("must be a date and time as in 2024-05-01T12:00:00.000Z, "
-                                      "got \"%1\"")
-                                       .arg(created));
+        throwAtKey(key("created"),
+                   Text::tr("must be a date and time as in 2024-05-01T12:00:00.000Z, "
+                            "got \"%1\"")
+                       .arg(created));
     }
     c.toolVersion = jsonString(r.require(key("toolVersion")), key("toolVersion"));
 
@@ -227,21 +230,22 @@ void checkSchemaAndChecksum(QJsonObject root)
 {
     const QJsonValue schema = root.value(key("schema"));
     if (schema.isUndefined())
-        throwAtKey(key("schema"), tr("is missing; this is not a learnid parameter file"));
+        throwAtKey(key("schema"), Text::tr("is missing; this is not a learnid parameter file"));
     if (jsonString(schema, key("schema")) != QLatin1String(parameterFileSchema)) {
         throwAtKey(key("schema"),
-                   tr("this version of learnid reads \"%1\", got %2")
+                   Text::tr("this version of learnid reads \"%1\", got %2")
                        .arg(QLatin1String(parameterFileSchema), describeJsonValue(schema)));
     }
     const QJsonValue stored = root.value(key("checksum"));
     if (stored.isUndefined())
-        throwAtKey(key("checksum"), tr("is missing; this key is required"));
+        throwAtKey(key("checksum"), Text::tr("is missing; this key is required"));
     const QString storedHex = jsonString(stored, key("checksum"));
     root.remove(key("checksum"));
     if (storedHex.compare(QString::fromLatin1(parameterFileChecksum(root)), Qt::CaseInsensitive) !=
         0) {
-        throwAtKey(key("checksum"), tr("does not match the content: the file was changed after "
-                                       "learnid wrote it, or is damaged"));
+        throwAtKey(key("checksum"),
+                   Text::tr("does not match the content: the file was changed after "
+                            "learnid wrote it, or is damaged"));
     }
 }
 
@@ -274,7 +278,7 @@ ParameterFileContent parameterFileFromJson(const QByteArray &json, const QString
         validateParameterFileContent(c);
         return c;
     } catch (const Error &e) {
-        throw Error(tr("%1: %2").arg(sourceName, e.message()));
+        throw Error(Text::tr("%1: %2").arg(sourceName, e.message()));
     }
 }
 

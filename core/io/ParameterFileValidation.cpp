@@ -11,10 +11,10 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("ParameterFile", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(ParameterFile)
+};
 
 QString key(const char *path)
 {
@@ -46,12 +46,12 @@ void validateParameterFileContent(const ParameterFileContent &c)
     const auto model = makeRobotModel(c.robotModel);
     if (!model) {
         throwAtKey(key("robot.model"),
-                   tr("unknown model \"%1\"; known models: %2")
+                   Text::tr("unknown model \"%1\"; known models: %2")
                        .arg(c.robotModel, knownRobotModels().join(QStringLiteral(", "))));
     }
     const int n = model->dof();
     const int m = model->parameterCount();
-    const QString perJoint = tr("one per joint of %1").arg(c.robotModel);
+    const QString perJoint = Text::tr("one per joint of %1").arg(c.robotModel);
 
     if (!c.jointNodes.isEmpty()) {
         checkLength(key("robot.jointNodes"), c.jointNodes.size(), n, perJoint);
@@ -59,42 +59,44 @@ void validateParameterFileContent(const ParameterFileContent &c)
             const QString path = jsonIndexPath(key("robot.jointNodes"), j);
             checkIntegerRange(path, c.jointNodes.at(j), 1, 127);
             if (c.jointNodes.indexOf(c.jointNodes.at(j)) != j)
-                throwAtKey(path, tr("node %1 is given to two joints").arg(c.jointNodes.at(j)));
+                throwAtKey(path,
+                           Text::tr("node %1 is given to two joints").arg(c.jointNodes.at(j)));
         }
     }
     validateControllerSettings(c.controller, n, key("controller"));
     if (!c.created.isValid())
-        throwAtKey(key("created"), tr("must be a valid date and time"));
+        throwAtKey(key("created"), Text::tr("must be a valid date and time"));
     if (c.toolVersion.isEmpty())
-        throwAtKey(key("toolVersion"), tr("must not be empty"));
+        throwAtKey(key("toolVersion"), Text::tr("must not be empty"));
     if (!knownLearningLaws().contains(c.law)) {
         throwAtKey(key("identification.law"),
-                   tr("unknown learning law \"%1\"; known laws: %2")
+                   Text::tr("unknown learning law \"%1\"; known laws: %2")
                        .arg(c.law, knownLearningLaws().join(QStringLiteral(", "))));
     }
     if (c.sourceTrial < -1) {
-        throwAtKey(key("identification.sourceTrial"),
-                   tr("must be a trial index or -1 (not recorded), got %1").arg(c.sourceTrial));
+        throwAtKey(
+            key("identification.sourceTrial"),
+            Text::tr("must be a trial index or -1 (not recorded), got %1").arg(c.sourceTrial));
     }
 
     const QList<ParameterInfo> modelParameters = model->parameters();
-    const QString perParameter = tr("one per parameter of %1").arg(c.robotModel);
+    const QString perParameter = Text::tr("one per parameter of %1").arg(c.robotModel);
     checkLength(key("parameters"), c.parameters.size(), m, perParameter);
     for (int i = 0; i < m; ++i) {
         const QString path = jsonKeyPath(jsonIndexPath(key("parameters"), i), key("name"));
         if (c.parameters.at(i).name != modelParameters.at(i).name) {
-            throwAtKey(path, tr("must be \"%1\" (parameter %2 of %3), got \"%4\"")
+            throwAtKey(path, Text::tr("must be \"%1\" (parameter %2 of %3), got \"%4\"")
                                  .arg(modelParameters.at(i).name)
                                  .arg(i + 1)
                                  .arg(c.robotModel, c.parameters.at(i).name));
         }
     }
-    checkLength(key("parameters"), c.values.size(), m, tr("values, %1").arg(perParameter));
+    checkLength(key("parameters"), c.values.size(), m, Text::tr("values, %1").arg(perParameter));
     for (int i = 0; i < m; ++i)
         checkFinite(jsonKeyPath(jsonIndexPath(key("parameters"), i), key("value")), c.values[i]);
     if (c.standardDeviations.size() > 0) {
         checkLength(key("parameters"), c.standardDeviations.size(), m,
-                    tr("standard deviations, %1").arg(perParameter));
+                    Text::tr("standard deviations, %1").arg(perParameter));
         for (int i = 0; i < m; ++i) {
             checkNonNegativeOrInfinite(
                 jsonKeyPath(jsonIndexPath(key("parameters"), i), key("standardDeviation")),
@@ -113,10 +115,10 @@ void validateParameterFileContent(const ParameterFileContent &c)
         const QString path = jsonIndexPath(key("canWrites"), i);
         checkIntegerRange(jsonKeyPath(path, key("node")), w.node, 1, 127);
         if (w.dataType.isEmpty())
-            throwAtKey(jsonKeyPath(path, key("type")), tr("must name the CANopen data type"));
+            throwAtKey(jsonKeyPath(path, key("type")), Text::tr("must name the CANopen data type"));
         checkFinite(jsonKeyPath(path, key("value")), w.value);
         if (w.raw.isEmpty())
-            throwAtKey(jsonKeyPath(path, key("raw")), tr("must hold the bytes written"));
+            throwAtKey(jsonKeyPath(path, key("raw")), Text::tr("must hold the bytes written"));
     }
 }
 

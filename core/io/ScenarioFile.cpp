@@ -12,10 +12,10 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("ScenarioFile", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(ScenarioFile)
+};
 
 QString key(const char *name)
 {
@@ -26,7 +26,7 @@ void readRobot(JsonObjectReader r, Scenario &s)
 {
     r.read(key("model"), s.model);
     r.read(key("linkLengths"), s.linkLengths);
-    r.readInteger(key("elbow"), s.elbowSign, -1, 1, tr("1 or -1"));
+    r.readInteger(key("elbow"), s.elbowSign, -1, 1, Text::tr("1 or -1"));
     r.read(key("torqueLimits"), s.torqueLimits);
     r.read(key("initialParameters"), s.initialParameters);
     r.rejectUnknownKeys();
@@ -38,7 +38,7 @@ void readPath(JsonObjectReader r, Scenario &s)
     r.read(key("start"), start);
     if (start.size() != 2) {
         throwAtKey(r.keyPath(key("start")),
-                   tr("must have 2 entries (x and y), got %1").arg(start.size()));
+                   Text::tr("must have 2 entries (x and y), got %1").arg(start.size()));
     }
     s.line.start = start;
     r.read(key("length"), s.line.length);
@@ -97,7 +97,7 @@ Scenario readScenario(const QJsonObject &root)
     if (!schema.isUndefined() &&
         jsonString(schema, key("schema")) != QLatin1String(scenarioSchema)) {
         throwAtKey(key("schema"),
-                   tr("this version of learnid reads \"%1\", got %2")
+                   Text::tr("this version of learnid reads \"%1\", got %2")
                        .arg(QLatin1String(scenarioSchema), describeJsonValue(schema)));
     }
     if (auto section = r.optionalObject(key("robot")))
@@ -183,7 +183,7 @@ Scenario scenarioFromJson(const QByteArray &json, const QString &sourceName)
         validateScenario(s);
         return s;
     } catch (const Error &e) {
-        throw Error(tr("%1: %2").arg(sourceName, e.message()));
+        throw Error(Text::tr("%1: %2").arg(sourceName, e.message()));
     }
 }
 

@@ -9,10 +9,10 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("ScenarioFile", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(ScenarioFile)
+};
 
 QString key(const char *path)
 {
@@ -23,7 +23,7 @@ QString key(const char *path)
 
 void validateControllerSettings(const ControllerSettings &c, int dof, const QString &path)
 {
-    const QString perJoint = tr("one per joint");
+    const QString perJoint = Text::tr("one per joint");
     checkInterval(jsonKeyPath(path, key("samplePeriod")), c.samplePeriod, 0.0,
                   scenarioLimits::maxSamplePeriod, Bounds::LeftOpen);
     checkVector(jsonKeyPath(path, key("kp")), c.kp, dof, perJoint, EntryRule::Positive);
@@ -39,17 +39,17 @@ void validateScenario(const Scenario &s)
     const auto model = makeRobotModel(s.model);
     if (!model) {
         throwAtKey(key("robot.model"),
-                   tr("unknown model \"%1\"; known models: %2")
+                   Text::tr("unknown model \"%1\"; known models: %2")
                        .arg(s.model, knownRobotModels().join(QStringLiteral(", "))));
     }
     const int n = model->dof();
     const int m = model->parameterCount();
-    const QString perJoint = tr("one per joint of %1").arg(s.model);
-    const QString perParameter = tr("one per parameter of %1").arg(s.model);
+    const QString perJoint = Text::tr("one per joint of %1").arg(s.model);
+    const QString perParameter = Text::tr("one per parameter of %1").arg(s.model);
 
     checkVector(key("robot.linkLengths"), s.linkLengths, n, perJoint, EntryRule::Positive);
     if (s.elbowSign != 1 && s.elbowSign != -1)
-        throwAtKey(key("robot.elbow"), tr("must be 1 or -1, got %1").arg(s.elbowSign));
+        throwAtKey(key("robot.elbow"), Text::tr("must be 1 or -1, got %1").arg(s.elbowSign));
     checkVector(key("robot.torqueLimits"), s.torqueLimits, n, perJoint, EntryRule::Positive);
     checkVector(key("robot.initialParameters"), s.initialParameters, m, perParameter,
                 EntryRule::Finite);
@@ -67,7 +67,7 @@ void validateScenario(const Scenario &s)
 
     if (!knownLearningLaws().contains(s.law)) {
         throwAtKey(key("estimator.law"),
-                   tr("unknown learning law \"%1\"; known laws: %2")
+                   Text::tr("unknown learning law \"%1\"; known laws: %2")
                        .arg(s.law, knownLearningLaws().join(QStringLiteral(", "))));
     }
     checkPositive(key("estimator.rho"), s.estimator.rho);
@@ -82,7 +82,7 @@ void validateScenario(const Scenario &s)
     if (s.encoderCounts != 0 && (s.encoderCounts < scenarioLimits::minEncoderCounts ||
                                  s.encoderCounts > scenarioLimits::maxEncoderCounts)) {
         throwAtKey(key("simulation.encoderCounts"),
-                   tr("must be 0 (an ideal encoder) or an integer from %1 to %2, got %3")
+                   Text::tr("must be 0 (an ideal encoder) or an integer from %1 to %2, got %3")
                        .arg(scenarioLimits::minEncoderCounts)
                        .arg(scenarioLimits::maxEncoderCounts)
                        .arg(s.encoderCounts));
@@ -90,9 +90,9 @@ void validateScenario(const Scenario &s)
     checkInterval(key("simulation.torqueNoise"), s.torqueNoise, 0.0, scenarioLimits::maxTorqueNoise,
                   Bounds::Closed);
     if (s.seed > quint64(scenarioLimits::maxSeed)) {
-        throwAtKey(
-            key("simulation.seed"),
-            tr("must be %1, got %2").arg(integerRangeText(0, scenarioLimits::maxSeed)).arg(s.seed));
+        throwAtKey(key("simulation.seed"), Text::tr("must be %1, got %2")
+                                               .arg(integerRangeText(0, scenarioLimits::maxSeed))
+                                               .arg(s.seed));
     }
     checkIntegerRange(key("simulation.substeps"), s.substeps, 1, scenarioLimits::maxSubsteps);
 

@@ -14,10 +14,10 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("TrialCsv", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(TrialCsv)
+};
 
 constexpr double degPerRad = 180.0 / M_PI;
 constexpr int columnsPerJoint = 5;
@@ -43,7 +43,7 @@ QList<QByteArray> header(int dof)
 
 [[noreturn]] void throwAtLine(const QString &source, int line, const QString &what)
 {
-    throw Error(tr("%1: line %2: %3").arg(source).arg(line).arg(what));
+    throw Error(Text::tr("%1: line %2: %3").arg(source).arg(line).arg(what));
 }
 
 } // namespace
@@ -55,8 +55,8 @@ QByteArray trialCsv(const TrialPlan &plan, const TrialRecord &record)
     if (record.q.rows() != n || record.tau.rows() != n || record.tau.cols() != samples ||
         plan.feedforward.rows() != n || plan.feedforward.cols() != plan.samples() ||
         samples > plan.samples()) {
-        throw Error(tr("trial CSV: the record (%1 joints, %2 samples) does not fit its plan "
-                       "(%3 joints, %4 samples)")
+        throw Error(Text::tr("trial CSV: the record (%1 joints, %2 samples) does not fit its plan "
+                             "(%3 joints, %4 samples)")
                         .arg(record.q.rows())
                         .arg(samples)
                         .arg(n)
@@ -106,7 +106,7 @@ TrialRecordCsv readTrialCsv(const QByteArray &csv, const QString &sourceName)
     while (!lines.isEmpty() && lines.constLast().trimmed().isEmpty())
         lines.removeLast(); // the final newline
     if (lines.isEmpty())
-        throwAtLine(sourceName, 1, tr("the file is empty; expected the header line"));
+        throwAtLine(sourceName, 1, Text::tr("the file is empty; expected the header line"));
     for (QByteArray &line : lines) {
         if (line.endsWith('\r'))
             line.chop(1);
@@ -117,7 +117,7 @@ TrialRecordCsv readTrialCsv(const QByteArray &csv, const QString &sourceName)
     if (names.size() < 1 + columnsPerJoint || (names.size() - 1) % columnsPerJoint != 0 ||
         names != header(n)) {
         throwAtLine(sourceName, 1,
-                    tr("the header must be %1 (for one or more joints), got %2")
+                    Text::tr("the header must be %1 (for one or more joints), got %2")
                         .arg(QString::fromUtf8(header(1).join(',')) + QStringLiteral(",..."),
                              QString::fromUtf8(lines.constFirst().left(120))));
     }
@@ -131,8 +131,9 @@ TrialRecordCsv readTrialCsv(const QByteArray &csv, const QString &sourceName)
         const int lineNumber = k + 2;
         const QList<QByteArray> fields = lines.at(k + 1).split(',');
         if (fields.size() != names.size()) {
-            throwAtLine(sourceName, lineNumber,
-                        tr("expected %1 fields, got %2").arg(names.size()).arg(fields.size()));
+            throwAtLine(
+                sourceName, lineNumber,
+                Text::tr("expected %1 fields, got %2").arg(names.size()).arg(fields.size()));
         }
         Eigen::VectorXd row(fields.size());
         for (int c = 0; c < int(fields.size()); ++c) {
@@ -140,14 +141,14 @@ TrialRecordCsv readTrialCsv(const QByteArray &csv, const QString &sourceName)
             row[c] = fields.at(c).trimmed().toDouble(&ok);
             if (!ok) {
                 throwAtLine(sourceName, lineNumber,
-                            tr("%1 is not a number: \"%2\"")
+                            Text::tr("%1 is not a number: \"%2\"")
                                 .arg(QString::fromLatin1(names.at(c)),
                                      QString::fromUtf8(fields.at(c).left(40))));
             }
         }
         if (!std::isfinite(row[0]) || (k > 0 && !(row[0] > r.t[k - 1]))) {
             throwAtLine(sourceName, lineNumber,
-                        tr("t_s must be finite and increase from line to line, got %1")
+                        Text::tr("t_s must be finite and increase from line to line, got %1")
                             .arg(QString::fromLatin1(fields.at(0))));
         }
         r.t[k] = row[0];

@@ -9,36 +9,36 @@ namespace learnid {
 
 namespace {
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("ValueChecks", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(ValueChecks)
+};
 
 } // namespace
 
 void checkFinite(const QString &path, double value)
 {
     if (!std::isfinite(value))
-        throwAtKey(path, tr("must be a finite number, got %1").arg(describeNumber(value)));
+        throwAtKey(path, Text::tr("must be a finite number, got %1").arg(describeNumber(value)));
 }
 
 void checkPositive(const QString &path, double value)
 {
     if (!std::isfinite(value) || !(value > 0.0))
-        throwAtKey(path, tr("must be a positive number, got %1").arg(describeNumber(value)));
+        throwAtKey(path, Text::tr("must be a positive number, got %1").arg(describeNumber(value)));
 }
 
 void checkNonNegative(const QString &path, double value)
 {
     if (!std::isfinite(value) || !(value >= 0.0))
-        throwAtKey(path,
-                   tr("must be zero or a positive number, got %1").arg(describeNumber(value)));
+        throwAtKey(
+            path, Text::tr("must be zero or a positive number, got %1").arg(describeNumber(value)));
 }
 
 void checkNonNegativeOrInfinite(const QString &path, double value)
 {
     if (!(value >= 0.0)) { // also NaN
-        throwAtKey(path, tr("must be zero, a positive number or unbounded (null), got %1")
+        throwAtKey(path, Text::tr("must be zero, a positive number or unbounded (null), got %1")
                              .arg(describeNumber(value)));
     }
 }
@@ -50,19 +50,19 @@ void checkInterval(const QString &path, double value, double lo, double hi, Boun
     switch (bounds) {
     case Bounds::Closed:
         ok = ok && value >= lo && value <= hi;
-        allowed = tr("must be from %1 to %2");
+        allowed = Text::tr("must be from %1 to %2");
         break;
     case Bounds::LeftOpen:
         ok = ok && value > lo && value <= hi;
-        allowed = tr("must be greater than %1 and at most %2");
+        allowed = Text::tr("must be greater than %1 and at most %2");
         break;
     case Bounds::Open:
         ok = ok && value > lo && value < hi;
-        allowed = tr("must be greater than %1 and less than %2");
+        allowed = Text::tr("must be greater than %1 and less than %2");
         break;
     }
     if (!ok) {
-        throwAtKey(path, tr("%1, got %2")
+        throwAtKey(path, Text::tr("%1, got %2")
                              .arg(allowed.arg(describeNumber(lo), describeNumber(hi)),
                                   describeNumber(value)));
     }
@@ -71,13 +71,13 @@ void checkInterval(const QString &path, double value, double lo, double hi, Boun
 void checkIntegerRange(const QString &path, qint64 value, qint64 lo, qint64 hi)
 {
     if (value < lo || value > hi)
-        throwAtKey(path, tr("must be %1, got %2").arg(integerRangeText(lo, hi)).arg(value));
+        throwAtKey(path, Text::tr("must be %1, got %2").arg(integerRangeText(lo, hi)).arg(value));
 }
 
 void checkLength(const QString &path, Eigen::Index size, Eigen::Index expected, const QString &what)
 {
     if (size != expected) {
-        throwAtKey(path, tr("must have %1 entries (%2), got %3")
+        throwAtKey(path, Text::tr("must have %1 entries (%2), got %3")
                              .arg(qint64(expected))
                              .arg(what)
                              .arg(qint64(size)));

@@ -13,10 +13,10 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 
-QString tr(const char *text)
+struct Text
 {
-    return QCoreApplication::translate("SimulatedRobot", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(SimulatedRobot)
+};
 
 } // namespace
 
@@ -29,7 +29,7 @@ SimulatedRobot::SimulatedRobot(std::shared_ptr<const RobotModel> model, Eigen::V
 
 QString SimulatedRobot::description() const
 {
-    return tr("simulated %1").arg(m_model->id());
+    return Text::tr("simulated %1").arg(m_model->id());
 }
 
 TrialRecord SimulatedRobot::runTrial(const TrialPlan &plan, const TrialMonitor &monitor)
@@ -81,8 +81,8 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
         const double worstError = e.cwiseAbs().maxCoeff(&worst);
         if (worstError > plan.maxTrackingError) {
             record.status = TrialStatus::Aborted;
-            record.message = tr("tracking error of joint %1 reached %2 deg at t = %3 s "
-                                "(limit %4 deg): quick stop")
+            record.message = Text::tr("tracking error of joint %1 reached %2 deg at t = %3 s "
+                                      "(limit %4 deg): quick stop")
                                  .arg(worst + 1)
                                  .arg(worstError * kRadToDeg, 0, 'g', 4)
                                  .arg(k * ts, 0, 'f', 3)
@@ -91,13 +91,13 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
         }
         if (k == m_faults.driveFaultAtSample) {
             record.status = TrialStatus::Faulted;
-            record.message = tr("drive of joint 1 reported a fault at t = %1 s (injected)")
+            record.message = Text::tr("drive of joint 1 reported a fault at t = %1 s (injected)")
                                  .arg(k * ts, 0, 'f', 3);
             break;
         }
         if (monitor.cancelled()) {
             record.status = TrialStatus::Cancelled;
-            record.message = tr("stopped by the operator at t = %1 s").arg(k * ts, 0, 'f', 3);
+            record.message = Text::tr("stopped by the operator at t = %1 s").arg(k * ts, 0, 'f', 3);
             break;
         }
 
@@ -119,10 +119,10 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
 QString SimulatedRobot::applyParameters(const Eigen::VectorXd &phi)
 {
     if (m_faults.refuseApply)
-        return tr("the simulated controller refused the parameter write (injected fault); "
-                  "its stored parameters are unchanged");
+        return Text::tr("the simulated controller refused the parameter write (injected fault); "
+                        "its stored parameters are unchanged");
     if (phi.size() != m_model->parameterCount() || !phi.allFinite())
-        return tr("parameter set has %1 values, the model needs %2 finite values")
+        return Text::tr("parameter set has %1 values, the model needs %2 finite values")
             .arg(phi.size())
             .arg(m_model->parameterCount());
     m_stored = phi;
