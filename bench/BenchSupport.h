@@ -1,8 +1,8 @@
 #pragma once
 
 #include "model/ModelFactory.h"
-#include "session/ScenarioRobot.h"
 #include "session/CommissioningSession.h"
+#include "session/ScenarioRobot.h"
 
 #include <algorithm>
 #include <ctime>

@@ -3,12 +3,12 @@
 // Usage: learnid-bench-gui [startups] (QT_QPA_PLATFORM=offscreen without a display).
 // Internally it starts copies of itself: `--startup-child` and `--memory-child gui|headless`.
 #include "BenchSupport.h"
-#include "ui/ConvergenceChart.h"
-#include "ui/ConvergenceTableModel.h"
-#include "ui/MainWindow.h"
 #include "service/SessionController.h"
 #include "service/SessionInfo.h"
 #include "service/TrackingErrorData.h"
+#include "ui/ConvergenceChart.h"
+#include "ui/ConvergenceTableModel.h"
+#include "ui/MainWindow.h"
 #include "ui/TrackingErrorPlot.h"
 
 #include <QApplication>
@@ -19,8 +19,8 @@
 #include <QTemporaryDir>
 #include <QTimer>
 #include <cstdio>
-#include <vector>
 #include <unistd.h>
+#include <vector>
 
 using namespace learnid;
 

@@ -13,6 +13,7 @@ LEARNID_PACKAGES=(
     xvfb xauth qt6-svg-dev
     dpkg-dev file  # tst_package: dpkg-shlibdeps, and CPack's DEB generator runs `file`
     clang libclang-rt-14-dev  # scripts/fuzz: libFuzzer and the sanitizer runtimes of clang
+    clang-format  # scripts/format --check (CI)
 )
 
 learnid_install_deps() {

@@ -756,7 +756,7 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
-        <location filename="../core/can/ManufacturerObjects.cpp" line="+99"/>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+117"/>
         <source>No node to write the parameters to.</source>
         <translation>Kein Knoten, in den die Parameter geschrieben werden können.</translation>
     </message>
@@ -1305,7 +1305,7 @@
         <translation>die Momentenregel braucht eine positive Grenze pro Gelenk und einen positiven Anteil</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>gravity alone needs more than %1 % of a joint&apos;s torque limit</source>
         <translation>die Schwerkraft allein braucht mehr als %1 % der Momentengrenze eines Gelenks</translation>
     </message>
@@ -1755,7 +1755,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>vs. wahr %</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>(rank %1: unobservable kept)</source>
         <translation>(Rang %1: nicht beobachtbare beibehalten)</translation>
     </message>
@@ -1990,7 +1990,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--emcy-at-sample: &apos;%1&apos; ist zu groß</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>--setpoint-timeout: &apos;%1&apos; is too large (at most 100000)</source>
         <translation>--setpoint-timeout: &apos;%1&apos; ist zu groß (höchstens 100000)</translation>
     </message>
@@ -2151,7 +2151,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Konfigurieren der Antriebe fehlgeschlagen, nichts hat sich bewegt: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>the trial&apos;s candump log could not be written: %1</source>
         <translation>das candump-Log des Versuchs konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -2161,7 +2161,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>%1; die gespeicherten Parameter sind unverändert</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1; nichts wurde gespeichert (0x1010 nicht geschrieben)</translation>
     </message>
@@ -2202,12 +2202,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+57"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+29"/>
         <source>repetition %1 of %2: %3</source>
         <translation>Wiederholung %1 von %2: %3</translation>
     </message>
@@ -2222,7 +2222,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>aus Versuch %1 nicht gelernt: %2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>there is no learned estimate to accept yet: run a trial first</source>
         <translation>es gibt noch keine gelernte Schätzung zum Akzeptieren: zuerst einen Versuch ausführen</translation>
     </message>
@@ -2308,7 +2308,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>%1 = %2 ± %3 (1 Sigma)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Estimate</source>
         <translation>Schätzung</translation>
     </message>
@@ -2351,7 +2351,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::FileController</name>
     <message>
-        <location filename="../ui/FileController.cpp" line="+36"/>
+        <location filename="../ui/FileController.cpp" line="+37"/>
         <source>Parameter file written: %1</source>
         <translation>Parameterdatei geschrieben: %1</translation>
     </message>
@@ -2391,17 +2391,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Parameterdateien (*.json)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Folder for the trial CSV files</source>
         <translation>Ordner für die CSV-Dateien der Versuche</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Export plot</source>
         <translation>Diagramm exportieren</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>PNG image (*.png);;SVG drawing (*.svg)</source>
         <translation>PNG-Bild (*.png);;SVG-Zeichnung (*.svg)</translation>
     </message>
@@ -2470,7 +2470,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Diagramm nicht geschrieben: diese Version kann kein SVG (Qt6::Svg); bitte als PNG exportieren</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Tracking error</source>
         <translation>Folgefehler</translation>
     </message>
@@ -2495,12 +2495,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Bahn: ab (%1, %2) m, %3 m unter %4°</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>Torque limits: %1 N m, planning fraction %2</source>
         <translation>Momentengrenzen: %1 N m, Planungsanteil %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>kp: %1 N m/rad; ki: %2</source>
         <translation>kp: %1 N m/rad; ki: %2</translation>
     </message>
@@ -2515,12 +2515,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Schätzer: %1, rho %2 rad/s, %3 Versuche</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Initial parameters: %1</source>
         <translation>Anfangsparameter: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>none (nothing applied in this session)</source>
         <translation>keine (in dieser Sitzung nichts übertragen)</translation>
     </message>
@@ -2543,7 +2543,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::MainActions</name>
     <message>
-        <location filename="../ui/MainActions.cpp" line="+34"/>
+        <location filename="../ui/MainActions.cpp" line="+37"/>
         <source>&amp;Connect robot</source>
         <translation>Roboter &amp;verbinden</translation>
     </message>
@@ -2558,7 +2558,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Mit dem gewählten Roboter verbinden und den ersten Versuch planen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;New session</source>
         <translation>&amp;Neue Sitzung</translation>
     </message>
@@ -2608,17 +2608,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Versuchs-&amp;CSV exportieren...</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Write one CSV file per trial</source>
         <translation>Eine CSV-Datei je Versuch schreiben</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Export p&amp;lot...</source>
         <translation>&amp;Diagramm exportieren...</translation>
     </message>
@@ -2748,7 +2748,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Ü&amp;ber learnid</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Version and licence</source>
         <translation>Version und Lizenz</translation>
     </message>
@@ -2768,7 +2768,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Systemsprache</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -2811,7 +2811,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid – Inbetriebnahme</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
@@ -2851,12 +2851,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Parameterkonvergenz</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>The language changes when learnid is started again.</source>
         <translation>Die Sprache wechselt beim nächsten Start von learnid.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>Dis&amp;connect robot</source>
         <translation>Roboter &amp;trennen</translation>
     </message>
@@ -2881,17 +2881,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Roboter: %1 – %2</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>busy</source>
         <translation>beschäftigt</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>idle</source>
         <translation>bereit</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
@@ -2901,12 +2901,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Verbindung nicht möglich: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>connecting to %1/%2…</source>
         <translation>verbinde mit %1/%2…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Correct the scenario first: %1</source>
         <translation>Zuerst das Szenario korrigieren: %1</translation>
     </message>
@@ -2916,7 +2916,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Übertragen abgebrochen; der Roboter ist unverändert.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>About learnid</source>
         <translation>Über learnid</translation>
     </message>
@@ -3076,37 +3076,37 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::ReportWriter</name>
     <message>
-        <location filename="../ui/ReportWriter.cpp" line="+51"/>
+        <location filename="../ui/ReportWriter.cpp" line="+52"/>
         <source>learnid commissioning report</source>
         <translation>learnid-Inbetriebnahmebericht</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Robot: %1</source>
         <translation>Roboter: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Scenario</source>
         <translation>Szenario</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Parameter convergence</source>
         <translation>Parameterkonvergenz</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>Applied set: %1</source>
         <translation>Übertragener Satz: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>learnid %1</source>
         <translation>learnid %1</translation>
     </message>
@@ -3502,17 +3502,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-4"/>
         <source>Cannot start the session: %1</source>
         <translation>Sitzung kann nicht gestartet werden: %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Connect a robot to plan the first trial.</source>
         <translation>Einen Roboter verbinden, um den ersten Versuch zu planen.</translation>
     </message>
@@ -3527,7 +3527,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Versuch %1 %2: %3. Seine Daten bleiben erhalten.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Finished; %1 estimate(s) learned.</source>
         <translation>Fertig; %1 Schätzung(en) gelernt.</translation>
     </message>
@@ -3542,12 +3542,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Schätzung %1 akzeptiert.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Parameters written to the robot and read back.</source>
         <translation>Parameter in den Roboter geschrieben und zurückgelesen.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>nothing applied yet</source>
         <translation>noch nichts übertragen</translation>
     </message>
@@ -3560,17 +3560,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::SessionWorker</name>
     <message>
-        <location filename="../core/service/SessionWorker.cpp" line="+33"/>
+        <location filename="../core/service/SessionWorker.cpp" line="+40"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>unbekanntes Robotermodell „%1“</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+97"/>
         <source>no robot connected</source>
         <translation>kein Roboter verbunden</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+73"/>
         <source>no session to export</source>
         <translation>keine Sitzung zum Exportieren</translation>
     </message>
@@ -3783,17 +3783,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Eine simulierte Sitzung ausführen, das Fenster als PNG nach &lt;file&gt; speichern und beenden.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>User interface language, e.g. de or zh_CN (default: as chosen in the app, else the system&apos;s).</source>
         <translation>Sprache der Oberfläche, z. B. de oder zh_CN (Standard: wie in der Anwendung gewählt, sonst die des Systems).</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>What --screenshot shows: %1 (default: main).</source>
         <translation>Was --screenshot zeigt: %1 (Standard: main).</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>learnid: unknown --screenshot-view &apos;%1&apos;; known: %2</source>
         <translation>learnid: unbekannte --screenshot-view &apos;%1&apos;; bekannt: %2</translation>
     </message>

@@ -756,7 +756,7 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
-        <location filename="../core/can/ManufacturerObjects.cpp" line="+99"/>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+117"/>
         <source>No node to write the parameters to.</source>
         <translation>没有可写入参数的节点。</translation>
     </message>
@@ -1305,7 +1305,7 @@
         <translation>力矩规则需要每个关节一个正的限值和一个正的比例</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>gravity alone needs more than %1 % of a joint&apos;s torque limit</source>
         <translation>仅重力就需要超过某关节力矩限值的 %1 %</translation>
     </message>
@@ -1755,7 +1755,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>相对真值 %</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>(rank %1: unobservable kept)</source>
         <translation>（秩 %1：保留不可观测参数）</translation>
     </message>
@@ -1990,7 +1990,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--emcy-at-sample：&apos;%1&apos; 过大</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>--setpoint-timeout: &apos;%1&apos; is too large (at most 100000)</source>
         <translation>--setpoint-timeout：&apos;%1&apos; 过大（最多 100000）</translation>
     </message>
@@ -2151,7 +2151,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>配置驱动器失败，未发生任何运动：%1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>the trial&apos;s candump log could not be written: %1</source>
         <translation>无法写入该试验的 candump 日志：%1</translation>
     </message>
@@ -2161,7 +2161,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>%1；已存储参数未改变</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1；未存储任何内容（未写入 0x1010）</translation>
     </message>
@@ -2202,12 +2202,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>场景不适合 %1 模型：它需要 %2 个参数以及 %3 个关节的限值和增益</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+57"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+29"/>
         <source>repetition %1 of %2: %3</source>
         <translation>第 %1 次重复（共 %2 次）：%3</translation>
     </message>
@@ -2222,7 +2222,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>未从试验 %1 学习：%2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>there is no learned estimate to accept yet: run a trial first</source>
         <translation>尚无可接受的学习估计：请先运行一次试验</translation>
     </message>
@@ -2308,7 +2308,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>%1 = %2 ± %3（1 sigma）</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Estimate</source>
         <translation>估计</translation>
     </message>
@@ -2351,7 +2351,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::FileController</name>
     <message>
-        <location filename="../ui/FileController.cpp" line="+36"/>
+        <location filename="../ui/FileController.cpp" line="+37"/>
         <source>Parameter file written: %1</source>
         <translation>参数文件已写入：%1</translation>
     </message>
@@ -2391,17 +2391,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>参数文件 (*.json)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Folder for the trial CSV files</source>
         <translation>试验 CSV 文件的文件夹</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Export plot</source>
         <translation>导出图表</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>PNG image (*.png);;SVG drawing (*.svg)</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg)</translation>
     </message>
@@ -2469,7 +2469,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>图表未写入：此版本不支持 SVG（Qt6::Svg），请导出为 PNG</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Tracking error</source>
         <translation>跟踪误差</translation>
     </message>
@@ -2494,12 +2494,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>路径：从 (%1, %2) m 起，长 %3 m，方向 %4 度</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>Torque limits: %1 N m, planning fraction %2</source>
         <translation>力矩限值：%1 N m，规划比例 %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>kp: %1 N m/rad; ki: %2</source>
         <translation>kp：%1 N m/rad；ki：%2</translation>
     </message>
@@ -2514,12 +2514,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>估计器：%1，rho %2 rad/s，%3 次试验</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Initial parameters: %1</source>
         <translation>初始参数：%1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>none (nothing applied in this session)</source>
         <translation>无（本次会话未写入）</translation>
     </message>
@@ -2542,7 +2542,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::MainActions</name>
     <message>
-        <location filename="../ui/MainActions.cpp" line="+34"/>
+        <location filename="../ui/MainActions.cpp" line="+37"/>
         <source>&amp;Connect robot</source>
         <translation>连接机器人(&amp;C)</translation>
     </message>
@@ -2557,7 +2557,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>连接所选机器人并规划第一次试验</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;New session</source>
         <translation>新建会话(&amp;N)</translation>
     </message>
@@ -2607,17 +2607,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>导出试验 CSV(&amp;C)...</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Write one CSV file per trial</source>
         <translation>每次试验写一个 CSV 文件</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Export p&amp;lot...</source>
         <translation>导出图表(&amp;L)...</translation>
     </message>
@@ -2747,7 +2747,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>关于 learnid(&amp;A)</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Version and licence</source>
         <translation>版本和许可</translation>
     </message>
@@ -2767,7 +2767,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>系统语言</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -2810,7 +2810,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid – 调试</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>Main</source>
         <translation>主工具栏</translation>
     </message>
@@ -2850,12 +2850,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>参数收敛</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>The language changes when learnid is started again.</source>
         <translation>语言将在下次启动 learnid 时切换。</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>Dis&amp;connect robot</source>
         <translation>断开机器人(&amp;C)</translation>
     </message>
@@ -2880,17 +2880,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>机器人：%1 – %2</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>busy</source>
         <translation>忙</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>idle</source>
         <translation>空闲</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
@@ -2900,12 +2900,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>无法连接：%1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>connecting to %1/%2…</source>
         <translation>正在连接 %1/%2…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Correct the scenario first: %1</source>
         <translation>请先修正场景：%1</translation>
     </message>
@@ -2915,7 +2915,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>已取消写入；机器人未改变。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>About learnid</source>
         <translation>关于 learnid</translation>
     </message>
@@ -3075,37 +3075,37 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::ReportWriter</name>
     <message>
-        <location filename="../ui/ReportWriter.cpp" line="+51"/>
+        <location filename="../ui/ReportWriter.cpp" line="+52"/>
         <source>learnid commissioning report</source>
         <translation>learnid 调试报告</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Commissioning report</source>
         <translation>调试报告</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Robot: %1</source>
         <translation>机器人：%1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Scenario</source>
         <translation>场景</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Parameter convergence</source>
         <translation>参数收敛</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>Applied set: %1</source>
         <translation>已写入参数组：%1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>learnid %1</source>
         <translation>learnid %1</translation>
     </message>
@@ -3501,17 +3501,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-4"/>
         <source>Cannot start the session: %1</source>
         <translation>无法启动会话：%1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Connect a robot to plan the first trial.</source>
         <translation>连接机器人以规划第一次试验。</translation>
     </message>
@@ -3526,7 +3526,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>试验 %1 %2：%3。其数据已保留。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Finished; %1 estimate(s) learned.</source>
         <translation>完成；已学习 %1 个估计。</translation>
     </message>
@@ -3541,12 +3541,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>已接受估计 %1。</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Parameters written to the robot and read back.</source>
         <translation>参数已写入机器人并回读确认。</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>nothing applied yet</source>
         <translation>尚未写入</translation>
     </message>
@@ -3559,17 +3559,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::SessionWorker</name>
     <message>
-        <location filename="../core/service/SessionWorker.cpp" line="+33"/>
+        <location filename="../core/service/SessionWorker.cpp" line="+40"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>未知机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+97"/>
         <source>no robot connected</source>
         <translation>未连接机器人</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+73"/>
         <source>no session to export</source>
         <translation>没有可导出的会话</translation>
     </message>
@@ -3782,17 +3782,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>运行一次仿真会话，将窗口保存为 PNG 到 &lt;file&gt; 后退出。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>User interface language, e.g. de or zh_CN (default: as chosen in the app, else the system&apos;s).</source>
         <translation>界面语言，例如 de 或 zh_CN（默认：应用中选择的语言，否则为系统语言）。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>What --screenshot shows: %1 (default: main).</source>
         <translation>--screenshot 显示的内容：%1（默认：main）。</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>learnid: unknown --screenshot-view &apos;%1&apos;; known: %2</source>
         <translation>learnid：未知的 --screenshot-view &apos;%1&apos;；已知：%2</translation>
     </message>

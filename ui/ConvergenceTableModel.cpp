@@ -213,8 +213,8 @@ QVariant ConvergenceTableModel::data(const QModelIndex &index, int role) const
     case Qt::TextAlignmentRole:
         return int((kind == Column::Observable || kind == Column::Trials || kind == Column::State
                         ? Qt::AlignLeft
-                        : Qt::AlignRight)
-                   | Qt::AlignVCenter);
+                        : Qt::AlignRight) |
+                   Qt::AlignVCenter);
     case Qt::ForegroundRole:
         if (kind == Column::Observable && text(k, kind, p).startsWith(QChar(0x26a0)))
             return QBrush(QColor(0xb0, 0x60, 0x00));
@@ -254,7 +254,8 @@ QVariant ConvergenceTableModel::headerData(int section, Qt::Orientation orientat
         return QAbstractTableModel::headerData(section, orientation, role);
     int p = 0;
     auto withUnit = [](const ParameterInfo &info) {
-        return info.unit.isEmpty() ? info.name : QStringLiteral("%1 [%2]").arg(info.name, info.unit);
+        return info.unit.isEmpty() ? info.name
+                                   : QStringLiteral("%1 [%2]").arg(info.name, info.unit);
     };
     switch (columnKind(section, &p)) {
     case Column::Estimate:

@@ -19,8 +19,17 @@ class ConvergenceTableModel : public QAbstractTableModel
     Q_OBJECT
 
 public:
-    enum class Column { Estimate, Parameter, RelativeChange, MaxError, Condition, Observable,
-                        TruthError, Trials, State };
+    enum class Column {
+        Estimate,
+        Parameter,
+        RelativeChange,
+        MaxError,
+        Condition,
+        Observable,
+        TruthError,
+        Trials,
+        State
+    };
 
     explicit ConvergenceTableModel(QObject *parent = nullptr);
 

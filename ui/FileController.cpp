@@ -4,13 +4,13 @@
 #include "io/ScenarioFile.h"
 #include "io/TrialCsv.h"
 #include "model/Error.h"
+#include "service/SessionController.h"
 #include "ui/ApplyPanel.h"
 #include "ui/ConvergenceChart.h"
 #include "ui/ConvergenceTableModel.h"
 #include "ui/PlotImage.h"
 #include "ui/ReportWriter.h"
 #include "ui/ScenarioForm.h"
-#include "service/SessionController.h"
 #include "ui/TrackingErrorPlot.h"
 #include "ui/UiLogging.h"
 #include "ui/UiSettings.h"
@@ -33,9 +33,10 @@ FileController::FileController(SessionController *session, Views views, UiSettin
     connect(m_session, &SessionController::parameterFileExported, this,
             [this](const QStringList &paths, const QString &error) {
                 if (error.isEmpty())
-                    emit finished(tr("Parameter file written: %1")
-                                      .arg(QDir::toNativeSeparators(paths.join(QStringLiteral(", ")))),
-                                  true);
+                    emit finished(
+                        tr("Parameter file written: %1")
+                            .arg(QDir::toNativeSeparators(paths.join(QStringLiteral(", ")))),
+                        true);
                 else
                     emit finished(tr("Parameter file not written: %1").arg(error), false);
             });
@@ -71,13 +72,13 @@ QString FileController::dialogPath(Purpose purpose, const QString &suggested)
         return QFileDialog::getSaveFileName(m_dialogParent, tr("Export parameter file"), suggested,
                                             tr("Parameter files (*.json)"));
     case Purpose::TrialCsvFolder:
-        return QFileDialog::getExistingDirectory(m_dialogParent, tr("Folder for the trial CSV files"),
-                                                 QFileInfo(suggested).path());
+        return QFileDialog::getExistingDirectory(
+            m_dialogParent, tr("Folder for the trial CSV files"), QFileInfo(suggested).path());
     case Purpose::Plot:
-        return QFileDialog::getSaveFileName(
-            m_dialogParent, tr("Export plot"), suggested,
-            svgExportAvailable() ? tr("PNG image (*.png);;SVG drawing (*.svg)")
-                                 : tr("PNG image (*.png)"));
+        return QFileDialog::getSaveFileName(m_dialogParent, tr("Export plot"), suggested,
+                                            svgExportAvailable()
+                                                ? tr("PNG image (*.png);;SVG drawing (*.svg)")
+                                                : tr("PNG image (*.png)"));
     case Purpose::Report:
         return QFileDialog::getSaveFileName(m_dialogParent, tr("Export commissioning report"),
                                             suggested, tr("PDF (*.pdf)"));
@@ -191,7 +192,8 @@ void FileController::exportPlotTo(const QString &path)
     }
     QWidget *view = m_views.plot->chartView();
     const QSize size(1200, 700);
-    const QByteArray bytes = svg ? widgetSvg(view, tr("Tracking error"), size) : widgetPng(view, size);
+    const QByteArray bytes =
+        svg ? widgetSvg(view, tr("Tracking error"), size) : widgetPng(view, size);
     try {
         writeFileAtomically(path, bytes);
         remember(path);
@@ -221,11 +223,19 @@ void FileController::exportReportTo(const QString &path)
     c.robot = info.robotDescription;
     c.scenario = {
         tr("Path: from (%1, %2) m, %3 m at %4 deg")
-            .arg(s.line.start.x()).arg(s.line.start.y()).arg(s.line.length).arg(s.line.directionDeg),
-        tr("Torque limits: %1 N m, planning fraction %2").arg(list(s.torqueLimits)).arg(s.planningFraction),
+            .arg(s.line.start.x())
+            .arg(s.line.start.y())
+            .arg(s.line.length)
+            .arg(s.line.directionDeg),
+        tr("Torque limits: %1 N m, planning fraction %2")
+            .arg(list(s.torqueLimits))
+            .arg(s.planningFraction),
         tr("kp: %1 N m/rad; ki: %2").arg(list(s.controller.kp), list(s.controller.ki)),
         tr("kd: %1 N m s/rad; lambda %2 rad/s").arg(list(s.controller.kd)).arg(s.controller.lambda),
-        tr("Estimator: %1, rho %2 rad/s, %3 trials").arg(s.law).arg(s.estimator.rho).arg(s.iterations),
+        tr("Estimator: %1, rho %2 rad/s, %3 trials")
+            .arg(s.law)
+            .arg(s.estimator.rho)
+            .arg(s.iterations),
         tr("Initial parameters: %1").arg(list(s.initialParameters)),
     };
     const ConvergenceTableModel *table = m_views.table;
@@ -240,9 +250,10 @@ void FileController::exportReportTo(const QString &path)
     c.trackingPlot = widgetImage(m_views.plot->chartView(), QSize(900, 560));
     c.convergencePlot = widgetImage(m_views.chart->chartView(), QSize(600, 560));
     const int stored = m_session->appliedEstimateIndex();
-    c.appliedSet = m_session->storedParameters().size() == 0
-                       ? tr("none (nothing applied in this session)")
-                       : tr("%1 (estimate %2)").arg(list(m_session->storedParameters())).arg(stored);
+    c.appliedSet =
+        m_session->storedParameters().size() == 0
+            ? tr("none (nothing applied in this session)")
+            : tr("%1 (estimate %2)").arg(list(m_session->storedParameters())).arg(stored);
     try {
         writeFileAtomically(path, commissioningReportPdf(c));
         remember(path);

@@ -22,7 +22,9 @@ QAction *make(QObject *parent, const QString &icon, const QString &text, const Q
     if (!key.isEmpty())
         a->setShortcut(key);
     a->setStatusTip(tip);
-    a->setToolTip(key.isEmpty() ? tip : QStringLiteral("%1 (%2)").arg(tip, key.toString(QKeySequence::NativeText)));
+    a->setToolTip(key.isEmpty()
+                      ? tip
+                      : QStringLiteral("%1 (%2)").arg(tip, key.toString(QKeySequence::NativeText)));
     return a;
 }
 
@@ -31,10 +33,12 @@ QAction *make(QObject *parent, const QString &icon, const QString &text, const Q
 MainActions::MainActions(QObject *parent)
     : QObject(parent)
 {
-    connectRobot = make(this, QStringLiteral("connect"), tr("&Connect robot"), QKeySequence(tr("Ctrl+K")),
-                        tr("Connect to the chosen robot and plan the first trial"));
-    newSession = make(this, QString(), tr("&New session"), QKeySequence::New,
-                      tr("Start a new session with the settings of the form (the history is discarded)"));
+    connectRobot =
+        make(this, QStringLiteral("connect"), tr("&Connect robot"), QKeySequence(tr("Ctrl+K")),
+             tr("Connect to the chosen robot and plan the first trial"));
+    newSession =
+        make(this, QString(), tr("&New session"), QKeySequence::New,
+             tr("Start a new session with the settings of the form (the history is discarded)"));
     openScenario = make(this, QStringLiteral("open"), tr("&Open scenario..."), QKeySequence::Open,
                         tr("Load a scenario file into the form"));
     saveScenario = make(this, QStringLiteral("save"), tr("&Save scenario..."), QKeySequence::Save,
@@ -42,13 +46,14 @@ MainActions::MainActions(QObject *parent)
     exportParameters = make(this, QStringLiteral("export"), tr("Export &parameter file..."),
                             QKeySequence(tr("Ctrl+E")),
                             tr("Write the accepted estimate as a parameter file (JSON and DCF)"));
-    exportTrialCsv = make(this, QString(), tr("Export trial &CSV..."), QKeySequence(tr("Ctrl+Shift+E")),
-                          tr("Write one CSV file per trial"));
-    exportPlot = make(this, QString(), tr("Export p&lot..."), QKeySequence(tr("Ctrl+Shift+P")),
-                      svgExportAvailable() ? tr("Save the tracking-error plot as PNG or SVG")
-                                           : tr("Save the tracking-error plot as PNG (SVG needs Qt6::Svg)"));
-    exportReport = make(this, QStringLiteral("report"), tr("Export &report (PDF)..."), QKeySequence::Print,
-                        tr("Write the one-page commissioning report"));
+    exportTrialCsv = make(this, QString(), tr("Export trial &CSV..."),
+                          QKeySequence(tr("Ctrl+Shift+E")), tr("Write one CSV file per trial"));
+    exportPlot =
+        make(this, QString(), tr("Export p&lot..."), QKeySequence(tr("Ctrl+Shift+P")),
+             svgExportAvailable() ? tr("Save the tracking-error plot as PNG or SVG")
+                                  : tr("Save the tracking-error plot as PNG (SVG needs Qt6::Svg)"));
+    exportReport = make(this, QStringLiteral("report"), tr("Export &report (PDF)..."),
+                        QKeySequence::Print, tr("Write the one-page commissioning report"));
     quit = make(this, QString(), tr("&Quit"), QKeySequence::Quit, tr("Quit learnid"));
     runTrial = make(this, QStringLiteral("run"), tr("&Run trial"), QKeySequence(Qt::Key_F5),
                     tr("Run the next trial and learn from it"));
@@ -62,15 +67,18 @@ MainActions::MainActions(QObject *parent)
                  tr("Write the accepted estimate to the robot controller"));
     revert = make(this, QStringLiteral("revert"), tr("Re&vert"), QKeySequence(tr("Ctrl+Shift+Z")),
                   tr("Restore the parameter set the robot held before the last apply"));
-    about = make(this, QStringLiteral("learnid"), tr("&About learnid"), QKeySequence(), tr("Version and licence"));
+    about = make(this, QStringLiteral("learnid"), tr("&About learnid"), QKeySequence(),
+                 tr("Version and licence"));
     aboutQt = make(this, QString(), tr("About &Qt"), QKeySequence(), tr("Qt version"));
     quit->setMenuRole(QAction::QuitRole);
     about->setMenuRole(QAction::AboutRole);
 
     languages = new QActionGroup(this);
     const QList<QPair<QString, QString>> entries = {
-        {QString(), tr("System language")}, {QStringLiteral("en"), QStringLiteral("English")},
-        {QStringLiteral("de"), QStringLiteral("Deutsch")}, {QStringLiteral("zh_CN"), QStringLiteral("\u4e2d\u6587 (\u7b80\u4f53)")}};
+        {QString(), tr("System language")},
+        {QStringLiteral("en"), QStringLiteral("English")},
+        {QStringLiteral("de"), QStringLiteral("Deutsch")},
+        {QStringLiteral("zh_CN"), QStringLiteral("\u4e2d\u6587 (\u7b80\u4f53)")}};
     for (const auto &entry : entries) {
         QAction *a = languages->addAction(entry.second);
         a->setCheckable(true);

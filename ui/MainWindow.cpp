@@ -1,5 +1,6 @@
 #include "ui/MainWindow.h"
 
+#include "service/SessionController.h"
 #include "ui/ApplyConfirmDialog.h"
 #include "ui/ApplyPanel.h"
 #include "ui/ConvergenceChart.h"
@@ -11,7 +12,6 @@
 #include "ui/RobotPanel.h"
 #include "ui/RunPanel.h"
 #include "ui/ScenarioForm.h"
-#include "service/SessionController.h"
 #include "ui/SessionPresenter.h"
 #include "ui/TrackingErrorPlot.h"
 
@@ -84,7 +84,9 @@ MainWindow::MainWindow(QSettings *settings, QWidget *parent)
     m_actions->setLanguage(m_settings.language());
     buildLayout();
     connectViews();
-    m_presenter = new SessionPresenter(m_controller, {m_robot, m_form, m_check, m_run, m_apply, m_plot, m_table, m_chart, m_message}, this);
+    m_presenter = new SessionPresenter(
+        m_controller,
+        {m_robot, m_form, m_check, m_run, m_apply, m_plot, m_table, m_chart, m_message}, this);
     connect(m_controller, &SessionController::stateChanged, this, &MainWindow::updateActions);
     statusBar()->addPermanentWidget(m_statusRobot);
     restoreGeometry(m_settings.windowGeometry());
@@ -161,12 +163,14 @@ void MainWindow::connectViews()
         m_controller->runTrials(n);
     });
     connect(a->stop, &QAction::triggered, m_controller, &SessionController::stop);
-    connect(a->accept, &QAction::triggered, this, [this] { m_controller->accept(m_apply->chosenEstimate()); });
+    connect(a->accept, &QAction::triggered, this,
+            [this] { m_controller->accept(m_apply->chosenEstimate()); });
     connect(a->apply, &QAction::triggered, this, &MainWindow::requestApply);
     connect(a->revert, &QAction::triggered, m_controller, &SessionController::revert);
     connect(a->openScenario, &QAction::triggered, m_files, &FileController::openScenario);
     connect(a->saveScenario, &QAction::triggered, m_files, &FileController::saveScenario);
-    connect(a->exportParameters, &QAction::triggered, m_files, &FileController::exportParameterFile);
+    connect(a->exportParameters, &QAction::triggered, m_files,
+            &FileController::exportParameterFile);
     connect(a->exportTrialCsv, &QAction::triggered, m_files, &FileController::exportTrialCsv);
     connect(a->exportPlot, &QAction::triggered, m_files, &FileController::exportPlot);
     connect(a->exportReport, &QAction::triggered, m_files, &FileController::exportReport);
@@ -182,7 +186,8 @@ void MainWindow::connectViews()
             [this](bool on) { m_settings.setPlotAutoScale(on); });
     connect(m_files, &FileController::scenarioLoaded, m_form, &ScenarioForm::setScenario);
     connect(m_files, &FileController::finished, this, [this](const QString &text, bool ok) {
-        m_message->showMessage(text, ok ? MessageBar::Severity::Success : MessageBar::Severity::Error);
+        m_message->showMessage(text,
+                               ok ? MessageBar::Severity::Success : MessageBar::Severity::Error);
     });
     connect(m_form, &ScenarioForm::edited, this, [this](bool valid) {
         if (!valid)
@@ -225,7 +230,10 @@ void MainWindow::updateActions()
     if (c->state() == SessionState::Idle && c->lastCheck() && !c->lastCheck()->passed())
         m_run->setStatus(tr("Run disabled: %1").arg(c->lastCheck()->reason()));
     const QString robot = open ? c->info()->robotDescription : tr("no robot");
-    m_statusRobot->setText(tr("Robot: %1 \u2013 %2").arg(robot, busy ? tr("busy") : open ? tr("idle") : tr("not connected")));
+    m_statusRobot->setText(tr("Robot: %1 \u2013 %2")
+                               .arg(robot, busy   ? tr("busy")
+                                           : open ? tr("idle")
+                                                  : tr("not connected")));
 }
 
 void MainWindow::connectOrDisconnect()
@@ -235,11 +243,12 @@ void MainWindow::connectOrDisconnect()
     QString error;
     const auto robot = m_robot->choice(&error);
     if (!robot)
-        return m_message->showMessage(tr("Cannot connect: %1").arg(error), MessageBar::Severity::Error);
+        return m_message->showMessage(tr("Cannot connect: %1").arg(error),
+                                      MessageBar::Severity::Error);
     m_controller->setRobotRequest(*robot);
     if (robot->kind == RobotRequest::Kind::Can)
-        m_robot->setConnected(false, tr("connecting to %1/%2\u2026")
-                                         .arg(robot->can.plugin, robot->can.interface));
+        m_robot->setConnected(
+            false, tr("connecting to %1/%2\u2026").arg(robot->can.plugin, robot->can.interface));
     if (const auto s = m_form->scenario())
         m_controller->open(*s);
     else
@@ -260,7 +269,8 @@ void MainWindow::requestApply()
     if (m_confirm(preview))
         m_controller->apply();
     else
-        m_message->showMessage(tr("Apply cancelled; the robot is unchanged."), MessageBar::Severity::Info);
+        m_message->showMessage(tr("Apply cancelled; the robot is unchanged."),
+                               MessageBar::Severity::Info);
 }
 
 void MainWindow::showAbout()

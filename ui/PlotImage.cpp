@@ -21,8 +21,7 @@ bool svgExportAvailable()
 namespace {
 
 // Renders at a fixed size without disturbing the window: resize, render, restore.
-template <typename Paint>
-void renderAt(QWidget *widget, QSize size, Paint paint)
+template <typename Paint> void renderAt(QWidget *widget, QSize size, Paint paint)
 {
     const QSize old = widget->size();
     if (size.isValid() && size != old)

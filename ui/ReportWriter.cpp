@@ -48,7 +48,8 @@ QByteArray commissioningReportPdf(const ReportContent &c)
     writer.setPageSize(QPageSize(QPageSize::A4));
     writer.setResolution(300);
     writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
-    writer.setTitle(QCoreApplication::translate("learnid::ReportWriter", "learnid commissioning report"));
+    writer.setTitle(
+        QCoreApplication::translate("learnid::ReportWriter", "learnid commissioning report"));
     writer.setCreator(QStringLiteral("learnid %1").arg(c.toolVersion));
 
     QPainter p(&writer);
@@ -60,7 +61,8 @@ QByteArray commissioningReportPdf(const ReportContent &c)
     p.setFont(font);
     int y = 0;
     const int titleHeight = p.fontMetrics().height();
-    p.drawText(QRect(0, y, w, titleHeight), Qt::AlignLeft, QCoreApplication::translate("learnid::ReportWriter", "Commissioning report"));
+    p.drawText(QRect(0, y, w, titleHeight), Qt::AlignLeft,
+               QCoreApplication::translate("learnid::ReportWriter", "Commissioning report"));
     font.setPointSizeF(8.5);
     font.setBold(false);
     p.setFont(font);
@@ -68,13 +70,15 @@ QByteArray commissioningReportPdf(const ReportContent &c)
                c.created.toString(Qt::ISODate));
     y += titleHeight + 20;
     const int line = p.fontMetrics().height();
-    p.drawText(QRect(0, y, w, line), QCoreApplication::translate("learnid::ReportWriter", "Robot: %1").arg(c.robot));
+    p.drawText(QRect(0, y, w, line),
+               QCoreApplication::translate("learnid::ReportWriter", "Robot: %1").arg(c.robot));
     y += line * 3 / 2;
 
     // Scenario in two columns.
     font.setBold(true);
     p.setFont(font);
-    p.drawText(QRect(0, y, w, line), QCoreApplication::translate("learnid::ReportWriter", "Scenario"));
+    p.drawText(QRect(0, y, w, line),
+               QCoreApplication::translate("learnid::ReportWriter", "Scenario"));
     font.setBold(false);
     p.setFont(font);
     y += line;
@@ -88,7 +92,8 @@ QByteArray commissioningReportPdf(const ReportContent &c)
 
     font.setBold(true);
     p.setFont(font);
-    p.drawText(QRect(0, y, w, line), QCoreApplication::translate("learnid::ReportWriter", "Parameter convergence"));
+    p.drawText(QRect(0, y, w, line),
+               QCoreApplication::translate("learnid::ReportWriter", "Parameter convergence"));
     y += line;
     font.setBold(false);
     font.setPointSizeF(c.tableHeader.size() > 10 ? 6.5 : 7.5);
@@ -106,9 +111,12 @@ QByteArray commissioningReportPdf(const ReportContent &c)
     }
     font.setPointSizeF(8.5);
     p.setFont(font);
-    p.drawText(QRect(0, y, w, 2 * line), Qt::TextWordWrap, QCoreApplication::translate("learnid::ReportWriter", "Applied set: %1").arg(c.appliedSet));
-    p.drawText(QRect(0, page.height() - line, w, line), Qt::AlignRight,
-               QCoreApplication::translate("learnid::ReportWriter", "learnid %1").arg(c.toolVersion));
+    p.drawText(
+        QRect(0, y, w, 2 * line), Qt::TextWordWrap,
+        QCoreApplication::translate("learnid::ReportWriter", "Applied set: %1").arg(c.appliedSet));
+    p.drawText(
+        QRect(0, page.height() - line, w, line), Qt::AlignRight,
+        QCoreApplication::translate("learnid::ReportWriter", "learnid %1").arg(c.toolVersion));
     p.end();
     return bytes;
 }

@@ -15,12 +15,12 @@ struct ReportContent
     QDateTime created;
     QString toolVersion;
     QString robot;
-    QStringList scenario;        ///< "key: value" lines
-    QStringList tableHeader;     ///< the convergence table
+    QStringList scenario;    ///< "key: value" lines
+    QStringList tableHeader; ///< the convergence table
     QList<QStringList> tableRows;
     QImage trackingPlot;
     QImage convergencePlot;
-    QString appliedSet;          ///< what the robot holds, in words
+    QString appliedSet; ///< what the robot holds, in words
 };
 
 /// The report as PDF file content (A4 portrait, one page; QPdfWriter).

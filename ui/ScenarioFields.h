@@ -22,7 +22,7 @@ struct ScenarioField
     Kind kind = Kind::Number;
     std::function<Eigen::VectorXd(const Scenario &)> read;
     std::function<void(Scenario &, const Eigen::VectorXd &)> write;
-    int expectedCount = 1; ///< values a Number/Integer field takes; vectors: 0 = any
+    int expectedCount = 1;  ///< values a Number/Integer field takes; vectors: 0 = any
     double minimum = -1e15; ///< Integer: the range of the setting's type (written as is)
     double maximum = 1e15;
 };

@@ -25,7 +25,10 @@ public:
 
     void setScenario(const Scenario &scenario);
     /// The edited scenario, or nullopt while a field is refused.
-    std::optional<Scenario> scenario() const { return m_valid ? std::optional(m_current) : std::nullopt; }
+    std::optional<Scenario> scenario() const
+    {
+        return m_valid ? std::optional(m_current) : std::nullopt;
+    }
     bool isValid() const { return m_valid; }
     /// The first refused field's key and reason ("controller.lambda: must be positive"), or "".
     QString firstError() const { return m_firstError; }

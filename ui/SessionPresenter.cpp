@@ -1,5 +1,6 @@
 #include "ui/SessionPresenter.h"
 
+#include "service/SessionController.h"
 #include "ui/ApplyPanel.h"
 #include "ui/ConvergenceChart.h"
 #include "ui/ConvergenceTableModel.h"
@@ -8,7 +9,6 @@
 #include "ui/RobotPanel.h"
 #include "ui/RunPanel.h"
 #include "ui/ScenarioForm.h"
-#include "service/SessionController.h"
 #include "ui/TrackingErrorPlot.h"
 
 namespace learnid {
@@ -31,7 +31,8 @@ SessionPresenter::SessionPresenter(SessionController *controller, Views views, Q
     });
     connect(c, &SessionController::openFailed, this, [this](const QString &message) {
         m_views.robot->setConnected(false, tr("not connected"));
-        m_views.message->showMessage(tr("Cannot start the session: %1").arg(message), MessageBar::Severity::Error);
+        m_views.message->showMessage(tr("Cannot start the session: %1").arg(message),
+                                     MessageBar::Severity::Error);
     });
     connect(c, &SessionController::closed, this, [this] {
         m_views.robot->setConnected(false, tr("not connected"));
@@ -48,35 +49,40 @@ SessionPresenter::SessionPresenter(SessionController *controller, Views views, Q
     });
     connect(c, &SessionController::trialFinished, this,
             [this](const TrialResult &t, const QList<TrackingErrorCurve> &curves) {
-        if (t.status() != TrialStatus::Refused)
-            m_views.plot->setTrialCurves(t.index, curves);
-        if (t.learned())
-            m_views.run->trialDone(int(m_controller->estimates().size()) - 1);
-        else if (t.status() == TrialStatus::Refused) { // nothing moved, nothing recorded
-            QString text = t.message;
-            if (!text.isEmpty())
-                text[0] = text[0].toUpper();
-            m_views.message->showMessage(text, MessageBar::Severity::Error);
-        } else
-            m_views.message->showMessage(tr("Trial %1 %2: %3. Its data are kept.")
-                                       .arg(t.index).arg(trialStatusName(t.status()), t.message),
-                                   MessageBar::Severity::Error);
-    });
+                if (t.status() != TrialStatus::Refused)
+                    m_views.plot->setTrialCurves(t.index, curves);
+                if (t.learned())
+                    m_views.run->trialDone(int(m_controller->estimates().size()) - 1);
+                else if (t.status() == TrialStatus::Refused) { // nothing moved, nothing recorded
+                    QString text = t.message;
+                    if (!text.isEmpty())
+                        text[0] = text[0].toUpper();
+                    m_views.message->showMessage(text, MessageBar::Severity::Error);
+                } else
+                    m_views.message->showMessage(tr("Trial %1 %2: %3. Its data are kept.")
+                                                     .arg(t.index)
+                                                     .arg(trialStatusName(t.status()), t.message),
+                                                 MessageBar::Severity::Error);
+            });
     connect(c, &SessionController::historyChanged, this, &SessionPresenter::refreshTables);
     connect(c, &SessionController::runFinished, this, [this](bool all) {
-        m_views.run->setStatus(all ? tr("Finished; %1 estimate(s) learned.").arg(m_controller->estimates().size() - 1)
-                             : tr("Stopped; see the message above."));
+        m_views.run->setStatus(
+            all ? tr("Finished; %1 estimate(s) learned.").arg(m_controller->estimates().size() - 1)
+                : tr("Stopped; see the message above."));
     });
     connect(c, &SessionController::acceptedChanged, this, [this](int k) {
         m_views.apply->setAccepted(k);
-        m_views.message->showMessage(tr("Estimate %1 accepted.").arg(k), MessageBar::Severity::Info);
+        m_views.message->showMessage(tr("Estimate %1 accepted.").arg(k),
+                                     MessageBar::Severity::Info);
     });
     connect(c, &SessionController::applied, this, [this](const Eigen::VectorXd &) {
-        m_views.message->showMessage(tr("Parameters written to the robot and read back."), MessageBar::Severity::Success);
+        m_views.message->showMessage(tr("Parameters written to the robot and read back."),
+                                     MessageBar::Severity::Success);
     });
-    connect(c, &SessionController::operationFailed, this, [this](SessionOperation, const QString &text) {
-        m_views.message->showMessage(text, MessageBar::Severity::Error);
-    });
+    connect(c, &SessionController::operationFailed, this,
+            [this](SessionOperation, const QString &text) {
+                m_views.message->showMessage(text, MessageBar::Severity::Error);
+            });
 }
 
 void SessionPresenter::refreshTables()
@@ -93,8 +99,9 @@ void SessionPresenter::refreshTables()
     for (Eigen::Index i = 0; i < stored.size(); ++i)
         values << QString::number(stored[i], 'g', 6);
     m_views.apply->setStored(stored.size() == 0 ? tr("nothing applied yet")
-                                          : tr("%1 (estimate %2)").arg(values.join(QStringLiteral(", ")))
-                                                .arg(c->appliedEstimateIndex()));
+                                                : tr("%1 (estimate %2)")
+                                                      .arg(values.join(QStringLiteral(", ")))
+                                                      .arg(c->appliedEstimateIndex()));
 }
 
 } // namespace learnid

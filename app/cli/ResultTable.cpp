@@ -47,15 +47,17 @@ QString resultTable(const CommissioningSession &session)
         QStringList cells{cell(QString::number(row), 5)};
         for (Eigen::Index i = 0; i < phi.size(); ++i)
             cells << number(phi[i], 4, 12);
-        cells << (row == 0 ? cell(QStringLiteral("-"), 9)
-                           : number(largestRelativeDifferencePercent(phi, estimates.at(row - 1)), 3, 9));
+        cells << (row == 0
+                      ? cell(QStringLiteral("-"), 9)
+                      : number(largestRelativeDifferencePercent(phi, estimates.at(row - 1)), 3, 9));
         const TrialResult *t = session.trialRunWith(row); // the trial run with estimate k
         for (int j = 0; j < n; ++j)
             cells << (t && t->maxTrackingErrorDeg.size() == n
                           ? number(t->maxTrackingErrorDeg[j], 5, 12)
                           : cell(QStringLiteral("-"), 12));
         cells << (t ? number(t->check.rule.duration, 3, 6) : cell(QStringLiteral("-"), 6));
-        cells << (t && t->update ? number(t->update->condition, 2, 7) : cell(QStringLiteral("-"), 7));
+        cells << (t && t->update ? number(t->update->condition, 2, 7)
+                                 : cell(QStringLiteral("-"), 7));
         if (truth)
             cells << number(largestRelativeDifferencePercent(phi, *truth), 3, 10);
         QString line = cells.join(QLatin1Char(' '));

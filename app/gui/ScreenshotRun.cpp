@@ -1,12 +1,12 @@
 #include "ScreenshotRun.h"
 
+#include "service/SessionController.h"
 #include "ui/ApplyConfirmDialog.h"
 #include "ui/ApplyPreview.h"
 #include "ui/MainActions.h"
 #include "ui/MainWindow.h"
 #include "ui/RobotPanel.h"
 #include "ui/ScenarioForm.h"
-#include "service/SessionController.h"
 #include "ui/TrackingErrorPlot.h"
 
 #include <QAction>

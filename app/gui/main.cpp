@@ -41,11 +41,13 @@ int main(int argc, char **argv)
     parser.addVersionOption();
     const QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
-        QApplication::translate("main", "Run a simulated session, save the window as PNG to <file> and exit."),
+        QApplication::translate(
+            "main", "Run a simulated session, save the window as PNG to <file> and exit."),
         QStringLiteral("file"));
     const QCommandLineOption language(
         QStringLiteral("language"),
-        QApplication::translate("main", "User interface language, e.g. de or zh_CN (default: as chosen in the app, else the system's)."),
+        QApplication::translate("main", "User interface language, e.g. de or zh_CN (default: as "
+                                        "chosen in the app, else the system's)."),
         QStringLiteral("locale"));
     const QCommandLineOption screenshotView(
         QStringLiteral("screenshot-view"),
@@ -57,8 +59,8 @@ int main(int argc, char **argv)
     const auto view = learnid::ScreenshotRun::viewNamed(parser.value(screenshotView));
     if (!view) {
         const QString known = learnid::ScreenshotRun::viewNames().join(QStringLiteral(", "));
-        const QString error = QApplication::translate(
-            "main", "learnid: unknown --screenshot-view '%1'; known: %2");
+        const QString error =
+            QApplication::translate("main", "learnid: unknown --screenshot-view '%1'; known: %2");
         std::fprintf(stderr, "%s\n", qPrintable(error.arg(parser.value(screenshotView), known)));
         return 1;
     }
@@ -67,7 +69,8 @@ int main(int argc, char **argv)
     QTemporaryDir scratch;
     std::unique_ptr<QSettings> settings =
         parser.isSet(screenshot)
-            ? std::make_unique<QSettings>(scratch.filePath(QStringLiteral("learnid.ini")), QSettings::IniFormat)
+            ? std::make_unique<QSettings>(scratch.filePath(QStringLiteral("learnid.ini")),
+                                          QSettings::IniFormat)
             : std::make_unique<QSettings>();
     const QString lang = parser.isSet(language) ? parser.value(language)
                                                 : learnid::UiSettings(settings.get()).language();

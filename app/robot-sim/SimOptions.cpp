@@ -142,8 +142,8 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
             "SYNC periods in Operation enabled without a set-point before a drive faults with "
             "EMCY 0x8100 (default 3; raise it on a heavily loaded machine)."),
         QCoreApplication::translate("learnid-robot-sim", "N"));
-    parser.addOptions({help, version, plugin, interface, nodes, scenario, state, drop, silent,
-                       emcy, refuse, setPointTimeout});
+    parser.addOptions({help, version, plugin, interface, nodes, scenario, state, drop, silent, emcy,
+                       refuse, setPointTimeout});
     cl.usage = parser.helpText();
 
     if (!parser.parse(arguments)) {
@@ -204,7 +204,8 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
     }
     if (error.isEmpty() && parser.isSet(setPointTimeout)) {
         qint64 n = 0;
-        error = parseInteger(QStringLiteral("setpoint-timeout"), parser.value(setPointTimeout), 1, &n);
+        error =
+            parseInteger(QStringLiteral("setpoint-timeout"), parser.value(setPointTimeout), 1, &n);
         if (error.isEmpty() && n > 100000)
             error =
                 QCoreApplication::translate(

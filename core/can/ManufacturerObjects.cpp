@@ -46,8 +46,14 @@ QList<ObjectDescription> manufacturerObjects(const ManufacturerDefaults &d)
         return QString::fromLatin1(text);
     };
     QList<ObjectDescription> list = {
-        {gains, 0, DataType::Unsigned8, Access::ReadOnly, 4, {4, true, 4},
-         s("Highest sub-index supported"), {}},
+        {gains,
+         0,
+         DataType::Unsigned8,
+         Access::ReadOnly,
+         4,
+         {4, true, 4},
+         s("Highest sub-index supported"),
+         {}},
         {gains, gainKp, DataType::Real32, Access::ReadWrite, d.kp, positive, s("Gain kp"),
          s("N m/rad")},
         {gains, gainKi, DataType::Real32, Access::ReadWrite, d.ki, nonNegative, s("Gain ki"),
@@ -56,15 +62,27 @@ QList<ObjectDescription> manufacturerObjects(const ManufacturerDefaults &d)
          s("N m s/rad")},
         {gains, gainLambda, DataType::Real32, Access::ReadWrite, d.lambda, positive,
          s("Derivative filter lambda"), s("rad/s")},
-        {identifiedParameters, 0, DataType::Unsigned8, Access::ReadWrite, 0,
-         {0, true, double(m)}, s("Number of identified parameters"), {}},
+        {identifiedParameters,
+         0,
+         DataType::Unsigned8,
+         Access::ReadWrite,
+         0,
+         {0, true, double(m)},
+         s("Number of identified parameters"),
+         {}},
     };
     for (int i = 1; i <= m; ++i) {
         list.append({identifiedParameters, quint8(i), DataType::Real32, Access::ReadWrite, 0,
                      anyFinite, s("Identified parameter %1").arg(i), s("SI")});
     }
-    list.append({torqueLimit, 0, DataType::Real32, Access::ReadWrite, d.torqueLimit,
-                 {0.0, false, 1e6}, s("Torque limit"), s("N m")});
+    list.append({torqueLimit,
+                 0,
+                 DataType::Real32,
+                 Access::ReadWrite,
+                 d.torqueLimit,
+                 {0.0, false, 1e6},
+                 s("Torque limit"),
+                 s("N m")});
     return list;
 }
 

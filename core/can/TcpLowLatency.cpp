@@ -3,11 +3,11 @@
 #include <QtGlobal>
 
 #ifdef Q_OS_LINUX
+#include <cstdlib>
 #include <dirent.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/socket.h>
-#include <cstdlib>
 #endif
 
 namespace learnid {
@@ -31,8 +31,8 @@ int setNoDelayOnAllTcpSockets()
             continue; // not a socket, or not a stream
         sockaddr_storage address{};
         length = sizeof(address);
-        if (getsockname(int(fd), reinterpret_cast<sockaddr *>(&address), &length) != 0
-            || (address.ss_family != AF_INET && address.ss_family != AF_INET6))
+        if (getsockname(int(fd), reinterpret_cast<sockaddr *>(&address), &length) != 0 ||
+            (address.ss_family != AF_INET && address.ss_family != AF_INET6))
             continue; // a Unix socket
         const int one = 1;
         if (setsockopt(int(fd), IPPROTO_TCP, TCP_NODELAY, &one, sizeof(one)) == 0)

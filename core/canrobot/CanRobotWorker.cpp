@@ -164,8 +164,9 @@ void CanRobotWorker::configure(const TrialPlan &plan, const TrialMonitor &monito
         if (monitor.cancelled())
             return endTrial(notStarted(m_samplePeriod, TrialStatus::Cancelled,
                                        tr("stopped by the operator before the drives moved")));
-        m_units->streamer.start(*m_model, plan, m_options.nodes, m_configuration->scaling, m_options,
-                          monitor, [this](const TrialRecord &record) { endTrial(record); });
+        m_units->streamer.start(*m_model, plan, m_options.nodes, m_configuration->scaling,
+                                m_options, monitor,
+                                [this](const TrialRecord &record) { endTrial(record); });
     });
 }
 
@@ -219,8 +220,7 @@ void CanRobotWorker::apply(const Eigen::VectorXd &phi, std::function<void(const 
             if (error.isEmpty())
                 return done({});
             if (sequence->stepsDone() < firstStore)
-                return done(
-                    tr("%1; nothing was stored (0x1010 not written)").arg(asClause(error)));
+                return done(tr("%1; nothing was stored (0x1010 not written)").arg(asClause(error)));
             done(tr("%1; storing stopped at node %2 of the list")
                      .arg(asClause(error))
                      .arg(sequence->stepsDone() - firstStore + 1));

@@ -126,10 +126,9 @@ void addDriveObjects(ObjectDictionary &od, const DriveNodeSettings &s)
 
     // The manufacturer objects as the one table describes them (the DCF and the docs follow it).
     for (const ObjectDescription &o : manufacturerObjects(manufacturerDefaults(s))) {
-        od.add(o.index, o.subIndex, o.type, o.access, o.defaultValue,
-               [o](const QByteArray &raw) {
-                   return writeAbortCode(o, canopen::decodeValue(o.type, raw));
-               });
+        od.add(o.index, o.subIndex, o.type, o.access, o.defaultValue, [o](const QByteArray &raw) {
+            return writeAbortCode(o, canopen::decodeValue(o.type, raw));
+        });
     }
 
     od.add(controlword, 0, DataType::Unsigned16, Access::ReadWrite, 0);

@@ -9,11 +9,11 @@ namespace learnid {
 /// u [N m], sampled every samplePeriod and discretised with Tustin.
 struct ControllerSettings
 {
-    double samplePeriod = 0.002;                       ///< Ts [s]
+    double samplePeriod = 0.002;                      ///< Ts [s]
     Eigen::VectorXd kp = Eigen::Vector2d(4500, 5000); ///< [N m/rad] (n)
     Eigen::VectorXd ki = Eigen::Vector2d(30, 30);     ///< [N m/(rad s)] (n)
     Eigen::VectorXd kd = Eigen::Vector2d(600, 600);   ///< [N m s/rad] (n)
-    double lambda = 200.0;                             ///< derivative filter bandwidth [rad/s]
+    double lambda = 200.0;                            ///< derivative filter bandwidth [rad/s]
 
     int dof() const { return int(kp.size()); }
 };

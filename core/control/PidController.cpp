@@ -24,9 +24,9 @@ StateSpace pidStateSpace(double kp, double ki, double kd, double lambda)
 PidController::PidController(const ControllerSettings &settings)
 {
     for (int j = 0; j < settings.dof(); ++j) {
-        const StateSpace d = tustin(
-            pidStateSpace(settings.kp[j], settings.ki[j], settings.kd[j], settings.lambda),
-            settings.samplePeriod);
+        const StateSpace d =
+            tustin(pidStateSpace(settings.kp[j], settings.ki[j], settings.kd[j], settings.lambda),
+                   settings.samplePeriod);
         Joint joint;
         joint.a = d.a;
         joint.b = d.b;

@@ -46,8 +46,8 @@ ParameterUpdate PaperLaw::update(const RobotModel &model, const std::vector<Tria
             a[size_t(j)].col(i) =
                 0.5 * (w.row(i * n + j).head(rows) + w.row(i * n + j).tail(rows)).transpose();
     // Solved, then taken about its own fit: the residual is the rows' own.
-    GramBlock block = selfFittedBlock(a, tauHat.leftCols(rows).transpose(), phiPrev,
-                                      settings.rankTolerance);
+    GramBlock block =
+        selfFittedBlock(a, tauHat.leftCols(rows).transpose(), phiPrev, settings.rankTolerance);
     for (int j = 0; j < n; ++j) {
         // Torque noise reaches tau_hat through the causal F, whose transpose runs backward in
         // time; identically zero regressor entries stay zero.

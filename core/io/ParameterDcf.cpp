@@ -1,6 +1,6 @@
+#include "can/ManufacturerObjects.h"
 #include "io/JsonReader.h"
 #include "io/ParameterFile.h"
-#include "can/ManufacturerObjects.h"
 #include "model/Error.h"
 
 #include <QCoreApplication>
@@ -174,8 +174,8 @@ QByteArray parameterDcfFragment(const ParameterFileContent &content, int joint)
     out += "[ManufacturerObjects]\nSupportedObjects=2\n";
     out += "1=0x" + hex(objects::gains) + "\n2=0x" + hex(objects::identifiedParameters) + "\n\n";
     writeObject(out, objects::gains, QStringLiteral("Joint controller gains"), gains);
-    writeObject(out, objects::identifiedParameters,
-                QStringLiteral("Identified dynamic parameters"), parameters);
+    writeObject(out, objects::identifiedParameters, QStringLiteral("Identified dynamic parameters"),
+                parameters);
     return out;
 }
 

@@ -17,7 +17,6 @@ namespace learnid {
 /// The "schema" of parameter files this version reads and writes.
 inline constexpr char parameterFileSchema[] = "learnid-parameters/1";
 
-
 /// Everything a parameter file holds (docs/file-formats.md), filled by the caller.
 struct ParameterFileContent
 {
@@ -34,12 +33,12 @@ struct ParameterFileContent
     /// Estimated standard deviation per parameter (m), +inf for one the path does not observe
     /// (written as null); empty when not available.
     Eigen::VectorXd standardDeviations;
-    Eigen::VectorXd maxTrackingErrorDeg;  ///< per joint [deg] (n), or empty
-    Eigen::VectorXd rmsTrackingErrorDeg;  ///< per joint [deg] (n), or empty
-    Eigen::VectorXd residualRms;          ///< per joint [N m] (n), or empty
-    double condition = 0.0;               ///< cond(W^T W), columns scaled; +inf when rank deficient
-    int rank = 0;                         ///< observable directions of the fit (0..m)
-    QList<SdoWrite> canWrites; ///< the exact writes "apply" performs, in order
+    Eigen::VectorXd maxTrackingErrorDeg; ///< per joint [deg] (n), or empty
+    Eigen::VectorXd rmsTrackingErrorDeg; ///< per joint [deg] (n), or empty
+    Eigen::VectorXd residualRms;         ///< per joint [N m] (n), or empty
+    double condition = 0.0;              ///< cond(W^T W), columns scaled; +inf when rank deficient
+    int rank = 0;                        ///< observable directions of the fit (0..m)
+    QList<SdoWrite> canWrites;           ///< the exact writes "apply" performs, in order
 
     /// jointNodes, or 1..n when it is empty.
     QList<int> nodes() const;

@@ -48,10 +48,11 @@ TorqueRuleResult shortestDuration(const TorqueRuleGrid &grid, const Eigen::Vecto
                                   const Eigen::VectorXd &torqueLimit, double fraction)
 {
     const int n = grid.dof;
-    if (torqueLimit.size() != n || (torqueLimit.array() <= 0.0).any() || !(fraction > 0.0)
-        || phi.size() != grid.inertial.cols()) {
+    if (torqueLimit.size() != n || (torqueLimit.array() <= 0.0).any() || !(fraction > 0.0) ||
+        phi.size() != grid.inertial.cols()) {
         throw Error(QCoreApplication::translate(
-            "TorqueRule", "torque rule needs one positive limit per joint and a positive fraction"));
+            "TorqueRule",
+            "torque rule needs one positive limit per joint and a positive fraction"));
     }
     // A(u): inertial and velocity torque at T = 1, columns per grid point; g(u): gravity.
     const Eigen::Index points = grid.inertial.rows() / n;
@@ -62,9 +63,10 @@ TorqueRuleResult shortestDuration(const TorqueRuleGrid &grid, const Eigen::Vecto
     const Eigen::VectorXd limit = fraction * torqueLimit;
     const Eigen::VectorXd staticRatio = g.cwiseAbs().rowwise().maxCoeff().cwiseQuotient(limit);
     if ((staticRatio.array() >= 1.0).any()) {
-        throw Error(QCoreApplication::translate(
-            "TorqueRule", "gravity alone needs more than %1 % of a joint's torque limit")
-                        .arg(fraction * 100.0));
+        throw Error(
+            QCoreApplication::translate(
+                "TorqueRule", "gravity alone needs more than %1 % of a joint's torque limit")
+                .arg(fraction * 100.0));
     }
     const Eigen::VectorXd inertialRatio = a.cwiseAbs().rowwise().maxCoeff().cwiseQuotient(limit);
     if (!inertialRatio.allFinite() || inertialRatio.maxCoeff() <= 0.0) {

@@ -9,9 +9,9 @@ namespace learnid {
 /// computed with a parameter estimate, is `fraction` of the torque limits (docs/method.md §1).
 struct TorqueRuleResult
 {
-    double duration = 0.0;       ///< T [s]
-    Eigen::VectorXd peakTorque;  ///< planned max |tau_j| over the motion at T [N m] (n)
-    int limitingJoint = 0;       ///< the joint whose peak reaches fraction * limit
+    double duration = 0.0;      ///< T [s]
+    Eigen::VectorXd peakTorque; ///< planned max |tau_j| over the motion at T [N m] (n)
+    int limitingJoint = 0;      ///< the joint whose peak reaches fraction * limit
 };
 
 /// The line's geometry for the torque rule, independent of the parameters: regressor rows on a

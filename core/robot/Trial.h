@@ -1,8 +1,8 @@
 #pragma once
 
 #include "control/ControllerSettings.h"
-#include "motion/JointTrajectory.h"
 #include "model/RobotModel.h"
+#include "motion/JointTrajectory.h"
 
 #include <Eigen/Core>
 #include <QString>
@@ -19,9 +19,9 @@ struct TrialPlan
     Eigen::MatrixXd feedforward;           ///< tau_f = W(q_d, qd_d, qdd_d) phi_hat [N m] (n x N)
     Eigen::VectorXd feedforwardParameters; ///< phi_hat the feedforward was built with (m)
     ControllerSettings controller;
-    Eigen::VectorXd torqueLimit;           ///< [N m] (n); commands saturate here
-    double maxTrackingError = 0.0;         ///< abort threshold on |q_d - q| [rad]
-    double motionDuration = 0.0;           ///< T of the motion between the rests [s]
+    Eigen::VectorXd torqueLimit;   ///< [N m] (n); commands saturate here
+    double maxTrackingError = 0.0; ///< abort threshold on |q_d - q| [rad]
+    double motionDuration = 0.0;   ///< T of the motion between the rests [s]
 
     int samples() const { return desired.samples(); }
 };

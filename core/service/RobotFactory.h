@@ -13,9 +13,9 @@ namespace learnid {
 /// robot when it is the simulated one (to inject faults), else null.
 struct RobotConnection
 {
-    std::shared_ptr<Robot> robot;            ///< null when connecting failed
+    std::shared_ptr<Robot> robot; ///< null when connecting failed
     std::shared_ptr<SimulatedRobot> simulated;
-    QString connectError;                    ///< why the robot could not be reached
+    QString connectError; ///< why the robot could not be reached
 };
 
 /// The one place robots are made, for the window and learnid-cli alike: the simulated robot of

@@ -1,7 +1,7 @@
 #include "service/SessionController.h"
 
-#include "service/SessionWorker.h"
 #include "service/ServiceLogging.h"
+#include "service/SessionWorker.h"
 
 namespace learnid {
 
@@ -99,8 +99,7 @@ SessionController::~SessionController()
     m_thread.wait();
 }
 
-template <typename F>
-void SessionController::post(F &&call)
+template <typename F> void SessionController::post(F &&call)
 {
     QMetaObject::invokeMethod(m_worker, std::forward<F>(call), Qt::QueuedConnection);
 }

@@ -36,8 +36,10 @@ public:
     AllowedActions allowedActions() const { return learnid::allowedActions(m_state, facts()); }
     bool isOpen() const { return isConnected(m_state); }
     /// True while something runs: connecting, a trial or its stop, an apply or revert.
-    bool isBusy() const { return isOpen() ? m_state != SessionState::Idle
-                                          : m_state == SessionState::Connecting; }
+    bool isBusy() const
+    {
+        return isOpen() ? m_state != SessionState::Idle : m_state == SessionState::Connecting;
+    }
     const std::optional<SessionInfo> &info() const { return m_info; }
     const QVector<TrialResult> &history() const { return m_history; }
     /// estimates()[0] is phi_0, [k] the estimate after k learning steps.
@@ -89,8 +91,7 @@ signals:
 
 private:
     void setState(SessionState state);
-    template <typename F>
-    void post(F &&call);
+    template <typename F> void post(F &&call);
 
     QThread m_thread;
     SessionWorker *m_worker = nullptr;

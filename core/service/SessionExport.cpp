@@ -2,9 +2,9 @@
 
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
-#include "model/Error.h"
 #include "io/SessionReport.h"
 #include "io/TrialCsv.h"
+#include "model/Error.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -12,10 +12,10 @@ namespace learnid {
 /// What to export from a session; an empty path leaves that output out.
 struct ExportRequest
 {
-    QString reportPath;    ///< the session report (JSON, docs/file-formats.md)
-    QString parameterPath; ///< the parameter file (JSON); its DCF fragment goes beside it (.dcf)
+    QString reportPath;     ///< the session report (JSON, docs/file-formats.md)
+    QString parameterPath;  ///< the parameter file (JSON); its DCF fragment goes beside it (.dcf)
     int estimateIndex = -1; ///< the estimate of the parameter file; -1: the last one
-    QString trialCsvDir;   ///< trial-NNN.csv of every trial that moved
+    QString trialCsvDir;    ///< trial-NNN.csv of every trial that moved
 };
 
 /// The files of a request, built in memory (path, content), so that the caller writes all or

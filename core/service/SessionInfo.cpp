@@ -1,10 +1,10 @@
 #include "service/SessionInfo.h"
 
 #include "robot/SimulatedRobot.h"
-#include "session/TrialResult.h"
 #include "service/SessionExport.h"
 #include "service/SessionState.h"
 #include "service/TrackingErrorData.h"
+#include "session/TrialResult.h"
 
 namespace learnid {
 

@@ -18,10 +18,10 @@ struct SessionInfo
     Scenario scenario;
     QString robotDescription;
     QString modelId;
-    QList<ParameterInfo> parameters;       ///< names and units of phi (m)
+    QList<ParameterInfo> parameters; ///< names and units of phi (m)
     int dof = 0;
-    std::optional<Eigen::VectorXd> truth;  ///< simulated robot only
-    Eigen::VectorXd storedParameters;      ///< what the robot controller holds (may be empty)
+    std::optional<Eigen::VectorXd> truth; ///< simulated robot only
+    Eigen::VectorXd storedParameters;     ///< what the robot controller holds (may be empty)
 };
 
 /// Registers the value types that travel between the worker and the GUI thread.

@@ -8,9 +8,8 @@ namespace {
 
 auto asTuple(const AllowedActions &a)
 {
-    return std::tie(a.connect, a.disconnect, a.newSession, a.editScenario, a.run, a.stop,
-                    a.accept, a.apply, a.revert, a.exportParameters, a.exportTrialData,
-                    a.exportReport);
+    return std::tie(a.connect, a.disconnect, a.newSession, a.editScenario, a.run, a.stop, a.accept,
+                    a.apply, a.revert, a.exportParameters, a.exportTrialData, a.exportReport);
 }
 
 } // namespace

@@ -21,22 +21,22 @@ enum class SessionOperation { Run, Accept, Apply, Revert };
 /// What the service knows besides its state that decides what may be done next.
 struct SessionFacts
 {
-    bool checkPassed = false; ///< the pre-trial check of the next trial passed
-    bool learned = false;     ///< at least one learning step was made (an estimate to accept)
-    bool ranTrial = false;    ///< a trial ran (trial data and plots to export)
-    bool accepted = false;    ///< an estimate is accepted (to apply and export)
-    bool applied = false;     ///< a set was applied in this session (there is one to revert)
+    bool checkPassed = false;  ///< the pre-trial check of the next trial passed
+    bool learned = false;      ///< at least one learning step was made (an estimate to accept)
+    bool ranTrial = false;     ///< a trial ran (trial data and plots to export)
+    bool accepted = false;     ///< an estimate is accepted (to apply and export)
+    bool applied = false;      ///< a set was applied in this session (there is one to revert)
     bool scenarioValid = true; ///< the scenario on hand is valid (to start a new session with)
 };
 
 /// The workflow's steps, each allowed or not.
 struct AllowedActions
 {
-    bool connect = false;    ///< connect a robot and open a session
+    bool connect = false; ///< connect a robot and open a session
     bool disconnect = false;
     bool newSession = false; ///< start over with the current scenario on the same robot
     bool editScenario = false;
-    bool run = false;        ///< run one trial or a series
+    bool run = false; ///< run one trial or a series
     bool stop = false;
     bool accept = false;
     bool apply = false;

@@ -101,9 +101,9 @@ void SessionWorker::connectSession()
             [this](const TrialResult &result) {
                 // The samples stay here with the session; the GUI thread gets the figures and
                 // the plot's curves, computed here, off the GUI thread.
-                const QList<TrackingErrorCurve> curves =
-                    result.status() == TrialStatus::Refused ? QList<TrackingErrorCurve>()
-                                                            : trackingErrorCurves(result);
+                const QList<TrackingErrorCurve> curves = result.status() == TrialStatus::Refused
+                                                             ? QList<TrackingErrorCurve>()
+                                                             : trackingErrorCurves(result);
                 emit trialFinished(trialSummary(result), curves, m_session->estimates());
             });
 }

@@ -92,7 +92,7 @@ private:
 
     QMutex m_sessionMutex; // guards m_session's lifetime against requestCancel() from the GUI
     RobotRequest m_request;
-    SimulatedFaults m_faults; ///< injected into the simulated robot of every open()
+    SimulatedFaults m_faults;                ///< injected into the simulated robot of every open()
     std::shared_ptr<SimulatedRobot> m_robot; ///< the simulated robot (null for a CAN robot)
     std::unique_ptr<CommissioningSession> m_session;
     int m_lastProgressPercent = -1;

@@ -43,7 +43,8 @@ QList<TrackingErrorCurve> trackingErrorCurves(const TrialResult &trial, int maxP
     const Eigen::MatrixXd &desired = trial.plan().desired.q;
     const int samples = std::min<int>(record.samples(), int(desired.cols()));
     const int n = std::min<int>(int(record.q.rows()), int(desired.rows()));
-    const double ts = record.samplePeriod > 0 ? record.samplePeriod : trial.plan().desired.samplePeriod;
+    const double ts =
+        record.samplePeriod > 0 ? record.samplePeriod : trial.plan().desired.samplePeriod;
     for (int j = 0; j < n; ++j) {
         TrackingErrorCurve curve;
         curve.trial = trial.index;

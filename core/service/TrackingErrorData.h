@@ -13,7 +13,7 @@ namespace learnid {
 struct TrackingErrorCurve
 {
     int trial = 0;
-    int joint = 0;          ///< 0-based
+    int joint = 0; ///< 0-based
     TrialStatus status = TrialStatus::Completed;
     QList<QPointF> points;  ///< (t [s], e [deg])
     double maxAbsDeg = 0.0; ///< over all recorded samples, not only the displayed ones

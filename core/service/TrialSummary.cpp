@@ -15,9 +15,9 @@ void dropRows(Eigen::MatrixXd &m)
 TrialResult trialSummary(const TrialResult &trial)
 {
     TrialResult s = trial;
-    for (Eigen::MatrixXd *m : {&s.check.plan.desired.q, &s.check.plan.desired.qd,
-                               &s.check.plan.desired.qdd, &s.check.plan.feedforward,
-                               &s.record.q, &s.record.tau})
+    for (Eigen::MatrixXd *m :
+         {&s.check.plan.desired.q, &s.check.plan.desired.qd, &s.check.plan.desired.qdd,
+          &s.check.plan.feedforward, &s.record.q, &s.record.tau})
         dropRows(*m);
     s.lawCache.reset();
     return s;

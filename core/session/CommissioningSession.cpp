@@ -21,9 +21,9 @@ CommissioningSession::CommissioningSession(const Scenario &scenario,
     if (!m_law)
         throw Error(tr("unknown estimator law '%1' (known: %2)")
                         .arg(scenario.law, knownLearningLaws().join(QStringLiteral(", "))));
-    if (scenario.initialParameters.size() != m_model->parameterCount()
-        || scenario.torqueLimits.size() != m_model->dof()
-        || scenario.controller.dof() != m_model->dof()) {
+    if (scenario.initialParameters.size() != m_model->parameterCount() ||
+        scenario.torqueLimits.size() != m_model->dof() ||
+        scenario.controller.dof() != m_model->dof()) {
         throw Error(tr("scenario does not fit the %1 model: it needs %2 parameters and %3 "
                        "joint limits and gains")
                         .arg(m_model->id())
@@ -55,8 +55,8 @@ PreTrialCheck CommissioningSession::checkNextTrial() const
     PreTrialCheck check;
     try {
         check.plan = m_planner.plan(currentEstimate(), &check.rule);
-        check.verdict = checkTrial(*m_model, currentEstimate(), check.plan,
-                                   m_scenario.stabilityMargin);
+        check.verdict =
+            checkTrial(*m_model, currentEstimate(), check.plan, m_scenario.stabilityMargin);
     } catch (const Error &e) {
         check.planningError = e.message();
     }
@@ -80,9 +80,8 @@ const TrialResult &CommissioningSession::runNextTrial()
     if (!result.check.passed()) {
         result.record.status = TrialStatus::Refused;
         result.record.samplePeriod = m_scenario.controller.samplePeriod;
-        result.message = tr("trial %1 refused before motion: %2")
-                             .arg(result.index)
-                             .arg(result.check.reason());
+        result.message =
+            tr("trial %1 refused before motion: %2").arg(result.index).arg(result.check.reason());
         qCWarning(lcSession).noquote() << result.message;
     } else {
         emit trialStarted(result.index, result.plan().samples());
@@ -97,8 +96,7 @@ const TrialResult &CommissioningSession::runNextTrial()
     return m_history.constLast();
 }
 
-TrialRecord CommissioningSession::runRepetitions(const TrialPlan &plan, int index,
-                                                 QString *message)
+TrialRecord CommissioningSession::runRepetitions(const TrialPlan &plan, int index, QString *message)
 {
     const int reps = std::max(1, m_scenario.repetitions);
     const int total = plan.samples() * reps;
@@ -111,8 +109,9 @@ TrialRecord CommissioningSession::runRepetitions(const TrialPlan &plan, int inde
         };
         TrialRecord record = m_robot->runTrial(plan, monitor);
         if (!record.completed()) {
-            *message = reps > 1 ? tr("repetition %1 of %2: %3").arg(r + 1).arg(reps).arg(record.message)
-                                : record.message;
+            *message = reps > 1
+                           ? tr("repetition %1 of %2: %3").arg(r + 1).arg(reps).arg(record.message)
+                           : record.message;
             return record; // the partial record of the run that failed is kept
         }
         if (r == 0) {

@@ -10,16 +10,16 @@ namespace learnid {
 /// The pre-trial check (docs/method.md §3): before the robot moves.
 struct SafetyVerdict
 {
-    bool physical = true;            ///< M(q, phi_hat) positive definite along the path
-    bool stable = true;              ///< all linearised closed loops along the path stable
-    double worstSpectralRadius = 0;  ///< max |z| of the discrete closed loop along the path
-    double worstDecayRate = 0;       ///< ln(max |z|) / Ts [1/s]; < 0 is stable
-    double worstTime = 0;            ///< where along the trial it occurs [s]
+    bool physical = true;           ///< M(q, phi_hat) positive definite along the path
+    bool stable = true;             ///< all linearised closed loops along the path stable
+    double worstSpectralRadius = 0; ///< max |z| of the discrete closed loop along the path
+    double worstDecayRate = 0;      ///< ln(max |z|) / Ts [1/s]; < 0 is stable
+    double worstTime = 0;           ///< where along the trial it occurs [s]
     bool torqueWithinLimits = true;
-    Eigen::VectorXd peakTorque;      ///< planned max |tau_f| per joint [N m] (n)
-    Eigen::VectorXd torqueLimit;     ///< [N m] (n)
-    double motionDuration = 0;       ///< [s]
-    QString reason;                  ///< why the trial is refused, empty when it may run
+    Eigen::VectorXd peakTorque;  ///< planned max |tau_f| per joint [N m] (n)
+    Eigen::VectorXd torqueLimit; ///< [N m] (n)
+    double motionDuration = 0;   ///< [s]
+    QString reason;              ///< why the trial is refused, empty when it may run
 
     bool passed() const { return physical && stable && torqueWithinLimits; }
 };

@@ -17,9 +17,9 @@ struct Scenario
 {
     // robot
     QString model = QStringLiteral("paper-2link");
-    Eigen::VectorXd linkLengths = Eigen::Vector2d(0.75, 0.75);      ///< [m]
-    int elbowSign = +1;                                             ///< +1: theta2 - theta1 > 0
-    Eigen::VectorXd torqueLimits = Eigen::Vector2d(8.0, 4.0);       ///< [N m]
+    Eigen::VectorXd linkLengths = Eigen::Vector2d(0.75, 0.75);       ///< [m]
+    int elbowSign = +1;                                              ///< +1: theta2 - theta1 > 0
+    Eigen::VectorXd torqueLimits = Eigen::Vector2d(8.0, 4.0);        ///< [N m]
     Eigen::VectorXd initialParameters = Eigen::Vector3d(40, 20, 30); ///< phi_0
     // path
     CartesianLine line;
@@ -38,7 +38,7 @@ struct Scenario
     qint64 encoderCounts = 0; ///< counts per revolution; 0 = ideal
     double torqueNoise = 0.0; ///< torque noise standard deviation / limit
     quint64 seed = 1;
-    int substeps = 10;        ///< RK4 steps per sample
+    int substeps = 10; ///< RK4 steps per sample
     // safety
     double maxTrackingErrorDeg = 1.0; ///< abort threshold during a trial [deg]
     double stabilityMargin = 0.0;     ///< required decay rate of the linearised loop [1/s]

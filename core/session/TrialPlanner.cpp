@@ -24,8 +24,8 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
 TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ruleOut) const
 {
     clearUpperVectorState();
-    const TorqueRuleResult rule = shortestDuration(m_ruleGrid, phiHat, m_scenario.torqueLimits,
-                                                   m_scenario.planningFraction);
+    const TorqueRuleResult rule =
+        shortestDuration(m_ruleGrid, phiHat, m_scenario.torqueLimits, m_scenario.planningFraction);
     if (ruleOut)
         *ruleOut = rule;
     MotionTiming timing;

@@ -29,16 +29,16 @@ struct PreTrialCheck
 /// One trial of a session: what ran, what was measured and what was learned from it.
 struct TrialResult
 {
-    int index = 0;                       ///< 0 = the run with the initial estimate
-    Eigen::VectorXd phiUsed;             ///< estimate the feedforward was built with (m)
-    PreTrialCheck check;                 ///< plan and verdict before the motion
-    TrialRecord record;                  ///< measured (averaged over repetitions)
+    int index = 0;           ///< 0 = the run with the initial estimate
+    Eigen::VectorXd phiUsed; ///< estimate the feedforward was built with (m)
+    PreTrialCheck check;     ///< plan and verdict before the motion
+    TrialRecord record;      ///< measured (averaged over repetitions)
     int repetitions = 1;
-    Eigen::VectorXd maxTrackingErrorDeg; ///< max |q_d - q| per joint over the record [deg] (n)
-    Eigen::VectorXd rmsTrackingErrorDeg; ///< RMS of q_d - q per joint [deg] (n)
+    Eigen::VectorXd maxTrackingErrorDeg;   ///< max |q_d - q| per joint over the record [deg] (n)
+    Eigen::VectorXd rmsTrackingErrorDeg;   ///< RMS of q_d - q per joint [deg] (n)
     std::optional<ParameterUpdate> update; ///< the learning step made from this trial
-    QString message;                     ///< why it was refused, ended early or not learned from
-    std::shared_ptr<LawCache> lawCache;  ///< the law's per-trial work, reused by later updates
+    QString message;                       ///< why it was refused, ended early or not learned from
+    std::shared_ptr<LawCache> lawCache;    ///< the law's per-trial work, reused by later updates
 
     const TrialPlan &plan() const { return check.plan; }
     TrialStatus status() const { return record.status; }
@@ -46,8 +46,8 @@ struct TrialResult
 };
 
 /// Tracking error figures of a record against its plan [deg], per joint.
-void trackingErrorFigures(const TrialPlan &plan, const TrialRecord &record,
-                          Eigen::VectorXd &maxDeg, Eigen::VectorXd &rmsDeg);
+void trackingErrorFigures(const TrialPlan &plan, const TrialRecord &record, Eigen::VectorXd &maxDeg,
+                          Eigen::VectorXd &rmsDeg);
 
 } // namespace learnid
 

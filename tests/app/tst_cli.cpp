@@ -65,13 +65,15 @@ void TestCli::printedScenario_runsLikeTheDefault()
     QCOMPARE(error.error, QJsonParseError::NoError);
     write(dir.filePath(QStringLiteral("paper.json")), printed.out.toUtf8());
 
-    const Result a = cli({QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("2"),
-                          QStringLiteral("--report"), QStringLiteral("a.json"), QStringLiteral("--quiet")},
-                         dir.path());
-    const Result b = cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("paper.json"),
-                          QStringLiteral("--iterations"), QStringLiteral("2"), QStringLiteral("--report"),
-                          QStringLiteral("b.json"), QStringLiteral("--quiet")},
-                         dir.path());
+    const Result a =
+        cli({QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("2"),
+             QStringLiteral("--report"), QStringLiteral("a.json"), QStringLiteral("--quiet")},
+            dir.path());
+    const Result b =
+        cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("paper.json"),
+             QStringLiteral("--iterations"), QStringLiteral("2"), QStringLiteral("--report"),
+             QStringLiteral("b.json"), QStringLiteral("--quiet")},
+            dir.path());
     QCOMPARE(a.exitCode, 0);
     QCOMPARE(b.exitCode, 0);
     QCOMPARE(a.out, b.out);
@@ -82,22 +84,23 @@ void TestCli::printedScenario_runsLikeTheDefault()
 void TestCli::run_writesReportParameterFileAndTrialCsv()
 {
     QTemporaryDir dir;
-    const Result r = cli({QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("3"),
-                          QStringLiteral("--report"), QStringLiteral("out/report.json"),
-                          QStringLiteral("--export"), QStringLiteral("out/params.json"),
-                          QStringLiteral("--trial-csv"), QStringLiteral("out/trials"),
-                          QStringLiteral("--apply")},
+    const Result r = cli({QStringLiteral("run"), QStringLiteral("--iterations"),
+                          QStringLiteral("3"), QStringLiteral("--report"),
+                          QStringLiteral("out/report.json"), QStringLiteral("--export"),
+                          QStringLiteral("out/params.json"), QStringLiteral("--trial-csv"),
+                          QStringLiteral("out/trials"), QStringLiteral("--apply")},
                          dir.path());
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-    QVERIFY(r.err.contains(QStringLiteral("trial 2")));  // progress on stderr
-    QVERIFY(r.out.contains(QStringLiteral("trial")));    // the table on stdout
+    QVERIFY(r.err.contains(QStringLiteral("trial 2"))); // progress on stderr
+    QVERIFY(r.out.contains(QStringLiteral("trial")));   // the table on stdout
 
     const QJsonObject report = readJson(dir.filePath(QStringLiteral("out/report.json")));
     QCOMPARE(report.value(QStringLiteral("estimator")).toString(), QStringLiteral("improved"));
     QCOMPARE(numbers(report.value(QStringLiteral("truth"))), (QList<double>{20, 5, 8}));
     const QJsonArray trials = report.value(QStringLiteral("trials")).toArray();
     QCOMPARE(trials.size(), 3);
-    QCOMPARE(numbers(trials.at(0).toObject().value(QStringLiteral("phi"))), (QList<double>{40, 20, 30}));
+    QCOMPARE(numbers(trials.at(0).toObject().value(QStringLiteral("phi"))),
+             (QList<double>{40, 20, 30}));
     for (int k = 0; k < 3; ++k) {
         const QJsonObject t = trials.at(k).toObject();
         QCOMPARE(t.value(QStringLiteral("index")).toInt(), k);
@@ -107,7 +110,8 @@ void TestCli::run_writesReportParameterFileAndTrialCsv()
         QVERIFY(t.value(QStringLiteral("durationS")).toDouble() > 3.0);
         QCOMPARE(t.value(QStringLiteral("phiStd")).toArray().size(), 3);
     }
-    const QList<double> final = numbers(report.value(QStringLiteral("final")).toObject().value(QStringLiteral("phi")));
+    const QList<double> final =
+        numbers(report.value(QStringLiteral("final")).toObject().value(QStringLiteral("phi")));
     const QList<double> truth{20, 5, 8};
     for (int i = 0; i < 3; ++i)
         QVERIFY2(std::abs(final[i] / truth[i] - 1.0) < 5e-4, qPrintable(QString::number(final[i])));
@@ -121,7 +125,8 @@ void TestCli::run_writesReportParameterFileAndTrialCsv()
     QVERIFY(QFile::exists(dir.filePath(QStringLiteral("out/params.dcf"))));
 
     for (int k = 0; k < 3; ++k) {
-        QFile csv(dir.filePath(QStringLiteral("out/trials/trial-%1.csv").arg(k, 3, 10, QLatin1Char('0'))));
+        QFile csv(dir.filePath(
+            QStringLiteral("out/trials/trial-%1.csv").arg(k, 3, 10, QLatin1Char('0'))));
         QVERIFY(csv.open(QIODevice::ReadOnly));
         const int lines = csv.readAll().count('\n');
         QCOMPARE(lines, trials.at(k).toObject().value(QStringLiteral("samples")).toInt() + 1);
@@ -133,14 +138,16 @@ void TestCli::run_writesReportParameterFileAndTrialCsv()
 void TestCli::paperEstimator_showsTableOneShape()
 {
     QTemporaryDir dir;
-    const Result r = cli({QStringLiteral("run"), QStringLiteral("--estimator"), QStringLiteral("paper"),
-                          QStringLiteral("--iterations"), QStringLiteral("1"), QStringLiteral("--report"),
-                          QStringLiteral("r.json"), QStringLiteral("--quiet")},
-                         dir.path());
+    const Result r =
+        cli({QStringLiteral("run"), QStringLiteral("--estimator"), QStringLiteral("paper"),
+             QStringLiteral("--iterations"), QStringLiteral("1"), QStringLiteral("--report"),
+             QStringLiteral("r.json"), QStringLiteral("--quiet")},
+            dir.path());
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     const QJsonObject report = readJson(dir.filePath(QStringLiteral("r.json")));
     QCOMPARE(report.value(QStringLiteral("estimator")).toString(), QStringLiteral("paper"));
-    const QList<double> phi = numbers(report.value(QStringLiteral("final")).toObject().value(QStringLiteral("phi")));
+    const QList<double> phi =
+        numbers(report.value(QStringLiteral("final")).toObject().value(QStringLiteral("phi")));
     QVERIFY(std::abs(phi[0] / 20.0 - 1.0) < 0.02);
     QVERIFY(phi[1] / 5.0 - 1.0 > -0.30 && phi[1] / 5.0 - 1.0 < -0.20);
     QVERIFY(phi[2] / 8.0 - 1.0 > -0.14 && phi[2] / 8.0 - 1.0 < -0.06);
@@ -152,19 +159,40 @@ void TestCli::badInput_exitsWithMessageAndWritesNothing_data()
 {
     QTest::addColumn<QByteArray>("scenario"); // written to s.json when not empty
     QTest::addColumn<QStringList>("args");
-    QTest::addColumn<QString>("expected");    // must appear in the error message
-    const QStringList run{QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("s.json")};
-    QTest::newRow("missing file") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("nope.json")} << QStringLiteral("nope.json");
-    QTest::newRow("malformed json") << QByteArray("{\n  \"robot\": {\n    \"model\": \n}\n") << run << QStringLiteral("line");
-    QTest::newRow("unknown key") << QByteArray(R"({"controller": {"kpp": [1, 2]}})") << run << QStringLiteral("controller.kpp");
-    QTest::newRow("wrong array length") << QByteArray(R"({"robot": {"torqueLimits": [8]}})") << run << QStringLiteral("robot.torqueLimits");
-    QTest::newRow("infinite gain") << QByteArray(R"({"controller": {"kp": [1e999, 5000]}})") << run << QStringLiteral("controller.kp[0]");
-    QTest::newRow("negative gain") << QByteArray(R"({"controller": {"kp": [4500, -5]}})") << run << QStringLiteral("controller.kp[1]");
-    QTest::newRow("non-positive limit") << QByteArray(R"({"robot": {"torqueLimits": [8, 0]}})") << run << QStringLiteral("robot.torqueLimits[1]");
-    QTest::newRow("string for number") << QByteArray(R"({"controller": {"lambda": "nan"}})") << run << QStringLiteral("controller.lambda");
-    QTest::newRow("unknown law") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--estimator"), QStringLiteral("magic")} << QStringLiteral("magic");
-    QTest::newRow("zero iterations") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("0")} << QStringLiteral("--iterations");
-    QTest::newRow("empty report path") << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--report"), QString()} << QStringLiteral("--report: no path given");
+    QTest::addColumn<QString>("expected"); // must appear in the error message
+    const QStringList run{QStringLiteral("run"), QStringLiteral("--scenario"),
+                          QStringLiteral("s.json")};
+    QTest::newRow("missing file") << QByteArray()
+                                  << QStringList{QStringLiteral("run"),
+                                                 QStringLiteral("--scenario"),
+                                                 QStringLiteral("nope.json")}
+                                  << QStringLiteral("nope.json");
+    QTest::newRow("malformed json")
+        << QByteArray("{\n  \"robot\": {\n    \"model\": \n}\n") << run << QStringLiteral("line");
+    QTest::newRow("unknown key") << QByteArray(R"({"controller": {"kpp": [1, 2]}})") << run
+                                 << QStringLiteral("controller.kpp");
+    QTest::newRow("wrong array length") << QByteArray(R"({"robot": {"torqueLimits": [8]}})") << run
+                                        << QStringLiteral("robot.torqueLimits");
+    QTest::newRow("infinite gain") << QByteArray(R"({"controller": {"kp": [1e999, 5000]}})") << run
+                                   << QStringLiteral("controller.kp[0]");
+    QTest::newRow("negative gain") << QByteArray(R"({"controller": {"kp": [4500, -5]}})") << run
+                                   << QStringLiteral("controller.kp[1]");
+    QTest::newRow("non-positive limit") << QByteArray(R"({"robot": {"torqueLimits": [8, 0]}})")
+                                        << run << QStringLiteral("robot.torqueLimits[1]");
+    QTest::newRow("string for number") << QByteArray(R"({"controller": {"lambda": "nan"}})") << run
+                                       << QStringLiteral("controller.lambda");
+    QTest::newRow("unknown law") << QByteArray()
+                                 << QStringList{QStringLiteral("run"),
+                                                QStringLiteral("--estimator"),
+                                                QStringLiteral("magic")}
+                                 << QStringLiteral("magic");
+    QTest::newRow("zero iterations")
+        << QByteArray()
+        << QStringList{QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("0")}
+        << QStringLiteral("--iterations");
+    QTest::newRow("empty report path")
+        << QByteArray() << QStringList{QStringLiteral("run"), QStringLiteral("--report"), QString()}
+        << QStringLiteral("--report: no path given");
 }
 
 void TestCli::badInput_exitsWithMessageAndWritesNothing()
@@ -177,7 +205,8 @@ void TestCli::badInput_exitsWithMessageAndWritesNothing()
     QVERIFY(QDir().mkpath(ws));
     if (!scenario.isEmpty())
         write(QDir(ws).filePath(QStringLiteral("s.json")), scenario);
-    const Result r = cli(args + QStringList{QStringLiteral("--export"), QStringLiteral("p.json")}, ws);
+    const Result r =
+        cli(args + QStringList{QStringLiteral("--export"), QStringLiteral("p.json")}, ws);
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.contains(expected), qPrintable(r.err));
     QVERIFY(!QFile::exists(QDir(ws).filePath(QStringLiteral("p.json"))));
@@ -189,9 +218,10 @@ void TestCli::unstableController_isRefusedAndWritesNothing()
 {
     QTemporaryDir dir;
     write(dir.filePath(QStringLiteral("s.json")), R"({"controller": {"lambda": 40}})");
-    const Result r = cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("s.json"),
-                          QStringLiteral("--report"), QStringLiteral("r.json")},
-                         dir.path());
+    const Result r =
+        cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("s.json"),
+             QStringLiteral("--report"), QStringLiteral("r.json")},
+            dir.path());
     QCOMPARE(r.exitCode, 3);
     QVERIFY2(r.err.contains(QStringLiteral("unstable")), qPrintable(r.err));
     QVERIFY(r.err.contains(QStringLiteral("no files written")));
@@ -213,14 +243,20 @@ void TestCli::commandHelp_listsThatCommandsOptions_data()
     QTest::addColumn<QStringList>("options"); // each must be listed
     QTest::addColumn<QStringList>("absent");  // other commands' options, not listed
     QTest::newRow("run --help") << QStringList{QStringLiteral("run"), QStringLiteral("--help")}
-                                << QStringList{QStringLiteral("--scenario"), QStringLiteral("--robot"), QStringLiteral("--can-sync-timeout"), QStringLiteral("--workspace")}
-                                << QStringList{QStringLiteral("--candump"), QStringLiteral("--print")};
+                                << QStringList{QStringLiteral("--scenario"),
+                                               QStringLiteral("--robot"),
+                                               QStringLiteral("--can-sync-timeout"),
+                                               QStringLiteral("--workspace")}
+                                << QStringList{QStringLiteral("--candump"),
+                                               QStringLiteral("--print")};
     QTest::newRow("replay -h") << QStringList{QStringLiteral("replay"), QStringLiteral("-h")}
-                               << QStringList{QStringLiteral("--candump"), QStringLiteral("--nodes")}
+                               << QStringList{QStringLiteral("--candump"),
+                                              QStringLiteral("--nodes")}
                                << QStringList{QStringLiteral("--robot"), QStringLiteral("--print")};
-    QTest::newRow("scenario --help") << QStringList{QStringLiteral("scenario"), QStringLiteral("--help")}
-                                     << QStringList{QStringLiteral("--print")}
-                                     << QStringList{QStringLiteral("--scenario"), QStringLiteral("--robot")};
+    QTest::newRow("scenario --help")
+        << QStringList{QStringLiteral("scenario"), QStringLiteral("--help")}
+        << QStringList{QStringLiteral("--print")}
+        << QStringList{QStringLiteral("--scenario"), QStringLiteral("--robot")};
 }
 
 void TestCli::commandHelp_listsThatCommandsOptions()
@@ -250,12 +286,14 @@ void TestCli::outputPaths_anywhereTheUserChooses()
     const QString elsewhere = parent.filePath(QStringLiteral("elsewhere"));
     QVERIFY(QDir().mkpath(cwd) && QDir().mkpath(elsewhere));
     const QString report = QDir(elsewhere).filePath(QStringLiteral("r.json"));
-    const Result r = cli({QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("1"),
-                          QStringLiteral("--report"), report, QStringLiteral("--export"),
-                          QStringLiteral("../p.json"), QStringLiteral("--quiet")},
-                         cwd);
+    const Result r =
+        cli({QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("1"),
+             QStringLiteral("--report"), report, QStringLiteral("--export"),
+             QStringLiteral("../p.json"), QStringLiteral("--quiet")},
+            cwd);
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-    QCOMPARE(readJson(report).value(QStringLiteral("estimator")).toString(), QStringLiteral("improved"));
+    QCOMPARE(readJson(report).value(QStringLiteral("estimator")).toString(),
+             QStringLiteral("improved"));
     QVERIFY(QFile::exists(parent.filePath(QStringLiteral("p.json"))));
     QVERIFY(QFile::exists(parent.filePath(QStringLiteral("p.dcf"))));
 }

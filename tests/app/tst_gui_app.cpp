@@ -50,8 +50,8 @@ private slots:
         QFETCH(int, minWidth);
         QTemporaryDir dir;
         const QString png = dir.filePath(view + QStringLiteral(".png"));
-        const Run run = learnid({QStringLiteral("--screenshot"), png,
-                                 QStringLiteral("--screenshot-view"), view});
+        const Run run = learnid(
+            {QStringLiteral("--screenshot"), png, QStringLiteral("--screenshot-view"), view});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         QImage image(png);
         QVERIFY2(!image.isNull(), qPrintable(png));

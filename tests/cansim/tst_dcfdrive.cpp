@@ -74,8 +74,8 @@ void TestDcfDrive::exportedDcf_describesEachObjectTheDriveAnswers()
             const quint16 index = quint16(m.captured(1).toUInt(nullptr, 16));
             const quint8 sub = quint8(m.captured(2).toUInt(nullptr, 16));
             dcf.beginGroup(group);
-            const auto type = DataType(dcf.value(QStringLiteral("DataType")).toString().toUInt(
-                nullptr, 16));
+            const auto type =
+                DataType(dcf.value(QStringLiteral("DataType")).toString().toUInt(nullptr, 16));
             const QString access = dcf.value(QStringLiteral("AccessType")).toString();
             const double defaultValue = dcf.value(QStringLiteral("DefaultValue")).toDouble();
             dcf.endGroup();
@@ -88,7 +88,8 @@ void TestDcfDrive::exportedDcf_describesEachObjectTheDriveAnswers()
             QVERIFY2(read.ok(), qPrintable(where + QStringLiteral(": ") + read.errorMessage));
             QVERIFY2(read.data.size() == canopen::dataTypeSize(type), qPrintable(where));
             const double value = canopen::decodeValue(type, read.data);
-            QVERIFY2(value == (type == DataType::Real32 ? double(float(defaultValue)) : defaultValue),
+            QVERIFY2(value ==
+                         (type == DataType::Real32 ? double(float(defaultValue)) : defaultValue),
                      qPrintable(QStringLiteral("%1: the drive holds %2, the DCF's default is %3")
                                     .arg(where)
                                     .arg(value)

@@ -22,9 +22,11 @@ void TestImprovedLaw::noiseFree_withinFiveHundredthsOfAPercentAfterOneTrial()
 {
     const Scenario s;
     const test::LearningRun run = test::runLearning(s, 2);
-    const double first = test::relativeError(run.estimates[1], s.trueParameters).cwiseAbs().maxCoeff();
+    const double first =
+        test::relativeError(run.estimates[1], s.trueParameters).cwiseAbs().maxCoeff();
     QVERIFY2(first < 5e-4, qPrintable(QString::number(first)));
-    const double second = test::relativeError(run.estimates[2], s.trueParameters).cwiseAbs().maxCoeff();
+    const double second =
+        test::relativeError(run.estimates[2], s.trueParameters).cwiseAbs().maxCoeff();
     QVERIFY2(second < 5e-4, qPrintable(QString::number(second)));
     QCOMPARE(run.updates[0].rank, 3);
     QVERIFY(run.updates[0].condition > 1.0 && run.updates[0].condition < 100.0);
@@ -35,7 +37,8 @@ void TestImprovedLaw::noiseFree_resultDoesNotDependOnInitialEstimate()
     Scenario s;
     s.initialParameters = Eigen::Vector3d(26.0, 8.0, 12.0);
     const test::LearningRun run = test::runLearning(s, 1);
-    const double err = test::relativeError(run.estimates[1], s.trueParameters).cwiseAbs().maxCoeff();
+    const double err =
+        test::relativeError(run.estimates[1], s.trueParameters).cwiseAbs().maxCoeff();
     QVERIFY2(err < 5e-4, qPrintable(QString::number(err)));
 }
 
@@ -101,8 +104,11 @@ void TestImprovedLaw::rankDeficientTrajectory_keepsUnobservableParameters()
         const double u = std::clamp((k * ts - rest) / T, 0.0, 1.0);
         const bool moving = u > 0.0 && u < 1.0;
         plan.desired.q.col(k) << 0.2 + stroke * u * u * u * (10 - 15 * u + 6 * u * u), 1.5;
-        plan.desired.qd.col(k) << (moving ? stroke * 30 * u * u * (1 - 2 * u + u * u) / T : 0.0), 0.0;
-        plan.desired.qdd.col(k) << (moving ? stroke * 60 * u * (1 - 3 * u + 2 * u * u) / (T * T) : 0.0), 0.0;
+        plan.desired.qd.col(k) << (moving ? stroke * 30 * u * u * (1 - 2 * u + u * u) / T : 0.0),
+            0.0;
+        plan.desired.qdd.col(k) << (moving ? stroke * 60 * u * (1 - 3 * u + 2 * u * u) / (T * T)
+                                           : 0.0),
+            0.0;
     }
     const Eigen::VectorXd phiPrev = Eigen::Vector3d(24.0, 6.0, 11.0);
     plan.feedforward = feedforwardTorque(*model, plan.desired, phiPrev);
@@ -115,15 +121,19 @@ void TestImprovedLaw::rankDeficientTrajectory_keepsUnobservableParameters()
     SimulatedRobot robot(model, s.trueParameters);
     const TrialRecord record = robot.runTrial(plan, {});
     QVERIFY(record.completed());
-    const ParameterUpdate up = ImprovedLaw().update(*model, {{&plan, &record}}, phiPrev, s.estimator);
+    const ParameterUpdate up =
+        ImprovedLaw().update(*model, {{&plan, &record}}, phiPrev, s.estimator);
 
     QCOMPARE(up.rank, 2);
     QCOMPARE(up.observable, (std::vector<bool>{true, true, false}));
     QVERIFY(std::isinf(up.phiStd[2]));
     QVERIFY(up.phi.allFinite());
-    QVERIFY2(std::abs(up.phi[2] - phiPrev[2]) < 1e-3 * phiPrev[2], qPrintable(QString::number(up.phi[2])));
-    QVERIFY2(std::abs(up.phi[0] / s.trueParameters[0] - 1.0) < 1e-3, qPrintable(QString::number(up.phi[0])));
-    QVERIFY2(std::abs(up.phi[1] / s.trueParameters[1] - 1.0) < 1e-2, qPrintable(QString::number(up.phi[1])));
+    QVERIFY2(std::abs(up.phi[2] - phiPrev[2]) < 1e-3 * phiPrev[2],
+             qPrintable(QString::number(up.phi[2])));
+    QVERIFY2(std::abs(up.phi[0] / s.trueParameters[0] - 1.0) < 1e-3,
+             qPrintable(QString::number(up.phi[0])));
+    QVERIFY2(std::abs(up.phi[1] / s.trueParameters[1] - 1.0) < 1e-2,
+             qPrintable(QString::number(up.phi[1])));
 }
 
 QTEST_GUILESS_MAIN(TestImprovedLaw)

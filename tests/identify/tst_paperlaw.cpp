@@ -40,12 +40,14 @@ void TestPaperLaw::paperScenario_convergesWithinHalfPercentFromTrialThree()
     s.law = QStringLiteral("paper");
     const test::LearningRun run = test::runLearning(s, 6);
     for (int k = 3; k <= 6; ++k) {
-        const double worst = test::relativeError(run.estimates[k], s.trueParameters).cwiseAbs().maxCoeff();
+        const double worst =
+            test::relativeError(run.estimates[k], s.trueParameters).cwiseAbs().maxCoeff();
         QVERIFY2(worst < 0.005, qPrintable(QStringLiteral("trial %1: %2").arg(k).arg(worst)));
     }
     // Tracking error of the trials run with estimates 3.. is below 0.002 deg (paper Fig. 6).
     for (int k = 3; k < 6; ++k)
-        QVERIFY2(run.maxTrackingErrorDeg[k] < 0.002, qPrintable(QString::number(run.maxTrackingErrorDeg[k])));
+        QVERIFY2(run.maxTrackingErrorDeg[k] < 0.002,
+                 qPrintable(QString::number(run.maxTrackingErrorDeg[k])));
     QCOMPARE(run.updates.back().rank, 3);
 }
 
@@ -57,7 +59,8 @@ void TestPaperLaw::exactFeedforward_estimateStaysAtTruth()
     s.law = QStringLiteral("paper");
     s.initialParameters = s.trueParameters;
     const test::LearningRun run = test::runLearning(s, 1);
-    const double worst = test::relativeError(run.estimates[1], s.trueParameters).cwiseAbs().maxCoeff();
+    const double worst =
+        test::relativeError(run.estimates[1], s.trueParameters).cwiseAbs().maxCoeff();
     QVERIFY2(worst < 1e-3, qPrintable(QString::number(worst)));
 }
 

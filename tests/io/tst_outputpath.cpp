@@ -85,9 +85,9 @@ void TestOutputPath::missingBase_isRejectedForARelativePath()
         resolveOutputPath(QStringLiteral("/nonexistent/ws"), QStringLiteral("r.json"), what),
         QStringLiteral("--report: r.json is relative, and the folder it is taken from, "
                        "/nonexistent/ws, does not exist or is not a folder"));
-    QCOMPARE(resolveOutputPath(QStringLiteral("/nonexistent/ws"), QStringLiteral("/tmp/r.json"),
-                               what),
-             QStringLiteral("/tmp/r.json"));
+    QCOMPARE(
+        resolveOutputPath(QStringLiteral("/nonexistent/ws"), QStringLiteral("/tmp/r.json"), what),
+        QStringLiteral("/tmp/r.json"));
 }
 
 void TestOutputPath::emptyPath_isRejected()

@@ -59,8 +59,7 @@ void TestRobotFactory::replay_unreadableLog_namesFileAndLine()
         makeRobot(request, scenario, makeRobotModel(scenario.model));
         QFAIL("no error");
     } catch (const Error &e) {
-        QVERIFY2(e.message().startsWith(log + QStringLiteral(":2: ")),
-                 qPrintable(e.message()));
+        QVERIFY2(e.message().startsWith(log + QStringLiteral(":2: ")), qPrintable(e.message()));
     }
 }
 

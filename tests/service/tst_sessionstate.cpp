@@ -92,9 +92,9 @@ void TestSessionState::idle_eachStepNeedsItsFact()
 
 void TestSessionState::stop_onlyWhileATrialRuns()
 {
-    for (const SessionState s : {SessionState::NotConnected, SessionState::Connecting,
-                                 SessionState::Idle, SessionState::Stopping,
-                                 SessionState::Applying})
+    for (const SessionState s :
+         {SessionState::NotConnected, SessionState::Connecting, SessionState::Idle,
+          SessionState::Stopping, SessionState::Applying})
         QVERIFY(!allowedActions(s, everything()).stop);
     QVERIFY(allowedActions(SessionState::RunningTrial, everything()).stop);
     // Exports read what the service holds and may run beside a trial.

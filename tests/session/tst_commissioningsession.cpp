@@ -60,11 +60,14 @@ void TestCommissioningSession::paperScenario_learnsAndKeepsHistory()
         QCOMPARE(t.update->phi, f.session->estimates().at(k + 1));
         QCOMPARE(t.record.samples(), t.plan().samples());
         // The session's tracking figures equal the record's own.
-        const double maxDeg = (t.plan().desired.q - t.record.q).cwiseAbs().maxCoeff() * 180.0 / M_PI;
+        const double maxDeg =
+            (t.plan().desired.q - t.record.q).cwiseAbs().maxCoeff() * 180.0 / M_PI;
         QCOMPARE(t.maxTrackingErrorDeg.maxCoeff(), maxDeg);
     }
-    const double err = ((f.session->currentEstimate() - s.trueParameters).cwiseQuotient(s.trueParameters))
-                           .cwiseAbs().maxCoeff();
+    const double err =
+        ((f.session->currentEstimate() - s.trueParameters).cwiseQuotient(s.trueParameters))
+            .cwiseAbs()
+            .maxCoeff();
     QVERIFY2(err < 5e-4, qPrintable(QString::number(err)));
     // Progress ends at the total of the last trial.
     const QList<QVariant> last = progress.constLast();

@@ -42,8 +42,8 @@ void TestTrialPlanner::feedforward_isRegressorTimesEstimate()
     const TrialPlan plan = TrialPlanner(s, m_model).plan(phi);
     QCOMPARE(plan.feedforwardParameters, phi);
     for (int k = 0; k < plan.samples(); k += 97) {
-        const Eigen::MatrixXd w = m_model->regressorAt(plan.desired.q.col(k), plan.desired.qd.col(k),
-                                                       plan.desired.qdd.col(k));
+        const Eigen::MatrixXd w = m_model->regressorAt(
+            plan.desired.q.col(k), plan.desired.qd.col(k), plan.desired.qdd.col(k));
         QVERIFY((w * phi - plan.feedforward.col(k)).cwiseAbs().maxCoeff() < 1e-12);
     }
 }

@@ -16,7 +16,7 @@ namespace learnid::test {
 
 struct LearningRun
 {
-    std::vector<Eigen::VectorXd> estimates; ///< phi_0 .. phi_N
+    std::vector<Eigen::VectorXd> estimates;  ///< phi_0 .. phi_N
     std::vector<double> maxTrackingErrorDeg; ///< of the trial run with estimate k
     std::vector<ParameterUpdate> updates;
 };
@@ -41,13 +41,12 @@ inline LearningRun runLearning(const Scenario &scenario, int trials)
         records.push_back(robot.runTrial(plans.back(), {}));
         const TrialPlan &plan = plans.back();
         const TrialRecord &record = records.back();
-        run.maxTrackingErrorDeg.push_back(
-            (plan.desired.q - record.q).cwiseAbs().maxCoeff() * 180.0 / M_PI);
+        run.maxTrackingErrorDeg.push_back((plan.desired.q - record.q).cwiseAbs().maxCoeff() *
+                                          180.0 / M_PI);
         std::vector<TrialData> data;
         for (size_t i = 0; i < plans.size(); ++i)
             data.push_back({&plans[i], &records[i]});
-        run.updates.push_back(
-            law->update(*model, data, run.estimates.back(), scenario.estimator));
+        run.updates.push_back(law->update(*model, data, run.estimates.back(), scenario.estimator));
         run.estimates.push_back(run.updates.back().phi);
     }
     return run;

@@ -25,8 +25,7 @@ struct WindowFixture
         window->show();
     }
 
-    template <typename T = QAbstractButton>
-    T *button(const char *name) const
+    template <typename T = QAbstractButton> T *button(const char *name) const
     {
         return window->findChild<T *>(QLatin1String(name));
     }

@@ -1,10 +1,10 @@
 #include "../support/RobotSimProcess.h"
 #include "UiTestSupport.h"
 
+#include "service/SessionController.h"
 #include "ui/ConvergenceTableModel.h"
 #include "ui/MessageBar.h"
 #include "ui/RobotPanel.h"
-#include "service/SessionController.h"
 
 #include <QComboBox>
 #include <QLineEdit>

@@ -15,7 +15,8 @@ class TestConvergenceTableModel : public QObject
 private:
     std::unique_ptr<CommissioningSession> m_session;
 
-    QVariant cell(const ConvergenceTableModel &model, int row, Column kind, int p = 0, int role = Qt::UserRole)
+    QVariant cell(const ConvergenceTableModel &model, int row, Column kind, int p = 0,
+                  int role = Qt::UserRole)
     {
         return model.index(row, model.columnOf(kind, p)).data(role);
     }
@@ -43,10 +44,11 @@ private slots:
             for (int p = 0; p < 3; ++p)
                 QCOMPARE(cell(model, k, Column::Parameter, p).toDouble(), estimates[k][p]);
         }
-        QCOMPARE(model.headerData(model.columnOf(Column::Parameter, 0), Qt::Horizontal, Qt::DisplayRole)
-                     .toString(),
-                 QStringLiteral("%1 [%2]").arg(m_session->model().parameters()[0].name,
-                                               m_session->model().parameters()[0].unit));
+        QCOMPARE(
+            model.headerData(model.columnOf(Column::Parameter, 0), Qt::Horizontal, Qt::DisplayRole)
+                .toString(),
+            QStringLiteral("%1 [%2]").arg(m_session->model().parameters()[0].name,
+                                          m_session->model().parameters()[0].unit));
     }
 
     void figures_comeFromTheTrialsThatRanAndProduced()
@@ -59,10 +61,12 @@ private slots:
         QVERIFY(!cell(model, 0, Column::RelativeChange).isValid());
         QVERIFY(!cell(model, 0, Column::Condition).isValid());
         for (int k = 0; k < 3; ++k) // trial k ran with estimate k
-            QCOMPARE(cell(model, k, Column::MaxError).toDouble(), history[k].maxTrackingErrorDeg.maxCoeff());
+            QCOMPARE(cell(model, k, Column::MaxError).toDouble(),
+                     history[k].maxTrackingErrorDeg.maxCoeff());
         QVERIFY(!cell(model, 3, Column::MaxError).isValid()); // estimate 3 has not run yet
         for (int k = 1; k < 4; ++k) {
-            QCOMPARE(cell(model, k, Column::Condition).toDouble(), history[k - 1].update->condition);
+            QCOMPARE(cell(model, k, Column::Condition).toDouble(),
+                     history[k - 1].update->condition);
             // The largest signed per-parameter change, as the CLI table shows it.
             double change = 0.0;
             for (int i = 0; i < 3; ++i) {
@@ -70,8 +74,11 @@ private slots:
                 if (std::abs(r) > std::abs(change))
                     change = r;
             }
-            QVERIFY(std::abs(cell(model, k, Column::RelativeChange).toDouble() - change) < 1e-9 * (1.0 + std::abs(change)));
-            QVERIFY(cell(model, k, Column::Observable, 0, Qt::DisplayRole).toString().startsWith(QStringLiteral("all")));
+            QVERIFY(std::abs(cell(model, k, Column::RelativeChange).toDouble() - change) <
+                    1e-9 * (1.0 + std::abs(change)));
+            QVERIFY(cell(model, k, Column::Observable, 0, Qt::DisplayRole)
+                        .toString()
+                        .startsWith(QStringLiteral("all")));
         }
         const Eigen::VectorXd truth = *m_session->robot().trueParameters();
         for (int p = 0; p < 3; ++p)

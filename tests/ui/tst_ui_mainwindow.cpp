@@ -3,6 +3,7 @@
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
 #include "io/TrialCsv.h"
+#include "service/SessionController.h"
 #include "ui/ApplyPanel.h"
 #include "ui/ConvergenceTableModel.h"
 #include "ui/FileController.h"
@@ -10,7 +11,6 @@
 #include "ui/MessageBar.h"
 #include "ui/PlotImage.h"
 #include "ui/PreTrialCheckView.h"
-#include "service/SessionController.h"
 #include "ui/TrackingErrorPlot.h"
 
 #include <QAction>
@@ -56,14 +56,18 @@ private slots:
         QCOMPARE(table->rowCount(), 4);
         for (int k = 0; k < 4; ++k)
             for (int p = 0; p < 3; ++p)
-                QCOMPARE(table->index(k, table->columnOf(Column::Parameter, p)).data(Qt::UserRole).toDouble(),
+                QCOMPARE(table->index(k, table->columnOf(Column::Parameter, p))
+                             .data(Qt::UserRole)
+                             .toDouble(),
                          c->estimates()[k][p]);
         for (int k = 0; k < 3; ++k)
-            QCOMPARE(table->index(k, table->columnOf(Column::MaxError)).data(Qt::UserRole).toDouble(),
-                     c->history()[k].maxTrackingErrorDeg.maxCoeff());
+            QCOMPARE(
+                table->index(k, table->columnOf(Column::MaxError)).data(Qt::UserRole).toDouble(),
+                c->history()[k].maxTrackingErrorDeg.maxCoeff());
         QCOMPARE(f.window->plot()->trialCount(), 3);
         // The paper's trend: the tracking error shrinks trial by trial.
-        QVERIFY(c->history()[2].maxTrackingErrorDeg.maxCoeff() < c->history()[0].maxTrackingErrorDeg.maxCoeff());
+        QVERIFY(c->history()[2].maxTrackingErrorDeg.maxCoeff() <
+                c->history()[0].maxTrackingErrorDeg.maxCoeff());
 
         // Accept (default: the last estimate), then apply with the confirmation answered.
         QCOMPARE(f.window->applyPanel()->chosenEstimate(), 3);
@@ -103,26 +107,32 @@ private slots:
         QTemporaryDir out;
         f.window->files()->setPathChooser([&out](FileController::Purpose purpose, const QString &) {
             switch (purpose) {
-            case FileController::Purpose::ParameterFile: return out.filePath(QStringLiteral("params.json"));
-            case FileController::Purpose::TrialCsvFolder: return out.filePath(QStringLiteral("trials"));
-            case FileController::Purpose::Plot: return out.filePath(QStringLiteral("plot.png"));
-            case FileController::Purpose::Report: return out.filePath(QStringLiteral("report.pdf"));
-            default: return QString();
+            case FileController::Purpose::ParameterFile:
+                return out.filePath(QStringLiteral("params.json"));
+            case FileController::Purpose::TrialCsvFolder:
+                return out.filePath(QStringLiteral("trials"));
+            case FileController::Purpose::Plot:
+                return out.filePath(QStringLiteral("plot.png"));
+            case FileController::Purpose::Report:
+                return out.filePath(QStringLiteral("report.pdf"));
+            default:
+                return QString();
             }
         });
         QSignalSpy done(f.window->files(), &FileController::finished);
         f.window->actions()->exportParameters->trigger();
         QVERIFY(done.wait(20000));
         QVERIFY2(done.constLast().at(1).toBool(), qPrintable(done.constLast().at(0).toString()));
-        const ParameterFileContent content =
-            parameterFileFromJson(readFile(out.filePath(QStringLiteral("params.json"))), QStringLiteral("params.json"));
+        const ParameterFileContent content = parameterFileFromJson(
+            readFile(out.filePath(QStringLiteral("params.json"))), QStringLiteral("params.json"));
         QCOMPARE(content.values, c->estimates()[2]); // the accepted estimate
         QVERIFY(QFile::exists(out.filePath(QStringLiteral("params.dcf"))));
 
         f.window->actions()->exportTrialCsv->trigger(); // written in the session's thread
         QVERIFY(done.wait(20000));
         QVERIFY2(done.constLast().at(1).toBool(), qPrintable(done.constLast().at(0).toString()));
-        const TrialRecordCsv csv = readTrialCsvFile(out.filePath(QStringLiteral("trials/trial-001.csv")));
+        const TrialRecordCsv csv =
+            readTrialCsvFile(out.filePath(QStringLiteral("trials/trial-001.csv")));
         QCOMPARE(csv.samples(), c->history()[1].record.samples());
 
         f.window->actions()->exportPlot->trigger();

@@ -1,5 +1,6 @@
 #include "UiTestSupport.h"
 
+#include "service/SessionController.h"
 #include "ui/ConvergenceTableModel.h"
 #include "ui/FileController.h"
 #include "ui/MainActions.h"
@@ -7,7 +8,6 @@
 #include "ui/PreTrialCheckView.h"
 #include "ui/RunPanel.h"
 #include "ui/ScenarioForm.h"
-#include "service/SessionController.h"
 #include "ui/TrackingErrorPlot.h"
 
 #include <QAction>
@@ -71,9 +71,10 @@ private slots:
         // The paper's lambda = 40 with the true inertia: the closed loop is unstable.
         type(f.window.get(), "robot.initialParameters", QStringLiteral("20, 5, 8"));
         type(f.window.get(), "controller.lambda", QStringLiteral("40"));
-        QTRY_VERIFY_WITH_TIMEOUT(c->lastCheck() && c->isOpen()
-                                     && c->info()->scenario.controller.lambda == 40.0
-                                     && c->lastCheck()->passed() == false, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(c->lastCheck() && c->isOpen() &&
+                                     c->info()->scenario.controller.lambda == 40.0 &&
+                                     c->lastCheck()->passed() == false,
+                                 20000);
         QVERIFY(!f.button("runTrialButton")->isEnabled());
         QVERIFY(!f.button("runAllButton")->isEnabled());
         QVERIFY(!f.window->actions()->runTrial->isEnabled());
@@ -106,7 +107,7 @@ private slots:
         QCOMPARE(c->estimates().size(), 1);
         QCOMPARE(f.window->messageBar()->severity(), MessageBar::Severity::Error);
         QVERIFY(f.window->messageBar()->text().contains(trialStatusName(TrialStatus::Cancelled)));
-        QCOMPARE(f.window->plot()->trialCount(), 1); // its data are shown
+        QCOMPARE(f.window->plot()->trialCount(), 1);          // its data are shown
         QTRY_VERIFY(f.button("runTrialButton")->isEnabled()); // usable again
     }
 
@@ -183,7 +184,8 @@ private slots:
         QCOMPARE(done.constLast().at(1).toBool(), false);
         const int before = int(done.size());
         f.window->files()->exportTrialCsvTo(file + QStringLiteral("/trials"));
-        QTRY_COMPARE_WITH_TIMEOUT(int(done.size()), before + 1, 20000); // answered by the session's thread
+        QTRY_COMPARE_WITH_TIMEOUT(int(done.size()), before + 1,
+                                  20000); // answered by the session's thread
         QCOMPARE(done.constLast().at(1).toBool(), false);
         QVERIFY2(done.constLast().at(0).toString().contains(QStringLiteral("plain-file")),
                  qPrintable(done.constLast().at(0).toString()));

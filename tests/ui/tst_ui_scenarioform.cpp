@@ -45,7 +45,8 @@ private slots:
         type(form, QStringLiteral("controller.lambda"), QStringLiteral("2x0"));
         QVERIFY(!form.isValid());
         QCOMPARE(edited.constLast().at(0).toBool(), false);
-        QVERIFY(form.reasonFor(QStringLiteral("controller.lambda")).contains(QStringLiteral("2x0")));
+        QVERIFY(
+            form.reasonFor(QStringLiteral("controller.lambda")).contains(QStringLiteral("2x0")));
         QVERIFY(form.reasonFor(QStringLiteral("controller.kp")).isEmpty());
         type(form, QStringLiteral("controller.lambda"), QStringLiteral("200"));
         QVERIFY(form.isValid());
@@ -75,11 +76,11 @@ private slots:
     void everyScenarioSection_isOnTheForm()
     {
         ScenarioForm form;
-        for (const char *key : {"path.restBefore", "path.restAfter", "estimator.rankTolerance",
-                                "estimator.repetitions", "safety.maxTrackingErrorDeg",
-                                "safety.stabilityMargin", "simulation.trueParameters",
-                                "simulation.encoderCounts", "simulation.torqueNoise",
-                                "simulation.seed", "simulation.substeps"})
+        for (const char *key :
+             {"path.restBefore", "path.restAfter", "estimator.rankTolerance",
+              "estimator.repetitions", "safety.maxTrackingErrorDeg", "safety.stabilityMargin",
+              "simulation.trueParameters", "simulation.encoderCounts", "simulation.torqueNoise",
+              "simulation.seed", "simulation.substeps"})
             QVERIFY2(form.findChild<QLineEdit *>(QLatin1String(key)), key);
         type(form, QStringLiteral("simulation.encoderCounts"), QStringLiteral("65536"));
         type(form, QStringLiteral("safety.maxTrackingErrorDeg"), QStringLiteral("0.25"));

@@ -45,7 +45,8 @@ private slots:
         QCOMPARE(curves[0].points.size(), 500);
         for (int k = 0; k < 500; k += 37) {
             QCOMPARE(curves[0].points[k].x(), k * 0.002);
-            QVERIFY(std::abs(curves[0].points[k].y() - std::sin(2 * M_PI * k * 0.002) * 0.01) < 1e-12);
+            QVERIFY(std::abs(curves[0].points[k].y() - std::sin(2 * M_PI * k * 0.002) * 0.01) <
+                    1e-12);
         }
         QVERIFY(std::abs(curves[1].maxAbsDeg - 0.05) < 1e-12);
     }
