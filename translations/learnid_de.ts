@@ -3566,11 +3566,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+97"/>
+        <location line="+35"/>
         <source>no robot connected</source>
         <translation>kein Roboter verbunden</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+39"/>
         <source>no session to export</source>
         <translation>keine Sitzung zum Exportieren</translation>
     </message>

@@ -3565,11 +3565,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+97"/>
+        <location line="+35"/>
         <source>no robot connected</source>
         <translation>未连接机器人</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+39"/>
         <source>no session to export</source>
         <translation>没有可导出的会话</translation>
     </message>

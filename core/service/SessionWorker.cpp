@@ -157,24 +157,25 @@ void SessionWorker::accept(int estimateIndex)
 
 void SessionWorker::apply()
 {
-    if (!m_session)
-        return;
-    const QString error = m_session->apply();
-    if (error.isEmpty())
-        emit applied(m_session->robot().storedParameters(), m_session->appliedEstimateIndex());
-    else
-        emit operationFailed(SessionOperation::Apply, error);
+    writeParameters(SessionOperation::Apply);
 }
 
 void SessionWorker::revert()
 {
+    writeParameters(SessionOperation::Revert);
+}
+
+void SessionWorker::writeParameters(SessionOperation operation)
+{
+    // Always answers: the controller waits in Applying for applied() or operationFailed().
     if (!m_session)
-        return;
-    const QString error = m_session->revert();
+        return emit operationFailed(operation, tr("no robot connected"));
+    const QString error =
+        operation == SessionOperation::Apply ? m_session->apply() : m_session->revert();
     if (error.isEmpty())
         emit applied(m_session->robot().storedParameters(), m_session->appliedEstimateIndex());
     else
-        emit operationFailed(SessionOperation::Revert, error);
+        emit operationFailed(operation, error);
 }
 
 void SessionWorker::exportTrialCsv(const QString &folder)

@@ -87,6 +87,8 @@ signals:
 private:
     void connectSession();
     void emitCheck();
+    /// Apply or revert, answered by applied() or operationFailed().
+    void writeParameters(SessionOperation operation);
     /// Writes the request's files (writeExport); the error, or empty with *written set.
     QString writeOutputs(const ExportRequest &request, QStringList *written);
 
