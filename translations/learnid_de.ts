@@ -1364,7 +1364,7 @@
 <context>
     <name>TrialStatus</name>
     <message>
-        <location filename="../core/robot/Trial.cpp" line="+21"/>
+        <location filename="../core/types/Trial.cpp" line="+11"/>
         <source>completed</source>
         <translation>abgeschlossen</translation>
     </message>
@@ -2212,7 +2212,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Wiederholung %1 von %2: %3</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+31"/>
         <source>the update produced non-finite parameters</source>
         <translation>die Aktualisierung ergab nicht endliche Parameter</translation>
     </message>

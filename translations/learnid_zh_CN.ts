@@ -1364,7 +1364,7 @@
 <context>
     <name>TrialStatus</name>
     <message>
-        <location filename="../core/robot/Trial.cpp" line="+21"/>
+        <location filename="../core/types/Trial.cpp" line="+11"/>
         <source>completed</source>
         <translation>已完成</translation>
     </message>
@@ -2212,7 +2212,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>第 %1 次重复（共 %2 次）：%3</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+31"/>
         <source>the update produced non-finite parameters</source>
         <translation>更新产生了非有限参数</translation>
     </message>

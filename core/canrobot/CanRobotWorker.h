@@ -3,7 +3,7 @@
 #include "canrobot/CanRobotOptions.h"
 #include "canrobot/TrialStreamer.h"
 #include "model/RobotModel.h"
-#include "robot/Trial.h"
+#include "types/Trial.h"
 
 #include <QObject>
 #include <functional>

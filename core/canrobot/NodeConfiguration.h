@@ -3,7 +3,7 @@
 #include "canrobot/CanRobotOptions.h"
 #include "canrobot/DriveScaling.h"
 #include "canrobot/SdoSequence.h"
-#include "robot/Trial.h"
+#include "types/Trial.h"
 
 #include <QVector>
 #include <memory>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "canrobot/DriveScaling.h"
-#include "robot/Trial.h"
+#include "types/Trial.h"
 
 #include <QByteArray>
 #include <QList>

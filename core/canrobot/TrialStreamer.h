@@ -5,7 +5,7 @@
 #include "canrobot/SetpointWriter.h"
 #include "canrobot/TrialCollector.h"
 #include "canrobot/TrialWatchdog.h"
-#include "robot/Trial.h"
+#include "types/Trial.h"
 
 #include <QElapsedTimer>
 #include <QObject>

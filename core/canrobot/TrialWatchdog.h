@@ -1,6 +1,6 @@
 #pragma once
 
-#include "robot/Trial.h"
+#include "types/Trial.h"
 
 #include <QElapsedTimer>
 #include <QList>

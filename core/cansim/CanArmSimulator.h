@@ -2,8 +2,8 @@
 
 #include "cansim/DriveNode.h"
 #include "cansim/SyncProducer.h"
-#include "control/ControllerSettings.h"
 #include "robot/ArmSimulation.h"
+#include "types/ControllerSettings.h"
 
 #include <Eigen/Core>
 #include <QList>

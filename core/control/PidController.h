@@ -1,7 +1,7 @@
 #pragma once
 
-#include "control/ControllerSettings.h"
 #include "control/StateSpace.h"
+#include "types/ControllerSettings.h"
 
 #include <Eigen/Core>
 #include <vector>

@@ -2,7 +2,7 @@
 
 #include "identify/ObservableUpdate.h"
 #include "model/RobotModel.h"
-#include "robot/Trial.h"
+#include "types/Trial.h"
 
 #include <QString>
 #include <QStringList>

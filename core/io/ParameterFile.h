@@ -2,8 +2,8 @@
 
 #include "can/SdoWrite.h"
 
-#include "control/ControllerSettings.h"
 #include "model/RobotModel.h"
+#include "types/ControllerSettings.h"
 
 #include <Eigen/Core>
 #include <QByteArray>

@@ -76,4 +76,14 @@ Eigen::VectorXd RobotModel::torqueAt(const VectorRef &q, const VectorRef &qd, co
     return tau;
 }
 
+Eigen::MatrixXd feedforwardTorque(const RobotModel &model, const JointTrajectory &desired,
+                                  const Eigen::VectorXd &phi)
+{
+    Eigen::MatrixXd tau(model.dof(), desired.samples());
+    for (int k = 0; k < desired.samples(); ++k)
+        model.inverseDynamics(desired.q.col(k), desired.qd.col(k), desired.qdd.col(k), phi,
+                              tau.col(k));
+    return tau;
+}
+
 } // namespace learnid

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "types/JointTrajectory.h"
+
 #include <Eigen/Core>
 #include <QList>
 #include <QString>
@@ -73,5 +75,10 @@ public:
     Eigen::VectorXd torqueAt(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd,
                              const VectorRef &phi) const;
 };
+
+/// tau_f = W(q_d, qd_d, qdd_d) phi for every sample of a desired trajectory (paper eq. 8)
+/// [N m] (n x N).
+Eigen::MatrixXd feedforwardTorque(const RobotModel &model, const JointTrajectory &desired,
+                                  const Eigen::VectorXd &phi);
 
 } // namespace learnid

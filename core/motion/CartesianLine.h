@@ -1,7 +1,7 @@
 #pragma once
 
-#include "motion/JointTrajectory.h"
 #include "motion/Kinematics.h"
+#include "types/JointTrajectory.h"
 
 #include <Eigen/Core>
 

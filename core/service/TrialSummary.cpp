@@ -19,7 +19,6 @@ TrialResult trialSummary(const TrialResult &trial)
          {&s.check.plan.desired.q, &s.check.plan.desired.qd, &s.check.plan.desired.qdd,
           &s.check.plan.feedforward, &s.record.q, &s.record.tau})
         dropRows(*m);
-    s.lawCache.reset();
     return s;
 }
 

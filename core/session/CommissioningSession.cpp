@@ -128,11 +128,15 @@ TrialRecord CommissioningSession::runRepetitions(const TrialPlan &plan, int inde
 
 void CommissioningSession::learnFrom(TrialResult &result)
 {
+    // One cache slot per trial index, the new trial's last; the law fills and reuses them.
+    m_lawCaches.resize(std::size_t(m_history.size()) + 1);
     std::vector<TrialData> trials;
-    for (TrialResult &earlier : m_history)
+    for (qsizetype i = 0; i < m_history.size(); ++i) {
+        const TrialResult &earlier = m_history.at(i);
         if (earlier.learned())
-            trials.push_back({&earlier.plan(), &earlier.record, &earlier.lawCache});
-    trials.push_back({&result.plan(), &result.record, &result.lawCache});
+            trials.push_back({&earlier.plan(), &earlier.record, &m_lawCaches[std::size_t(i)]});
+    }
+    trials.push_back({&result.plan(), &result.record, &m_lawCaches.back()});
     try {
         ParameterUpdate update =
             m_law->update(*m_model, trials, result.phiUsed, m_scenario.estimator);

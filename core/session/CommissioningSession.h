@@ -12,6 +12,7 @@
 #include <atomic>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace learnid {
 
@@ -100,6 +101,9 @@ private:
     QVector<Eigen::VectorXd> m_applied;
     QVector<Eigen::VectorXd> m_storedBeforeApply;
     QVector<int> m_appliedIndices; ///< estimate index of each apply not reverted, oldest first
+    /// The law's per-trial work (LawCache), by trial index: kept with the algorithm's caller,
+    /// not in the trials the session hands out.
+    std::vector<std::shared_ptr<LawCache>> m_lawCaches;
     std::atomic_bool m_cancel{false};
 };
 

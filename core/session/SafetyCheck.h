@@ -1,7 +1,7 @@
 #pragma once
 
 #include "model/RobotModel.h"
-#include "robot/Trial.h"
+#include "types/Trial.h"
 
 #include <QString>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "control/ControllerSettings.h"
 #include "identify/LearningLaw.h"
 #include "motion/CartesianLine.h"
+#include "types/ControllerSettings.h"
 
 #include <Eigen/Core>
 #include <QString>

@@ -3,8 +3,8 @@
 #include "model/RobotModel.h"
 #include "motion/Kinematics.h"
 #include "motion/TorqueRule.h"
-#include "robot/Trial.h"
 #include "session/Scenario.h"
+#include "types/Trial.h"
 
 #include <memory>
 

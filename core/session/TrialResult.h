@@ -3,8 +3,8 @@
 #include "identify/LearningLaw.h"
 #include "identify/ObservableUpdate.h"
 #include "motion/TorqueRule.h"
-#include "robot/Trial.h"
 #include "session/SafetyCheck.h"
+#include "types/Trial.h"
 
 #include <Eigen/Core>
 #include <QMetaType>
@@ -38,7 +38,6 @@ struct TrialResult
     Eigen::VectorXd rmsTrackingErrorDeg;   ///< RMS of q_d - q per joint [deg] (n)
     std::optional<ParameterUpdate> update; ///< the learning step made from this trial
     QString message;                       ///< why it was refused, ended early or not learned from
-    std::shared_ptr<LawCache> lawCache;    ///< the law's per-trial work, reused by later updates
 
     const TrialPlan &plan() const { return check.plan; }
     TrialStatus status() const { return record.status; }

@@ -2,7 +2,7 @@
 // Trial plans for the master's tests: a slow sinusoid on each joint from rest at q0.
 
 #include "model/ModelFactory.h"
-#include "robot/Trial.h"
+#include "types/Trial.h"
 
 #include <cmath>
 

@@ -50,7 +50,6 @@ private slots:
         QVERIFY(!progress.isEmpty());
         QCOMPARE(c.history().size(), 1);
         QCOMPARE(c.estimates().size(), 2);
-        QVERIFY(!c.history().constFirst().lawCache); // the law's memory stays in the worker
     }
 
     void trialSamples_stayWithTheSessionAndExportFromThere()

@@ -1,8 +1,7 @@
 #pragma once
 
-#include "control/ControllerSettings.h"
-#include "model/RobotModel.h"
-#include "motion/JointTrajectory.h"
+#include "types/ControllerSettings.h"
+#include "types/JointTrajectory.h"
 
 #include <Eigen/Core>
 #include <QString>
@@ -25,10 +24,6 @@ struct TrialPlan
 
     int samples() const { return desired.samples(); }
 };
-
-/// tau_f = W(q_d, qd_d, qdd_d) phi for every sample of a desired trajectory (paper eq. 8).
-Eigen::MatrixXd feedforwardTorque(const RobotModel &model, const JointTrajectory &desired,
-                                  const Eigen::VectorXd &phi);
 
 enum class TrialStatus {
     Completed, ///< all samples recorded

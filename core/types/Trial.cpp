@@ -1,18 +1,8 @@
-#include "robot/Trial.h"
+#include "types/Trial.h"
 
 #include <QCoreApplication>
 
 namespace learnid {
-
-Eigen::MatrixXd feedforwardTorque(const RobotModel &model, const JointTrajectory &desired,
-                                  const Eigen::VectorXd &phi)
-{
-    Eigen::MatrixXd tau(model.dof(), desired.samples());
-    for (int k = 0; k < desired.samples(); ++k)
-        model.inverseDynamics(desired.q.col(k), desired.qd.col(k), desired.qdd.col(k), phi,
-                              tau.col(k));
-    return tau;
-}
 
 QString trialStatusName(TrialStatus status)
 {
