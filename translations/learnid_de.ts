@@ -305,7 +305,7 @@
 <context>
     <name>CartesianLine</name>
     <message>
-        <location filename="../core/motion/CartesianLine.cpp" line="+60"/>
+        <location filename="../core/motion/CartesianLine.cpp" line="+54"/>
         <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
         <translation>ungültiger Zeitablauf: Abtastzeit und Dauer müssen positiv sein, Ruhezeiten nicht negativ</translation>
     </message>
@@ -1007,7 +1007,7 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+93"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+94"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
@@ -1246,7 +1246,7 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+43"/>
+        <location filename="../core/service/SessionExport.cpp" line="+57"/>
         <source>cannot create the folder %1</source>
         <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -1254,7 +1254,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/io/SessionReport.cpp" line="+82"/>
+        <location filename="../core/service/SessionReport.cpp" line="+82"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>Schätzung %1 existiert in dieser Sitzung nicht</translation>
     </message>
@@ -1318,7 +1318,7 @@
 <context>
     <name>TrialCsv</name>
     <message>
-        <location filename="../core/io/TrialCsv.cpp" line="+46"/>
+        <location filename="../core/io/TrialCsv.cpp" line="+45"/>
         <source>%1: line %2: %3</source>
         <translation>%1: Zeile %2: %3</translation>
     </message>
@@ -1328,7 +1328,7 @@
         <translation>Versuchs-CSV: die Aufzeichnung (%1 Gelenke, %2 Abtastwerte) passt nicht zu ihrem Plan (%3 Gelenke, %4 Abtastwerte)</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+37"/>
         <source>the file is empty; expected the header line</source>
         <translation>die Datei ist leer; erwartet wird die Kopfzeile</translation>
     </message>

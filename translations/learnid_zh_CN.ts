@@ -305,7 +305,7 @@
 <context>
     <name>CartesianLine</name>
     <message>
-        <location filename="../core/motion/CartesianLine.cpp" line="+60"/>
+        <location filename="../core/motion/CartesianLine.cpp" line="+54"/>
         <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
         <translation>时序无效：采样周期和持续时间必须为正，静止时间不得为负</translation>
     </message>
@@ -1007,7 +1007,7 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+93"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+94"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
@@ -1246,7 +1246,7 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+43"/>
+        <location filename="../core/service/SessionExport.cpp" line="+57"/>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
@@ -1254,7 +1254,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/io/SessionReport.cpp" line="+82"/>
+        <location filename="../core/service/SessionReport.cpp" line="+82"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>本会话中不存在估计 %1</translation>
     </message>
@@ -1318,7 +1318,7 @@
 <context>
     <name>TrialCsv</name>
     <message>
-        <location filename="../core/io/TrialCsv.cpp" line="+46"/>
+        <location filename="../core/io/TrialCsv.cpp" line="+45"/>
         <source>%1: line %2: %3</source>
         <translation>%1：第 %2 行：%3</translation>
     </message>
@@ -1328,7 +1328,7 @@
         <translation>试验 CSV：记录（%1 个关节，%2 个采样点）与其计划（%3 个关节，%4 个采样点）不符</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+37"/>
         <source>the file is empty; expected the header line</source>
         <translation>文件为空；应有表头行</translation>
     </message>

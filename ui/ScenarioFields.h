@@ -1,6 +1,6 @@
 #pragma once
 
-#include "session/Scenario.h"
+#include "types/Scenario.h"
 
 #include <Eigen/Core>
 #include <QList>

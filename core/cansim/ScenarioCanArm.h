@@ -1,7 +1,7 @@
 #pragma once
 
 #include "cansim/CanArmSimulator.h"
-#include "session/Scenario.h"
+#include "types/Scenario.h"
 
 #include <QByteArray>
 #include <QList>

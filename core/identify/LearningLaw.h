@@ -2,6 +2,7 @@
 
 #include "identify/ObservableUpdate.h"
 #include "model/RobotModel.h"
+#include "types/EstimatorSettings.h"
 #include "types/Trial.h"
 
 #include <QString>
@@ -11,14 +12,6 @@
 #include <vector>
 
 namespace learnid {
-
-/// Settings shared by the learning laws.
-struct EstimatorSettings
-{
-    double rho = 40.0;           ///< bandwidth of F(s) = rho^3/(s + rho)^3 [rad/s]
-    double rankTolerance = 1e-3; ///< relative singular value below which a direction is kept
-    bool accumulate = true;      ///< improved law: fit all valid trials so far, not the last
-};
 
 /// Work a law may keep per trial between updates, e.g. the filtered regression of a trial, which
 /// later trials do not change. Owned with the trial by whoever keeps the trials.

@@ -1,3 +1,4 @@
+#include "identify/LearningLaw.h"
 #include "io/JsonReader.h"
 #include "io/ScenarioFile.h"
 #include "io/ValueChecks.h"

@@ -2,7 +2,6 @@
 
 #include "io/AtomicFile.h"
 #include "model/Error.h"
-#include "session/TrialResult.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -75,20 +74,6 @@ QByteArray trialCsv(const TrialPlan &plan, const TrialRecord &record)
         out += '\n';
     }
     return out;
-}
-
-QList<QPair<QString, QByteArray>> trialCsvFiles(const QVector<TrialResult> &history,
-                                                const QString &folder)
-{
-    const QDir dir(folder);
-    QList<QPair<QString, QByteArray>> files;
-    for (const TrialResult &t : history) {
-        if (t.status() == TrialStatus::Refused)
-            continue;
-        const QString name = QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
-        files.append({dir.filePath(name), trialCsv(t.plan(), t.record)});
-    }
-    return files;
 }
 
 TrialRecord TrialRecordCsv::record() const

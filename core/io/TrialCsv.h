@@ -11,8 +11,6 @@
 
 namespace learnid {
 
-struct TrialResult;
-
 /// One trial as CSV (docs/file-formats.md). Header
 ///   t_s,qd1_rad,q1_rad,e1_deg,tauf1_Nm,tau1_Nm,qd2_rad,...
 /// then one row per recorded sample k: t_k = k Ts [s], and per joint j the desired angle
@@ -22,11 +20,6 @@ struct TrialResult;
 /// to the same double; non-finite measurements as nan, inf, -inf. Lines end with \n.
 /// Throws Error when the record does not fit the plan (joints, more samples than planned).
 QByteArray trialCsv(const TrialPlan &plan, const TrialRecord &record);
-
-/// The CSV of every trial of a history that measured something, as (folder/trial-NNN.csv,
-/// content) pairs for writeFilesAtomically(). Refused trials (nothing moved) have no file.
-QList<QPair<QString, QByteArray>> trialCsvFiles(const QVector<TrialResult> &history,
-                                                const QString &folder);
 
 /// A trial CSV read back: the columns by name, sample k in column k.
 struct TrialRecordCsv

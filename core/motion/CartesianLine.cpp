@@ -9,12 +9,6 @@
 
 namespace learnid {
 
-Eigen::Vector2d CartesianLine::direction() const
-{
-    const double a = directionDeg * M_PI / 180.0;
-    return {std::cos(a), std::sin(a)};
-}
-
 namespace {
 
 // lineStateInto() with the line's direction precomputed (planLine() calls it every sample).

@@ -1,23 +1,12 @@
 #pragma once
 
 #include "motion/Kinematics.h"
+#include "types/CartesianLine.h"
 #include "types/JointTrajectory.h"
 
 #include <Eigen/Core>
 
 namespace learnid {
-
-/// A straight Cartesian line traversed with quintic time scaling
-/// s(u) = 10u^3 - 15u^4 + 6u^5, u = t / T (zero velocity and acceleration at both ends).
-struct CartesianLine
-{
-    Eigen::Vector2d start{0.5, 0.5}; ///< [m]
-    double length = 0.5;             ///< [m]
-    double directionDeg = 135.0;     ///< [deg] from the base x axis
-
-    Eigen::Vector2d direction() const;
-    Eigen::Vector2d end() const { return start + length * direction(); }
-};
 
 /// Joint state on the line at motion time t in [0, T]: q [rad], qd [rad/s], qdd [rad/s^2].
 struct JointState

@@ -3,7 +3,7 @@
 #include "robot/Robot.h"
 #include "robot/SimulatedRobot.h"
 #include "service/RobotRequest.h"
-#include "session/Scenario.h"
+#include "types/Scenario.h"
 
 #include <memory>
 

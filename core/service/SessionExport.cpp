@@ -2,15 +2,29 @@
 
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
-#include "io/SessionReport.h"
 #include "io/TrialCsv.h"
 #include "model/Error.h"
+#include "service/SessionReport.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 
 namespace learnid {
+
+QList<QPair<QString, QByteArray>> trialCsvFiles(const QVector<TrialResult> &history,
+                                                const QString &folder)
+{
+    const QDir dir(folder);
+    QList<QPair<QString, QByteArray>> files;
+    for (const TrialResult &t : history) {
+        if (t.status() == TrialStatus::Refused)
+            continue;
+        const QString name = QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
+        files.append({dir.filePath(name), trialCsv(t.plan(), t.record)});
+    }
+    return files;
+}
 
 QString dcfPathFor(const QString &parameterPath)
 {

@@ -29,6 +29,11 @@ QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &sessio
 /// returns their paths. Throws Error naming the file or folder that could not be written.
 QStringList writeExport(const CommissioningSession &session, const ExportRequest &request);
 
+/// The CSV of every trial of a history that measured something, as (folder/trial-NNN.csv,
+/// content) pairs for writeFilesAtomically(). Refused trials (nothing moved) have no file.
+QList<QPair<QString, QByteArray>> trialCsvFiles(const QVector<TrialResult> &history,
+                                                const QString &folder);
+
 /// Where the DCF fragment of a parameter file goes: beside it, same base name, .dcf.
 QString dcfPathFor(const QString &parameterPath);
 

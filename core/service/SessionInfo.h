@@ -1,7 +1,7 @@
 #pragma once
 
 #include "model/RobotModel.h"
-#include "session/Scenario.h"
+#include "types/Scenario.h"
 
 #include <Eigen/Core>
 #include <QList>

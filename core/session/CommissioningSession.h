@@ -3,9 +3,9 @@
 #include "identify/LearningLaw.h"
 #include "model/RobotModel.h"
 #include "robot/Robot.h"
-#include "session/Scenario.h"
 #include "session/TrialPlanner.h"
 #include "session/TrialResult.h"
+#include "types/Scenario.h"
 
 #include <QObject>
 #include <QVector>

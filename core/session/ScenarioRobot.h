@@ -1,7 +1,7 @@
 #pragma once
 
 #include "robot/SimulatedRobot.h"
-#include "session/Scenario.h"
+#include "types/Scenario.h"
 
 #include <memory>
 

@@ -3,7 +3,7 @@
 #include "model/RobotModel.h"
 #include "motion/Kinematics.h"
 #include "motion/TorqueRule.h"
-#include "session/Scenario.h"
+#include "types/Scenario.h"
 #include "types/Trial.h"
 
 #include <memory>

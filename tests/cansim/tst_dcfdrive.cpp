@@ -6,7 +6,7 @@
 #include "cansim/ScenarioCanArm.h"
 #include "io/ParameterFile.h"
 #include "model/ModelFactory.h"
-#include "session/Scenario.h"
+#include "types/Scenario.h"
 
 #include <QRegularExpression>
 #include <QSettings>

@@ -1,4 +1,4 @@
-#include "io/SessionReport.h"
+#include "service/SessionReport.h"
 
 #include "can/ManufacturerObjects.h"
 #include "model/Error.h"

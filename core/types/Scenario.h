@@ -1,8 +1,8 @@
 #pragma once
 
-#include "identify/LearningLaw.h"
-#include "motion/CartesianLine.h"
+#include "types/CartesianLine.h"
 #include "types/ControllerSettings.h"
+#include "types/EstimatorSettings.h"
 
 #include <Eigen/Core>
 #include <QString>
