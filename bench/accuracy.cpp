@@ -47,9 +47,9 @@ int main(int argc, char **argv)
             for (int seed = 1; seed <= seeds; ++seed) {
                 Scenario s;
                 s.law = QString::fromLatin1(law);
-                s.encoderCounts = c.counts;
-                s.torqueNoise = c.noise;
-                s.seed = quint64(seed);
+                s.simulation.encoderCounts = c.counts;
+                s.simulation.torqueNoise = c.noise;
+                s.simulation.seed = quint64(seed);
                 auto session = bench::makeSession(s);
                 if (!session->runTrials(trials)) {
                     std::fprintf(stderr, "%s / %s / seed %d: %s\n", law, c.name, seed,
@@ -57,8 +57,9 @@ int main(int argc, char **argv)
                     return 1;
                 }
                 for (int k = 1; k <= trials; ++k) {
-                    const Eigen::VectorXd rel = (session->estimates().at(k) - s.trueParameters)
-                                                    .cwiseQuotient(s.trueParameters);
+                    const Eigen::VectorXd rel =
+                        (session->estimates().at(k) - s.simulation.trueParameters)
+                            .cwiseQuotient(s.simulation.trueParameters);
                     sumSq[size_t(k - 1)] += std::pow(100.0 * rel.cwiseAbs().maxCoeff(), 2);
                     track[size_t(k - 1)] +=
                         session->history().at(k - 1).maxTrackingErrorDeg.maxCoeff() / seeds;

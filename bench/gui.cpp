@@ -81,7 +81,7 @@ void updateTimes()
     const QVector<Eigen::VectorXd> estimates(session->estimates().begin(),
                                              session->estimates().end());
     QList<ParameterInfo> parameters;
-    for (int i = 0; i < int(s.trueParameters.size()); ++i)
+    for (int i = 0; i < int(s.simulation.trueParameters.size()); ++i)
         parameters << makeRobotModel(s.model)->parameters()[i];
 
     QTemporaryDir dir;
@@ -90,7 +90,7 @@ void updateTimes()
     window.resize(1400, 900);
     window.show();
     QCoreApplication::processEvents();
-    window.tableModel()->setParameters(parameters, s.trueParameters);
+    window.tableModel()->setParameters(parameters, s.simulation.trueParameters);
     auto *chart = window.findChild<ConvergenceChart *>();
     std::printf("| trial | samples | plot [ms] | table [ms] | chart [ms] | repaint [ms] | "
                 "total [ms] |\n|---|---|---|---|---|---|---|\n");
@@ -104,7 +104,7 @@ void updateTimes()
         window.tableModel()->setHistory(history.mid(0, k + 1), estimates.mid(0, k + 2));
         QCoreApplication::processEvents();
         const double b = double(t.nsecsElapsed()) / 1e6;
-        chart->setData(parameters, estimates.mid(0, k + 2), s.trueParameters);
+        chart->setData(parameters, estimates.mid(0, k + 2), s.simulation.trueParameters);
         QCoreApplication::processEvents();
         const double d = double(t.nsecsElapsed()) / 1e6;
         window.repaint();

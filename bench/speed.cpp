@@ -21,7 +21,7 @@ namespace {
 TrialPlan longPlan(const Scenario &s, int samples)
 {
     const auto model = makeRobotModel(s.model);
-    const TrialPlan one = TrialPlanner(s, model).plan(s.trueParameters);
+    const TrialPlan one = TrialPlanner(s, model).plan(s.simulation.trueParameters);
     TrialPlan plan = one;
     const int n = one.samples();
     for (Eigen::MatrixXd *m : {&plan.desired.q, &plan.desired.qd, &plan.desired.qdd})
@@ -35,7 +35,7 @@ TrialPlan longPlan(const Scenario &s, int samples)
         plan.desired.qd.col(k) = (back ? -1.0 : 1.0) * one.desired.qd.col(src);
         plan.desired.qdd.col(k) = one.desired.qdd.col(src);
     }
-    plan.feedforward = feedforwardTorque(*model, plan.desired, s.trueParameters);
+    plan.feedforward = feedforwardTorque(*model, plan.desired, s.simulation.trueParameters);
     return plan;
 }
 
@@ -55,7 +55,7 @@ void printParts(const char *lawName, int repeats)
     std::vector<double> times[4];
     for (int r = 0; r < repeats; ++r) {
         const TrialPlanner planner(s, model);
-        SimulatedRobot robot(model, s.trueParameters);
+        SimulatedRobot robot(model, s.simulation.trueParameters);
         std::vector<TrialPlan> plans(6);
         std::vector<TrialRecord> records(6);
         std::vector<std::shared_ptr<LawCache>> caches(6);
@@ -138,7 +138,7 @@ int main(int argc, char **argv)
     const int samples = 1000000;
     const TrialPlan plan = longPlan(s, samples);
     const auto model = makeRobotModel(s.model);
-    SimulatedRobot robot(model, s.trueParameters);
+    SimulatedRobot robot(model, s.simulation.trueParameters);
     const double simStart = bench::cpuSeconds();
     const TrialRecord record = robot.runTrial(plan, {});
     const double simTime = bench::cpuSeconds() - simStart;

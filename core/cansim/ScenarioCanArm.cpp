@@ -16,11 +16,11 @@ CanArmSettings canArmSettings(const Scenario &scenario, std::shared_ptr<const Ro
     const TrialPlanner planner(scenario, model);
     s.initialPose = planner.kinematics().inverse(scenario.line.start, Eigen::VectorXd());
     s.model = std::move(model);
-    s.trueParameters = scenario.trueParameters;
-    s.measurement.encoderCounts = scenario.encoderCounts;
-    s.measurement.torqueNoise = scenario.torqueNoise;
-    s.measurement.seed = scenario.seed;
-    s.measurement.substeps = scenario.substeps;
+    s.trueParameters = scenario.simulation.trueParameters;
+    s.measurement.encoderCounts = scenario.simulation.encoderCounts;
+    s.measurement.torqueNoise = scenario.simulation.torqueNoise;
+    s.measurement.seed = scenario.simulation.seed;
+    s.measurement.substeps = scenario.simulation.substeps;
     s.controller = scenario.controller;
     s.torqueLimits = scenario.torqueLimits;
     s.nodes = nodes;

@@ -72,13 +72,13 @@ void readEstimator(JsonObjectReader r, Scenario &s)
 
 void readSimulation(JsonObjectReader r, Scenario &s)
 {
-    r.read(key("trueParameters"), s.trueParameters);
+    r.read(key("trueParameters"), s.simulation.trueParameters);
     // Any integer here; validateScenario() names the allowed set (0 or 16 .. 2^31).
-    r.readInteger(key("encoderCounts"), s.encoderCounts, -scenarioLimits::maxSeed,
+    r.readInteger(key("encoderCounts"), s.simulation.encoderCounts, -scenarioLimits::maxSeed,
                   scenarioLimits::maxSeed);
-    r.read(key("torqueNoise"), s.torqueNoise);
-    r.readInteger(key("seed"), s.seed, 0, scenarioLimits::maxSeed);
-    r.readInteger(key("substeps"), s.substeps, 1, scenarioLimits::maxSubsteps);
+    r.read(key("torqueNoise"), s.simulation.torqueNoise);
+    r.readInteger(key("seed"), s.simulation.seed, 0, scenarioLimits::maxSeed);
+    r.readInteger(key("substeps"), s.simulation.substeps, 1, scenarioLimits::maxSubsteps);
     r.rejectUnknownKeys();
 }
 
@@ -155,11 +155,11 @@ QByteArray scenarioToJson(const Scenario &s)
         .insert(key("iterations"), s.iterations)
         .insert(key("repetitions"), s.repetitions);
     JsonTree simulation = JsonTree::object();
-    simulation.insert(key("trueParameters"), JsonTree::numbers(s.trueParameters))
-        .insert(key("encoderCounts"), s.encoderCounts)
-        .insert(key("torqueNoise"), s.torqueNoise)
-        .insert(key("seed"), seedValue(s.seed))
-        .insert(key("substeps"), s.substeps);
+    simulation.insert(key("trueParameters"), JsonTree::numbers(s.simulation.trueParameters))
+        .insert(key("encoderCounts"), s.simulation.encoderCounts)
+        .insert(key("torqueNoise"), s.simulation.torqueNoise)
+        .insert(key("seed"), seedValue(s.simulation.seed))
+        .insert(key("substeps"), s.simulation.substeps);
     JsonTree safety = JsonTree::object();
     safety.insert(key("maxTrackingErrorDeg"), s.maxTrackingErrorDeg)
         .insert(key("stabilityMargin"), s.stabilityMargin);

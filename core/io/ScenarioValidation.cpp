@@ -78,24 +78,26 @@ void validateScenario(const Scenario &s)
     checkIntegerRange(key("estimator.repetitions"), s.repetitions, 1,
                       scenarioLimits::maxRepetitions);
 
-    checkVector(key("simulation.trueParameters"), s.trueParameters, m, perParameter,
+    checkVector(key("simulation.trueParameters"), s.simulation.trueParameters, m, perParameter,
                 EntryRule::Finite);
-    if (s.encoderCounts != 0 && (s.encoderCounts < scenarioLimits::minEncoderCounts ||
-                                 s.encoderCounts > scenarioLimits::maxEncoderCounts)) {
+    if (s.simulation.encoderCounts != 0 &&
+        (s.simulation.encoderCounts < scenarioLimits::minEncoderCounts ||
+         s.simulation.encoderCounts > scenarioLimits::maxEncoderCounts)) {
         throwAtKey(key("simulation.encoderCounts"),
                    Text::tr("must be 0 (an ideal encoder) or an integer from %1 to %2, got %3")
                        .arg(scenarioLimits::minEncoderCounts)
                        .arg(scenarioLimits::maxEncoderCounts)
-                       .arg(s.encoderCounts));
+                       .arg(s.simulation.encoderCounts));
     }
-    checkInterval(key("simulation.torqueNoise"), s.torqueNoise, 0.0, scenarioLimits::maxTorqueNoise,
-                  Bounds::Closed);
-    if (s.seed > quint64(scenarioLimits::maxSeed)) {
+    checkInterval(key("simulation.torqueNoise"), s.simulation.torqueNoise, 0.0,
+                  scenarioLimits::maxTorqueNoise, Bounds::Closed);
+    if (s.simulation.seed > quint64(scenarioLimits::maxSeed)) {
         throwAtKey(key("simulation.seed"), Text::tr("must be %1, got %2")
                                                .arg(integerRangeText(0, scenarioLimits::maxSeed))
-                                               .arg(s.seed));
+                                               .arg(s.simulation.seed));
     }
-    checkIntegerRange(key("simulation.substeps"), s.substeps, 1, scenarioLimits::maxSubsteps);
+    checkIntegerRange(key("simulation.substeps"), s.simulation.substeps, 1,
+                      scenarioLimits::maxSubsteps);
 
     checkPositive(key("safety.maxTrackingErrorDeg"), s.maxTrackingErrorDeg);
     checkNonNegative(key("safety.stabilityMargin"), s.stabilityMargin);

@@ -6,11 +6,12 @@ std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
                                                    std::shared_ptr<const RobotModel> model)
 {
     MeasurementOptions measurement;
-    measurement.encoderCounts = scenario.encoderCounts;
-    measurement.torqueNoise = scenario.torqueNoise;
-    measurement.seed = scenario.seed;
-    measurement.substeps = scenario.substeps;
-    return std::make_shared<SimulatedRobot>(std::move(model), scenario.trueParameters, measurement);
+    measurement.encoderCounts = scenario.simulation.encoderCounts;
+    measurement.torqueNoise = scenario.simulation.torqueNoise;
+    measurement.seed = scenario.simulation.seed;
+    measurement.substeps = scenario.simulation.substeps;
+    return std::make_shared<SimulatedRobot>(std::move(model), scenario.simulation.trueParameters,
+                                            measurement);
 }
 
 } // namespace learnid

@@ -9,10 +9,22 @@
 
 namespace learnid {
 
-/// A commissioning scenario: the robot, the path, the controller, the estimator, the simulated
-/// robot's measurement and the safety limits. Defaults are the paper scenario
-/// (docs/design.md §2).
-/// Every key of the JSON form is documented in docs/scenario.md.
+/// How the simulated robot behaves: its true parameters and its measurement. Not part of what
+/// the technician asks for; a robot on the bus ignores it.
+struct SimulationSettings
+{
+    Eigen::VectorXd trueParameters = Eigen::Vector3d(20, 5, 8); ///< phi of the simulated robot
+    qint64 encoderCounts = 0; ///< counts per revolution; 0 = ideal
+    double torqueNoise = 0.0; ///< torque noise standard deviation / limit
+    quint64 seed = 1;
+    int substeps = 10; ///< RK4 steps per sample
+};
+
+/// A commissioning scenario: what the technician asks for (the robot, the path, the controller,
+/// the estimator, the safety limits) and, apart, how the simulated robot behaves (simulation).
+/// Defaults are the paper scenario (docs/design.md §2). Every key of the JSON form is
+/// documented in docs/scenario.md (the JSON form is unchanged: the simulation keys stay where
+/// they are).
 struct Scenario
 {
     // robot
@@ -33,15 +45,11 @@ struct Scenario
     EstimatorSettings estimator;
     int iterations = 6;  ///< learning trials of a session
     int repetitions = 1; ///< runs of each trial averaged before identification (improved only)
-    // simulated robot
-    Eigen::VectorXd trueParameters = Eigen::Vector3d(20, 5, 8); ///< phi of the simulated robot
-    qint64 encoderCounts = 0; ///< counts per revolution; 0 = ideal
-    double torqueNoise = 0.0; ///< torque noise standard deviation / limit
-    quint64 seed = 1;
-    int substeps = 10; ///< RK4 steps per sample
     // safety
     double maxTrackingErrorDeg = 1.0; ///< abort threshold during a trial [deg]
     double stabilityMargin = 0.0;     ///< required decay rate of the linearised loop [1/s]
+    // the simulated robot
+    SimulationSettings simulation;
 };
 
 } // namespace learnid

@@ -162,10 +162,10 @@ void TestCanArmSimulator::planOnTheEncoderGrid_measuresExactlyWhatSimulatedRobot
     // rounding of its own, so the measured angles agree to the count and the torques to the
     // TPDO's resolution (half a per mille of rated torque).
     Scenario scenario;
-    scenario.encoderCounts = qint64(1) << 24;
+    scenario.simulation.encoderCounts = qint64(1) << 24;
     const auto model = makeRobotModel(scenario.model);
     TrialPlan plan = TrialPlanner(scenario, model).plan(scenario.initialParameters);
-    const double ca = 2.0 * M_PI / double(scenario.encoderCounts);
+    const double ca = 2.0 * M_PI / double(scenario.simulation.encoderCounts);
     plan.desired.q = (plan.desired.q / ca).array().round() * ca;
     for (int j = 0; j < 2; ++j) {
         const double unit = cansim::ratedTorqueFor(scenario.torqueLimits[j]) * 1e-6;

@@ -23,10 +23,10 @@ void TestImprovedLaw::noiseFree_withinFiveHundredthsOfAPercentAfterOneTrial()
     const Scenario s;
     const test::LearningRun run = test::runLearning(s, 2);
     const double first =
-        test::relativeError(run.estimates[1], s.trueParameters).cwiseAbs().maxCoeff();
+        test::relativeError(run.estimates[1], s.simulation.trueParameters).cwiseAbs().maxCoeff();
     QVERIFY2(first < 5e-4, qPrintable(QString::number(first)));
     const double second =
-        test::relativeError(run.estimates[2], s.trueParameters).cwiseAbs().maxCoeff();
+        test::relativeError(run.estimates[2], s.simulation.trueParameters).cwiseAbs().maxCoeff();
     QVERIFY2(second < 5e-4, qPrintable(QString::number(second)));
     QCOMPARE(run.updates[0].rank, 3);
     QVERIFY(run.updates[0].condition > 1.0 && run.updates[0].condition < 100.0);
@@ -38,7 +38,7 @@ void TestImprovedLaw::noiseFree_resultDoesNotDependOnInitialEstimate()
     s.initialParameters = Eigen::Vector3d(26.0, 8.0, 12.0);
     const test::LearningRun run = test::runLearning(s, 1);
     const double err =
-        test::relativeError(run.estimates[1], s.trueParameters).cwiseAbs().maxCoeff();
+        test::relativeError(run.estimates[1], s.simulation.trueParameters).cwiseAbs().maxCoeff();
     QVERIFY2(err < 5e-4, qPrintable(QString::number(err)));
 }
 
@@ -52,11 +52,11 @@ void TestImprovedLaw::noisyMeasurements_reportedStdMatchesScatter()
     // probability; the band below leaves room for the parameters' correlation.
     for (quint64 seed = 1; seed <= 24; ++seed) {
         Scenario s;
-        s.torqueNoise = 0.01;
-        s.seed = seed;
-        s.initialParameters = s.trueParameters; // full torque: the SNR of later trials
+        s.simulation.torqueNoise = 0.01;
+        s.simulation.seed = seed;
+        s.initialParameters = s.simulation.trueParameters; // full torque: the SNR of later trials
         const test::LearningRun run = test::runLearning(s, 1);
-        const Eigen::VectorXd err = run.estimates[1] - s.trueParameters;
+        const Eigen::VectorXd err = run.estimates[1] - s.simulation.trueParameters;
         const Eigen::VectorXd z = err.cwiseQuotient(run.updates[0].phiStd);
         sumSquares += z.squaredNorm();
         count += int(z.size());
@@ -71,14 +71,14 @@ void TestImprovedLaw::accumulatingTrials_reducesScatter()
     double single = 0.0;
     for (quint64 seed = 1; seed <= 8; ++seed) {
         Scenario s;
-        s.encoderCounts = qint64(1) << 20;
-        s.torqueNoise = 0.01;
-        s.seed = seed;
+        s.simulation.encoderCounts = qint64(1) << 20;
+        s.simulation.torqueNoise = 0.01;
+        s.simulation.seed = seed;
         const Eigen::VectorXd a = test::runLearning(s, 4).estimates[4];
         s.estimator.accumulate = false;
         const Eigen::VectorXd b = test::runLearning(s, 4).estimates[4];
-        accumulated += test::relativeError(a, s.trueParameters).squaredNorm();
-        single += test::relativeError(b, s.trueParameters).squaredNorm();
+        accumulated += test::relativeError(a, s.simulation.trueParameters).squaredNorm();
+        single += test::relativeError(b, s.simulation.trueParameters).squaredNorm();
     }
     // Four trials carry about four times the information of the last one alone.
     QVERIFY2(accumulated < 0.6 * single,
@@ -118,7 +118,7 @@ void TestImprovedLaw::rankDeficientTrajectory_keepsUnobservableParameters()
     plan.maxTrackingError = 1.0;
     plan.motionDuration = T;
 
-    SimulatedRobot robot(model, s.trueParameters);
+    SimulatedRobot robot(model, s.simulation.trueParameters);
     const TrialRecord record = robot.runTrial(plan, {});
     QVERIFY(record.completed());
     const ParameterUpdate up =
@@ -130,9 +130,9 @@ void TestImprovedLaw::rankDeficientTrajectory_keepsUnobservableParameters()
     QVERIFY(up.phi.allFinite());
     QVERIFY2(std::abs(up.phi[2] - phiPrev[2]) < 1e-3 * phiPrev[2],
              qPrintable(QString::number(up.phi[2])));
-    QVERIFY2(std::abs(up.phi[0] / s.trueParameters[0] - 1.0) < 1e-3,
+    QVERIFY2(std::abs(up.phi[0] / s.simulation.trueParameters[0] - 1.0) < 1e-3,
              qPrintable(QString::number(up.phi[0])));
-    QVERIFY2(std::abs(up.phi[1] / s.trueParameters[1] - 1.0) < 1e-2,
+    QVERIFY2(std::abs(up.phi[1] / s.simulation.trueParameters[1] - 1.0) < 1e-2,
              qPrintable(QString::number(up.phi[1])));
 }
 

@@ -26,7 +26,7 @@ void TestPaperLaw::paperScenario_firstTrialHasTableOneShape()
     Scenario s;
     s.law = QStringLiteral("paper");
     const test::LearningRun run = test::runLearning(s, 1);
-    const Eigen::VectorXd rel = test::relativeError(run.estimates[1], s.trueParameters);
+    const Eigen::VectorXd rel = test::relativeError(run.estimates[1], s.simulation.trueParameters);
     QVERIFY2(std::abs(rel[0]) < 0.02, qPrintable(QString::number(rel[0])));
     QVERIFY2(rel[1] > -0.30 && rel[1] < -0.20, qPrintable(QString::number(rel[1])));
     QVERIFY2(rel[2] > -0.14 && rel[2] < -0.06, qPrintable(QString::number(rel[2])));
@@ -40,8 +40,9 @@ void TestPaperLaw::paperScenario_convergesWithinHalfPercentFromTrialThree()
     s.law = QStringLiteral("paper");
     const test::LearningRun run = test::runLearning(s, 6);
     for (int k = 3; k <= 6; ++k) {
-        const double worst =
-            test::relativeError(run.estimates[k], s.trueParameters).cwiseAbs().maxCoeff();
+        const double worst = test::relativeError(run.estimates[k], s.simulation.trueParameters)
+                                 .cwiseAbs()
+                                 .maxCoeff();
         QVERIFY2(worst < 0.005, qPrintable(QStringLiteral("trial %1: %2").arg(k).arg(worst)));
     }
     // Tracking error of the trials run with estimates 3.. is below 0.002 deg (paper Fig. 6).
@@ -57,10 +58,10 @@ void TestPaperLaw::exactFeedforward_estimateStaysAtTruth()
 {
     Scenario s;
     s.law = QStringLiteral("paper");
-    s.initialParameters = s.trueParameters;
+    s.initialParameters = s.simulation.trueParameters;
     const test::LearningRun run = test::runLearning(s, 1);
     const double worst =
-        test::relativeError(run.estimates[1], s.trueParameters).cwiseAbs().maxCoeff();
+        test::relativeError(run.estimates[1], s.simulation.trueParameters).cwiseAbs().maxCoeff();
     QVERIFY2(worst < 1e-3, qPrintable(QString::number(worst)));
 }
 
@@ -69,7 +70,7 @@ void TestPaperLaw::nonFiniteTorque_isRejectedNamingSampleAndJoint()
     Scenario s;
     const auto model = std::make_shared<TwoLinkArm>();
     const TrialPlanner planner(s, model);
-    SimulatedRobot robot(model, s.trueParameters);
+    SimulatedRobot robot(model, s.simulation.trueParameters);
     SimulatedFaults faults;
     faults.nanTorqueAtSample = 123;
     robot.setFaults(faults);

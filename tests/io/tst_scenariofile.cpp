@@ -73,11 +73,11 @@ void compareScenarios(const Scenario &a, const Scenario &b)
     QCOMPARE(a.estimator.accumulate, b.estimator.accumulate);
     QCOMPARE(a.iterations, b.iterations);
     QCOMPARE(a.repetitions, b.repetitions);
-    QVERIFY(bitEqual(a.trueParameters, b.trueParameters));
-    QCOMPARE(a.encoderCounts, b.encoderCounts);
-    QVERIFY(bitEqual(a.torqueNoise, b.torqueNoise));
-    QCOMPARE(a.seed, b.seed);
-    QCOMPARE(a.substeps, b.substeps);
+    QVERIFY(bitEqual(a.simulation.trueParameters, b.simulation.trueParameters));
+    QCOMPARE(a.simulation.encoderCounts, b.simulation.encoderCounts);
+    QVERIFY(bitEqual(a.simulation.torqueNoise, b.simulation.torqueNoise));
+    QCOMPARE(a.simulation.seed, b.simulation.seed);
+    QCOMPARE(a.simulation.substeps, b.simulation.substeps);
     QVERIFY(bitEqual(a.maxTrackingErrorDeg, b.maxTrackingErrorDeg));
     QVERIFY(bitEqual(a.stabilityMargin, b.stabilityMargin));
 }
@@ -194,11 +194,11 @@ void TestScenarioFile::changedScenario_roundTripsBitExactly()
     s.estimator.accumulate = false;
     s.iterations = 100;
     s.repetitions = 20;
-    s.trueParameters << 19.9, 5.05, 7.95;
-    s.encoderCounts = qint64(1) << 20;
-    s.torqueNoise = 0.01;
-    s.seed = (quint64(1) << 53) - 1;
-    s.substeps = 1000;
+    s.simulation.trueParameters << 19.9, 5.05, 7.95;
+    s.simulation.encoderCounts = qint64(1) << 20;
+    s.simulation.torqueNoise = 0.01;
+    s.simulation.seed = (quint64(1) << 53) - 1;
+    s.simulation.substeps = 1000;
     s.maxTrackingErrorDeg = 0.25;
     s.stabilityMargin = 2.0;
     compareScenarios(scenarioFromJson(scenarioToJson(s), source), s);
@@ -472,11 +472,11 @@ void TestScenarioFile::validateScenario_onStruct_namesKeyPath()
     QCOMPARE(test::errorOf([&] { validateScenario(s); }),
              QStringLiteral("controller.kp[1]: must be a positive number, got -5"));
     s = Scenario{};
-    s.trueParameters.resize(2);
+    s.simulation.trueParameters.resize(2);
     LEARNID_VERIFY_ERROR(validateScenario(s),
                          QStringLiteral("simulation.trueParameters: must have 3"));
     s = Scenario{};
-    s.seed = quint64(1) << 60;
+    s.simulation.seed = quint64(1) << 60;
     LEARNID_VERIFY_ERROR(validateScenario(s),
                          QStringLiteral("simulation.seed: must be an integer"));
     QCOMPARE(test::errorOf([] { validateScenario(Scenario{}); }), QStringLiteral("<no error>"));

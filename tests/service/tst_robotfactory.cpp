@@ -28,7 +28,7 @@ void TestRobotFactory::simulated_isTheScenariosRobot()
     QVERIFY(c.robot && c.simulated);
     QCOMPARE(c.robot.get(), static_cast<Robot *>(c.simulated.get()));
     QVERIFY(c.connectError.isEmpty());
-    QCOMPARE(c.robot->trueParameters().value(), scenario.trueParameters);
+    QCOMPARE(c.robot->trueParameters().value(), scenario.simulation.trueParameters);
 }
 
 void TestRobotFactory::can_unreachableBus_saysSoWithoutThrowing()

@@ -35,7 +35,7 @@ private:
     static Fixture make(const Scenario &s, MeasurementOptions options = {})
     {
         Fixture f;
-        f.robot = std::make_shared<SimulatedRobot>(f.model, s.trueParameters, options);
+        f.robot = std::make_shared<SimulatedRobot>(f.model, s.simulation.trueParameters, options);
         f.session = std::make_unique<CommissioningSession>(s, f.model, f.robot);
         return f;
     }
@@ -64,10 +64,10 @@ void TestCommissioningSession::paperScenario_learnsAndKeepsHistory()
             (t.plan().desired.q - t.record.q).cwiseAbs().maxCoeff() * 180.0 / M_PI;
         QCOMPARE(t.maxTrackingErrorDeg.maxCoeff(), maxDeg);
     }
-    const double err =
-        ((f.session->currentEstimate() - s.trueParameters).cwiseQuotient(s.trueParameters))
-            .cwiseAbs()
-            .maxCoeff();
+    const double err = ((f.session->currentEstimate() - s.simulation.trueParameters)
+                            .cwiseQuotient(s.simulation.trueParameters))
+                           .cwiseAbs()
+                           .maxCoeff();
     QVERIFY2(err < 5e-4, qPrintable(QString::number(err)));
     // Progress ends at the total of the last trial.
     const QList<QVariant> last = progress.constLast();

@@ -30,7 +30,7 @@ void TestTrialPlanner::paperScenario_plansDesignDurationsAndSamples()
     QCOMPARE(first.motionDuration, rule.duration);
     // 0.1 s + T + 0.5 s sampled every 2 ms, both ends included.
     QCOMPARE(first.samples(), int(std::floor((0.6 + rule.duration) / 0.002 + 1e-9)) + 1);
-    const TrialPlan truth = planner.plan(s.trueParameters, &rule);
+    const TrialPlan truth = planner.plan(s.simulation.trueParameters, &rule);
     QVERIFY2(std::abs(rule.duration - 3.56) < 0.01, qPrintable(QString::number(rule.duration)));
     QVERIFY(truth.samples() < first.samples());
 }

@@ -26,10 +26,10 @@ inline LearningRun runLearning(const Scenario &scenario, int trials)
     const auto model = makeRobotModel(scenario.model);
     const TrialPlanner planner(scenario, model);
     MeasurementOptions options;
-    options.encoderCounts = scenario.encoderCounts;
-    options.torqueNoise = scenario.torqueNoise;
-    options.seed = scenario.seed;
-    SimulatedRobot robot(model, scenario.trueParameters, options);
+    options.encoderCounts = scenario.simulation.encoderCounts;
+    options.torqueNoise = scenario.simulation.torqueNoise;
+    options.seed = scenario.simulation.seed;
+    SimulatedRobot robot(model, scenario.simulation.trueParameters, options);
     const auto law = makeLearningLaw(scenario.law);
 
     LearningRun run;

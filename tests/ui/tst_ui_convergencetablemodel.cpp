@@ -26,7 +26,7 @@ private slots:
     {
         Scenario scenario;
         const auto model = makeRobotModel(scenario.model);
-        auto robot = std::make_shared<SimulatedRobot>(model, scenario.trueParameters);
+        auto robot = std::make_shared<SimulatedRobot>(model, scenario.simulation.trueParameters);
         m_session = std::make_unique<CommissioningSession>(scenario, model, robot);
         QVERIFY(m_session->runTrials(3));
     }

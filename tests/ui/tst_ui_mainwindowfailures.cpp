@@ -90,7 +90,7 @@ private slots:
         WindowFixture f;
         // A slow simulation (fine RK4) so the trial is still running when Stop arrives.
         Scenario slow = *f.window->form()->scenario();
-        slow.substeps = 400;
+        slow.simulation.substeps = 400;
         f.window->form()->setScenario(slow);
         QVERIFY(connectAndCheck(f));
         SessionController *c = f.window->controller();

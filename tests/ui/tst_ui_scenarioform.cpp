@@ -27,13 +27,13 @@ private slots:
         Scenario s;
         s.controller.lambda = 123;
         s.initialParameters = Eigen::Vector3d(1, 2, 3);
-        s.seed = 77;
+        s.simulation.seed = 77;
         s.maxTrackingErrorDeg = 0.5;
         s.estimator.accumulate = false; // not on the form: kept
         form.setScenario(s);
         QCOMPARE(form.scenario()->controller.lambda, 123.0);
         QCOMPARE(form.scenario()->initialParameters, s.initialParameters);
-        QCOMPARE(form.scenario()->seed, quint64(77));
+        QCOMPARE(form.scenario()->simulation.seed, quint64(77));
         QCOMPARE(form.scenario()->maxTrackingErrorDeg, 0.5);
         QCOMPARE(form.scenario()->estimator.accumulate, false);
     }
@@ -85,7 +85,7 @@ private slots:
         type(form, QStringLiteral("simulation.encoderCounts"), QStringLiteral("65536"));
         type(form, QStringLiteral("safety.maxTrackingErrorDeg"), QStringLiteral("0.25"));
         QVERIFY(form.isValid());
-        QCOMPARE(form.scenario()->encoderCounts, qint64(65536));
+        QCOMPARE(form.scenario()->simulation.encoderCounts, qint64(65536));
         QCOMPARE(form.scenario()->maxTrackingErrorDeg, 0.25);
     }
 
