@@ -1561,7 +1561,7 @@
         <translation>--robot can braucht --can-interface (z. B. can0)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes: %1 in &apos;%2&apos;</translation>
     </message>
@@ -3566,7 +3566,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+97"/>
-        <location line="+35"/>
+        <location line="+25"/>
         <source>no robot connected</source>
         <translation>kein Roboter verbunden</translation>
     </message>

@@ -1561,7 +1561,7 @@
         <translation>--robot can 需要 --can-interface（例如 can0）</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes：&apos;%2&apos; 中 %1</translation>
     </message>
@@ -3565,7 +3565,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+97"/>
-        <location line="+35"/>
+        <location line="+25"/>
         <source>no robot connected</source>
         <translation>未连接机器人</translation>
     </message>

@@ -90,10 +90,7 @@ QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOpti
                                                "--robot can needs --can-interface (e.g. can0)");
         run->can.plugin = parser.value(plugin);
         run->can.interface = parser.value(interface);
-    } else {
-        run->can.plugin = QStringLiteral("candump");
-        run->can.interface = QStringLiteral("replay");
-    }
+    } // a replay's device (candump/replay) is the robot factory's (makeRobot)
     if (parser.isSet(nodes)) {
         QString error;
         run->can.nodes = parseNodeList(parser.value(nodes), &error);

@@ -184,20 +184,21 @@ void SessionController::accept(int estimateIndex)
 
 void SessionController::apply()
 {
-    if (m_state != SessionState::Idle)
-        return;
-    setState(SessionState::Applying);
-    SessionWorker *w = m_worker;
-    post([w] { w->apply(); });
+    writeParameters(SessionOperation::Apply);
 }
 
 void SessionController::revert()
+{
+    writeParameters(SessionOperation::Revert);
+}
+
+void SessionController::writeParameters(SessionOperation operation)
 {
     if (m_state != SessionState::Idle)
         return;
     setState(SessionState::Applying);
     SessionWorker *w = m_worker;
-    post([w] { w->revert(); });
+    post([w, operation] { w->writeParameters(operation); });
 }
 
 void SessionController::exportTrialCsv(const QString &folder)

@@ -91,6 +91,8 @@ signals:
 
 private:
     void setState(SessionState state);
+    /// Apply or revert in the worker; Applying until it answers.
+    void writeParameters(SessionOperation operation);
     template <typename F> void post(F &&call);
 
     QThread m_thread;

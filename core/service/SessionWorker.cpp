@@ -155,16 +155,6 @@ void SessionWorker::accept(int estimateIndex)
         emit operationFailed(SessionOperation::Accept, error);
 }
 
-void SessionWorker::apply()
-{
-    writeParameters(SessionOperation::Apply);
-}
-
-void SessionWorker::revert()
-{
-    writeParameters(SessionOperation::Revert);
-}
-
 void SessionWorker::writeParameters(SessionOperation operation)
 {
     // Always answers: the controller waits in Applying for applied() or operationFailed().

@@ -48,8 +48,10 @@ public slots:
     void runTrial();
     void runTrials(int count);
     void accept(int estimateIndex);
-    void apply();
-    void revert();
+    void apply() { writeParameters(SessionOperation::Apply); }
+    void revert() { writeParameters(SessionOperation::Revert); }
+    /// Apply or revert, always answered by applied() or operationFailed().
+    void writeParameters(learnid::SessionOperation operation);
     /// Writes the parameter file (JSON) of estimate k and its DCF fragment next to it
     /// (same base name, .dcf), all or nothing.
     void exportParameterFile(const QString &jsonPath, int estimateIndex);
@@ -87,8 +89,6 @@ signals:
 private:
     void connectSession();
     void emitCheck();
-    /// Apply or revert, answered by applied() or operationFailed().
-    void writeParameters(SessionOperation operation);
     /// Writes the request's files (writeExport); the error, or empty with *written set.
     QString writeOutputs(const ExportRequest &request, QStringList *written);
 
