@@ -28,7 +28,7 @@ inline double median(std::vector<double> v)
 /// A session of the scenario on a simulated robot with the scenario's measurement options.
 inline std::unique_ptr<CommissioningSession> makeSession(const Scenario &s)
 {
-    const auto model = makeRobotModel(s.model);
+    const auto model = makeRobotModel(s.model, s.urdf);
     return std::make_unique<CommissioningSession>(s, model, makeSimulatedRobot(s, model));
 }
 

@@ -82,7 +82,7 @@ void updateTimes()
                                              session->estimates().end());
     QList<ParameterInfo> parameters;
     for (int i = 0; i < int(s.simulation.trueParameters.size()); ++i)
-        parameters << makeRobotModel(s.model)->parameters()[i];
+        parameters << makeRobotModel(s.model, s.urdf)->parameters()[i];
 
     QTemporaryDir dir;
     QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);

@@ -20,7 +20,7 @@ namespace {
 // A long trial: the paper line driven forward and back until `samples` samples.
 TrialPlan longPlan(const Scenario &s, int samples)
 {
-    const auto model = makeRobotModel(s.model);
+    const auto model = makeRobotModel(s.model, s.urdf);
     const TrialPlan one = TrialPlanner(s, model).plan(s.simulation.trueParameters);
     TrialPlan plan = one;
     const int n = one.samples();
@@ -48,7 +48,7 @@ void printParts(const char *lawName, int repeats)
     auto reference = bench::makeSession(s);
     if (!reference->runTrials(6))
         return;
-    const auto model = makeRobotModel(s.model);
+    const auto model = makeRobotModel(s.model, s.urdf);
     const auto law = makeLearningLaw(s.law);
     const char *names[4] = {"planning (6 plans)", "pre-trial checks (6)", "simulation (6 trials)",
                             "identification (6 updates)"};
@@ -137,7 +137,7 @@ int main(int argc, char **argv)
     const Scenario s;
     const int samples = 1000000;
     const TrialPlan plan = longPlan(s, samples);
-    const auto model = makeRobotModel(s.model);
+    const auto model = makeRobotModel(s.model, s.urdf);
     SimulatedRobot robot(model, s.simulation.trueParameters);
     const double simStart = bench::cpuSeconds();
     const TrialRecord record = robot.runTrial(plan, {});

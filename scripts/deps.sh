@@ -14,6 +14,8 @@ LEARNID_PACKAGES=(
     dpkg-dev file  # tst_package: dpkg-shlibdeps, and CPack's DEB generator runs `file`
     clang libclang-rt-14-dev  # scripts/fuzz: libFuzzer and the sanitizer runtimes of clang
     clang-format  # scripts/format --check (CI)
+    liburdfdom-dev  # URDF robots (core/model/UrdfChain)
+    liborocos-kdl-dev  # tests only: Orocos KDL, the dynamics oracle of tst_chaindynamics
 )
 
 learnid_install_deps() {

@@ -31,6 +31,19 @@
     </message>
 </context>
 <context>
+    <name>BaseParameters</name>
+    <message>
+        <location filename="../core/model/BaseParameters.cpp" line="+22"/>
+        <source>base parameters need finite regressor rows</source>
+        <translation>die Basisparameter brauchen endliche Regressorzeilen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the torques depend on no parameter: every regressor column is 0</source>
+        <translation>die Momente hängen von keinem Parameter ab: jede Regressorspalte ist 0</translation>
+    </message>
+</context>
+<context>
     <name>BusLoad</name>
     <message>
         <location filename="../core/can/BusLoad.cpp" line="+41"/>
@@ -313,6 +326,67 @@
         <location line="+15"/>
         <source>a planar line needs 2 joints</source>
         <translation>eine ebene Gerade braucht 2 Gelenke</translation>
+    </message>
+</context>
+<context>
+    <name>ChainDynamics</name>
+    <message>
+        <location filename="../core/model/ChainDynamics.cpp" line="+56"/>
+        <source>%1 has %2 moving joints: a chain needs 1 to %3</source>
+        <translation>%1 hat %2 bewegliche Gelenke: eine Kette braucht 1 bis %3</translation>
+    </message>
+</context>
+<context>
+    <name>ChainModel</name>
+    <message>
+        <location filename="../core/model/ChainModel.cpp" line="+35"/>
+        <source>mass of link %1</source>
+        <translation>Masse des Glieds %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>first moment of mass of link %1 along its %2 axis</source>
+        <translation>statisches Moment des Glieds %1 entlang seiner %2-Achse</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>inertia %1 of link %2 about its frame origin</source>
+        <translation>Trägheit %1 des Glieds %2 um den Ursprung seines Koordinatensystems</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>rotor inertia at joint %1</source>
+        <translation>Rotorträgheit am Gelenk %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>viscous friction of joint %1</source>
+        <translation>viskose Reibung des Gelenks %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Coulomb friction of joint %1</source>
+        <translation>Coulomb-Reibung des Gelenks %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>torque offset of joint %1</source>
+        <translation>Drehmoment-Offset des Gelenks %1</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>the Coulomb friction&apos;s velocity scale must be positive (it is %1)</source>
+        <translation>die Geschwindigkeitsskala der Coulomb-Reibung muss positiv sein (sie ist %1)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>a combination led by the %1</source>
+        <translation>eine Kombination, angeführt von: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 has %2 moving joints, the model %3 has %4</source>
+        <translation>%1 hat %2 bewegliche Gelenke, das Modell %3 hat %4</translation>
     </message>
 </context>
 <context>
@@ -621,6 +695,79 @@
     </message>
 </context>
 <context>
+    <name>JointPath</name>
+    <message>
+        <location filename="../core/motion/JointPath.cpp" line="+38"/>
+        <source>waypoint path: %1 waypoints; a path needs at least 2</source>
+        <translation>Wegpunktbahn: %1 Wegpunkte; eine Bahn braucht mindestens 2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>waypoint path: waypoint 0 has no joints</source>
+        <translation>Wegpunktbahn: Wegpunkt 0 hat keine Gelenke</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>waypoint path: waypoint %1 has %2 joints, waypoint 0 has %3</source>
+        <translation>Wegpunktbahn: Wegpunkt %1 hat %2 Gelenke, Wegpunkt 0 hat %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>waypoint path: waypoint %1: joint %2 is %3, not a finite angle</source>
+        <translation>Wegpunktbahn: Wegpunkt %1: Gelenk %2 ist %3, kein endlicher Winkel</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>waypoint path: waypoints %1 and %2 are equal or too close to tell apart (largest joint difference %3 rad); the path stops at every waypoint already, remove the repeat</source>
+        <translation>Wegpunktbahn: die Wegpunkte %1 und %2 sind gleich oder zu nah beieinander, um sie zu unterscheiden (größte Gelenkdifferenz %3 rad); die Bahn hält ohnehin an jedem Wegpunkt, die Wiederholung entfernen</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>recorded path: %1 sample times but %2 samples of the joints</source>
+        <translation>aufgezeichnete Bahn: %1 Abtastzeitpunkte, aber %2 Abtastwerte der Gelenke</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>recorded path: %1 samples; a path needs at least 4</source>
+        <translation>aufgezeichnete Bahn: %1 Abtastwerte; eine Bahn braucht mindestens 4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>recorded path: the samples have no joints</source>
+        <translation>aufgezeichnete Bahn: die Abtastwerte haben keine Gelenke</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>recorded path: sample %1: the time is %2, not a finite number</source>
+        <translation>aufgezeichnete Bahn: Abtastwert %1: die Zeit ist %2, keine endliche Zahl</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>recorded path: sample %1: the time %2 s does not increase from sample %3 (%4 s)</source>
+        <translation>aufgezeichnete Bahn: Abtastwert %1: die Zeit %2 s ist nicht größer als bei Abtastwert %3 (%4 s)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>recorded path: sample %1: joint %2 is %3, not a finite angle</source>
+        <translation>aufgezeichnete Bahn: Abtastwert %1: Gelenk %2 ist %3, kein endlicher Winkel</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>recorded path: the sample times are too close to fit a spline</source>
+        <translation>aufgezeichnete Bahn: die Abtastzeitpunkte liegen zu nah beieinander, um einen Spline anzupassen</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>joint path: the duration must be positive and finite, the time finite, and the state have %1 joints</source>
+        <translation>Gelenkbahn: die Dauer muss positiv und endlich sein, die Zeit endlich, und der Zustand muss %1 Gelenke haben</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
+        <translation>ungültiger Zeitablauf: Abtastzeit und Dauer müssen positiv sein, Ruhezeiten nicht negativ</translation>
+    </message>
+</context>
+<context>
     <name>JsonReader</name>
     <message>
         <location filename="../core/io/JsonReader.cpp" line="+90"/>
@@ -779,6 +926,19 @@
         <location line="+6"/>
         <source>Parameter %1 (%2) cannot be sent as REAL32.</source>
         <translation>Parameter %1 (%2) kann nicht als REAL32 gesendet werden.</translation>
+    </message>
+</context>
+<context>
+    <name>ModelFactory</name>
+    <message>
+        <location filename="../core/model/ModelFactory.cpp" line="+70"/>
+        <source>robot.urdf.file: the &quot;urdf&quot; model needs a URDF file</source>
+        <translation>robot.urdf.file: das Modell „urdf“ braucht eine URDF-Datei</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: cannot read the URDF: %2</source>
+        <translation>%1: das URDF kann nicht gelesen werden: %2</translation>
     </message>
 </context>
 <context>
@@ -954,6 +1114,69 @@
     </message>
 </context>
 <context>
+    <name>PathCsv</name>
+    <message>
+        <location filename="../core/io/PathCsv.cpp" line="+39"/>
+        <source>%1: line %2, column %3</source>
+        <translation>%1: Zeile %2, Spalte %3</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: line %2: %3</source>
+        <translation>%1: Zeile %2: %3</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>the header must be %1 (the time, then one column per joint); expected %2, got %3</source>
+        <translation>die Kopfzeile muss %1 lauten (die Zeit, dann eine Spalte pro Gelenk); erwartet: %2, gefunden: %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the header must be %1 (the time, then one column per joint); the joint columns are missing</source>
+        <translation>die Kopfzeile muss %1 lauten (die Zeit, dann eine Spalte pro Gelenk); die Gelenkspalten fehlen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the header names the joints q1..q%1; the robot has %2 joints</source>
+        <translation>die Kopfzeile nennt die Gelenke q1..q%1; der Roboter hat %2 Gelenke</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>expected %1 fields (%2), got %3</source>
+        <translation>%1 Felder erwartet (%2), gefunden: %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the field is empty; expected a number</source>
+        <translation>das Feld ist leer; erwartet wird eine Zahl</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not a number: %1</source>
+        <translation>keine Zahl: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the times must increase from sample to sample, got %1 after %2 on line %3</source>
+        <translation>die Zeiten müssen von Abtastwert zu Abtastwert zunehmen, gefunden: %1 nach %2 in Zeile %3</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>the file holds no header line; expected %1</source>
+        <translation>die Datei enthält keine Kopfzeile; erwartet: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 samples after the header on line %2; a path needs at least %3</source>
+        <translation>%1 Abtastwerte nach der Kopfzeile in Zeile %2; eine Bahn braucht mindestens %3</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>path CSV: %1 sample times but %2 samples of the joints</source>
+        <translation>Bahn-CSV: %1 Abtastzeitpunkte, aber %2 Abtastwerte der Gelenke</translation>
+    </message>
+</context>
+<context>
     <name>Pdo</name>
     <message>
         <location filename="../core/can/Pdo.cpp" line="+24"/>
@@ -987,6 +1210,24 @@
     </message>
 </context>
 <context>
+    <name>PhysicalConsistency</name>
+    <message>
+        <location filename="../core/model/LogCholesky.cpp" line="+17"/>
+        <source>%1 has %2 entries; a link has 10.</source>
+        <translation>%1 hat %2 Einträge; ein Glied hat 10.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1[%2] is not finite.</source>
+        <translation>%1[%2] ist nicht endlich.</translation>
+    </message>
+    <message>
+        <location line="+91"/>
+        <source>The link is not strictly physically consistent (mass %1 kg, smallest pseudo-inertia eigenvalue %2); it has no log-Cholesky parameters.</source>
+        <translation>Das Glied ist nicht streng physikalisch konsistent (Masse %1 kg, kleinster Eigenwert der Pseudoträgheitsmatrix %2); es hat keine Log-Cholesky-Parameter.</translation>
+    </message>
+</context>
+<context>
     <name>SafetyCheck</name>
     <message>
         <location filename="../core/session/SafetyCheck.cpp" line="+169"/>
@@ -1007,27 +1248,23 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+95"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+162"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+100"/>
-        <source>this version of learnid reads &quot;%1&quot;, got %2</source>
-        <translation>diese Version von learnid liest „%1“, gefunden: %2</translation>
-    </message>
-    <message>
-        <location line="+86"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+227"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-52"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-94"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+24"/>
+        <location line="+21"/>
         <source>one per joint of %1</source>
         <translation>einer pro Gelenk von %1</translation>
     </message>
@@ -1042,29 +1279,82 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-157"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-195"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>must have 2 entries (x and y), got %1</source>
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-22"/>
+        <location line="+62"/>
+        <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
+        <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
+    </message>
+    <message>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-86"/>
         <source>one per joint</source>
         <translation>einer pro Gelenk</translation>
     </message>
     <message>
         <location line="+26"/>
+        <source>the &quot;urdf&quot; model needs a URDF file</source>
+        <translation>das Modell „urdf“ braucht eine URDF-Datei</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>the Cartesian line is the paper-2link arm&apos;s path; a URDF robot runs &quot;waypoints&quot; or &quot;file&quot;</source>
+        <translation>die kartesische Gerade ist die Bahn des Arms paper-2link; ein URDF-Roboter fährt „waypoints“ oder „file“</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the paper-2link arm runs the Cartesian &quot;line&quot;</source>
+        <translation>der Arm paper-2link fährt die kartesische Gerade „line“</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>needs at least 2 waypoints, got %1</source>
+        <translation>braucht mindestens 2 Wegpunkte, gefunden: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>a path of kind &quot;file&quot; needs a CSV file</source>
+        <translation>eine Bahn der Art „file“ braucht eine CSV-Datei</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 has %2 joint columns, %3 has %4 joints</source>
+        <translation>%1 hat %2 Gelenkspalten, %3 hat %4 Gelenke</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>must be 1 or -1, got %1</source>
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>muss 0 (idealer Encoder) oder eine ganze Zahl von %1 bis %2 sein, gefunden: %3</translation>
+    </message>
+    <message>
+        <location filename="../core/io/ScenarioChain.cpp" line="+53"/>
+        <source>must have 3 entries (x, y, z in the base link&apos;s frame), got %1</source>
+        <translation>muss 3 Einträge haben (x, y, z im Koordinatensystem des Basisglieds), gefunden: %1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>must be &quot;line&quot;, &quot;waypoints&quot; or &quot;file&quot;, got %1</source>
+        <translation>muss „line“, „waypoints“ oder „file“ sein, gefunden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScenarioRobot</name>
+    <message>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+60"/>
+        <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
+        <translation>robot.torqueLimits: Gelenk %1 (%2) hat im URDF keine Momentengrenze (effort): die Momentengrenzen im Szenario angeben</translation>
     </message>
 </context>
 <context>
@@ -1293,14 +1583,42 @@
     </message>
 </context>
 <context>
+    <name>Text</name>
+    <message>
+        <location filename="../core/model/UrdfChain.cpp" line="+49"/>
+        <source>%1: not a valid URDF: %2</source>
+        <translation>%1: kein gültiges URDF: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the parser gave no reason</source>
+        <translation>der Parser nannte keinen Grund</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobot.cpp" line="-33"/>
+        <source>simulation.realUrdf: %1 has %2 moving joints, the robot %3</source>
+        <translation>simulation.realUrdf: %1 hat %2 bewegliche Gelenke, der Roboter %3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>simulation.realUrdf: joint %1 (%2) is placed differently from the robot&apos;s URDF: the real robot may differ in inertia and friction only</source>
+        <translation>simulation.realUrdf: Gelenk %1 (%2) sitzt anders als im URDF des Roboters: der reale Roboter darf nur in Trägheit und Reibung abweichen</translation>
+    </message>
+</context>
+<context>
     <name>TorqueRule</name>
     <message>
-        <location filename="../core/motion/TorqueRule.cpp" line="+28"/>
+        <location filename="../core/motion/TorqueRule.cpp" line="+23"/>
         <source>torque rule needs 2 grid points</source>
         <translation>die Momentenregel braucht 2 Stützstellen</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+44"/>
+        <source>torque rule: the path has %1 joints, the robot model %2</source>
+        <translation>Momentenregel: die Bahn hat %1 Gelenke, das Robotermodell %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>torque rule needs one positive limit per joint and a positive fraction</source>
         <translation>die Momentenregel braucht eine positive Grenze pro Gelenk und einen positiven Anteil</translation>
     </message>
@@ -1356,7 +1674,12 @@
 <context>
     <name>TrialPlanner</name>
     <message>
-        <location filename="../core/session/TrialPlanner.cpp" line="+16"/>
+        <location filename="../core/session/TrialPlanner.cpp" line="+26"/>
+        <source>the path has %1 joints, the robot %2</source>
+        <translation>die Bahn hat %1 Gelenke, der Roboter %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>nur ebene Zweigelenkarme haben eine kartesische Geradenkinematik</translation>
     </message>
@@ -1413,6 +1736,55 @@
         <location filename="../core/motion/TwoLinkKinematics.cpp" line="+39"/>
         <source>point (%1, %2) m is out of reach or at a singularity of the arm (link lengths %3 m and %4 m)</source>
         <translation>Punkt (%1, %2) m ist außer Reichweite oder in einer Singularität des Arms (Gliedlängen %3 m und %4 m)</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfChain</name>
+    <message>
+        <location filename="../core/model/UrdfChain.cpp" line="+21"/>
+        <source>%1: link &quot;%2&quot; has a negative mass (%3 kg)</source>
+        <translation>%1: Glied „%2“ hat eine negative Masse (%3 kg)</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1: the robot branches at link &quot;%2&quot; (children %3): name the tip link of the chain</source>
+        <translation>%1: der Roboter verzweigt sich am Glied „%2“ (Kindglieder %3): das Endglied der Kette angeben</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1: joint &quot;%2&quot; has no axis (zero vector)</source>
+        <translation>%1: Gelenk „%2“ hat keine Achse (Nullvektor)</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <location line="+4"/>
+        <source>%1: no link &quot;%2&quot;</source>
+        <translation>%1: kein Glied „%2“</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: link &quot;%2&quot; is not below link &quot;%3&quot;</source>
+        <translation>%1: Glied „%2“ liegt nicht unterhalb von Glied „%3“</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1: joint &quot;%2&quot; mimics another joint: mimic joints are not supported</source>
+        <translation>%1: Gelenk „%2“ ahmt ein anderes Gelenk nach (mimic): Mimic-Gelenke werden nicht unterstützt</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1: joint &quot;%2&quot; is floating or planar: only revolute, continuous, prismatic and fixed joints form a serial arm</source>
+        <translation>%1: Gelenk „%2“ ist frei (floating) oder eben (planar): nur Drehgelenke (revolute, continuous), Schubgelenke (prismatic) und feste Gelenke (fixed) bilden einen seriellen Arm</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: no moving joint between link &quot;%2&quot; and link &quot;%3&quot;</source>
+        <translation>%1: kein bewegliches Gelenk zwischen Glied „%2“ und Glied „%3“</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: cannot read the URDF: %2</source>
+        <translation>%1: das URDF kann nicht gelesen werden: %2</translation>
     </message>
 </context>
 <context>
@@ -1725,32 +2097,67 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--iterations: %1 Versuche brauchen %1 Logs, %2 angegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/ResultTable.cpp" line="+32"/>
+        <location filename="../app/cli/ResultTable.cpp" line="+39"/>
+        <location line="+73"/>
         <source>trial</source>
         <translation>Vers.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-72"/>
+        <location line="+75"/>
         <source>change %</source>
         <translation>Änd. %</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-73"/>
+        <location line="+75"/>
         <source>max|e|%1 deg</source>
         <translation>max|e|%1 °</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-74"/>
+        <location line="+75"/>
         <source>T s</source>
         <translation>T s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-74"/>
+        <location line="+75"/>
         <source>cond</source>
         <translation>cond</translation>
     </message>
     <message>
+        <location line="-74"/>
+        <source>rank</source>
+        <translation>Rang</translation>
+    </message>
+    <message>
         <location line="+2"/>
+        <source>path torque err %</source>
+        <translation>Bahnmom.-Fehler %</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>truth</source>
+        <translation>wahr</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>est %1</source>
+        <translation>Schätz. %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>  parameter</source>
+        <translation>  Parameter</translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>vs truth %</source>
         <translation>vs. wahr %</translation>
     </message>
@@ -3560,12 +3967,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::SessionWorker</name>
     <message>
-        <location filename="../core/service/SessionWorker.cpp" line="+40"/>
+        <location filename="../core/service/SessionWorker.cpp" line="+42"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>unbekanntes Robotermodell „%1“</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+98"/>
         <location line="+25"/>
         <source>no robot connected</source>
         <translation>kein Roboter verbunden</translation>

@@ -31,6 +31,19 @@
     </message>
 </context>
 <context>
+    <name>BaseParameters</name>
+    <message>
+        <location filename="../core/model/BaseParameters.cpp" line="+22"/>
+        <source>base parameters need finite regressor rows</source>
+        <translation>基参数需要有限的回归矩阵行</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the torques depend on no parameter: every regressor column is 0</source>
+        <translation>力矩不依赖于任何参数：回归矩阵的每一列均为 0</translation>
+    </message>
+</context>
+<context>
     <name>BusLoad</name>
     <message>
         <location filename="../core/can/BusLoad.cpp" line="+41"/>
@@ -313,6 +326,67 @@
         <location line="+15"/>
         <source>a planar line needs 2 joints</source>
         <translation>平面直线需要 2 个关节</translation>
+    </message>
+</context>
+<context>
+    <name>ChainDynamics</name>
+    <message>
+        <location filename="../core/model/ChainDynamics.cpp" line="+56"/>
+        <source>%1 has %2 moving joints: a chain needs 1 to %3</source>
+        <translation>%1 有 %2 个可动关节：运动链需要 1 到 %3 个</translation>
+    </message>
+</context>
+<context>
+    <name>ChainModel</name>
+    <message>
+        <location filename="../core/model/ChainModel.cpp" line="+35"/>
+        <source>mass of link %1</source>
+        <translation>连杆 %1 的质量</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>first moment of mass of link %1 along its %2 axis</source>
+        <translation>连杆 %1 沿其 %2 轴的质量一阶矩</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>inertia %1 of link %2 about its frame origin</source>
+        <translation>连杆 %2 关于其坐标系原点的惯量 %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>rotor inertia at joint %1</source>
+        <translation>关节 %1 处的转子惯量</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>viscous friction of joint %1</source>
+        <translation>关节 %1 的粘性摩擦</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Coulomb friction of joint %1</source>
+        <translation>关节 %1 的库仑摩擦</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>torque offset of joint %1</source>
+        <translation>关节 %1 的力矩偏置</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>the Coulomb friction&apos;s velocity scale must be positive (it is %1)</source>
+        <translation>库仑摩擦的速度尺度必须为正（当前为 %1）</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>a combination led by the %1</source>
+        <translation>以%1为首的组合</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 has %2 moving joints, the model %3 has %4</source>
+        <translation>%1 有 %2 个可动关节，模型 %3 有 %4 个</translation>
     </message>
 </context>
 <context>
@@ -621,6 +695,79 @@
     </message>
 </context>
 <context>
+    <name>JointPath</name>
+    <message>
+        <location filename="../core/motion/JointPath.cpp" line="+38"/>
+        <source>waypoint path: %1 waypoints; a path needs at least 2</source>
+        <translation>路点路径：%1 个路点；路径至少需要 2 个</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>waypoint path: waypoint 0 has no joints</source>
+        <translation>路点路径：路点 0 没有关节</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>waypoint path: waypoint %1 has %2 joints, waypoint 0 has %3</source>
+        <translation>路点路径：路点 %1 有 %2 个关节，路点 0 有 %3 个</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>waypoint path: waypoint %1: joint %2 is %3, not a finite angle</source>
+        <translation>路点路径：路点 %1：关节 %2 为 %3，不是有限角度</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>waypoint path: waypoints %1 and %2 are equal or too close to tell apart (largest joint difference %3 rad); the path stops at every waypoint already, remove the repeat</source>
+        <translation>路点路径：路点 %1 和 %2 相同或过于接近而无法区分（最大关节差 %3 rad）；路径本来就会在每个路点停下，请删除重复的路点</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>recorded path: %1 sample times but %2 samples of the joints</source>
+        <translation>记录的路径：%1 个采样时刻，但关节有 %2 个采样点</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>recorded path: %1 samples; a path needs at least 4</source>
+        <translation>记录的路径：%1 个采样点；路径至少需要 4 个</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>recorded path: the samples have no joints</source>
+        <translation>记录的路径：采样点不含关节</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>recorded path: sample %1: the time is %2, not a finite number</source>
+        <translation>记录的路径：采样点 %1：时间为 %2，不是有限数</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>recorded path: sample %1: the time %2 s does not increase from sample %3 (%4 s)</source>
+        <translation>记录的路径：采样点 %1：时间 %2 s 未比采样点 %3（%4 s）增大</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>recorded path: sample %1: joint %2 is %3, not a finite angle</source>
+        <translation>记录的路径：采样点 %1：关节 %2 为 %3，不是有限角度</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>recorded path: the sample times are too close to fit a spline</source>
+        <translation>记录的路径：采样时刻过于接近，无法拟合样条</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>joint path: the duration must be positive and finite, the time finite, and the state have %1 joints</source>
+        <translation>关节路径：持续时间必须为正且有限，时间必须有限，状态必须有 %1 个关节</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
+        <translation>时序无效：采样周期和持续时间必须为正，静止时间不得为负</translation>
+    </message>
+</context>
+<context>
     <name>JsonReader</name>
     <message>
         <location filename="../core/io/JsonReader.cpp" line="+90"/>
@@ -779,6 +926,19 @@
         <location line="+6"/>
         <source>Parameter %1 (%2) cannot be sent as REAL32.</source>
         <translation>参数 %1（%2）无法以 REAL32 发送。</translation>
+    </message>
+</context>
+<context>
+    <name>ModelFactory</name>
+    <message>
+        <location filename="../core/model/ModelFactory.cpp" line="+70"/>
+        <source>robot.urdf.file: the &quot;urdf&quot; model needs a URDF file</source>
+        <translation>robot.urdf.file：“urdf”模型需要 URDF 文件</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: cannot read the URDF: %2</source>
+        <translation>%1：无法读取 URDF：%2</translation>
     </message>
 </context>
 <context>
@@ -954,6 +1114,69 @@
     </message>
 </context>
 <context>
+    <name>PathCsv</name>
+    <message>
+        <location filename="../core/io/PathCsv.cpp" line="+39"/>
+        <source>%1: line %2, column %3</source>
+        <translation>%1：第 %2 行第 %3 列</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: line %2: %3</source>
+        <translation>%1：第 %2 行：%3</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>the header must be %1 (the time, then one column per joint); expected %2, got %3</source>
+        <translation>表头必须是 %1（先是时间，然后每个关节一列）；应为 %2，实际为 %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the header must be %1 (the time, then one column per joint); the joint columns are missing</source>
+        <translation>表头必须是 %1（先是时间，然后每个关节一列）；缺少关节列</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the header names the joints q1..q%1; the robot has %2 joints</source>
+        <translation>表头列出的关节为 q1..q%1；机器人有 %2 个关节</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>expected %1 fields (%2), got %3</source>
+        <translation>应有 %1 个字段（%2），实际为 %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the field is empty; expected a number</source>
+        <translation>字段为空；应为数字</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not a number: %1</source>
+        <translation>不是数字：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the times must increase from sample to sample, got %1 after %2 on line %3</source>
+        <translation>时间必须逐个采样点递增，实际在第 %3 行的 %2 之后为 %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>the file holds no header line; expected %1</source>
+        <translation>文件中没有表头行；应为 %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 samples after the header on line %2; a path needs at least %3</source>
+        <translation>第 %2 行的表头之后有 %1 个采样点；路径至少需要 %3 个</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>path CSV: %1 sample times but %2 samples of the joints</source>
+        <translation>路径 CSV：%1 个采样时刻，但关节有 %2 个采样点</translation>
+    </message>
+</context>
+<context>
     <name>Pdo</name>
     <message>
         <location filename="../core/can/Pdo.cpp" line="+24"/>
@@ -987,6 +1210,24 @@
     </message>
 </context>
 <context>
+    <name>PhysicalConsistency</name>
+    <message>
+        <location filename="../core/model/LogCholesky.cpp" line="+17"/>
+        <source>%1 has %2 entries; a link has 10.</source>
+        <translation>%1 有 %2 个条目；一个连杆有 10 个。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1[%2] is not finite.</source>
+        <translation>%1[%2] 不是有限值。</translation>
+    </message>
+    <message>
+        <location line="+91"/>
+        <source>The link is not strictly physically consistent (mass %1 kg, smallest pseudo-inertia eigenvalue %2); it has no log-Cholesky parameters.</source>
+        <translation>该连杆不满足严格的物理一致性（质量 %1 kg，伪惯量矩阵的最小特征值 %2）；它没有对数 Cholesky 参数。</translation>
+    </message>
+</context>
+<context>
     <name>SafetyCheck</name>
     <message>
         <location filename="../core/session/SafetyCheck.cpp" line="+169"/>
@@ -1007,27 +1248,23 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+95"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+162"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+100"/>
-        <source>this version of learnid reads &quot;%1&quot;, got %2</source>
-        <translation>此版本的 learnid 读取“%1”，实际为 %2</translation>
-    </message>
-    <message>
-        <location line="+86"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+227"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-52"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-94"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+24"/>
+        <location line="+21"/>
         <source>one per joint of %1</source>
         <translation>%1 的每个关节一个</translation>
     </message>
@@ -1042,29 +1279,82 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-157"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-195"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>must have 2 entries (x and y), got %1</source>
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-22"/>
+        <location line="+62"/>
+        <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
+        <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
+    </message>
+    <message>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-86"/>
         <source>one per joint</source>
         <translation>每个关节一个</translation>
     </message>
     <message>
         <location line="+26"/>
+        <source>the &quot;urdf&quot; model needs a URDF file</source>
+        <translation>“urdf”模型需要 URDF 文件</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>the Cartesian line is the paper-2link arm&apos;s path; a URDF robot runs &quot;waypoints&quot; or &quot;file&quot;</source>
+        <translation>笛卡尔直线是 paper-2link 机械臂的路径；URDF 机器人运行“waypoints”或“file”</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the paper-2link arm runs the Cartesian &quot;line&quot;</source>
+        <translation>paper-2link 机械臂运行笛卡尔直线“line”</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>needs at least 2 waypoints, got %1</source>
+        <translation>至少需要 2 个路点，实际为 %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>a path of kind &quot;file&quot; needs a CSV file</source>
+        <translation>类型为“file”的路径需要 CSV 文件</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 has %2 joint columns, %3 has %4 joints</source>
+        <translation>%1 有 %2 个关节列，%3 有 %4 个关节</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>must be 1 or -1, got %1</source>
         <translation>必须是 1 或 -1，实际为 %1</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>必须是 0（理想编码器）或 %1 到 %2 之间的整数，实际为 %3</translation>
+    </message>
+    <message>
+        <location filename="../core/io/ScenarioChain.cpp" line="+53"/>
+        <source>must have 3 entries (x, y, z in the base link&apos;s frame), got %1</source>
+        <translation>必须有 3 个条目（基座连杆坐标系中的 x、y、z），实际为 %1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>must be &quot;line&quot;, &quot;waypoints&quot; or &quot;file&quot;, got %1</source>
+        <translation>必须是“line”、“waypoints”或“file”，实际为 %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScenarioRobot</name>
+    <message>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+60"/>
+        <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
+        <translation>robot.torqueLimits：关节 %1（%2）在 URDF 中没有 effort 限值：请在场景中给出力矩限值</translation>
     </message>
 </context>
 <context>
@@ -1293,14 +1583,42 @@
     </message>
 </context>
 <context>
+    <name>Text</name>
+    <message>
+        <location filename="../core/model/UrdfChain.cpp" line="+49"/>
+        <source>%1: not a valid URDF: %2</source>
+        <translation>%1：不是有效的 URDF：%2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the parser gave no reason</source>
+        <translation>解析器未给出原因</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobot.cpp" line="-33"/>
+        <source>simulation.realUrdf: %1 has %2 moving joints, the robot %3</source>
+        <translation>simulation.realUrdf：%1 有 %2 个可动关节，机器人有 %3 个</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>simulation.realUrdf: joint %1 (%2) is placed differently from the robot&apos;s URDF: the real robot may differ in inertia and friction only</source>
+        <translation>simulation.realUrdf：关节 %1（%2）的位置与机器人 URDF 中的不同：真实机器人只能在惯量和摩擦上有所不同</translation>
+    </message>
+</context>
+<context>
     <name>TorqueRule</name>
     <message>
-        <location filename="../core/motion/TorqueRule.cpp" line="+28"/>
+        <location filename="../core/motion/TorqueRule.cpp" line="+23"/>
         <source>torque rule needs 2 grid points</source>
         <translation>力矩规则需要 2 个网格点</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+44"/>
+        <source>torque rule: the path has %1 joints, the robot model %2</source>
+        <translation>力矩规则：路径有 %1 个关节，机器人模型有 %2 个</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>torque rule needs one positive limit per joint and a positive fraction</source>
         <translation>力矩规则需要每个关节一个正的限值和一个正的比例</translation>
     </message>
@@ -1356,7 +1674,12 @@
 <context>
     <name>TrialPlanner</name>
     <message>
-        <location filename="../core/session/TrialPlanner.cpp" line="+16"/>
+        <location filename="../core/session/TrialPlanner.cpp" line="+26"/>
+        <source>the path has %1 joints, the robot %2</source>
+        <translation>路径有 %1 个关节，机器人有 %2 个</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>只有平面二连杆机械臂具有笛卡尔直线运动学</translation>
     </message>
@@ -1413,6 +1736,55 @@
         <location filename="../core/motion/TwoLinkKinematics.cpp" line="+39"/>
         <source>point (%1, %2) m is out of reach or at a singularity of the arm (link lengths %3 m and %4 m)</source>
         <translation>点 (%1, %2) m 超出机械臂的工作范围或处于奇异位形（连杆长度 %3 m 和 %4 m）</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfChain</name>
+    <message>
+        <location filename="../core/model/UrdfChain.cpp" line="+21"/>
+        <source>%1: link &quot;%2&quot; has a negative mass (%3 kg)</source>
+        <translation>%1：连杆“%2”的质量为负（%3 kg）</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1: the robot branches at link &quot;%2&quot; (children %3): name the tip link of the chain</source>
+        <translation>%1：机器人在连杆“%2”处分叉（子连杆 %3）：请指定运动链的末端连杆</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1: joint &quot;%2&quot; has no axis (zero vector)</source>
+        <translation>%1：关节“%2”没有轴（零向量）</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <location line="+4"/>
+        <source>%1: no link &quot;%2&quot;</source>
+        <translation>%1：没有连杆“%2”</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: link &quot;%2&quot; is not below link &quot;%3&quot;</source>
+        <translation>%1：连杆“%2”不在连杆“%3”之下</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1: joint &quot;%2&quot; mimics another joint: mimic joints are not supported</source>
+        <translation>%1：关节“%2”模仿另一个关节（mimic）：不支持 mimic 关节</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1: joint &quot;%2&quot; is floating or planar: only revolute, continuous, prismatic and fixed joints form a serial arm</source>
+        <translation>%1：关节“%2”为浮动（floating）或平面（planar）关节：只有旋转（revolute、continuous）、移动（prismatic）和固定（fixed）关节能构成串联机械臂</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: no moving joint between link &quot;%2&quot; and link &quot;%3&quot;</source>
+        <translation>%1：连杆“%2”和连杆“%3”之间没有可动关节</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: cannot read the URDF: %2</source>
+        <translation>%1：无法读取 URDF：%2</translation>
     </message>
 </context>
 <context>
@@ -1725,32 +2097,67 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--iterations：%1 次试验需要 %1 个日志，给出了 %2 个</translation>
     </message>
     <message>
-        <location filename="../app/cli/ResultTable.cpp" line="+32"/>
+        <location filename="../app/cli/ResultTable.cpp" line="+39"/>
+        <location line="+73"/>
         <source>trial</source>
         <translation>试验</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-72"/>
+        <location line="+75"/>
         <source>change %</source>
         <translation>变化 %</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-73"/>
+        <location line="+75"/>
         <source>max|e|%1 deg</source>
         <translation>最大|e|%1 度</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-74"/>
+        <location line="+75"/>
         <source>T s</source>
         <translation>T s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-74"/>
+        <location line="+75"/>
         <source>cond</source>
         <translation>cond</translation>
     </message>
     <message>
+        <location line="-74"/>
+        <source>rank</source>
+        <translation>秩</translation>
+    </message>
+    <message>
         <location line="+2"/>
+        <source>path torque err %</source>
+        <translation>路径力矩误差 %</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>truth</source>
+        <translation>真值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>est %1</source>
+        <translation>估计 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>  parameter</source>
+        <translation>  参数</translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>vs truth %</source>
         <translation>相对真值 %</translation>
     </message>
@@ -3559,12 +3966,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::SessionWorker</name>
     <message>
-        <location filename="../core/service/SessionWorker.cpp" line="+40"/>
+        <location filename="../core/service/SessionWorker.cpp" line="+42"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>未知机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+98"/>
         <location line="+25"/>
         <source>no robot connected</source>
         <translation>未连接机器人</translation>

@@ -22,8 +22,88 @@ QString number(double v, int decimals, int width)
 
 } // namespace
 
+namespace {
+
+// Up to this many parameters the estimates are rows (the paper's Table 1); more, and the
+// parameters become rows and the estimates columns, which stays readable for 50 parameters.
+constexpr int maxParameterColumns = 4;
+
+// One row per trial: its figures; then one row per parameter: its estimates.
+QString transposedTable(const CommissioningSession &session)
+{
+    const RobotModel &model = session.model();
+    const auto truth = session.robot().trueParameters();
+    const int n = model.dof();
+    const QVector<Eigen::VectorXd> &estimates = session.estimates();
+
+    QStringList header{cell(QCoreApplication::translate("learnid-cli", "trial"), 5),
+                       cell(QCoreApplication::translate("learnid-cli", "change %"), 9)};
+    for (int j = 0; j < n; ++j)
+        header << cell(QCoreApplication::translate("learnid-cli", "max|e|%1 deg").arg(j + 1), 12);
+    header << cell(QCoreApplication::translate("learnid-cli", "T s"), 7)
+           << cell(QCoreApplication::translate("learnid-cli", "cond"), 9)
+           << cell(QCoreApplication::translate("learnid-cli", "rank"), 5);
+    if (truth)
+        header << cell(QCoreApplication::translate("learnid-cli", "path torque err %"), 17);
+    QStringList lines{header.join(QLatin1Char(' '))};
+    for (int row = 0; row < estimates.size(); ++row) {
+        const Eigen::VectorXd &phi = estimates.at(row);
+        const TrialResult *t = session.trialRunWith(row);
+        QStringList cells{cell(QString::number(row), 5)};
+        cells << (row == 0
+                      ? cell(QStringLiteral("-"), 9)
+                      : number(largestRelativeDifferencePercent(phi, estimates.at(row - 1)), 3, 9));
+        for (int j = 0; j < n; ++j)
+            cells << (t && t->maxTrackingErrorDeg.size() == n
+                          ? number(t->maxTrackingErrorDeg[j], 5, 12)
+                          : cell(QStringLiteral("-"), 12));
+        cells << (t ? number(t->check.rule.duration, 3, 7) : cell(QStringLiteral("-"), 7));
+        cells << (t && t->update ? number(t->update->condition, 1, 9)
+                                 : cell(QStringLiteral("-"), 9));
+        cells << (t && t->update ? cell(QString::number(t->update->rank), 5)
+                                 : cell(QStringLiteral("-"), 5));
+        if (truth) {
+            const JointTrajectory &path = session.history().isEmpty()
+                                              ? JointTrajectory()
+                                              : session.history().constLast().plan().desired;
+            cells << (path.samples() > 0
+                          ? number(pathTorqueErrorPercent(model, path, phi, *truth), 4, 17)
+                          : cell(QStringLiteral("-"), 17));
+        }
+        QString line = cells.join(QLatin1Char(' '));
+        if (t && !t->record.completed())
+            line += QStringLiteral("  ") + trialStatusName(t->status());
+        lines << line;
+    }
+
+    lines << QString();
+    QStringList paramHeader{cell(QStringLiteral("#"), 3),
+                            cell(QCoreApplication::translate("learnid-cli", "unit"), 9)};
+    if (truth)
+        paramHeader << cell(QCoreApplication::translate("learnid-cli", "truth"), 11);
+    for (int row = 0; row < estimates.size(); ++row)
+        paramHeader << cell(QCoreApplication::translate("learnid-cli", "est %1").arg(row), 11);
+    paramHeader << QCoreApplication::translate("learnid-cli", "  parameter");
+    lines << paramHeader.join(QLatin1Char(' '));
+    const QList<ParameterInfo> params = model.parameters();
+    for (int i = 0; i < params.size(); ++i) {
+        QStringList cells{cell(QString::number(i + 1), 3), cell(params[i].unit, 9)};
+        if (truth)
+            cells << number((*truth)[i], 5, 11);
+        for (const Eigen::VectorXd &phi : estimates)
+            cells << number(phi[i], 5, 11);
+        cells << QStringLiteral("  ") + params[i].name;
+        lines << cells.join(QLatin1Char(' '));
+    }
+    return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+}
+
+} // namespace
+
 QString resultTable(const CommissioningSession &session)
 {
+    if (session.model().parameterCount() > maxParameterColumns)
+        return transposedTable(session);
     const RobotModel &model = session.model();
     const auto truth = session.robot().trueParameters();
     const int n = model.dof();

@@ -68,7 +68,7 @@ int SimProcess::setUp()
         if (!m_options.scenarioPath.isEmpty())
             scenario = readScenarioFile(m_options.scenarioPath);
         validateScenario(scenario);
-        const auto model = makeRobotModel(scenario.model);
+        const auto model = makeRobotModel(scenario.model, scenario.urdf);
         settings = canArmSettings(scenario, model, m_options.nodes);
         settings.setPointTimeoutSyncs = m_options.setPointTimeoutSyncs;
     } catch (const Error &e) {

@@ -77,7 +77,7 @@ int main(int argc, char **argv)
     }
 
     const Scenario scenario;
-    const auto model = makeRobotModel(scenario.model);
+    const auto model = makeRobotModel(scenario.model, scenario.urdf);
     const PreTrialCheck check = bench::makeSession(scenario)->checkNextTrial();
     CanRobotOptions options;
     options.plugin = QStringLiteral("virtualcan");

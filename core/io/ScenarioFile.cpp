@@ -3,10 +3,13 @@
 #include "io/AtomicFile.h"
 #include "io/JsonReader.h"
 #include "io/JsonTree.h"
+#include "io/ScenarioChain.h"
 #include "model/Error.h"
+#include "model/ModelFactory.h"
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFileInfo>
 
 namespace learnid {
 
@@ -29,11 +32,16 @@ void readRobot(JsonObjectReader r, Scenario &s)
     r.readInteger(key("elbow"), s.elbowSign, -1, 1, Text::tr("1 or -1"));
     r.read(key("torqueLimits"), s.torqueLimits);
     r.read(key("initialParameters"), s.initialParameters);
+    if (auto section = r.optionalObject(key("urdf")))
+        readUrdfRobot(*section, s.urdf);
+    if (auto section = r.optionalObject(key("jointTerms")))
+        readJointTerms(*section, s.urdf.jointTerms);
     r.rejectUnknownKeys();
 }
 
 void readPath(JsonObjectReader r, Scenario &s)
 {
+    readJointPath(r, s.path);
     Eigen::VectorXd start = s.line.start;
     r.read(key("start"), start);
     if (start.size() != 2) {
@@ -79,6 +87,8 @@ void readSimulation(JsonObjectReader r, Scenario &s)
     r.read(key("torqueNoise"), s.simulation.torqueNoise);
     r.readInteger(key("seed"), s.simulation.seed, 0, scenarioLimits::maxSeed);
     r.readInteger(key("substeps"), s.simulation.substeps, 1, scenarioLimits::maxSubsteps);
+    r.read(key("realUrdf"), s.simulation.realUrdf);
+    r.read(key("inertiaPerturbation"), s.simulation.inertiaPerturbation);
     r.rejectUnknownKeys();
 }
 
@@ -95,10 +105,12 @@ Scenario readScenario(const QJsonObject &root)
     JsonObjectReader r(root, QString());
     const QJsonValue schema = r.value(key("schema"));
     if (!schema.isUndefined() &&
-        jsonString(schema, key("schema")) != QLatin1String(scenarioSchema)) {
+        jsonString(schema, key("schema")) != QLatin1String(scenarioSchema) &&
+        jsonString(schema, key("schema")) != QLatin1String(scenarioSchemaVersion1)) {
         throwAtKey(key("schema"),
-                   Text::tr("this version of learnid reads \"%1\", got %2")
-                       .arg(QLatin1String(scenarioSchema), describeJsonValue(schema)));
+                   Text::tr("this version of learnid reads \"%1\" and \"%2\", got %3")
+                       .arg(QLatin1String(scenarioSchema), QLatin1String(scenarioSchemaVersion1),
+                            describeJsonValue(schema)));
     }
     if (auto section = r.optionalObject(key("robot")))
         readRobot(*section, s);
@@ -113,6 +125,19 @@ Scenario readScenario(const QJsonObject &root)
     if (auto section = r.optionalObject(key("safety")))
         readSafety(*section, s);
     r.rejectUnknownKeys();
+    if (isUrdfModel(s.model)) {
+        // The paper arm's defaults do not fit another robot: what the file leaves out, the
+        // robot gives when the session starts (withRobotDefaults).
+        const auto has = [&root](const char *section, const char *name) {
+            return root.value(key(section)).toObject().contains(key(name));
+        };
+        if (!has("robot", "torqueLimits"))
+            s.torqueLimits.resize(0);
+        if (!has("robot", "initialParameters"))
+            s.initialParameters.resize(0);
+        if (!has("simulation", "trueParameters"))
+            s.simulation.trueParameters.resize(0);
+    }
     return s;
 }
 
@@ -128,17 +153,26 @@ JsonTree seedValue(quint64 seed)
 
 QByteArray scenarioToJson(const Scenario &s)
 {
+    const bool urdf = isUrdfModel(s.model);
     JsonTree robot = JsonTree::object();
-    robot.insert(key("model"), s.model)
-        .insert(key("linkLengths"), JsonTree::numbers(s.linkLengths))
-        .insert(key("elbow"), s.elbowSign)
-        .insert(key("torqueLimits"), JsonTree::numbers(s.torqueLimits))
+    robot.insert(key("model"), s.model);
+    if (urdf) {
+        robot.insert(key("urdf"), urdfRobotJson(s.urdf))
+            .insert(key("jointTerms"), jointTermsJson(s.urdf.jointTerms));
+    } else {
+        robot.insert(key("linkLengths"), JsonTree::numbers(s.linkLengths))
+            .insert(key("elbow"), s.elbowSign);
+    }
+    robot.insert(key("torqueLimits"), JsonTree::numbers(s.torqueLimits))
         .insert(key("initialParameters"), JsonTree::numbers(s.initialParameters));
     JsonTree path = JsonTree::object();
-    path.insert(key("start"), JsonTree::numbers(s.line.start))
-        .insert(key("length"), s.line.length)
-        .insert(key("directionDeg"), s.line.directionDeg)
-        .insert(key("restBefore"), s.restBefore)
+    insertJointPath(path, s.path);
+    if (s.path.kind == PathKind::Line) {
+        path.insert(key("start"), JsonTree::numbers(s.line.start))
+            .insert(key("length"), s.line.length)
+            .insert(key("directionDeg"), s.line.directionDeg);
+    }
+    path.insert(key("restBefore"), s.restBefore)
         .insert(key("restAfter"), s.restAfter)
         .insert(key("planningFraction"), s.planningFraction);
     JsonTree controller = JsonTree::object();
@@ -160,6 +194,10 @@ QByteArray scenarioToJson(const Scenario &s)
         .insert(key("torqueNoise"), s.simulation.torqueNoise)
         .insert(key("seed"), seedValue(s.simulation.seed))
         .insert(key("substeps"), s.simulation.substeps);
+    if (urdf) {
+        simulation.insert(key("realUrdf"), s.simulation.realUrdf)
+            .insert(key("inertiaPerturbation"), s.simulation.inertiaPerturbation);
+    }
     JsonTree safety = JsonTree::object();
     safety.insert(key("maxTrackingErrorDeg"), s.maxTrackingErrorDeg)
         .insert(key("stabilityMargin"), s.stabilityMargin);
@@ -175,11 +213,14 @@ QByteArray scenarioToJson(const Scenario &s)
     return root.toJson();
 }
 
-Scenario scenarioFromJson(const QByteArray &json, const QString &sourceName)
+Scenario scenarioFromJson(const QByteArray &json, const QString &sourceName,
+                          const QString &directory)
 {
     const QJsonObject root = parseJsonObject(json, sourceName);
     try {
-        const Scenario s = readScenario(root);
+        Scenario s = readScenario(root);
+        resolveScenarioPaths(s, directory.isEmpty() ? QDir::currentPath() : directory);
+        loadJointPathFile(s.path);
         validateScenario(s);
         return s;
     } catch (const Error &e) {
@@ -189,7 +230,8 @@ Scenario scenarioFromJson(const QByteArray &json, const QString &sourceName)
 
 Scenario readScenarioFile(const QString &path)
 {
-    return scenarioFromJson(readFile(path), QDir::toNativeSeparators(path));
+    return scenarioFromJson(readFile(path), QDir::toNativeSeparators(path),
+                            QFileInfo(path).absolutePath());
 }
 
 void writeScenarioFile(const QString &path, const Scenario &scenario)

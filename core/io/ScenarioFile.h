@@ -7,8 +7,10 @@
 
 namespace learnid {
 
-/// The "schema" of scenario files this version reads and writes.
-inline constexpr char scenarioSchema[] = "learnid-scenario/1";
+/// The "schema" of scenario files this version writes; it reads this and version 1 (the paper's
+/// arm only, whose keys version 2 keeps).
+inline constexpr char scenarioSchema[] = "learnid-scenario/2";
+inline constexpr char scenarioSchemaVersion1[] = "learnid-scenario/1";
 
 /// Limits of the scenario settings (docs/scenario.md), shared by the reader, validateScenario()
 /// and editors that bound their inputs.
@@ -18,10 +20,11 @@ constexpr int maxRepetitions = 20;
 constexpr int maxSubsteps = 1000;
 constexpr qint64 minEncoderCounts = 16; ///< besides 0 (ideal encoder)
 constexpr qint64 maxEncoderCounts = qint64(1) << 31;
-constexpr qint64 maxSeed = qint64(1) << 53; ///< larger integers are not exact in JSON
-constexpr double maxSamplePeriod = 0.1;     ///< [s]
-constexpr double maxRest = 60.0;            ///< restBefore, restAfter [s]
-constexpr double maxTorqueNoise = 1.0;      ///< standard deviation / torque limit
+constexpr qint64 maxSeed = qint64(1) << 53;    ///< larger integers are not exact in JSON
+constexpr double maxSamplePeriod = 0.1;        ///< [s]
+constexpr double maxRest = 60.0;               ///< restBefore, restAfter [s]
+constexpr double maxTorqueNoise = 1.0;         ///< standard deviation / torque limit
+constexpr double maxInertiaPerturbation = 0.9; ///< simulated real robot vs CAD, a fraction
 } // namespace scenarioLimits
 
 /// The scenario as indented JSON with every key, in the documented order (docs/scenario.md).
@@ -34,9 +37,13 @@ QByteArray scenarioToJson(const Scenario &scenario);
 /// wrong lengths and values out of range are errors. Throws Error
 /// "<sourceName>: <key path>: <problem>", e.g. "scenario.json: controller.kp[1]: must be a
 /// positive number, got -5", or with line and byte offset for malformed JSON.
-Scenario scenarioFromJson(const QByteArray &json, const QString &sourceName);
+/// Relative file paths in it (robot.urdf.file, path.file, simulation.realUrdf) are taken
+/// relative to directory (empty: the working directory).
+Scenario scenarioFromJson(const QByteArray &json, const QString &sourceName,
+                          const QString &directory = {});
 
-/// readFile() then scenarioFromJson() with the path as the source name.
+/// readFile() then scenarioFromJson() with the path as the source name and relative paths
+/// taken relative to the file's directory.
 Scenario readScenarioFile(const QString &path);
 
 /// scenarioToJson() written with writeFileAtomically().

@@ -2,6 +2,7 @@
 #include "io/JsonReader.h"
 #include "io/ScenarioFile.h"
 #include "io/ValueChecks.h"
+#include "model/Error.h"
 #include "model/ModelFactory.h"
 
 #include <QCoreApplication>
@@ -35,30 +36,94 @@ void validateControllerSettings(const ControllerSettings &c, int dof, const QStr
     checkPositive(jsonKeyPath(path, key("lambda")), c.lambda);
 }
 
+namespace {
+
+// A vector a URDF robot may leave empty (the robot's own values), or one entry per item.
+void checkOptionalVector(const QString &path, const Eigen::VectorXd &v, int size,
+                         const QString &what, EntryRule rule, bool mayBeEmpty)
+{
+    if (!(mayBeEmpty && v.size() == 0))
+        checkVector(path, v, size, what, rule);
+}
+
+std::shared_ptr<const RobotModel> scenarioModel(const Scenario &s)
+{
+    const bool urdf = isUrdfModel(s.model);
+    if (urdf) {
+        if (s.model == QLatin1String("urdf") && s.urdf.file.isEmpty())
+            throwAtKey(key("robot.urdf.file"), Text::tr("the \"urdf\" model needs a URDF file"));
+        checkFinite(key("robot.urdf.gravity[0]"), s.urdf.gravity.x());
+        checkFinite(key("robot.urdf.gravity[1]"), s.urdf.gravity.y());
+        checkFinite(key("robot.urdf.gravity[2]"), s.urdf.gravity.z());
+        checkPositive(key("robot.jointTerms.coulombVelocity"), s.urdf.jointTerms.coulombVelocity);
+    }
+    try {
+        if (auto model = makeRobotModel(s.model, s.urdf))
+            return model;
+    } catch (const Error &e) {
+        throwAtKey(key(s.model == QLatin1String("urdf") ? "robot.urdf.file" : "robot.model"),
+                   e.message());
+    }
+    throwAtKey(key("robot.model"),
+               Text::tr("unknown model \"%1\"; known models: %2")
+                   .arg(s.model, knownRobotModels().join(QStringLiteral(", "))));
+}
+
+void validatePath(const Scenario &s, int n)
+{
+    if (isUrdfModel(s.model) && s.path.kind == PathKind::Line) {
+        throwAtKey(key("path.kind"), Text::tr("the Cartesian line is the paper-2link arm's path; "
+                                              "a URDF robot runs \"waypoints\" or \"file\""));
+    }
+    if (!isUrdfModel(s.model) && s.path.kind != PathKind::Line)
+        throwAtKey(key("path.kind"), Text::tr("the paper-2link arm runs the Cartesian \"line\""));
+    if (s.path.kind == PathKind::Line) {
+        checkFinite(key("path.start[0]"), s.line.start.x());
+        checkFinite(key("path.start[1]"), s.line.start.y());
+        checkPositive(key("path.length"), s.line.length);
+        checkFinite(key("path.directionDeg"), s.line.directionDeg);
+    } else if (s.path.kind == PathKind::Waypoints) {
+        if (s.path.waypoints.size() < 2) {
+            throwAtKey(key("path.waypoints"),
+                       Text::tr("needs at least 2 waypoints, got %1").arg(s.path.waypoints.size()));
+        }
+        for (size_t i = 0; i < s.path.waypoints.size(); ++i) {
+            checkVector(jsonIndexPath(key("path.waypoints"), int(i)), s.path.waypoints[i], n,
+                        Text::tr("one per joint of %1").arg(s.model), EntryRule::Finite);
+        }
+    } else if (s.path.file.isEmpty()) {
+        throwAtKey(key("path.file"), Text::tr("a path of kind \"file\" needs a CSV file"));
+    } else if (s.path.fileAngles.rows() != n) {
+        throwAtKey(key("path.file"), Text::tr("%1 has %2 joint columns, %3 has %4 joints")
+                                         .arg(s.path.file)
+                                         .arg(s.path.fileAngles.rows())
+                                         .arg(s.model)
+                                         .arg(n));
+    }
+}
+
+} // namespace
+
 void validateScenario(const Scenario &s)
 {
-    const auto model = makeRobotModel(s.model);
-    if (!model) {
-        throwAtKey(key("robot.model"),
-                   Text::tr("unknown model \"%1\"; known models: %2")
-                       .arg(s.model, knownRobotModels().join(QStringLiteral(", "))));
-    }
+    const auto model = scenarioModel(s);
+    const bool urdf = isUrdfModel(s.model);
     const int n = model->dof();
     const int m = model->parameterCount();
     const QString perJoint = Text::tr("one per joint of %1").arg(s.model);
     const QString perParameter = Text::tr("one per parameter of %1").arg(s.model);
 
-    checkVector(key("robot.linkLengths"), s.linkLengths, n, perJoint, EntryRule::Positive);
-    if (s.elbowSign != 1 && s.elbowSign != -1)
-        throwAtKey(key("robot.elbow"), Text::tr("must be 1 or -1, got %1").arg(s.elbowSign));
-    checkVector(key("robot.torqueLimits"), s.torqueLimits, n, perJoint, EntryRule::Positive);
-    checkVector(key("robot.initialParameters"), s.initialParameters, m, perParameter,
-                EntryRule::Finite);
+    if (!urdf) {
+        checkVector(key("robot.linkLengths"), s.linkLengths, n, perJoint, EntryRule::Positive);
+        if (s.elbowSign != 1 && s.elbowSign != -1)
+            throwAtKey(key("robot.elbow"), Text::tr("must be 1 or -1, got %1").arg(s.elbowSign));
+    }
+    checkOptionalVector(key("robot.torqueLimits"), s.torqueLimits, n, perJoint, EntryRule::Positive,
+                        urdf);
+    checkOptionalVector(key("robot.initialParameters"), s.initialParameters, m, perParameter,
+                        EntryRule::Finite, urdf);
 
-    checkFinite(key("path.start[0]"), s.line.start.x());
-    checkFinite(key("path.start[1]"), s.line.start.y());
-    checkPositive(key("path.length"), s.line.length);
-    checkFinite(key("path.directionDeg"), s.line.directionDeg);
+    validatePath(s, n);
     checkInterval(key("path.restBefore"), s.restBefore, 0.0, scenarioLimits::maxRest,
                   Bounds::Closed);
     checkInterval(key("path.restAfter"), s.restAfter, 0.0, scenarioLimits::maxRest, Bounds::Closed);
@@ -78,8 +143,10 @@ void validateScenario(const Scenario &s)
     checkIntegerRange(key("estimator.repetitions"), s.repetitions, 1,
                       scenarioLimits::maxRepetitions);
 
-    checkVector(key("simulation.trueParameters"), s.simulation.trueParameters, m, perParameter,
-                EntryRule::Finite);
+    checkOptionalVector(key("simulation.trueParameters"), s.simulation.trueParameters, m,
+                        perParameter, EntryRule::Finite, urdf);
+    checkInterval(key("simulation.inertiaPerturbation"), s.simulation.inertiaPerturbation, 0.0,
+                  scenarioLimits::maxInertiaPerturbation, Bounds::Closed);
     if (s.simulation.encoderCounts != 0 &&
         (s.simulation.encoderCounts < scenarioLimits::minEncoderCounts ||
          s.simulation.encoderCounts > scenarioLimits::maxEncoderCounts)) {

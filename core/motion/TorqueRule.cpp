@@ -17,31 +17,60 @@ Eigen::VectorXd peakRatio(const Eigen::MatrixXd &a, const Eigen::MatrixXd &g,
     return tau.cwiseAbs().rowwise().maxCoeff().cwiseQuotient(limit);
 }
 
-} // namespace
+void requireGridPoints(int gridPoints)
+{
+    if (gridPoints < 2)
+        throw Error(QCoreApplication::translate("TorqueRule", "torque rule needs 2 grid points"));
+}
 
-TorqueRuleGrid torqueRuleGrid(const RobotModel &model, const Kinematics &kinematics,
-                              const CartesianLine &line, int gridPoints)
+// The grid of regressor rows at gridPoints values of u in [0, 1]; stateAt(u, q, q', q'') gives
+// the path's state at T = 1 into its three Ref<VectorXd> arguments, u increasing call by call.
+template <typename StateAt>
+TorqueRuleGrid gridOver(const RobotModel &model, int gridPoints, StateAt &&stateAt)
 {
     const int n = model.dof();
     const int m = model.parameterCount();
-    if (gridPoints < 2)
-        throw Error(QCoreApplication::translate("TorqueRule", "torque rule needs 2 grid points"));
+    requireGridPoints(gridPoints);
     TorqueRuleGrid grid;
     grid.dof = n;
     grid.inertial.resize(Eigen::Index(n) * gridPoints, m);
     grid.gravity.resize(Eigen::Index(n) * gridPoints, m);
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd near = kinematics.inverse(line.start, Eigen::VectorXd());
     Eigen::VectorXd q(n), qd(n), qdd(n);
     for (int i = 0; i < gridPoints; ++i) {
-        lineStateInto(kinematics, line, 1.0, double(i) / (gridPoints - 1), near, q, qd, qdd);
-        near = q;
+        stateAt(double(i) / (gridPoints - 1), Eigen::Ref<Eigen::VectorXd>(q),
+                Eigen::Ref<Eigen::VectorXd>(qd), Eigen::Ref<Eigen::VectorXd>(qdd));
         const Eigen::Index row = Eigen::Index(i) * n;
         model.regressor(q, zero, zero, grid.gravity.middleRows(row, n));
         model.regressor(q, qd, qdd, grid.inertial.middleRows(row, n));
         grid.inertial.middleRows(row, n) -= grid.gravity.middleRows(row, n);
     }
     return grid;
+}
+
+} // namespace
+
+TorqueRuleGrid torqueRuleGrid(const RobotModel &model, const Kinematics &kinematics,
+                              const CartesianLine &line, int gridPoints)
+{
+    requireGridPoints(gridPoints); // before the inverse kinematics, which may throw too
+    Eigen::VectorXd near = kinematics.inverse(line.start, Eigen::VectorXd());
+    return gridOver(model, gridPoints, [&](double u, auto q, auto qd, auto qdd) {
+        lineStateInto(kinematics, line, 1.0, u, near, q, qd, qdd);
+        near = q;
+    });
+}
+
+TorqueRuleGrid torqueRuleGrid(const RobotModel &model, const JointPath &path, int gridPoints)
+{
+    if (path.dof() != model.dof()) {
+        throw Error(QCoreApplication::translate(
+                        "TorqueRule", "torque rule: the path has %1 joints, the robot model %2")
+                        .arg(path.dof())
+                        .arg(model.dof()));
+    }
+    return gridOver(model, gridPoints,
+                    [&](double u, auto q, auto qd, auto qdd) { path.stateInto(u, q, qd, qdd); });
 }
 
 TorqueRuleResult shortestDuration(const TorqueRuleGrid &grid, const Eigen::VectorXd &phi,

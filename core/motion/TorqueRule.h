@@ -2,6 +2,7 @@
 
 #include "model/RobotModel.h"
 #include "motion/CartesianLine.h"
+#include "motion/JointPath.h"
 
 namespace learnid {
 
@@ -14,9 +15,9 @@ struct TorqueRuleResult
     int limitingJoint = 0;      ///< the joint whose peak reaches fraction * limit
 };
 
-/// The line's geometry for the torque rule, independent of the parameters: regressor rows on a
-/// grid of normalised time u in [0, 1] at T = 1. Torque is linear in phi, so the rule for any
-/// estimate is a product with these rows.
+/// A path's geometry (a line or a JointPath) for the torque rule, independent of the parameters:
+/// regressor rows on a grid of normalised time u in [0, 1] at T = 1. Torque is linear in phi, so
+/// the rule for any estimate is a product with these rows.
 struct TorqueRuleGrid
 {
     int dof = 0;
@@ -26,6 +27,11 @@ struct TorqueRuleGrid
 
 TorqueRuleGrid torqueRuleGrid(const RobotModel &model, const Kinematics &kinematics,
                               const CartesianLine &line, int gridPoints = 2001);
+
+/// The same grid for a joint-space path (q' = dq/du, q'' = d2q/du2 at T = 1). Throws Error when
+/// the path's joints are not the model's or gridPoints < 2.
+TorqueRuleGrid torqueRuleGrid(const RobotModel &model, const JointPath &path,
+                              int gridPoints = 2001);
 
 /// The torque rule over a precomputed grid (see shortestDuration below).
 TorqueRuleResult shortestDuration(const TorqueRuleGrid &grid, const Eigen::VectorXd &phi,

@@ -6,6 +6,7 @@
 #include "service/RobotFactory.h"
 #include "service/ServiceLogging.h"
 #include "service/TrialSummary.h"
+#include "session/ScenarioRobot.h"
 
 #include <QMutexLocker>
 
@@ -31,13 +32,15 @@ void SessionWorker::clearCancel()
         m_session->clearCancel();
 }
 
-void SessionWorker::open(const Scenario &scenario)
+void SessionWorker::open(const Scenario &requested)
 {
     close();
+    Scenario scenario = requested;
     try {
-        const auto model = makeRobotModel(scenario.model);
+        const auto model = makeRobotModel(scenario.model, scenario.urdf);
         if (!model)
             throw Error(tr("unknown robot model \"%1\"").arg(scenario.model));
+        scenario = withRobotDefaults(scenario, *model);
         RobotConnection robot = makeRobot(m_request, scenario, model);
         if (!robot.robot) {
             qCWarning(lcService).noquote() << "connecting the robot failed:" << robot.connectError;

@@ -1,6 +1,7 @@
 #include "session/ConvergenceFigures.h"
 
 #include <cmath>
+#include <limits>
 
 namespace learnid {
 
@@ -15,6 +16,16 @@ double largestRelativeDifferencePercent(const Eigen::VectorXd &x, const Eigen::V
             worst = r;
     }
     return worst;
+}
+
+double pathTorqueErrorPercent(const RobotModel &model, const JointTrajectory &path,
+                              const Eigen::VectorXd &phiHat, const Eigen::VectorXd &phi)
+{
+    const Eigen::MatrixXd truth = feedforwardTorque(model, path, phi);
+    const double scale = truth.norm();
+    if (!(scale > 0.0))
+        return std::numeric_limits<double>::quiet_NaN();
+    return 100.0 * (feedforwardTorque(model, path, phiHat) - truth).norm() / scale;
 }
 
 } // namespace learnid

@@ -7,6 +7,14 @@
 
 namespace learnid {
 
+/// The scenario with what a URDF robot leaves to the robot filled in (docs/scenario.md):
+/// empty torqueLimits take the URDF's effort limits, empty initialParameters the CAD model's
+/// base parameters, empty simulation.trueParameters the simulated real robot's (its own URDF,
+/// simulation.realUrdf, or else the CAD robot perturbed by simulation.inertiaPerturbation with
+/// simulation.seed). Other models return the scenario unchanged. Throws Error naming the key
+/// when the URDF has no effort limit for a joint or the real robot's URDF does not fit.
+Scenario withRobotDefaults(const Scenario &scenario, const RobotModel &model);
+
 /// The simulated robot a scenario describes: its true parameters and measurement options.
 std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
                                                    std::shared_ptr<const RobotModel> model);

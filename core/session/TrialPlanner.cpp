@@ -12,6 +12,24 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
     : m_scenario(scenario)
     , m_model(std::move(model))
 {
+    if (scenario.path.kind == PathKind::Waypoints) {
+        m_path = std::make_unique<WaypointPath>(scenario.path.waypoints);
+    } else if (scenario.path.kind == PathKind::File) {
+        auto sampled =
+            std::make_unique<SampledPath>(scenario.path.fileTimes, scenario.path.fileAngles);
+        m_shortestDuration = sampled->nominalDuration();
+        m_path = std::move(sampled);
+    }
+    if (m_path) {
+        if (m_path->dof() != m_model->dof()) {
+            throw Error(
+                QCoreApplication::translate("TrialPlanner", "the path has %1 joints, the robot %2")
+                    .arg(m_path->dof())
+                    .arg(m_model->dof()));
+        }
+        m_ruleGrid = torqueRuleGrid(*m_model, *m_path);
+        return;
+    }
     if (m_model->dof() != 2 || scenario.linkLengths.size() != 2) {
         throw Error(QCoreApplication::translate(
             "TrialPlanner", "only planar 2-link arms have Cartesian line kinematics"));
@@ -24,8 +42,9 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
 TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ruleOut) const
 {
     clearUpperVectorState();
-    const TorqueRuleResult rule =
+    TorqueRuleResult rule =
         shortestDuration(m_ruleGrid, phiHat, m_scenario.torqueLimits, m_scenario.planningFraction);
+    rule.duration = std::max(rule.duration, m_shortestDuration);
     if (ruleOut)
         *ruleOut = rule;
     MotionTiming timing;
@@ -35,7 +54,8 @@ TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ru
     timing.samplePeriod = m_scenario.controller.samplePeriod;
 
     TrialPlan plan;
-    plan.desired = planLine(*m_kinematics, m_scenario.line, timing);
+    plan.desired =
+        m_path ? planJointPath(*m_path, timing) : planLine(*m_kinematics, m_scenario.line, timing);
     plan.feedforward = feedforwardTorque(*m_model, plan.desired, phiHat);
     plan.feedforwardParameters = phiHat;
     plan.controller = m_scenario.controller;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/RobotModel.h"
+#include "motion/JointPath.h"
 #include "motion/Kinematics.h"
 #include "motion/TorqueRule.h"
 #include "types/Scenario.h"
@@ -10,16 +11,23 @@
 
 namespace learnid {
 
-/// Plans the trials of a scenario: the line, its duration by the torque rule with the current
-/// estimate (re-planned before every trial), the sampled trajectory and the feedforward.
+/// Plans the trials of a scenario: the path (the paper's Cartesian line, or a joint path of
+/// waypoints or from a file), its duration by the torque rule with the current estimate
+/// (re-planned before every trial), the sampled trajectory and the feedforward. A path from a
+/// file never runs faster than it was recorded: its duration is the longer of the recording's
+/// and the torque rule's.
 class TrialPlanner
 {
 public:
-    /// Throws Error when the path leaves the workspace or the model has no line kinematics.
+    /// Throws Error when the line leaves the workspace or the model has no line kinematics, or
+    /// when the joint path does not fit the model.
     TrialPlanner(const Scenario &scenario, std::shared_ptr<const RobotModel> model);
 
     const RobotModel &model() const { return *m_model; }
+    /// The line's kinematics; only for a path of kind Line.
     const Kinematics &kinematics() const { return *m_kinematics; }
+    /// The joint path; nullptr for a path of kind Line.
+    const JointPath *jointPath() const { return m_path.get(); }
 
     /// Throws Error when the torque rule cannot be met with phiHat.
     TrialPlan plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *rule = nullptr) const;
@@ -28,7 +36,9 @@ private:
     Scenario m_scenario;
     std::shared_ptr<const RobotModel> m_model;
     std::unique_ptr<Kinematics> m_kinematics;
-    TorqueRuleGrid m_ruleGrid; ///< the line's geometry, computed once
+    std::unique_ptr<JointPath> m_path;
+    double m_shortestDuration = 0.0; ///< [s] a recorded path's own duration
+    TorqueRuleGrid m_ruleGrid;       ///< the line's geometry, computed once
 };
 
 } // namespace learnid

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "types/CartesianLine.h"
+#include "types/ChainSettings.h"
 #include "types/ControllerSettings.h"
 #include "types/EstimatorSettings.h"
 
@@ -18,6 +19,11 @@ struct SimulationSettings
     double torqueNoise = 0.0; ///< torque noise standard deviation / limit
     quint64 seed = 1;
     int substeps = 10; ///< RK4 steps per sample
+    /// A URDF robot's real robot (trueParameters empty): its own URDF with the same joints
+    /// (realUrdf), or else the CAD model with every link's inertia and every friction value
+    /// changed at random by up to +-inertiaPerturbation (a fraction), consistently (seed).
+    QString realUrdf;
+    double inertiaPerturbation = 0.0;
 };
 
 /// A commissioning scenario: what the technician asks for (the robot, the path, the controller,
@@ -28,12 +34,18 @@ struct SimulationSettings
 struct Scenario
 {
     // robot
+    /// "paper-2link" (the paper's arm, closed form), "urdf" (any serial arm: urdf.file) or a
+    /// built-in URDF robot ("double-pendulum", "puma560"). For URDF robots, empty vectors take
+    /// the robot's values when the session starts: torqueLimits the URDF's efforts,
+    /// initialParameters the CAD model's base parameters.
     QString model = QStringLiteral("paper-2link");
+    UrdfRobotSettings urdf;
     Eigen::VectorXd linkLengths = Eigen::Vector2d(0.75, 0.75);       ///< [m]
     int elbowSign = +1;                                              ///< +1: theta2 - theta1 > 0
     Eigen::VectorXd torqueLimits = Eigen::Vector2d(8.0, 4.0);        ///< [N m]
     Eigen::VectorXd initialParameters = Eigen::Vector3d(40, 20, 30); ///< phi_0
     // path
+    JointPathSettings path; ///< the kind of path; Line: the paper's Cartesian line below
     CartesianLine line;
     double restBefore = 0.1;       ///< [s]
     double restAfter = 0.5;        ///< [s]

@@ -52,7 +52,7 @@ private slots:
 void TestCanRobot::session_identifiesAsOnSimulatedRobot()
 {
     const Scenario scenario = shortScenario();
-    const auto model = makeRobotModel(scenario.model);
+    const auto model = makeRobotModel(scenario.model, scenario.urdf);
     const QList<int> nodes{1, 2};
     auto can = std::make_shared<CanRobot>(
         model, memoryOptions(), test::canSimFactory(canArmSettings(scenario, model, nodes)));
@@ -76,7 +76,7 @@ void TestCanRobot::candumpLog_replayed_givesTheSameRecordsAndEstimate()
 {
     QTemporaryDir dir;
     Scenario scenario = shortScenario();
-    const auto model = makeRobotModel(scenario.model);
+    const auto model = makeRobotModel(scenario.model, scenario.urdf);
     auto live =
         std::make_shared<CanRobot>(model, memoryOptions(dir.path()),
                                    test::canSimFactory(canArmSettings(scenario, model, {1, 2})));

@@ -51,7 +51,7 @@ struct Bus
 
 CanArmSettings paperSettings(const Scenario &scenario = {})
 {
-    return canArmSettings(scenario, makeRobotModel(scenario.model), {1, 2});
+    return canArmSettings(scenario, makeRobotModel(scenario.model, scenario.urdf), {1, 2});
 }
 
 /// q [rad] and tau [N m] of every plan sample as the bus reports them: before SYNC k the
@@ -125,7 +125,7 @@ void TestCanArmSimulator::syncCounter_runsOneTo240AndWraps()
 void TestCanArmSimulator::settings_startAtRestAtThePathStart()
 {
     const Scenario scenario;
-    const auto model = makeRobotModel(scenario.model);
+    const auto model = makeRobotModel(scenario.model, scenario.urdf);
     const CanArmSettings s = canArmSettings(scenario, model, {3, 4});
     const TrialPlan plan = TrialPlanner(scenario, model).plan(scenario.initialParameters);
     QVERIFY((s.initialPose - plan.desired.q.col(0)).cwiseAbs().maxCoeff() < 1e-15);
@@ -163,7 +163,7 @@ void TestCanArmSimulator::planOnTheEncoderGrid_measuresExactlyWhatSimulatedRobot
     // TPDO's resolution (half a per mille of rated torque).
     Scenario scenario;
     scenario.simulation.encoderCounts = qint64(1) << 24;
-    const auto model = makeRobotModel(scenario.model);
+    const auto model = makeRobotModel(scenario.model, scenario.urdf);
     TrialPlan plan = TrialPlanner(scenario, model).plan(scenario.initialParameters);
     const double ca = 2.0 * M_PI / double(scenario.simulation.encoderCounts);
     plan.desired.q = (plan.desired.q / ca).array().round() * ca;
@@ -194,7 +194,7 @@ void TestCanArmSimulator::paperPlan_matchesSimulatedRobotWithinTheBusResolution(
     // (the filtered derivative dominates) turns one increment into 7.9 mN m. The arm averages
     // these steps out: the angles agree to about a count, the torques to a few such steps.
     const Scenario scenario;
-    const auto model = makeRobotModel(scenario.model);
+    const auto model = makeRobotModel(scenario.model, scenario.urdf);
     const TrialPlan plan = TrialPlanner(scenario, model).plan(scenario.initialParameters);
     const TrialRecord expected = makeSimulatedRobot(scenario, model)->runTrial(plan, {});
     const TrialRecord bus = runPlanOnBus(scenario, plan);

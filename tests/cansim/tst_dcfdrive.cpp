@@ -48,8 +48,9 @@ void TestDcfDrive::exportedDcf_describesEachObjectTheDriveAnswers()
 {
     const Scenario scenario; // the paper scenario, as learnid-robot-sim serves it by default
     test::CanSimTestBus net;
-    CanArmSimulator sim(&net.slaveLink,
-                        canArmSettings(scenario, makeRobotModel(scenario.model), {1, 2}));
+    CanArmSimulator sim(
+        &net.slaveLink,
+        canArmSettings(scenario, makeRobotModel(scenario.model, scenario.urdf), {1, 2}));
     const ParameterFileContent content = contentFor(scenario);
     QTemporaryDir dir;
     QVERIFY(dir.isValid());

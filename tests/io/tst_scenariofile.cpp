@@ -129,6 +129,7 @@ void TestScenarioFile::defaultScenario_printsEveryKeyInDocumentedOrder()
                               "torqueLimits",
                               "initialParameters",
                               "path",
+                              "kind",
                               "start",
                               "length",
                               "directionDeg",
@@ -163,7 +164,7 @@ void TestScenarioFile::defaultScenario_printsEveryKeyInDocumentedOrder()
         QVERIFY2(at > position, qPrintable(key));
         position = at;
     }
-    QVERIFY(json.startsWith("{\n    \"schema\": \"learnid-scenario/1\",\n"));
+    QVERIFY(json.startsWith("{\n    \"schema\": \"learnid-scenario/2\",\n"));
     QVERIFY(json.contains("\"kp\": [4500, 5000]"));
     QVERIFY(json.contains("\"samplePeriod\": 0.002"));
     QVERIFY(json.endsWith("}\n"));
@@ -261,8 +262,9 @@ void TestScenarioFile::badValue_isRejectedWithKeyPath_data()
     const QJsonValue list3 = QJsonArray{1.0, 2.0, 3.0};
     const QJsonValue list2 = QJsonArray{1.0, 2.0};
     // types
-    row("schema", "schema", QStringLiteral("learnid-scenario/2"),
-        "schema: this version of learnid reads \"learnid-scenario/1\", got \"learnid-scenario/2\"");
+    row("schema", "schema", QStringLiteral("learnid-scenario/3"),
+        "schema: this version of learnid reads \"learnid-scenario/2\" and "
+        "\"learnid-scenario/1\", got \"learnid-scenario/3\"");
     row("section not object", "robot", 5, "robot: must be an object, got 5");
     row("model not string", "robot.model", 3, "robot.model: must be a string, got 3");
     row("vector not array", "controller.kp", QStringLiteral("4500"),
@@ -307,8 +309,9 @@ void TestScenarioFile::badValue_isRejectedWithKeyPath_data()
         "robot.torqueLimits[0]: must be a positive number, got -8");
     row("elbow 0", "robot.elbow", 0, "robot.elbow: must be 1 or -1, got 0");
     row("elbow 2", "robot.elbow", 2, "robot.elbow: must be 1 or -1, got 2");
-    row("unknown model", "robot.model", QStringLiteral("puma560"),
-        "robot.model: unknown model \"puma560\"; known models: paper-2link");
+    row("unknown model", "robot.model", QStringLiteral("puma600"),
+        "robot.model: unknown model \"puma600\"; known models: paper-2link, urdf, "
+        "paper-2link-urdf, double-pendulum, puma560");
     row("unknown law", "estimator.law", QStringLiteral("magic"),
         "estimator.law: unknown learning law \"magic\"; known laws: paper, improved");
     row("length zero", "path.length", 0, "path.length: must be a positive number, got 0");

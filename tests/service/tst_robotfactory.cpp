@@ -24,7 +24,8 @@ private slots:
 void TestRobotFactory::simulated_isTheScenariosRobot()
 {
     const Scenario scenario;
-    const RobotConnection c = makeRobot({}, scenario, makeRobotModel(scenario.model));
+    const RobotConnection c =
+        makeRobot({}, scenario, makeRobotModel(scenario.model, scenario.urdf));
     QVERIFY(c.robot && c.simulated);
     QCOMPARE(c.robot.get(), static_cast<Robot *>(c.simulated.get()));
     QVERIFY(c.connectError.isEmpty());
@@ -38,7 +39,8 @@ void TestRobotFactory::can_unreachableBus_saysSoWithoutThrowing()
     request.kind = RobotRequest::Kind::Can;
     request.can.plugin = QStringLiteral("nosuchplugin");
     request.can.interface = QStringLiteral("can0");
-    const RobotConnection c = makeRobot(request, scenario, makeRobotModel(scenario.model));
+    const RobotConnection c =
+        makeRobot(request, scenario, makeRobotModel(scenario.model, scenario.urdf));
     QVERIFY(!c.robot && !c.simulated);
     QVERIFY2(c.connectError.contains(QLatin1String("nosuchplugin")), qPrintable(c.connectError));
 }
@@ -56,7 +58,7 @@ void TestRobotFactory::replay_unreadableLog_namesFileAndLine()
     request.kind = RobotRequest::Kind::Replay;
     request.candumpFiles = {log};
     try {
-        makeRobot(request, scenario, makeRobotModel(scenario.model));
+        makeRobot(request, scenario, makeRobotModel(scenario.model, scenario.urdf));
         QFAIL("no error");
     } catch (const Error &e) {
         QVERIFY2(e.message().startsWith(log + QStringLiteral(":2: ")), qPrintable(e.message()));

@@ -96,7 +96,7 @@ void TestVectorState::kernels_runAndReturnWithCleanState()
 {
 #ifdef LEARNID_X86_64
     const Scenario s;
-    const auto model = makeRobotModel(s.model);
+    const auto model = makeRobotModel(s.model, s.urdf);
     const TrialPlanner planner(s, model);
 
     dirtyOrSkip();

@@ -23,7 +23,7 @@ struct LearningRun
 
 inline LearningRun runLearning(const Scenario &scenario, int trials)
 {
-    const auto model = makeRobotModel(scenario.model);
+    const auto model = makeRobotModel(scenario.model, scenario.urdf);
     const TrialPlanner planner(scenario, model);
     MeasurementOptions options;
     options.encoderCounts = scenario.simulation.encoderCounts;

@@ -25,7 +25,7 @@ private slots:
     void initTestCase()
     {
         Scenario scenario;
-        const auto model = makeRobotModel(scenario.model);
+        const auto model = makeRobotModel(scenario.model, scenario.urdf);
         auto robot = std::make_shared<SimulatedRobot>(model, scenario.simulation.trueParameters);
         m_session = std::make_unique<CommissioningSession>(scenario, model, robot);
         QVERIFY(m_session->runTrials(3));

@@ -1,0 +1,248 @@
+#include "model/ChainDynamics.h"
+
+#include "model/Error.h"
+
+#include <QCoreApplication>
+
+namespace learnid {
+
+namespace {
+
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+Eigen::Matrix3d skew(const Eigen::Vector3d &v)
+{
+    Eigen::Matrix3d s;
+    s << 0.0, -v.z(), v.y(), //
+        v.z(), 0.0, -v.x(),  //
+        -v.y(), v.x(), 0.0;
+    return s;
+}
+
+// L(v) with I v = L(v) [Ixx, Ixy, Iyy, Ixz, Iyz, Izz]^T.
+Eigen::Matrix<double, 3, 6> inertiaProduct(const Eigen::Vector3d &v)
+{
+    Eigen::Matrix<double, 3, 6> l;
+    l << v.x(), v.y(), 0.0, v.z(), 0.0, 0.0, //
+        0.0, v.x(), v.y(), 0.0, v.z(), 0.0,  //
+        0.0, 0.0, 0.0, v.x(), v.y(), v.z();
+    return l;
+}
+
+Eigen::Matrix3d inertiaOf(const double *pi)
+{
+    Eigen::Matrix3d i;
+    i << pi[4], pi[5], pi[7], //
+        pi[5], pi[6], pi[8],  //
+        pi[7], pi[8], pi[9];
+    return i;
+}
+
+// Angular velocity w, angular acceleration wd and the linear acceleration a of a link frame's
+// origin (gravity folded in as the base accelerating at -g), in that link's frame.
+struct LinkMotion
+{
+    Eigen::Vector3d w, wd, a;
+};
+
+} // namespace
+
+ChainDynamics::ChainDynamics(const SerialChain &chain)
+    : m_chain(chain)
+    , m_dof(chain.dof())
+{
+    if (m_dof < 1 || m_dof > maxJoints) {
+        throw Error(QCoreApplication::translate("ChainDynamics",
+                                                "%1 has %2 moving joints: a chain needs 1 to %3")
+                        .arg(chain.name)
+                        .arg(m_dof)
+                        .arg(maxJoints));
+    }
+    for (int k = 0; k < m_dof; ++k) {
+        const ChainJoint &j = chain.joints[size_t(k)];
+        m_originRotation[size_t(k)] = j.origin.linear();
+        m_originTranslation[size_t(k)] = j.origin.translation();
+        m_axis[size_t(k)] = j.axis;
+        m_prismatic[size_t(k)] = j.type == JointType::Prismatic;
+    }
+}
+
+void ChainDynamics::place(const VectorRef &q, Placements &out) const
+{
+    for (size_t k = 0; k < size_t(m_dof); ++k) {
+        if (m_prismatic[k]) {
+            out[k].r = m_originRotation[k];
+            out[k].p = m_originTranslation[k] + m_originRotation[k] * (m_axis[k] * q[Eigen::Index(k)]);
+        } else {
+            out[k].r = m_originRotation[k] *
+                       Eigen::AngleAxisd(q[Eigen::Index(k)], m_axis[k]).toRotationMatrix();
+            out[k].p = m_originTranslation[k];
+        }
+    }
+}
+
+namespace {
+
+template <typename Placements, typename Axes, typename Flags>
+void propagate(int n, const Placements &pl, const Axes &axis, const Flags &prismatic,
+               const Eigen::Ref<const Eigen::VectorXd> &qd,
+               const Eigen::Ref<const Eigen::VectorXd> &qdd, const Eigen::Vector3d &baseAccel,
+               std::array<LinkMotion, ChainDynamics::maxJoints> &out)
+{
+    Eigen::Vector3d w = Eigen::Vector3d::Zero(), wd = Eigen::Vector3d::Zero(), a = baseAccel;
+    for (size_t k = 0; k < size_t(n); ++k) {
+        const Eigen::Matrix3d &r = pl[k].r;
+        const Eigen::Vector3d &p = pl[k].p;
+        const Eigen::Vector3d &z = axis[k];
+        const double v = qd[Eigen::Index(k)], acc = qdd[Eigen::Index(k)];
+        Eigen::Vector3d ak = r.transpose() * (a + wd.cross(p) + w.cross(w.cross(p)));
+        Eigen::Vector3d wk = r.transpose() * w;
+        Eigen::Vector3d wdk = r.transpose() * wd;
+        if (prismatic[k]) {
+            ak += 2.0 * v * wk.cross(z) + acc * z;
+        } else {
+            wdk += v * wk.cross(z) + acc * z;
+            wk += v * z;
+        }
+        out[k] = {wk, wdk, ak};
+        w = wk;
+        wd = wdk;
+        a = ak;
+    }
+}
+
+} // namespace
+
+void ChainDynamics::regressor(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd,
+                              Eigen::Ref<Eigen::MatrixXd> out) const
+{
+    Placements pl;
+    place(q, pl);
+    std::array<LinkMotion, maxJoints> motion;
+    propagate(m_dof, pl, m_axis, m_prismatic, qd, qdd, -m_chain.gravity, motion);
+    out.setZero();
+    // Joint i's unit motion (linear v at the frame origin, angular w) in frame k, k >= i: the
+    // power it draws from link k's wrench [f; n] is v.f + w.n, which is tau_i's share.
+    std::array<Eigen::Vector3d, maxJoints> sv, sw;
+    for (int k = 0; k < m_dof; ++k) {
+        const size_t uk = size_t(k);
+        const Eigen::Matrix3d rt = pl[uk].r.transpose();
+        for (int i = 0; i < k; ++i) {
+            const size_t ui = size_t(i);
+            sv[ui] = rt * (sv[ui] + sw[ui].cross(pl[uk].p));
+            sw[ui] = rt * sw[ui];
+        }
+        sv[uk] = m_prismatic[uk] ? m_axis[uk] : Eigen::Vector3d::Zero();
+        sw[uk] = m_prismatic[uk] ? Eigen::Vector3d::Zero() : m_axis[uk];
+
+        // Link k's wrench, linear in its parameters:
+        //   f = a m + ([wd]x + [w]x[w]x) h,   n = -[a]x h + (L(wd) + [w]x L(w)) I.
+        const LinkMotion &lm = motion[uk];
+        const Eigen::Matrix3d sw2 = skew(lm.w);
+        const Eigen::Matrix3d forceFromH = skew(lm.wd) + sw2 * sw2;
+        const Eigen::Matrix3d momentFromH = -skew(lm.a);
+        const Eigen::Matrix<double, 3, 6> momentFromI =
+            inertiaProduct(lm.wd) + sw2 * inertiaProduct(lm.w);
+        const Eigen::Index col = Eigen::Index(10) * k;
+        for (int i = 0; i <= k; ++i) {
+            const size_t ui = size_t(i);
+            out(i, col) = sv[ui].dot(lm.a);
+            out.block<1, 3>(i, col + 1) =
+                sv[ui].transpose() * forceFromH + sw[ui].transpose() * momentFromH;
+            out.block<1, 6>(i, col + 4) = sw[ui].transpose() * momentFromI;
+        }
+    }
+}
+
+void ChainDynamics::inverseDynamics(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd,
+                                    const VectorRef &pi, Eigen::Ref<Eigen::VectorXd> out,
+                                    double gravityScale) const
+{
+    Placements pl;
+    place(q, pl);
+    std::array<LinkMotion, maxJoints> motion;
+    propagate(m_dof, pl, m_axis, m_prismatic, qd, qdd, -gravityScale * m_chain.gravity, motion);
+    Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+    for (int k = m_dof - 1; k >= 0; --k) {
+        const size_t uk = size_t(k);
+        const double *p = pi.data() + 10 * k;
+        const Eigen::Vector3d h(p[1], p[2], p[3]);
+        const Eigen::Matrix3d inertia = inertiaOf(p);
+        const LinkMotion &lm = motion[uk];
+        Eigen::Vector3d f = p[0] * lm.a + lm.wd.cross(h) + lm.w.cross(lm.w.cross(h));
+        Eigen::Vector3d n = inertia * lm.wd + lm.w.cross(inertia * lm.w) + h.cross(lm.a);
+        if (k + 1 < m_dof) { // the wrench the next link exerts, brought into this frame
+            const Eigen::Vector3d childForce = pl[uk + 1].r * force;
+            f += childForce;
+            n += pl[uk + 1].r * moment + pl[uk + 1].p.cross(childForce);
+        }
+        force = f;
+        moment = n;
+        out[k] = m_axis[uk].dot(m_prismatic[uk] ? force : moment);
+    }
+}
+
+void ChainDynamics::massMatrix(const VectorRef &q, const VectorRef &pi,
+                               Eigen::Ref<Eigen::MatrixXd> out) const
+{
+    Placements pl;
+    place(q, pl);
+    // Spatial quantities as [linear; angular]; X_k maps motion from frame k-1 to frame k and its
+    // transpose maps force from frame k to frame k-1.
+    std::array<Matrix6d, maxJoints> composite, x;
+    for (size_t k = 0; k < size_t(m_dof); ++k) {
+        const double *p = pi.data() + 10 * k;
+        const Eigen::Matrix3d hx = skew(Eigen::Vector3d(p[1], p[2], p[3]));
+        composite[k] << p[0] * Eigen::Matrix3d::Identity(), -hx, hx, inertiaOf(p);
+        const Eigen::Matrix3d rt = pl[k].r.transpose();
+        x[k] << rt, -rt * skew(pl[k].p), Eigen::Matrix3d::Zero(), rt;
+    }
+    for (size_t k = size_t(m_dof) - 1; k > 0; --k)
+        composite[k - 1].noalias() += x[k].transpose() * composite[k] * x[k];
+    const auto subspace = [&](size_t k) {
+        Vector6d s = Vector6d::Zero();
+        (m_prismatic[k] ? s.head<3>() : s.tail<3>()) = m_axis[k];
+        return s;
+    };
+    for (size_t k = 0; k < size_t(m_dof); ++k) {
+        Vector6d f = composite[k] * subspace(k);
+        out(Eigen::Index(k), Eigen::Index(k)) = subspace(k).dot(f);
+        for (size_t j = k; j > 0; --j) {
+            f = x[j].transpose() * f;
+            const double mjk = subspace(j - 1).dot(f);
+            out(Eigen::Index(j - 1), Eigen::Index(k)) = mjk;
+            out(Eigen::Index(k), Eigen::Index(j - 1)) = mjk;
+        }
+    }
+}
+
+double ChainDynamics::potentialEnergy(const VectorRef &q, const VectorRef &pi) const
+{
+    const std::vector<Eigen::Isometry3d> poses = framePoses(q);
+    Eigen::Vector3d firstMoment = Eigen::Vector3d::Zero(); // sum of m * (centre of mass)
+    for (int k = 0; k < m_dof; ++k) {
+        const double *p = pi.data() + 10 * k;
+        const Eigen::Isometry3d &t = poses[size_t(k)];
+        firstMoment += p[0] * t.translation() + t.linear() * Eigen::Vector3d(p[1], p[2], p[3]);
+    }
+    return -m_chain.gravity.dot(firstMoment);
+}
+
+std::vector<Eigen::Isometry3d> ChainDynamics::framePoses(const VectorRef &q) const
+{
+    Placements pl;
+    place(q, pl);
+    std::vector<Eigen::Isometry3d> poses(size_t(m_dof), Eigen::Isometry3d::Identity());
+    Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+    for (size_t k = 0; k < size_t(m_dof); ++k) {
+        Eigen::Isometry3d local = Eigen::Isometry3d::Identity();
+        local.linear() = pl[k].r;
+        local.translation() = pl[k].p;
+        t = t * local;
+        poses[k] = t;
+    }
+    return poses;
+}
+
+} // namespace learnid

@@ -1,0 +1,156 @@
+// Learning on URDF robots, whole sessions on the simulated robot: the built-in double pendulum
+// (gravity, friction) and the KUKA LWR4+ from ../shared/data (7 axes), the real robot the CAD
+// one perturbed by 30 %. Judged against the simulation's truth: the path-torque error (how well
+// the feedforward matches the robot on its path) and the tracking error, trial 0 against the
+// last; and the robot defaults a URDF scenario leaves to the robot.
+
+#include "../support/NumericAssert.h"
+#include "../support/SharedData.h"
+#include "model/ChainModel.h"
+#include "model/Error.h"
+#include "model/ModelFactory.h"
+#include "session/CommissioningSession.h"
+#include "session/ConvergenceFigures.h"
+#include "session/ScenarioRobot.h"
+
+#include <QTest>
+
+using namespace learnid;
+
+namespace {
+
+Scenario doublePendulum()
+{
+    Scenario s;
+    s.model = QStringLiteral("double-pendulum");
+    s.torqueLimits.resize(0);
+    s.initialParameters.resize(0);
+    s.simulation.trueParameters.resize(0);
+    s.path.kind = PathKind::Waypoints;
+    s.path.waypoints = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1.2, -0.8),
+                        Eigen::Vector2d(-0.6, 1.0), Eigen::Vector2d(0, 0)};
+    s.planningFraction = 0.5;
+    s.controller.kp = Eigen::Vector2d(20, 8);
+    s.controller.ki = Eigen::Vector2d(2, 1);
+    s.controller.kd = Eigen::Vector2d(1.5, 0.6);
+    s.controller.lambda = 1000;
+    s.maxTrackingErrorDeg = 5;
+    s.simulation.inertiaPerturbation = 0.3;
+    s.simulation.seed = 2;
+    return s;
+}
+
+struct Outcome
+{
+    std::vector<double> pathTorqueErrorPercent; ///< of estimate k on the last trial's path
+    std::vector<Eigen::VectorXd> maxTrackingErrorDeg;
+};
+
+Outcome runSession(const Scenario &requested, int learnings)
+{
+    const auto model = makeRobotModel(requested.model, requested.urdf);
+    const Scenario s = withRobotDefaults(requested, *model);
+    auto robot = makeSimulatedRobot(s, model);
+    CommissioningSession session(s, model, robot);
+    Outcome out;
+    for (int k = 0; k <= learnings; ++k) {
+        const TrialResult &result = session.runTrial();
+        if (!result.record.completed())
+            QTest::qFail(qPrintable(result.message), __FILE__, __LINE__);
+        out.maxTrackingErrorDeg.push_back(result.maxTrackingErrorDeg);
+    }
+    const JointTrajectory &path = session.history().constLast().plan().desired;
+    for (const Eigen::VectorXd &phi : session.estimates())
+        out.pathTorqueErrorPercent.push_back(
+            pathTorqueErrorPercent(*model, path, phi, s.simulation.trueParameters));
+    return out;
+}
+
+} // namespace
+
+class TestChainSession : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void urdfScenario_takesLimitsEstimateAndTruthFromTheRobot();
+    void realUrdf_mustHaveTheRobotsJoints();
+    void doublePendulum_learnsThePathTorquesFromThePerturbedCad();
+    void kukaLwr4_learnsThePathTorquesOfSevenAxes();
+};
+
+void TestChainSession::urdfScenario_takesLimitsEstimateAndTruthFromTheRobot()
+{
+    const Scenario requested = doublePendulum();
+    const auto model = makeRobotModel(requested.model, requested.urdf);
+    const auto *chain = dynamic_cast<const ChainModel *>(model.get());
+    QVERIFY(chain);
+    const Scenario s = withRobotDefaults(requested, *model);
+    LEARNID_COMPARE_MATRIX(s.torqueLimits, Eigen::Vector2d(10, 10), 0.0); // the URDF's efforts
+    LEARNID_COMPARE_MATRIX(s.initialParameters, chain->baseFromStandard(chain->cadStandard()),
+                           0.0);
+    // The truth differs from the CAD by at most 30 % per standard parameter, and not by 0.
+    QCOMPARE(s.simulation.trueParameters.size(), model->parameterCount());
+    QVERIFY((s.simulation.trueParameters - s.initialParameters).norm() > 0.0);
+    // Given vectors stay.
+    Scenario given = requested;
+    given.torqueLimits = Eigen::Vector2d(3, 2);
+    QCOMPARE(withRobotDefaults(given, *model).torqueLimits, given.torqueLimits);
+}
+
+void TestChainSession::realUrdf_mustHaveTheRobotsJoints()
+{
+    Scenario s = doublePendulum();
+    s.simulation.realUrdf = QStringLiteral(":/robots/puma560.urdf");
+    const auto model = makeRobotModel(s.model, s.urdf);
+    try {
+        withRobotDefaults(s, *model);
+        QFAIL("a 6-axis real robot for a 2-axis model was accepted");
+    } catch (const Error &e) {
+        QVERIFY2(e.message().startsWith(QLatin1String("simulation.realUrdf: ")) &&
+                     e.message().contains(QLatin1String("6 moving joints")),
+                 qPrintable(e.message()));
+    }
+    // Its own URDF as the real robot: the truth is the CAD.
+    s.simulation.realUrdf = QStringLiteral(":/robots/double-pendulum.urdf");
+    const Scenario resolved = withRobotDefaults(s, *model);
+    LEARNID_COMPARE_MATRIX(resolved.simulation.trueParameters, resolved.initialParameters, 0.0);
+}
+
+void TestChainSession::doublePendulum_learnsThePathTorquesFromThePerturbedCad()
+{
+    const Outcome o = runSession(doublePendulum(), 3);
+    QVERIFY2(o.pathTorqueErrorPercent[0] > 5.0, "the perturbation must matter");
+    QVERIFY2(o.pathTorqueErrorPercent[3] < 0.5,
+             qPrintable(QString::number(o.pathTorqueErrorPercent[3])));
+    for (int j = 0; j < 2; ++j)
+        QVERIFY(o.maxTrackingErrorDeg[3][j] < 0.1 * o.maxTrackingErrorDeg[0][j]);
+}
+
+void TestChainSession::kukaLwr4_learnsThePathTorquesOfSevenAxes()
+{
+    const QString urdf = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
+    if (urdf.isEmpty())
+        QSKIP(qPrintable(test::sharedDataMissing()));
+    Scenario s = doublePendulum();
+    s.model = QStringLiteral("urdf");
+    s.urdf.file = urdf;
+    s.path.waypoints = {
+        (Eigen::VectorXd(7) << 0, 0.3, 0, -1.2, 0, 0.5, 0).finished(),
+        (Eigen::VectorXd(7) << 0.8, 0.8, 0.5, -0.6, 0.6, -0.4, 0.9).finished(),
+        (Eigen::VectorXd(7) << -0.4, 0.5, -0.5, -1.4, -0.5, 0.6, -0.7).finished()};
+    s.planningFraction = 0.3;
+    // PID from the CAD inertia along the path, about 15 rad/s, damped.
+    s.controller.kp = (Eigen::VectorXd(7) << 340, 600, 100, 140, 15, 14, 11).finished();
+    s.controller.ki = s.controller.kp / 10.0;
+    s.controller.kd = (Eigen::VectorXd(7) << 45, 80, 14, 19, 2, 1.9, 1.5).finished();
+    s.simulation.seed = 3;
+    const Outcome o = runSession(s, 2);
+    QVERIFY2(o.pathTorqueErrorPercent[0] > 5.0, "the perturbation must matter");
+    QVERIFY2(o.pathTorqueErrorPercent[2] < 1.0,
+             qPrintable(QString::number(o.pathTorqueErrorPercent[2])));
+    QVERIFY(o.maxTrackingErrorDeg[2].maxCoeff() < 0.3 * o.maxTrackingErrorDeg[0].maxCoeff());
+}
+
+QTEST_GUILESS_MAIN(TestChainSession)
+#include "tst_chainsession.moc"
