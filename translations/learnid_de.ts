@@ -379,12 +379,12 @@
         <translation>die Geschwindigkeitsskala der Coulomb-Reibung muss positiv sein (sie ist %1)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>a combination led by the %1</source>
         <translation>eine Kombination, angeführt von: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>%1 has %2 moving joints, the model %3 has %4</source>
         <translation>%1 hat %2 bewegliche Gelenke, das Modell %3 hat %4</translation>
     </message>
@@ -692,6 +692,29 @@
         <location line="+5"/>
         <source>Node %1 emergency %2: %3; error register %4: %5; manufacturer data %6</source>
         <translation>Knoten %1 EMCY %2: %3; Fehlerregister %4: %5; Herstellerdaten %6</translation>
+    </message>
+</context>
+<context>
+    <name>EstimateConsistency</name>
+    <message>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+123"/>
+        <source>link %1 (%2): mass %3 kg: not a real body</source>
+        <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>link %1 (%2): its inertia cannot belong to a real body (pseudo-inertia eigenvalue %3)</source>
+        <translation>Glied %1 (%2): seine Trägheit kann zu keinem realen Körper gehören (Eigenwert der Pseudoträgheit %3)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 is negative: friction and rotor inertia cannot be</source>
+        <translation>%1 ist negativ: Reibung und Rotorträgheit können das nicht sein</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>physically consistent: every link a real body</source>
+        <translation>physikalisch konsistent: jedes Glied ein realer Körper</translation>
     </message>
 </context>
 <context>
@@ -1048,12 +1071,12 @@
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFileValidation.cpp" line="+49"/>
+        <location filename="../core/io/ParameterFileValidation.cpp" line="+48"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
         <source>one per joint of %1</source>
         <translation>einer pro Gelenk von %1</translation>
     </message>
@@ -1069,11 +1092,13 @@
     </message>
     <message>
         <location line="+2"/>
+        <location line="+15"/>
+        <location line="+5"/>
         <source>must not be empty</source>
         <translation>darf nicht leer sein</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-17"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
@@ -1088,7 +1113,7 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>must be &quot;%1&quot; (parameter %2 of %3), got &quot;%4&quot;</source>
         <translation>muss „%1“ sein (Parameter %2 von %3), gefunden: „%4“</translation>
     </message>
@@ -1536,7 +1561,17 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+57"/>
+        <location filename="../core/service/SessionExport.cpp" line="+49"/>
+        <source>no consistent estimate near estimate %1: %2</source>
+        <translation>keine konsistente Schätzung nahe Schätzung %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>only URDF robots have standard parameters to make consistent</source>
+        <translation>nur URDF-Roboter haben Standardparameter, die sich konsistent machen lassen</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>cannot create the folder %1</source>
         <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -1767,7 +1802,7 @@
         <translation>%1: Glied „%2“ liegt nicht unterhalb von Glied „%3“</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>%1: joint &quot;%2&quot; mimics another joint: mimic joints are not supported</source>
         <translation>%1: Gelenk „%2“ ahmt ein anderes Gelenk nach (mimic): Mimic-Gelenke werden nicht unterstützt</translation>
     </message>
@@ -1845,8 +1880,8 @@
     <message>
         <location filename="../app/cli/RunCommand.cpp" line="+76"/>
         <location line="+14"/>
-        <location line="+28"/>
-        <location line="+43"/>
+        <location line="+48"/>
+        <location line="+44"/>
         <location filename="../app/cli/main.cpp" line="+36"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli: Fehler: %1</translation>
@@ -1858,7 +1893,7 @@
       Print the default scenario (the paper scenario) as JSON.
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--workspace DIR] [--quiet]
+                  [--consistent] [--workspace DIR] [--quiet]
       Run a commissioning session on the simulated robot. The table goes to
       stdout, progress to stderr. Relative output paths are taken from
       --workspace (default: the current directory). Files are written only
@@ -1880,7 +1915,7 @@
       Gibt das Standardszenario (das Szenario des Artikels) als JSON aus.
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--workspace DIR] [--quiet]
+                  [--consistent] [--workspace DIR] [--quiet]
       Führt eine Inbetriebnahmesitzung am simulierten Roboter aus. Tabelle nach
       stdout, Fortschritt nach stderr. Relative Ausgabepfade gelten ab
       --workspace (Standard: aktuelles Verzeichnis). Dateien werden nur
@@ -1999,6 +2034,11 @@
     </message>
     <message>
         <location line="+4"/>
+        <source>Export and apply the nearest physically consistent estimate to the final one (URDF robots).</source>
+        <translation>Die der letzten Schätzung nächste physikalisch konsistente Schätzung exportieren und übernehmen (URDF-Roboter).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Folder that relative output paths are taken from; default: the current directory.</source>
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
@@ -2182,7 +2222,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Versuch %1: %2, T = %3 s, %4 Abtastwerte, max. Folgefehler %5°</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-125"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-146"/>
         <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
         <translation>--estimator: unbekanntes Gesetz &apos;%1&apos; (bekannt: %2)</translation>
     </message>
@@ -2192,7 +2232,22 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+18"/>
+        <source>estimate %1:</source>
+        <translation>Schätzung %1:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the nearest consistent estimate changes the torques on the path by %1 % (--consistent exports and applies it)</source>
+        <translation>die nächste konsistente Schätzung ändert die Momente auf der Bahn um %1 % (--consistent exportiert und übernimmt sie)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no consistent estimate found: %1</source>
+        <translation>keine konsistente Schätzung gefunden: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli: keine Dateien geschrieben</translation>
     </message>
@@ -2207,7 +2262,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: Schätzung %1 auf den Roboter übertragen</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
@@ -2639,7 +2694,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Schätzung %1 existiert nicht: 1 bis %2 wählen</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+8"/>
+        <source>only URDF robots have standard parameters to make consistent</source>
+        <translation>nur URDF-Roboter haben Standardparameter, die sich konsistent machen lassen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no consistent estimate near estimate %1: %2</source>
+        <translation>keine konsistente Schätzung nahe Schätzung %1: %2</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>nothing accepted: accept an estimate before applying it</source>
         <translation>nichts akzeptiert: eine Schätzung akzeptieren, bevor sie übertragen wird</translation>
     </message>

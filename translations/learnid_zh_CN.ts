@@ -379,12 +379,12 @@
         <translation>库仑摩擦的速度尺度必须为正（当前为 %1）</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>a combination led by the %1</source>
         <translation>以%1为首的组合</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>%1 has %2 moving joints, the model %3 has %4</source>
         <translation>%1 有 %2 个可动关节，模型 %3 有 %4 个</translation>
     </message>
@@ -692,6 +692,29 @@
         <location line="+5"/>
         <source>Node %1 emergency %2: %3; error register %4: %5; manufacturer data %6</source>
         <translation>节点 %1 紧急报文（EMCY）%2：%3；错误寄存器 %4：%5；制造商数据 %6</translation>
+    </message>
+</context>
+<context>
+    <name>EstimateConsistency</name>
+    <message>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+123"/>
+        <source>link %1 (%2): mass %3 kg: not a real body</source>
+        <translation>连杆 %1（%2）：质量 %3 kg：不是真实刚体</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>link %1 (%2): its inertia cannot belong to a real body (pseudo-inertia eigenvalue %3)</source>
+        <translation>连杆 %1（%2）：其惯量不可能属于真实刚体（伪惯量特征值 %3）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 is negative: friction and rotor inertia cannot be</source>
+        <translation>%1 为负：摩擦和转子惯量不能为负</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>physically consistent: every link a real body</source>
+        <translation>物理一致：每个连杆都是真实刚体</translation>
     </message>
 </context>
 <context>
@@ -1048,12 +1071,12 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFileValidation.cpp" line="+49"/>
+        <location filename="../core/io/ParameterFileValidation.cpp" line="+48"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
         <source>one per joint of %1</source>
         <translation>%1 的每个关节一个</translation>
     </message>
@@ -1069,11 +1092,13 @@
     </message>
     <message>
         <location line="+2"/>
+        <location line="+15"/>
+        <location line="+5"/>
         <source>must not be empty</source>
         <translation>不得为空</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-17"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>未知学习律“%1”；已知学习律：%2</translation>
     </message>
@@ -1088,7 +1113,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>must be &quot;%1&quot; (parameter %2 of %3), got &quot;%4&quot;</source>
         <translation>必须是“%1”（%3 的参数 %2），实际为“%4”</translation>
     </message>
@@ -1536,7 +1561,17 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+57"/>
+        <location filename="../core/service/SessionExport.cpp" line="+49"/>
+        <source>no consistent estimate near estimate %1: %2</source>
+        <translation>估计 %1 附近没有一致的估计：%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>only URDF robots have standard parameters to make consistent</source>
+        <translation>只有 URDF 机器人有可使其一致的标准参数</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
@@ -1767,7 +1802,7 @@
         <translation>%1：连杆“%2”不在连杆“%3”之下</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>%1: joint &quot;%2&quot; mimics another joint: mimic joints are not supported</source>
         <translation>%1：关节“%2”模仿另一个关节（mimic）：不支持 mimic 关节</translation>
     </message>
@@ -1845,8 +1880,8 @@
     <message>
         <location filename="../app/cli/RunCommand.cpp" line="+76"/>
         <location line="+14"/>
-        <location line="+28"/>
-        <location line="+43"/>
+        <location line="+48"/>
+        <location line="+44"/>
         <location filename="../app/cli/main.cpp" line="+36"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli：错误：%1</translation>
@@ -1858,7 +1893,7 @@
       Print the default scenario (the paper scenario) as JSON.
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--workspace DIR] [--quiet]
+                  [--consistent] [--workspace DIR] [--quiet]
       Run a commissioning session on the simulated robot. The table goes to
       stdout, progress to stderr. Relative output paths are taken from
       --workspace (default: the current directory). Files are written only
@@ -1880,7 +1915,7 @@
       以 JSON 格式输出默认场景（论文场景）。
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--workspace DIR] [--quiet]
+                  [--consistent] [--workspace DIR] [--quiet]
       在仿真机器人上运行一次调试会话。表格输出到 stdout，
       进度输出到 stderr。相对输出路径以 --workspace 为基准
       （默认：当前目录）。只有当所有试验都完成时
@@ -1999,6 +2034,11 @@
     </message>
     <message>
         <location line="+4"/>
+        <source>Export and apply the nearest physically consistent estimate to the final one (URDF robots).</source>
+        <translation>导出并应用与最终估计最接近的物理一致估计（URDF 机器人）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Folder that relative output paths are taken from; default: the current directory.</source>
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
@@ -2182,7 +2222,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>试验 %1：%2，T = %3 s，%4 个采样点，最大跟踪误差 %5 度</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-125"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-146"/>
         <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
         <translation>--estimator：未知学习律 &apos;%1&apos;（已知：%2）</translation>
     </message>
@@ -2192,7 +2232,22 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+18"/>
+        <source>estimate %1:</source>
+        <translation>估计 %1：</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the nearest consistent estimate changes the torques on the path by %1 % (--consistent exports and applies it)</source>
+        <translation>最接近的一致估计使路径上的力矩改变 %1 %（--consistent 导出并应用它）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no consistent estimate found: %1</source>
+        <translation>未找到一致的估计：%1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli：未写入文件</translation>
     </message>
@@ -2207,7 +2262,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：估计 %1 已写入机器人</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
@@ -2639,7 +2694,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>估计 %1 不存在：请选择 1 到 %2</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+8"/>
+        <source>only URDF robots have standard parameters to make consistent</source>
+        <translation>只有 URDF 机器人有可使其一致的标准参数</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no consistent estimate near estimate %1: %2</source>
+        <translation>估计 %1 附近没有一致的估计：%2</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>nothing accepted: accept an estimate before applying it</source>
         <translation>未接受任何估计：请先接受估计再写入</translation>
     </message>

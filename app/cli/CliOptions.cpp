@@ -21,7 +21,7 @@ QString usageText()
         "      Print the default scenario (the paper scenario) as JSON.\n"
         "  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]\n"
         "                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]\n"
-        "                  [--workspace DIR] [--quiet]\n"
+        "                  [--consistent] [--workspace DIR] [--quiet]\n"
         "      Run a commissioning session on the simulated robot. The table goes to\n"
         "      stdout, progress to stderr. Relative output paths are taken from\n"
         "      --workspace (default: the current directory). Files are written only\n"
@@ -174,6 +174,11 @@ CommandLine parseCommandLine(const QStringList &args)
         QStringLiteral("apply"),
         QCoreApplication::translate("learnid-cli",
                                     "Accept and apply the final estimate to the robot."));
+    const QCommandLineOption consistent(
+        QStringLiteral("consistent"),
+        QCoreApplication::translate("learnid-cli",
+                                    "Export and apply the nearest physically consistent "
+                                    "estimate to the final one (URDF robots)."));
     const QCommandLineOption workspace(
         QStringLiteral("workspace"),
         QCoreApplication::translate("learnid-cli",
@@ -241,7 +246,7 @@ CommandLine parseCommandLine(const QStringList &args)
     }
 
     parser.addOptions({scenario, estimator, iterations, report, exportFile, trialCsv, apply,
-                       workspace, quiet, help});
+                       consistent, workspace, quiet, help});
     parser.addOption(nodes);
     if (replay)
         parser.addOption(candump);
@@ -312,6 +317,7 @@ CommandLine parseCommandLine(const QStringList &args)
         }
     }
     run.apply = parser.isSet(apply);
+    run.consistent = parser.isSet(consistent);
     run.quiet = parser.isSet(quiet);
     const QString ws = parser.isSet(workspace) ? parser.value(workspace) : QDir::currentPath();
     try {

@@ -27,6 +27,7 @@ struct RunOptions
     QString exportPath;
     QString trialCsvDir;
     bool apply = false;
+    bool consistent = false; ///< export and apply the nearest consistent estimate
     bool quiet = false;
     QString robot = QStringLiteral("sim"); ///< "sim", "can", or "replay" (`learnid-cli replay`)
     CanRobotOptions can;                   ///< --can-plugin, --can-interface, --nodes, --can-log

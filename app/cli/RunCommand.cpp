@@ -112,6 +112,26 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
     g_session = nullptr;
 
     out << resultTable(*session);
+    const int lastEstimate = int(session->estimates().size()) - 1;
+    const EstimateConsistency consistency = session->consistency(lastEstimate);
+    if (consistency.applicable) {
+        out << QCoreApplication::translate("learnid-cli", "estimate %1:").arg(lastEstimate);
+        for (const QString &line : consistency.describe(session->model()))
+            out << QStringLiteral(" ") << line << QLatin1Char(';');
+        if (!consistency.consistent) {
+            out << QStringLiteral(" ")
+                << (consistency.nearestError.isEmpty()
+                        ? QCoreApplication::translate("learnid-cli",
+                                                      "the nearest consistent estimate changes "
+                                                      "the torques on the path by %1 % "
+                                                      "(--consistent exports and applies it)")
+                              .arg(consistency.pathTorqueChangePercent, 0, 'g', 3)
+                        : QCoreApplication::translate("learnid-cli",
+                                                      "no consistent estimate found: %1")
+                              .arg(consistency.nearestError));
+        }
+        out << Qt::endl;
+    }
     out.flush();
     if (!completed) {
         const TrialResult &last = session->history().constLast();
@@ -128,7 +148,7 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
         QString error;
         QObject::connect(&worker, &SessionWorker::operationFailed,
                          [&error](SessionOperation, const QString &message) { error = message; });
-        worker.accept(last);
+        worker.accept(last, options.consistent);
         if (error.isEmpty())
             worker.apply();
         if (!error.isEmpty()) {
@@ -148,6 +168,7 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
     ExportRequest request;
     request.reportPath = options.reportPath;
     request.parameterPath = options.exportPath;
+    request.nearestConsistent = options.consistent;
     request.trialCsvDir = options.trialCsvDir;
     QStringList written;
     QString writeError;

@@ -43,14 +43,18 @@ QList<int> ParameterFileContent::nodes() const
 
 void validateParameterFileContent(const ParameterFileContent &c)
 {
-    const auto model = makeRobotModel(c.robotModel);
-    if (!model) {
+    if (!knownRobotModels().contains(c.robotModel)) {
         throwAtKey(key("robot.model"),
                    Text::tr("unknown model \"%1\"; known models: %2")
                        .arg(c.robotModel, knownRobotModels().join(QStringLiteral(", "))));
     }
-    const int n = model->dof();
-    const int m = model->parameterCount();
+    // A URDF robot's parameters depend on its URDF and joint terms, which the file does not
+    // carry: it names its own parameters (base parameters, docs/robots.md) and is checked
+    // against itself; the paper's arm against its model.
+    const bool urdf = isUrdfModel(c.robotModel);
+    const auto model = urdf ? nullptr : makeRobotModel(c.robotModel);
+    const int n = urdf ? c.controller.dof() : model->dof();
+    const int m = urdf ? int(c.parameters.size()) : model->parameterCount();
     const QString perJoint = Text::tr("one per joint of %1").arg(c.robotModel);
 
     if (!c.jointNodes.isEmpty()) {
@@ -79,11 +83,15 @@ void validateParameterFileContent(const ParameterFileContent &c)
             Text::tr("must be a trial index or -1 (not recorded), got %1").arg(c.sourceTrial));
     }
 
-    const QList<ParameterInfo> modelParameters = model->parameters();
+    const QList<ParameterInfo> modelParameters = urdf ? c.parameters : model->parameters();
     const QString perParameter = Text::tr("one per parameter of %1").arg(c.robotModel);
+    if (urdf && m == 0)
+        throwAtKey(key("parameters"), Text::tr("must not be empty"));
     checkLength(key("parameters"), c.parameters.size(), m, perParameter);
     for (int i = 0; i < m; ++i) {
         const QString path = jsonKeyPath(jsonIndexPath(key("parameters"), i), key("name"));
+        if (urdf && c.parameters.at(i).name.isEmpty())
+            throwAtKey(path, Text::tr("must not be empty"));
         if (c.parameters.at(i).name != modelParameters.at(i).name) {
             throwAtKey(path, Text::tr("must be \"%1\" (parameter %2 of %3), got \"%4\"")
                                  .arg(modelParameters.at(i).name)

@@ -19,8 +19,8 @@ constexpr double betaCleanTolerance = 1e-9;
 BaseParameters BaseParameters::fromRegressor(const Eigen::MatrixXd &rows)
 {
     if (!rows.allFinite() || rows.cols() == 0) {
-        throw Error(QCoreApplication::translate(
-            "BaseParameters", "base parameters need finite regressor rows"));
+        throw Error(QCoreApplication::translate("BaseParameters",
+                                                "base parameters need finite regressor rows"));
     }
     const Eigen::Index p = rows.cols();
     const Eigen::VectorXd norms = rows.colwise().norm();

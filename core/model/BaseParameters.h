@@ -40,7 +40,8 @@ public:
     Eigen::VectorXd baseFromStandard(const Eigen::VectorXd &pi) const;
     /// A standard vector with phi's base parameters whose dependent part is prior's:
     /// pi_D = prior_D, pi_I = phi - beta prior_D.
-    Eigen::VectorXd standardFromBase(const Eigen::VectorXd &phi, const Eigen::VectorXd &prior) const;
+    Eigen::VectorXd standardFromBase(const Eigen::VectorXd &phi,
+                                     const Eigen::VectorXd &prior) const;
 
     /// Base parameter i written out in the standard names, e.g. "Izz₁ + Ia₁ + 0.25·m₂".
     QString describe(int i, const QStringList &standardNames) const;

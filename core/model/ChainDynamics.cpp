@@ -73,7 +73,8 @@ void ChainDynamics::place(const VectorRef &q, Placements &out) const
     for (size_t k = 0; k < size_t(m_dof); ++k) {
         if (m_prismatic[k]) {
             out[k].r = m_originRotation[k];
-            out[k].p = m_originTranslation[k] + m_originRotation[k] * (m_axis[k] * q[Eigen::Index(k)]);
+            out[k].p =
+                m_originTranslation[k] + m_originRotation[k] * (m_axis[k] * q[Eigen::Index(k)]);
         } else {
             out[k].r = m_originRotation[k] *
                        Eigen::AngleAxisd(q[Eigen::Index(k)], m_axis[k]).toRotationMatrix();

@@ -118,9 +118,9 @@ ChainModel::ChainModel(const SerialChain &chain, const JointTerms &terms, const 
     for (int i = 0; i < m_base.baseCount(); ++i) {
         const ParameterInfo &lead = m_standardInfo[m_base.independent()[size_t(i)]];
         m_baseInfo.append({m_base.describe(i, names), lead.unit,
-                           m_base.beta().row(i).isZero() ? lead.description
-                                                         : Text::tr("a combination led by the %1")
-                                                               .arg(lead.description)});
+                           m_base.beta().row(i).isZero()
+                               ? lead.description
+                               : Text::tr("a combination led by the %1").arg(lead.description)});
     }
 }
 

@@ -19,7 +19,9 @@ Eigen::VectorXd perturbedStandard(const ChainModel &model, double fraction, quin
 {
     std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    const auto factor = [&] { return 1.0 + fraction * unit(random); };
+    const auto factor = [&] {
+        return 1.0 + fraction * unit(random);
+    };
     Eigen::VectorXd pi = model.cadStandard();
     for (int k = 0; k < model.dof(); ++k) {
         const InertialParameters cad = pi.segment<10>(10 * k);
@@ -28,8 +30,8 @@ Eigen::VectorXd perturbedStandard(const ChainModel &model, double fraction, quin
             continue; // a massless link stays massless
         const Eigen::Vector3d c = cad.segment<3>(1) / m;
         const Eigen::Matrix3d atCom =
-            rotationalInertia(cad) - m * (c.squaredNorm() * Eigen::Matrix3d::Identity() -
-                                          c * c.transpose());
+            rotationalInertia(cad) -
+            m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(atCom);
         const double mass = m * factor();
         Eigen::Vector3d centre = c;

@@ -30,12 +30,12 @@ enum class JointType { Revolute, Prismatic };
 /// link fixed to it merged in). Angles [rad] or positions [m] as the joint type says.
 struct ChainJoint
 {
-    QString name;                                       ///< the URDF joint's name
-    QString link;                                       ///< the child link's name
-    JointType type = JointType::Revolute;               ///< continuous joints are revolute
+    QString name;                                             ///< the URDF joint's name
+    QString link;                                             ///< the child link's name
+    JointType type = JointType::Revolute;                     ///< continuous joints are revolute
     Eigen::Isometry3d origin = Eigen::Isometry3d::Identity(); ///< in the previous joint's frame
-    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();    ///< unit, in this joint's frame
-    double lower = -std::numeric_limits<double>::infinity(); ///< position limits
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();          ///< unit, in this joint's frame
+    double lower = -std::numeric_limits<double>::infinity();  ///< position limits
     double upper = std::numeric_limits<double>::infinity();
     double velocityLimit = std::numeric_limits<double>::infinity(); ///< [rad/s] or [m/s]
     double effortLimit = std::numeric_limits<double>::infinity();   ///< [N m] or [N]

@@ -182,7 +182,8 @@ SerialChain parseUrdfChain(const QByteArray &xml, const QString &source, const Q
     for (size_t i = 0; i < path.size(); ++i) {
         const urdf::Link &link = *path[i];
         const urdf::Joint &joint = *link.parent_joint;
-        const Eigen::Isometry3d origin = pending * toIsometry(joint.parent_to_joint_origin_transform);
+        const Eigen::Isometry3d origin =
+            pending * toIsometry(joint.parent_to_joint_origin_transform);
         if (joint.mimic) {
             throw Error(Text::tr("%1: joint \"%2\" mimics another joint: mimic joints are not "
                                  "supported")

@@ -1,5 +1,6 @@
 #include "service/SessionExport.h"
 
+#include "can/ManufacturerObjects.h"
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
 #include "io/TrialCsv.h"
@@ -41,7 +42,24 @@ QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &sessio
     if (!request.parameterPath.isEmpty()) {
         const int k = request.estimateIndex >= 0 ? request.estimateIndex
                                                  : int(session.estimates().size()) - 1;
-        const ParameterFileContent content = parameterFileContent(session, k);
+        ParameterFileContent content = parameterFileContent(session, k);
+        if (request.nearestConsistent) {
+            const EstimateConsistency c = session.consistency(k);
+            if (!c.applicable || !c.nearestError.isEmpty()) {
+                throw Error(QCoreApplication::translate("SessionExport",
+                                                        "no consistent estimate near estimate "
+                                                        "%1: %2")
+                                .arg(k)
+                                .arg(c.applicable
+                                         ? c.nearestError
+                                         : QCoreApplication::translate(
+                                               "SessionExport", "only URDF robots have standard "
+                                                                "parameters to make consistent")));
+            }
+            content.values = c.nearest;
+            content.standardDeviations.resize(0);
+            content.canWrites = objects::parameterWriteSequence(content.nodes(), c.nearest);
+        }
         files.append({request.parameterPath, parameterFileToJson(content)});
         files.append({dcfPathFor(request.parameterPath), parameterDcfFragment(content)});
     }

@@ -15,7 +15,10 @@ struct ExportRequest
     QString reportPath;     ///< the session report (JSON, docs/file-formats.md)
     QString parameterPath;  ///< the parameter file (JSON); its DCF fragment goes beside it (.dcf)
     int estimateIndex = -1; ///< the estimate of the parameter file; -1: the last one
-    QString trialCsvDir;    ///< trial-NNN.csv of every trial that moved
+    /// The parameter file holds the estimate's nearest physically consistent estimate (URDF
+    /// robots, CommissioningSession::consistency), without standard deviations.
+    bool nearestConsistent = false;
+    QString trialCsvDir; ///< trial-NNN.csv of every trial that moved
 };
 
 /// The files of a request, built in memory (path, content), so that the caller writes all or

@@ -147,11 +147,11 @@ void SessionWorker::runTrials(int count)
     emitCheck();
 }
 
-void SessionWorker::accept(int estimateIndex)
+void SessionWorker::accept(int estimateIndex, bool nearestConsistent)
 {
     if (!m_session)
         return;
-    const QString error = m_session->accept(estimateIndex);
+    const QString error = m_session->accept(estimateIndex, nearestConsistent);
     if (error.isEmpty())
         emit accepted(estimateIndex);
     else

@@ -47,7 +47,7 @@ public slots:
     void check();
     void runTrial();
     void runTrials(int count);
-    void accept(int estimateIndex);
+    void accept(int estimateIndex, bool nearestConsistent = false);
     void apply() { writeParameters(SessionOperation::Apply); }
     void revert() { writeParameters(SessionOperation::Revert); }
     /// Apply or revert, always answered by applied() or operationFailed().

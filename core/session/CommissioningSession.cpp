@@ -169,7 +169,7 @@ void CommissioningSession::requestCancel()
     m_cancel.store(true);
 }
 
-QString CommissioningSession::accept(int estimateIndex)
+QString CommissioningSession::accept(int estimateIndex, bool nearestConsistent)
 {
     if (estimateIndex < 1 || estimateIndex >= m_estimates.size()) {
         return m_estimates.size() < 2
@@ -178,9 +178,37 @@ QString CommissioningSession::accept(int estimateIndex)
                          .arg(estimateIndex)
                          .arg(m_estimates.size() - 1);
     }
+    Eigen::VectorXd phi = m_estimates.at(estimateIndex);
+    if (nearestConsistent) {
+        const EstimateConsistency c = consistency(estimateIndex);
+        if (!c.applicable)
+            return tr("only URDF robots have standard parameters to make consistent");
+        if (!c.nearestError.isEmpty())
+            return tr("no consistent estimate near estimate %1: %2")
+                .arg(estimateIndex)
+                .arg(c.nearestError);
+        phi = c.nearest;
+    }
     m_accepted = estimateIndex;
+    m_acceptedParameters = phi;
     emit estimateAccepted(estimateIndex);
     return {};
+}
+
+Eigen::VectorXd CommissioningSession::acceptedParameters() const
+{
+    return m_accepted ? m_acceptedParameters : Eigen::VectorXd();
+}
+
+EstimateConsistency CommissioningSession::consistency(int estimateIndex) const
+{
+    if (estimateIndex < 0 || estimateIndex >= m_estimates.size())
+        return {};
+    const TrialResult *ran = trialRunWith(estimateIndex);
+    if (!ran && !m_history.isEmpty())
+        ran = &m_history.constLast();
+    const JointTrajectory path = ran ? ran->plan().desired : JointTrajectory();
+    return checkEstimateConsistency(*m_model, m_estimates.at(estimateIndex), path);
 }
 
 QString CommissioningSession::apply()
@@ -188,7 +216,7 @@ QString CommissioningSession::apply()
     if (!m_accepted)
         return tr("nothing accepted: accept an estimate before applying it");
     const Eigen::VectorXd before = m_robot->storedParameters();
-    const Eigen::VectorXd &phi = m_estimates.at(*m_accepted);
+    const Eigen::VectorXd phi = m_acceptedParameters;
     const QString error = m_robot->applyParameters(phi);
     if (!error.isEmpty())
         return error;

@@ -3,6 +3,7 @@
 #include "identify/LearningLaw.h"
 #include "model/RobotModel.h"
 #include "robot/Robot.h"
+#include "session/EstimateConsistency.h"
 #include "session/TrialPlanner.h"
 #include "session/TrialResult.h"
 #include "types/Scenario.h"
@@ -62,8 +63,16 @@ public:
     /// Forgets a Stop requested earlier; thread-safe.
     void clearCancel() { m_cancel.store(false); }
 
-    /// Accepts estimate k (1 .. estimates().size()-1) for apply. Returns an error or empty.
-    QString accept(int estimateIndex);
+    /// Accepts estimate k (1 .. estimates().size()-1) for apply, or with nearestConsistent the
+    /// nearest physically consistent estimate to it (consistency()). Returns an error or empty.
+    QString accept(int estimateIndex, bool nearestConsistent = false);
+    /// What apply writes: the accepted estimate, or its nearest consistent one; empty when
+    /// nothing is accepted.
+    Eigen::VectorXd acceptedParameters() const;
+    /// Whether estimate k describes real bodies, and its nearest consistent estimate, weighted
+    /// by the torques on the path of the trial run with it (URDF robots; see
+    /// EstimateConsistency.h). Not applicable for other models or a k that does not exist.
+    EstimateConsistency consistency(int estimateIndex) const;
     std::optional<int> acceptedIndex() const { return m_accepted; }
     /// Writes the accepted estimate to the robot (all or nothing). Returns an error or empty.
     QString apply();
@@ -98,6 +107,7 @@ private:
     QVector<TrialResult> m_history;
     QVector<Eigen::VectorXd> m_estimates;
     std::optional<int> m_accepted;
+    Eigen::VectorXd m_acceptedParameters; ///< the accepted estimate or its nearest consistent one
     QVector<Eigen::VectorXd> m_applied;
     QVector<Eigen::VectorXd> m_storedBeforeApply;
     QVector<int> m_appliedIndices; ///< estimate index of each apply not reverted, oldest first

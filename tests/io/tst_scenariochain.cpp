@@ -166,10 +166,9 @@ void TestScenarioChain::badInput_isNamedByItsKey_data()
              "path": {"kind": "waypoints", "waypoints": [[0, 0], [1, 1]]},
              "simulation": {"inertiaPerturbation": 2}})")
         << QStringLiteral("scenario.json: simulation.inertiaPerturbation: must be");
-    QTest::newRow("path file missing")
-        << QByteArray(R"({"robot": {"model": "double-pendulum"},
+    QTest::newRow("path file missing") << QByteArray(R"({"robot": {"model": "double-pendulum"},
              "path": {"kind": "file", "file": "/nonexistent/path.csv"}})")
-        << QStringLiteral("scenario.json: path.file: ");
+                                       << QStringLiteral("scenario.json: path.file: ");
     QTest::newRow("wrong initial parameter count")
         << QByteArray(R"({"robot": {"model": "double-pendulum", "initialParameters": [1, 2]},
              "path": {"kind": "waypoints", "waypoints": [[0, 0], [1, 1]]}})")

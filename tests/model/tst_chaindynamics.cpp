@@ -50,9 +50,9 @@ KDL::RigidBodyInertia kdlFromStandard(const InertialParameters &pi)
         Eigen::Matrix3d shift = Eigen::Matrix3d::Identity();
         shift(a, a) = 0.0;
         const KDL::RotationalInertia removeI(-shift(0, 0), -shift(1, 1), -shift(2, 2), 0, 0, 0);
-        const KDL::RigidBodyInertia pureH = KDL::RigidBodyInertia(1.0, unit) +
-                                            KDL::RigidBodyInertia(-1.0, KDL::Vector::Zero()) +
-                                            KDL::RigidBodyInertia(0.0, KDL::Vector::Zero(), removeI);
+        const KDL::RigidBodyInertia pureH =
+            KDL::RigidBodyInertia(1.0, unit) + KDL::RigidBodyInertia(-1.0, KDL::Vector::Zero()) +
+            KDL::RigidBodyInertia(0.0, KDL::Vector::Zero(), removeI);
         out = out + pi[1 + a] * pureH;
     }
     return out;

@@ -124,8 +124,7 @@ void TestChainModel::paperArmUrdf_equalsEquation21AfterTheChangeOfAngles()
         const Eigen::VectorXd q = randomVector(2, random, 3.0), qd = randomVector(2, random, 2.0),
                               qdd = randomVector(2, random, 4.0);
         const Eigen::VectorXd tauAbsolute = paper.torqueAt(t * q, t * qd, t * qdd, abc);
-        LEARNID_COMPARE_MATRIX(chain.torqueAt(q, qd, qdd, phi), t.transpose() * tauAbsolute,
-                               1e-12);
+        LEARNID_COMPARE_MATRIX(chain.torqueAt(q, qd, qdd, phi), t.transpose() * tauAbsolute, 1e-12);
     }
 }
 

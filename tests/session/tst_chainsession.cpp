@@ -11,6 +11,7 @@
 #include "model/ModelFactory.h"
 #include "session/CommissioningSession.h"
 #include "session/ConvergenceFigures.h"
+#include "session/EstimateConsistency.h"
 #include "session/ScenarioRobot.h"
 
 #include <QTest>
@@ -77,6 +78,7 @@ private slots:
     void realUrdf_mustHaveTheRobotsJoints();
     void doublePendulum_learnsThePathTorquesFromThePerturbedCad();
     void kukaLwr4_learnsThePathTorquesOfSevenAxes();
+    void inconsistentEstimate_isReportedAndItsNearestConsistentOneKeepsThePathTorques();
 };
 
 void TestChainSession::urdfScenario_takesLimitsEstimateAndTruthFromTheRobot()
@@ -87,8 +89,7 @@ void TestChainSession::urdfScenario_takesLimitsEstimateAndTruthFromTheRobot()
     QVERIFY(chain);
     const Scenario s = withRobotDefaults(requested, *model);
     LEARNID_COMPARE_MATRIX(s.torqueLimits, Eigen::Vector2d(10, 10), 0.0); // the URDF's efforts
-    LEARNID_COMPARE_MATRIX(s.initialParameters, chain->baseFromStandard(chain->cadStandard()),
-                           0.0);
+    LEARNID_COMPARE_MATRIX(s.initialParameters, chain->baseFromStandard(chain->cadStandard()), 0.0);
     // The truth differs from the CAD by at most 30 % per standard parameter, and not by 0.
     QCOMPARE(s.simulation.trueParameters.size(), model->parameterCount());
     QVERIFY((s.simulation.trueParameters - s.initialParameters).norm() > 0.0);
@@ -135,10 +136,9 @@ void TestChainSession::kukaLwr4_learnsThePathTorquesOfSevenAxes()
     Scenario s = doublePendulum();
     s.model = QStringLiteral("urdf");
     s.urdf.file = urdf;
-    s.path.waypoints = {
-        (Eigen::VectorXd(7) << 0, 0.3, 0, -1.2, 0, 0.5, 0).finished(),
-        (Eigen::VectorXd(7) << 0.8, 0.8, 0.5, -0.6, 0.6, -0.4, 0.9).finished(),
-        (Eigen::VectorXd(7) << -0.4, 0.5, -0.5, -1.4, -0.5, 0.6, -0.7).finished()};
+    s.path.waypoints = {(Eigen::VectorXd(7) << 0, 0.3, 0, -1.2, 0, 0.5, 0).finished(),
+                        (Eigen::VectorXd(7) << 0.8, 0.8, 0.5, -0.6, 0.6, -0.4, 0.9).finished(),
+                        (Eigen::VectorXd(7) << -0.4, 0.5, -0.5, -1.4, -0.5, 0.6, -0.7).finished()};
     s.planningFraction = 0.3;
     // PID from the CAD inertia along the path, about 15 rad/s, damped.
     s.controller.kp = (Eigen::VectorXd(7) << 340, 600, 100, 140, 15, 14, 11).finished();
@@ -150,6 +150,56 @@ void TestChainSession::kukaLwr4_learnsThePathTorquesOfSevenAxes()
     QVERIFY2(o.pathTorqueErrorPercent[2] < 1.0,
              qPrintable(QString::number(o.pathTorqueErrorPercent[2])));
     QVERIFY(o.maxTrackingErrorDeg[2].maxCoeff() < 0.3 * o.maxTrackingErrorDeg[0].maxCoeff());
+}
+
+void TestChainSession::
+    inconsistentEstimate_isReportedAndItsNearestConsistentOneKeepsThePathTorques()
+{
+    // The PUMA 560 along a waypoint path; the estimate: the CAD with link 3's inertia about x
+    // made far too large (no body has Ixx > Iyy + Izz about its centre of mass).
+    Scenario s = doublePendulum();
+    s.model = QStringLiteral("puma560");
+    s.path.waypoints = {Eigen::VectorXd::Zero(6), Eigen::VectorXd::Constant(6, 0.6)};
+    const auto model = makeRobotModel(s.model, s.urdf);
+    const auto *chain = dynamic_cast<const ChainModel *>(model.get());
+    QVERIFY(chain);
+    const TrialPlanner planner(withRobotDefaults(s, *model), model);
+    const JointTrajectory path =
+        planner.plan(chain->baseFromStandard(chain->cadStandard())).desired;
+
+    Eigen::VectorXd pi = chain->cadStandard();
+    pi[0] = 1.0; // the published link 1 has no mass: give it one so that only link 3 is wrong
+    const Eigen::VectorXd consistentPhi = chain->baseFromStandard(pi);
+    pi[24] += 5.0; // Ixx of link 3
+    const Eigen::VectorXd phi = chain->baseFromStandard(pi);
+
+    const EstimateConsistency bad = checkEstimateConsistency(*model, phi, path);
+    QVERIFY(bad.applicable);
+    QVERIFY(!bad.consistent);
+    QVERIFY2(bad.nearestError.isEmpty(), qPrintable(bad.nearestError));
+    const QStringList lines = bad.describe(*model);
+    QVERIFY2(lines.join(QLatin1Char(' ')).contains(QLatin1String("link 3 (link3)")),
+             qPrintable(lines.join(QLatin1Char('|'))));
+    // The nearest estimate describes real bodies: standard parameters with its base parameters
+    // whose every link is consistent ...
+    LEARNID_COMPARE_MATRIX(chain->baseFromStandard(bad.nearestStandard), bad.nearest, 1e-12);
+    for (const LinkConsistency &l : checkConsistency(bad.nearestStandard, 6, 1e-9))
+        QVERIFY2(l.consistent, qPrintable(QString::number(l.link)));
+    QVERIFY(negativeJointTerms(bad.nearestStandard, chain->nonnegativeStandard()).empty());
+    // ... and its torques on the path are no further from phi's than the consistent
+    // estimate we broke (an independent consistent candidate).
+    const auto pathError = [&](const Eigen::VectorXd &x) {
+        return pathTorqueErrorPercent(*model, path, x, phi);
+    };
+    QVERIFY2(
+        pathError(bad.nearest) <= pathError(consistentPhi) + 1e-9,
+        qPrintable(
+            QStringLiteral("%1 vs %2").arg(pathError(bad.nearest)).arg(pathError(consistentPhi))));
+    LEARNID_COMPARE_NEAR(bad.pathTorqueChangePercent, pathError(bad.nearest), 1e-6);
+    // A consistent estimate is reported so, and kept.
+    const EstimateConsistency good = checkEstimateConsistency(*model, consistentPhi, path);
+    QVERIFY(good.consistent);
+    LEARNID_COMPARE_MATRIX(good.nearest, consistentPhi, 0.0);
 }
 
 QTEST_GUILESS_MAIN(TestChainSession)

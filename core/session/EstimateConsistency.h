@@ -1,0 +1,42 @@
+#pragma once
+
+#include "model/PhysicalConsistency.h"
+#include "model/RobotModel.h"
+#include "types/JointTrajectory.h"
+
+#include <QString>
+#include <vector>
+
+namespace learnid {
+
+/// Whether an estimate describes real bodies (docs/robots.md §5), for models with standard
+/// parameters (URDF robots): the estimate's base parameters with the CAD model's values for
+/// what they do not fix (each CAD link first made a real body where the published data are
+/// not one), each link's mass positive and pseudo-inertia positive semidefinite,
+/// friction and rotor inertia not negative. With the nearest consistent estimate: the
+/// consistent standard parameters whose torques on the path are closest to the estimate's,
+/// what the path does not see held near the CAD model.
+struct EstimateConsistency
+{
+    bool applicable = false;             ///< false: the model has no standard parameters
+    std::vector<LinkConsistency> links;  ///< per link, in chain order
+    std::vector<int> negativeTerms;      ///< standard indices of negative friction or inertia
+    bool consistent = true;              ///< every link and term as it should be
+    Eigen::VectorXd nearest;             ///< base parameters of the nearest consistent estimate
+    /// Standard parameters with those base parameters that are consistent (the witness; its
+    /// unseen part near the CAD model); empty when phi is consistent or nothing was found.
+    Eigen::VectorXd nearestStandard;
+    double pathTorqueChangePercent = 0;  ///< ||W_path (nearest - phi)|| / ||W_path phi|| * 100
+    QString nearestError;                ///< why no nearest estimate could be found, or empty
+
+    /// One line per problem ("link 3 (lwr_3_link): ..."), or that the estimate is consistent.
+    QStringList describe(const RobotModel &model) const;
+};
+
+/// Checks phi (base parameters of model) and, when it is not consistent, finds the nearest
+/// consistent estimate weighting parameter errors by the torque they cause on path (the
+/// desired trajectory of a trial). Never throws: a failure is in nearestError.
+EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eigen::VectorXd &phi,
+                                             const JointTrajectory &path);
+
+} // namespace learnid
