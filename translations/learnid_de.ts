@@ -1202,6 +1202,19 @@
     </message>
 </context>
 <context>
+    <name>PathIdentifiability</name>
+    <message>
+        <location filename="../core/session/PathIdentifiability.cpp" line="+32"/>
+        <source>the path observes %1 of %2 parameter directions (condition %3)</source>
+        <translation>die Bahn beobachtet %1 von %2 Parameterrichtungen (Kondition %3)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>it cannot see, and the trials keep: %1</source>
+        <translation>sie sieht nicht, und die Versuche behalten: %1</translation>
+    </message>
+</context>
+<context>
     <name>Pdo</name>
     <message>
         <location filename="../core/can/Pdo.cpp" line="+24"/>
@@ -1255,7 +1268,17 @@
 <context>
     <name>SafetyCheck</name>
     <message>
-        <location filename="../core/session/SafetyCheck.cpp" line="+169"/>
+        <location filename="../core/session/SafetyCheck.cpp" line="+154"/>
+        <source>joint %1 would reach %2 at t = %3 s, outside its limits %4 to %5</source>
+        <translation>Gelenk %1 würde bei t = %3 s %2 erreichen, außerhalb seiner Grenzen %4 bis %5</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>joint %1 would move at %2 at t = %3 s, above its speed limit %4</source>
+        <translation>Gelenk %1 würde sich bei t = %3 s mit %2 bewegen, über seiner Geschwindigkeitsgrenze %4</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>the estimate is not a physical robot: its mass matrix is not positive definite at t = %1 s</source>
         <translation>die Schätzung ist kein physikalischer Roboter: ihre Massenmatrix ist bei t = %1 s nicht positiv definit</translation>
     </message>
@@ -1709,12 +1732,12 @@
 <context>
     <name>TrialPlanner</name>
     <message>
-        <location filename="../core/session/TrialPlanner.cpp" line="+26"/>
+        <location filename="../core/session/TrialPlanner.cpp" line="+40"/>
         <source>the path has %1 joints, the robot %2</source>
         <translation>die Bahn hat %1 Gelenke, der Roboter %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+20"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>nur ebene Zweigelenkarme haben eine kartesische Geradenkinematik</translation>
     </message>
@@ -1791,7 +1814,7 @@
         <translation>%1: Gelenk „%2“ hat keine Achse (Nullvektor)</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <location line="+4"/>
         <source>%1: no link &quot;%2&quot;</source>
         <translation>%1: kein Glied „%2“</translation>
@@ -1880,7 +1903,7 @@
     <message>
         <location filename="../app/cli/RunCommand.cpp" line="+76"/>
         <location line="+14"/>
-        <location line="+48"/>
+        <location line="+52"/>
         <location line="+44"/>
         <location filename="../app/cli/main.cpp" line="+36"/>
         <source>learnid-cli: error: %1</source>
@@ -2222,7 +2245,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Versuch %1: %2, T = %3 s, %4 Abtastwerte, max. Folgefehler %5°</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-146"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-150"/>
         <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
         <translation>--estimator: unbekanntes Gesetz &apos;%1&apos; (bekannt: %2)</translation>
     </message>
@@ -2232,7 +2255,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+7"/>
+        <source>learnid-cli: %1</source>
+        <translation>learnid-cli: %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>estimate %1:</source>
         <translation>Schätzung %1:</translation>
     </message>
@@ -2664,7 +2692,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+65"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
@@ -2704,7 +2732,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>keine konsistente Schätzung nahe Schätzung %1: %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+39"/>
         <source>nothing accepted: accept an estimate before applying it</source>
         <translation>nichts akzeptiert: eine Schätzung akzeptieren, bevor sie übertragen wird</translation>
     </message>

@@ -1202,6 +1202,19 @@
     </message>
 </context>
 <context>
+    <name>PathIdentifiability</name>
+    <message>
+        <location filename="../core/session/PathIdentifiability.cpp" line="+32"/>
+        <source>the path observes %1 of %2 parameter directions (condition %3)</source>
+        <translation>该路径可观测 %2 个参数方向中的 %1 个（条件数 %3）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>it cannot see, and the trials keep: %1</source>
+        <translation>它无法观测、试验将保持不变的参数：%1</translation>
+    </message>
+</context>
+<context>
     <name>Pdo</name>
     <message>
         <location filename="../core/can/Pdo.cpp" line="+24"/>
@@ -1255,7 +1268,17 @@
 <context>
     <name>SafetyCheck</name>
     <message>
-        <location filename="../core/session/SafetyCheck.cpp" line="+169"/>
+        <location filename="../core/session/SafetyCheck.cpp" line="+154"/>
+        <source>joint %1 would reach %2 at t = %3 s, outside its limits %4 to %5</source>
+        <translation>关节 %1 将在 t = %3 s 时到达 %2，超出其限位 %4 至 %5</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>joint %1 would move at %2 at t = %3 s, above its speed limit %4</source>
+        <translation>关节 %1 将在 t = %3 s 时以 %2 运动，超过其速度上限 %4</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>the estimate is not a physical robot: its mass matrix is not positive definite at t = %1 s</source>
         <translation>该估计不是物理上可能的机器人：其质量矩阵在 t = %1 s 时不是正定的</translation>
     </message>
@@ -1709,12 +1732,12 @@
 <context>
     <name>TrialPlanner</name>
     <message>
-        <location filename="../core/session/TrialPlanner.cpp" line="+26"/>
+        <location filename="../core/session/TrialPlanner.cpp" line="+40"/>
         <source>the path has %1 joints, the robot %2</source>
         <translation>路径有 %1 个关节，机器人有 %2 个</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+20"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>只有平面二连杆机械臂具有笛卡尔直线运动学</translation>
     </message>
@@ -1791,7 +1814,7 @@
         <translation>%1：关节“%2”没有轴（零向量）</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <location line="+4"/>
         <source>%1: no link &quot;%2&quot;</source>
         <translation>%1：没有连杆“%2”</translation>
@@ -1880,7 +1903,7 @@
     <message>
         <location filename="../app/cli/RunCommand.cpp" line="+76"/>
         <location line="+14"/>
-        <location line="+48"/>
+        <location line="+52"/>
         <location line="+44"/>
         <location filename="../app/cli/main.cpp" line="+36"/>
         <source>learnid-cli: error: %1</source>
@@ -2222,7 +2245,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>试验 %1：%2，T = %3 s，%4 个采样点，最大跟踪误差 %5 度</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-146"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-150"/>
         <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
         <translation>--estimator：未知学习律 &apos;%1&apos;（已知：%2）</translation>
     </message>
@@ -2232,7 +2255,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+7"/>
+        <source>learnid-cli: %1</source>
+        <translation>learnid-cli: %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>estimate %1:</source>
         <translation>估计 %1：</translation>
     </message>
@@ -2664,7 +2692,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>场景不适合 %1 模型：它需要 %2 个参数以及 %3 个关节的限值和增益</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+65"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
@@ -2704,7 +2732,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>估计 %1 附近没有一致的估计：%2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+39"/>
         <source>nothing accepted: accept an estimate before applying it</source>
         <translation>未接受任何估计：请先接受估计再写入</translation>
     </message>

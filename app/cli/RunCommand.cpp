@@ -102,6 +102,10 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
                    .arg(session->robot().description(), scenario.law)
                    .arg(scenario.iterations)
             << Qt::endl;
+        // What the trials can learn, before the robot moves.
+        for (const QString &line : session->identifiability().describe(session->model()))
+            err << QCoreApplication::translate("learnid-cli", "learnid-cli: %1").arg(line)
+                << Qt::endl;
         QObject::connect(session, &CommissioningSession::trialFinished,
                          [&err](const TrialResult &t) { err << trialSummary(t) << Qt::endl; });
     }

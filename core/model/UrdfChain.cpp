@@ -132,7 +132,9 @@ ChainJoint movingJoint(const urdf::Joint &joint, const urdf::Link &child,
             Text::tr("%1: joint \"%2\" has no axis (zero vector)").arg(source, qs(joint.name)));
     }
     j.axis = axis.normalized();
-    if (joint.limits && joint.type != urdf::Joint::CONTINUOUS) {
+    // urdfdom reads a <limit> without lower and upper as 0 and 0: no position limits then.
+    if (joint.limits && joint.type != urdf::Joint::CONTINUOUS &&
+        joint.limits->lower < joint.limits->upper) {
         j.lower = joint.limits->lower;
         j.upper = joint.limits->upper;
     }

@@ -55,8 +55,16 @@ PreTrialCheck CommissioningSession::checkNextTrial() const
     PreTrialCheck check;
     try {
         check.plan = m_planner.plan(currentEstimate(), &check.rule);
-        check.verdict =
-            checkTrial(*m_model, currentEstimate(), check.plan, m_scenario.stabilityMargin);
+        // The check linearises the robot as the estimate describes it. An estimate that is not
+        // a set of real bodies (URDF robots: what the path does not see is filled in from the
+        // CAD model) can describe a plant no robot is; its nearest consistent estimate has the
+        // same torques on the path and stands in for it (docs/robots.md §6).
+        Eigen::VectorXd standIn = currentEstimate();
+        const EstimateConsistency c =
+            checkEstimateConsistency(*m_model, standIn, check.plan.desired);
+        if (c.applicable && !c.consistent && c.nearestError.isEmpty())
+            standIn = c.nearest;
+        check.verdict = checkTrial(*m_model, standIn, check.plan, m_scenario.stabilityMargin);
     } catch (const Error &e) {
         check.planningError = e.message();
     }
@@ -198,6 +206,15 @@ QString CommissioningSession::accept(int estimateIndex, bool nearestConsistent)
 Eigen::VectorXd CommissioningSession::acceptedParameters() const
 {
     return m_accepted ? m_acceptedParameters : Eigen::VectorXd();
+}
+
+PathIdentifiability CommissioningSession::identifiability() const
+{
+    const PreTrialCheck check = checkNextTrial();
+    if (!check.planningError.isEmpty())
+        return {};
+    return pathIdentifiability(*m_model, check.plan.desired, currentEstimate(),
+                               m_scenario.estimator.rankTolerance);
 }
 
 EstimateConsistency CommissioningSession::consistency(int estimateIndex) const

@@ -4,6 +4,7 @@
 #include "model/RobotModel.h"
 #include "robot/Robot.h"
 #include "session/EstimateConsistency.h"
+#include "session/PathIdentifiability.h"
 #include "session/TrialPlanner.h"
 #include "session/TrialResult.h"
 #include "types/Scenario.h"
@@ -49,6 +50,10 @@ public:
 
     /// Plans the next trial with the current estimate and checks it, without moving the robot.
     PreTrialCheck checkNextTrial() const;
+    /// What the next trial's path lets the learning see (PathIdentifiability.h), at the current
+    /// estimate and the scenario's rank tolerance; empty (0 parameters) when it cannot be
+    /// planned.
+    PathIdentifiability identifiability() const;
 
     /// Checks, runs and learns from one trial. A refused, aborted or faulted trial is kept in
     /// the history, marked, and leaves the estimate unchanged.

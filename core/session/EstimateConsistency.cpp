@@ -17,8 +17,9 @@ struct Text
     Q_DECLARE_TR_FUNCTIONS(EstimateConsistency)
 };
 
-constexpr double eigenvalueTolerance = 1e-12; ///< relative to a link's largest (PhysicalConsistency.h)
-constexpr int maxPathSamples = 2000;          ///< path rows used to weight the projection
+constexpr double eigenvalueTolerance =
+    1e-12;                           ///< relative to a link's largest (PhysicalConsistency.h)
+constexpr int maxPathSamples = 2000; ///< path rows used to weight the projection
 constexpr double priorShare = 1e-6; ///< the CAD prior's weight against the path rows, per parameter
 
 // The path's regressor rows reduced to R with ||W_path x|| = ||R x|| (r x r, or fewer rows).
@@ -95,13 +96,13 @@ EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eige
             scale[i] = 1.0 / std::max(std::abs(prior[i]), floor);
         }
         const double weight = std::sqrt(priorShare * a.squaredNorm() / double(prior.size()));
-        const ConsistentEstimate fit = nearestConsistentEstimate(
-            a, b, prior, scale, weight, n, chain->nonnegativeStandard());
+        const ConsistentEstimate fit =
+            nearestConsistentEstimate(a, b, prior, scale, weight, n, chain->nonnegativeStandard());
         out.nearest = chain->baseFromStandard(fit.standard);
         out.nearestStandard = fit.standard;
         const double size = (r * phi).norm();
-        out.pathTorqueChangePercent = size > 0.0 ? 100.0 * (r * (out.nearest - phi)).norm() / size
-                                                 : 0.0;
+        out.pathTorqueChangePercent =
+            size > 0.0 ? 100.0 * (r * (out.nearest - phi)).norm() / size : 0.0;
     } catch (const Error &e) {
         out.nearest = phi;
         out.nearestError = e.message();
@@ -119,16 +120,15 @@ QStringList EstimateConsistency::describe(const RobotModel &model) const
         if (l.consistent)
             continue;
         const QString link = chain ? chain->chain().joints[size_t(l.link)].link : QString();
-        lines << (l.mass <= 0.0
-                      ? Text::tr("link %1 (%2): mass %3 kg: not a real body")
-                            .arg(l.link + 1)
-                            .arg(link)
-                            .arg(l.mass, 0, 'g', 4)
-                      : Text::tr("link %1 (%2): its inertia cannot belong to a real body "
-                                 "(pseudo-inertia eigenvalue %3)")
-                            .arg(l.link + 1)
-                            .arg(link)
-                            .arg(l.minEigenvalue, 0, 'g', 3));
+        lines << (l.mass <= 0.0 ? Text::tr("link %1 (%2): mass %3 kg: not a real body")
+                                      .arg(l.link + 1)
+                                      .arg(link)
+                                      .arg(l.mass, 0, 'g', 4)
+                                : Text::tr("link %1 (%2): its inertia cannot belong to a real body "
+                                           "(pseudo-inertia eigenvalue %3)")
+                                      .arg(l.link + 1)
+                                      .arg(link)
+                                      .arg(l.minEigenvalue, 0, 'g', 3));
     }
     if (chain) {
         const QList<ParameterInfo> names = chain->standardParameters();

@@ -9,7 +9,7 @@
 
 namespace learnid {
 
-/// Whether an estimate describes real bodies (docs/robots.md §5), for models with standard
+/// Whether an estimate describes real bodies (docs/robots.md §6), for models with standard
 /// parameters (URDF robots): the estimate's base parameters with the CAD model's values for
 /// what they do not fix (each CAD link first made a real body where the published data are
 /// not one), each link's mass positive and pseudo-inertia positive semidefinite,
@@ -18,16 +18,16 @@ namespace learnid {
 /// what the path does not see held near the CAD model.
 struct EstimateConsistency
 {
-    bool applicable = false;             ///< false: the model has no standard parameters
-    std::vector<LinkConsistency> links;  ///< per link, in chain order
-    std::vector<int> negativeTerms;      ///< standard indices of negative friction or inertia
-    bool consistent = true;              ///< every link and term as it should be
-    Eigen::VectorXd nearest;             ///< base parameters of the nearest consistent estimate
+    bool applicable = false;            ///< false: the model has no standard parameters
+    std::vector<LinkConsistency> links; ///< per link, in chain order
+    std::vector<int> negativeTerms;     ///< standard indices of negative friction or inertia
+    bool consistent = true;             ///< every link and term as it should be
+    Eigen::VectorXd nearest;            ///< base parameters of the nearest consistent estimate
     /// Standard parameters with those base parameters that are consistent (the witness; its
     /// unseen part near the CAD model); empty when phi is consistent or nothing was found.
     Eigen::VectorXd nearestStandard;
-    double pathTorqueChangePercent = 0;  ///< ||W_path (nearest - phi)|| / ||W_path phi|| * 100
-    QString nearestError;                ///< why no nearest estimate could be found, or empty
+    double pathTorqueChangePercent = 0; ///< ||W_path (nearest - phi)|| / ||W_path phi|| * 100
+    QString nearestError;               ///< why no nearest estimate could be found, or empty
 
     /// One line per problem ("link 3 (lwr_3_link): ..."), or that the estimate is consistent.
     QStringList describe(const RobotModel &model) const;

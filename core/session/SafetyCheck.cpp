@@ -139,6 +139,37 @@ void checkPath(const RobotModel &model, const Eigen::VectorXd &phiHat, const Tri
     }
 }
 
+// The first sample where a joint leaves its position or speed limits, as a reason; empty when
+// none does (or the plan has no limits).
+QString jointLimitViolation(const TrialPlan &plan)
+{
+    const JointTrajectory &d = plan.desired;
+    if (plan.positionLower.size() != d.dof())
+        return {};
+    for (int k = 0; k < d.samples(); ++k) {
+        for (int j = 0; j < d.dof(); ++j) {
+            const double q = d.q(j, k), v = d.qd(j, k);
+            const double t = k * d.samplePeriod;
+            if (q < plan.positionLower[j] || q > plan.positionUpper[j]) {
+                return Text::tr("joint %1 would reach %2 at t = %3 s, outside its limits %4 to %5")
+                    .arg(j + 1)
+                    .arg(q, 0, 'f', 4)
+                    .arg(t, 0, 'f', 3)
+                    .arg(plan.positionLower[j], 0, 'f', 4)
+                    .arg(plan.positionUpper[j], 0, 'f', 4);
+            }
+            if (std::abs(v) > plan.velocityLimit[j]) {
+                return Text::tr("joint %1 would move at %2 at t = %3 s, above its speed limit %4")
+                    .arg(j + 1)
+                    .arg(v, 0, 'f', 4)
+                    .arg(t, 0, 'f', 3)
+                    .arg(plan.velocityLimit[j], 0, 'f', 4);
+            }
+        }
+    }
+    return {};
+}
+
 } // namespace
 
 SafetyVerdict checkTrial(const RobotModel &model, const Eigen::VectorXd &phiHat,
@@ -164,6 +195,8 @@ SafetyVerdict checkTrial(const RobotModel &model, const Eigen::VectorXd &phiHat,
         if (v.peakTorque[j] > v.torqueLimit[j] && overJoint < 0)
             overJoint = j;
     v.torqueWithinLimits = overJoint < 0;
+    const QString limitViolation = jointLimitViolation(plan);
+    v.withinJointLimits = limitViolation.isEmpty();
 
     if (!v.physical) {
         v.reason = Text::tr("the estimate is not a physical robot: its mass matrix is not positive "
@@ -182,6 +215,8 @@ SafetyVerdict checkTrial(const RobotModel &model, const Eigen::VectorXd &phiHat,
                        .arg(overJoint + 1)
                        .arg(v.peakTorque[overJoint], 0, 'f', 3)
                        .arg(v.torqueLimit[overJoint], 0, 'f', 3);
+    } else if (!v.withinJointLimits) {
+        v.reason = limitViolation;
     }
     return v;
 }

@@ -1,10 +1,12 @@
 #include "session/TrialPlanner.h"
 
+#include "model/ChainModel.h"
 #include "model/Error.h"
 #include "model/VectorState.h"
 #include "motion/TwoLinkKinematics.h"
 
 #include <QCoreApplication>
+#include <algorithm>
 
 namespace learnid {
 
@@ -12,6 +14,18 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
     : m_scenario(scenario)
     , m_model(std::move(model))
 {
+    if (const auto *chain = dynamic_cast<const ChainModel *>(m_model.get())) {
+        const int n = chain->dof();
+        m_positionLower.resize(n);
+        m_positionUpper.resize(n);
+        m_velocityLimit.resize(n);
+        for (int j = 0; j < n; ++j) {
+            const ChainJoint &joint = chain->chain().joints[size_t(j)];
+            m_positionLower[j] = joint.lower;
+            m_positionUpper[j] = joint.upper;
+            m_velocityLimit[j] = joint.velocityLimit;
+        }
+    }
     if (scenario.path.kind == PathKind::Waypoints) {
         m_path = std::make_unique<WaypointPath>(scenario.path.waypoints);
     } else if (scenario.path.kind == PathKind::File) {
@@ -28,6 +42,18 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
                     .arg(m_model->dof()));
         }
         m_ruleGrid = torqueRuleGrid(*m_model, *m_path);
+        if (m_velocityLimit.size() == m_path->dof()) {
+            // qd = dq/du / T: the peak of |dq/du| over the path fixes the duration a limit needs.
+            const int n = m_path->dof();
+            Eigen::VectorXd q(n), dq(n), ddq(n), peak = Eigen::VectorXd::Zero(n);
+            constexpr int points = 2001;
+            for (int i = 0; i < points; ++i) {
+                m_path->stateInto(double(i) / (points - 1), q, dq, ddq);
+                peak = peak.cwiseMax(dq.cwiseAbs());
+            }
+            for (int j = 0; j < n; ++j)
+                m_speedDuration = std::max(m_speedDuration, peak[j] / m_velocityLimit[j]);
+        }
         return;
     }
     if (m_model->dof() != 2 || scenario.linkLengths.size() != 2) {
@@ -44,7 +70,7 @@ TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ru
     clearUpperVectorState();
     TorqueRuleResult rule =
         shortestDuration(m_ruleGrid, phiHat, m_scenario.torqueLimits, m_scenario.planningFraction);
-    rule.duration = std::max(rule.duration, m_shortestDuration);
+    rule.duration = std::max({rule.duration, m_shortestDuration, m_speedDuration});
     if (ruleOut)
         *ruleOut = rule;
     MotionTiming timing;
@@ -62,6 +88,9 @@ TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ru
     plan.torqueLimit = m_scenario.torqueLimits;
     plan.maxTrackingError = m_scenario.maxTrackingErrorDeg * M_PI / 180.0;
     plan.motionDuration = rule.duration;
+    plan.positionLower = m_positionLower;
+    plan.positionUpper = m_positionUpper;
+    plan.velocityLimit = m_velocityLimit;
     return plan;
 }
 

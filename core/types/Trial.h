@@ -21,6 +21,11 @@ struct TrialPlan
     Eigen::VectorXd torqueLimit;   ///< [N m] (n); commands saturate here
     double maxTrackingError = 0.0; ///< abort threshold on |q_d - q| [rad]
     double motionDuration = 0.0;   ///< T of the motion between the rests [s]
+    /// The joints' position limits [rad or m] and speed limits [rad/s or m/s] (n each; +-inf
+    /// where the robot has none); empty: no limits known (the paper's arm).
+    Eigen::VectorXd positionLower;
+    Eigen::VectorXd positionUpper;
+    Eigen::VectorXd velocityLimit;
 
     int samples() const { return desired.samples(); }
 };

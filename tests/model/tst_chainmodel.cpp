@@ -164,9 +164,9 @@ void TestChainModel::pathNotMovingAJoint_leavesItsTermsUnobservedAndKept()
     QVERIFY(update.rank < m);
     for (int i = 0; i < m; ++i) {
         const QString name = model.parameters()[i].name;
-        const bool elbowTerm = name.startsWith(QLatin1String("Ia₂")) ||
-                               name.startsWith(QLatin1String("fv₂")) ||
-                               name.startsWith(QLatin1String("fc₂"));
+        const bool elbowTerm = name.startsWith(QStringLiteral("Ia₂")) ||
+                               name.startsWith(QStringLiteral("fv₂")) ||
+                               name.startsWith(QStringLiteral("fc₂"));
         if (elbowTerm) {
             QVERIFY2(!update.observable[size_t(i)], qPrintable(name));
             LEARNID_COMPARE_NEAR(update.phi[i], prior[i], 1e-12);

@@ -12,7 +12,9 @@
 #include "session/CommissioningSession.h"
 #include "session/ConvergenceFigures.h"
 #include "session/EstimateConsistency.h"
+#include "session/SafetyCheck.h"
 #include "session/ScenarioRobot.h"
+#include "session/TrialPlanner.h"
 
 #include <QTest>
 
@@ -79,6 +81,8 @@ private slots:
     void doublePendulum_learnsThePathTorquesFromThePerturbedCad();
     void kukaLwr4_learnsThePathTorquesOfSevenAxes();
     void inconsistentEstimate_isReportedAndItsNearestConsistentOneKeepsThePathTorques();
+    void pathBeyondTheUrdfsJointLimits_isRefusedBeforeMotion();
+    void identifiability_namesWhatThePathCannotSee();
 };
 
 void TestChainSession::urdfScenario_takesLimitsEstimateAndTruthFromTheRobot()
@@ -200,6 +204,63 @@ void TestChainSession::
     const EstimateConsistency good = checkEstimateConsistency(*model, consistentPhi, path);
     QVERIFY(good.consistent);
     LEARNID_COMPARE_MATRIX(good.nearest, consistentPhi, 0.0);
+}
+
+void TestChainSession::pathBeyondTheUrdfsJointLimits_isRefusedBeforeMotion()
+{
+    // The PUMA 560's joint 1 turns +-160 deg (2.7925 rad, its URDF): a waypoint at 2.9 rad is
+    // refused, naming the joint; inside the limits the same check passes them.
+    Scenario s = doublePendulum();
+    s.model = QStringLiteral("puma560");
+    s.controller.kp = Eigen::VectorXd::Constant(6, 200.0);
+    s.controller.ki = Eigen::VectorXd::Constant(6, 10.0);
+    s.controller.kd = Eigen::VectorXd::Constant(6, 20.0);
+    const auto model = makeRobotModel(s.model, s.urdf);
+    Eigen::VectorXd far = Eigen::VectorXd::Zero(6);
+    far[0] = 2.9;
+    s.path.waypoints = {Eigen::VectorXd::Zero(6), far};
+    s = withRobotDefaults(s, *model);
+    const TrialPlan beyond = TrialPlanner(s, model).plan(s.initialParameters);
+    LEARNID_COMPARE_NEAR(beyond.positionUpper[0], 160.0 * M_PI / 180.0, 1e-4);
+    const SafetyVerdict refused = checkTrial(*model, s.initialParameters, beyond);
+    QVERIFY(!refused.withinJointLimits);
+    QVERIFY(!refused.passed());
+    QVERIFY2(refused.reason.startsWith(QLatin1String("joint 1 would reach ")) &&
+                 refused.reason.contains(QLatin1String("outside its limits -2.7925 to 2.7925")),
+             qPrintable(refused.reason));
+
+    far[0] = 2.7;
+    s.path.waypoints = {Eigen::VectorXd::Zero(6), far};
+    TrialPlan inside = TrialPlanner(s, model).plan(s.initialParameters);
+    QVERIFY(checkTrial(*model, s.initialParameters, inside).withinJointLimits);
+    // A speed limit below the planned peak speed of joint 1 is refused the same way.
+    const double peak = inside.desired.qd.row(0).cwiseAbs().maxCoeff();
+    inside.velocityLimit[0] = 0.9 * peak;
+    const SafetyVerdict tooFast = checkTrial(*model, s.initialParameters, inside);
+    QVERIFY2(tooFast.reason.startsWith(QLatin1String("joint 1 would move at ")) &&
+                 tooFast.reason.contains(QLatin1String("above its speed limit")),
+             qPrintable(tooFast.reason));
+}
+
+void TestChainSession::identifiability_namesWhatThePathCannotSee()
+{
+    // The double pendulum with its elbow held: the elbow's friction never acts (q2' = 0), so
+    // the path cannot see it; the shoulder's Coulomb friction it sees.
+    Scenario s = doublePendulum();
+    s.path.waypoints = {Eigen::Vector2d(0, 0.3), Eigen::Vector2d(1.0, 0.3),
+                        Eigen::Vector2d(-0.5, 0.3)};
+    const auto model = makeRobotModel(s.model, s.urdf);
+    const Scenario resolved = withRobotDefaults(s, *model);
+    const CommissioningSession session(resolved, model, makeSimulatedRobot(resolved, model));
+    const PathIdentifiability id = session.identifiability();
+    QCOMPARE(id.parameters, model->parameterCount());
+    QVERIFY(id.rank > 0 && id.rank < id.parameters);
+    QStringList unseen;
+    for (const int i : id.unseen())
+        unseen << model->parameters()[i].name;
+    QVERIFY2(unseen.contains(QStringLiteral("fc₂")), qPrintable(unseen.join(QLatin1Char(','))));
+    QVERIFY2(!unseen.contains(QStringLiteral("fc₁")), qPrintable(unseen.join(QLatin1Char(','))));
+    QVERIFY(id.describe(*model).join(QLatin1Char(' ')).contains(QStringLiteral("fc₂")));
 }
 
 QTEST_GUILESS_MAIN(TestChainSession)
