@@ -1681,12 +1681,12 @@
         <translation>die Momentenregel braucht eine positive Grenze pro Gelenk und einen positiven Anteil</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>gravity alone needs more than %1 % of a joint&apos;s torque limit</source>
-        <translation>die Schwerkraft allein braucht mehr als %1 % der Momentengrenze eines Gelenks</translation>
+        <location line="+15"/>
+        <source>gravity alone needs %1 N m at joint %2 on this path, more than %3 % of its %4 N m limit: no duration can meet the torque rule</source>
+        <translation>allein die Schwerkraft braucht auf dieser Bahn %1 N m an Gelenk %2, mehr als %3 % seiner Grenze von %4 N m: keine Dauer kann die Momentenregel erfüllen</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
         <source>the path needs no torque: check its length and the parameters</source>
         <translation>die Bahn braucht kein Moment: Länge und Parameter prüfen</translation>
     </message>
@@ -2921,7 +2921,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+60"/>
+        <source>%1 is a URDF robot (%2): the window runs the paper&apos;s 2-link arm; run this scenario with learnid-cli run --scenario %1</source>
+        <translation>%1 ist ein URDF-Roboter (%2): das Fenster führt den Zweigelenkarm des Artikels aus; dieses Szenario mit learnid-cli run --scenario %1 ausführen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Scenario loaded: %1</source>
         <translation>Szenario geladen: %1</translation>
     </message>
@@ -2952,7 +2957,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Keine Versuchs-CSV geschrieben: noch kein Versuch gelaufen</translation>
     </message>
     <message numerus="yes">
-        <location line="-131"/>
+        <location line="-138"/>
         <source>%n trial CSV file(s) written to %1</source>
         <translation>
             <numerusform>%n Versuchs-CSV-Datei nach %1 geschrieben</numerusform>
@@ -2965,7 +2970,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Versuchs-CSV nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+144"/>
         <source>Plot not written: this build has no SVG support (Qt6::Svg); export as PNG instead</source>
         <translation>Diagramm nicht geschrieben: diese Version kann kein SVG (Qt6::Svg); bitte als PNG exportieren</translation>
     </message>

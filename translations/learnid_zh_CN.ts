@@ -1681,12 +1681,12 @@
         <translation>力矩规则需要每个关节一个正的限值和一个正的比例</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>gravity alone needs more than %1 % of a joint&apos;s torque limit</source>
-        <translation>仅重力就需要超过某关节力矩限值的 %1 %</translation>
+        <location line="+15"/>
+        <source>gravity alone needs %1 N m at joint %2 on this path, more than %3 % of its %4 N m limit: no duration can meet the torque rule</source>
+        <translation>仅重力就需要在该路径上于关节 %2 施加 %1 N m，超过其 %4 N m 限值的 %3 %：任何时长都无法满足力矩规则</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
         <source>the path needs no torque: check its length and the parameters</source>
         <translation>该路径不需要力矩：请检查其长度和参数</translation>
     </message>
@@ -2921,7 +2921,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+60"/>
+        <source>%1 is a URDF robot (%2): the window runs the paper&apos;s 2-link arm; run this scenario with learnid-cli run --scenario %1</source>
+        <translation>%1 是 URDF 机器人（%2）：窗口只运行论文中的二连杆臂；请用 learnid-cli run --scenario %1 运行此场景</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Scenario loaded: %1</source>
         <translation>场景已加载：%1</translation>
     </message>
@@ -2952,7 +2957,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>未写入试验 CSV：尚未运行任何试验</translation>
     </message>
     <message numerus="yes">
-        <location line="-131"/>
+        <location line="-138"/>
         <source>%n trial CSV file(s) written to %1</source>
         <translation>
             <numerusform>已将 %n 个试验 CSV 文件写入 %1</numerusform>
@@ -2964,7 +2969,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>试验 CSV 未写入：%1</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+144"/>
         <source>Plot not written: this build has no SVG support (Qt6::Svg); export as PNG instead</source>
         <translation>图表未写入：此版本不支持 SVG（Qt6::Svg），请导出为 PNG</translation>
     </message>

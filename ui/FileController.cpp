@@ -138,6 +138,13 @@ void FileController::openScenarioFrom(const QString &path)
     try {
         const Scenario scenario = readScenarioFile(path);
         validateScenario(scenario);
+        if (scenario.model != QLatin1String("paper-2link")) {
+            // The window's editors, plots and tables show the paper's arm and its line; any
+            // serial arm runs with learnid-cli until they show n joints.
+            throw Error(tr("%1 is a URDF robot (%2): the window runs the paper's 2-link arm; "
+                           "run this scenario with learnid-cli run --scenario %1")
+                            .arg(QDir::toNativeSeparators(path), scenario.model));
+        }
         remember(path);
         emit scenarioLoaded(scenario);
         emit finished(tr("Scenario loaded: %1").arg(QDir::toNativeSeparators(path)), true);

@@ -92,10 +92,16 @@ TorqueRuleResult shortestDuration(const TorqueRuleGrid &grid, const Eigen::Vecto
     const Eigen::VectorXd limit = fraction * torqueLimit;
     const Eigen::VectorXd staticRatio = g.cwiseAbs().rowwise().maxCoeff().cwiseQuotient(limit);
     if ((staticRatio.array() >= 1.0).any()) {
-        throw Error(
-            QCoreApplication::translate(
-                "TorqueRule", "gravity alone needs more than %1 % of a joint's torque limit")
-                .arg(fraction * 100.0));
+        Eigen::Index joint = 0;
+        staticRatio.maxCoeff(&joint);
+        throw Error(QCoreApplication::translate("TorqueRule",
+                                                "gravity alone needs %1 N m at joint %2 on this "
+                                                "path, more than %3 % of its %4 N m limit: no "
+                                                "duration can meet the torque rule")
+                        .arg(staticRatio[joint] * limit[joint], 0, 'f', 2)
+                        .arg(joint + 1)
+                        .arg(fraction * 100.0)
+                        .arg(torqueLimit[joint], 0, 'g', 4));
     }
     const Eigen::VectorXd inertialRatio = a.cwiseAbs().rowwise().maxCoeff().cwiseQuotient(limit);
     if (!inertialRatio.allFinite() || inertialRatio.maxCoeff() <= 0.0) {

@@ -69,12 +69,12 @@ PathIdentifiability pathIdentifiability(const RobotModel &model, const JointTraj
     }
     // The SVD of the triangular factor: the same singular values and right vectors as the
     // tall rows', at m x m cost.
-    const Eigen::MatrixXd r =
-        rows.rows() > m ? Eigen::MatrixXd(Eigen::HouseholderQR<Eigen::MatrixXd>(rows)
-                                              .matrixQR()
-                                              .topRows(m)
-                                              .triangularView<Eigen::Upper>())
-                        : rows;
+    const Eigen::MatrixXd r = rows.rows() > m
+                                  ? Eigen::MatrixXd(Eigen::HouseholderQR<Eigen::MatrixXd>(rows)
+                                                        .matrixQR()
+                                                        .topRows(m)
+                                                        .triangularView<Eigen::Upper>())
+                                  : rows;
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(r, Eigen::ComputeThinV);
     const Eigen::VectorXd &sigma = svd.singularValues();
     if (sigma.size() == 0 || !(sigma[0] > 0.0))

@@ -14,8 +14,8 @@ namespace learnid {
 /// value is above rankTolerance times the largest, as the laws decide it (ObservableUpdate.h).
 struct PathIdentifiability
 {
-    int parameters = 0; ///< m
-    int rank = 0;       ///< observed directions
+    int parameters = 0;     ///< m
+    int rank = 0;           ///< observed directions
     double condition = 0.0; ///< largest / smallest observed singular value
     /// Per parameter: the share of its unit direction inside the observed directions, 0 (the
     /// path cannot see it at all) to 1 (it lies in what the path observes).

@@ -83,6 +83,7 @@ private slots:
     void inconsistentEstimate_isReportedAndItsNearestConsistentOneKeepsThePathTorques();
     void pathBeyondTheUrdfsJointLimits_isRefusedBeforeMotion();
     void identifiability_namesWhatThePathCannotSee();
+    void gravityAloneBeyondTheLimit_isRefusedWithTheFigures();
 };
 
 void TestChainSession::urdfScenario_takesLimitsEstimateAndTruthFromTheRobot()
@@ -261,6 +262,30 @@ void TestChainSession::identifiability_namesWhatThePathCannotSee()
     QVERIFY2(unseen.contains(QStringLiteral("fc₂")), qPrintable(unseen.join(QLatin1Char(','))));
     QVERIFY2(!unseen.contains(QStringLiteral("fc₁")), qPrintable(unseen.join(QLatin1Char(','))));
     QVERIFY(id.describe(*model).join(QLatin1Char(' ')).contains(QStringLiteral("fc₂")));
+}
+
+void TestChainSession::gravityAloneBeyondTheLimit_isRefusedWithTheFigures()
+{
+    // The double pendulum held out horizontally: its shoulder must hold m1 g r1 + m2 g (l1 + r2)
+    // (the lab's figures, written out here), more than half of a 1 N m limit at any speed.
+    Scenario s = doublePendulum();
+    s.path.waypoints = {Eigen::Vector2d(M_PI / 2, 0), Eigen::Vector2d(M_PI / 2 + 0.1, 0)};
+    s.torqueLimits = Eigen::Vector2d(1, 1);
+    const auto model = makeRobotModel(s.model, s.urdf);
+    s = withRobotDefaults(s, *model);
+    const double holding =
+        0.6416937799349799 * 9.81 * 0.2 + 0.563935954099688 * 9.81 * (0.2 + 0.3212669909674605);
+    try {
+        TrialPlanner(s, model).plan(s.initialParameters);
+        QFAIL("a path gravity alone cannot hold was planned");
+    } catch (const Error &e) {
+        QVERIFY2(e.message().startsWith(QLatin1String("gravity alone needs ")) &&
+                     e.message().contains(QLatin1String("at joint 1 on this path, more than 50 % "
+                                                        "of its 1 N m limit")),
+                 qPrintable(e.message()));
+        const double stated = e.message().section(QLatin1Char(' '), 3, 3).toDouble();
+        LEARNID_COMPARE_NEAR(stated, holding, 0.02 * holding); // the CAD's figure, at +-0.05 rad
+    }
 }
 
 QTEST_GUILESS_MAIN(TestChainSession)
