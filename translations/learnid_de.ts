@@ -318,12 +318,12 @@
 <context>
     <name>CartesianLine</name>
     <message>
-        <location filename="../core/motion/CartesianLine.cpp" line="+54"/>
+        <location filename="../core/motion/MotionTiming.cpp" line="+15"/>
         <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
         <translation>ungültiger Zeitablauf: Abtastzeit und Dauer müssen positiv sein, Ruhezeiten nicht negativ</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../core/motion/CartesianLine.cpp" line="+53"/>
         <source>a planar line needs 2 joints</source>
         <translation>eine ebene Gerade braucht 2 Gelenke</translation>
     </message>
@@ -783,11 +783,6 @@
         <location line="+33"/>
         <source>joint path: the duration must be positive and finite, the time finite, and the state have %1 joints</source>
         <translation>Gelenkbahn: die Dauer muss positiv und endlich sein, die Zeit endlich, und der Zustand muss %1 Gelenke haben</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
-        <translation>ungültiger Zeitablauf: Abtastzeit und Dauer müssen positiv sein, Ruhezeiten nicht negativ</translation>
     </message>
 </context>
 <context>

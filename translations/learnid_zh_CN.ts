@@ -318,12 +318,12 @@
 <context>
     <name>CartesianLine</name>
     <message>
-        <location filename="../core/motion/CartesianLine.cpp" line="+54"/>
+        <location filename="../core/motion/MotionTiming.cpp" line="+15"/>
         <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
         <translation>时序无效：采样周期和持续时间必须为正，静止时间不得为负</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../core/motion/CartesianLine.cpp" line="+53"/>
         <source>a planar line needs 2 joints</source>
         <translation>平面直线需要 2 个关节</translation>
     </message>
@@ -783,11 +783,6 @@
         <location line="+33"/>
         <source>joint path: the duration must be positive and finite, the time finite, and the state have %1 joints</source>
         <translation>关节路径：持续时间必须为正且有限，时间必须有限，状态必须有 %1 个关节</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
-        <translation>时序无效：采样周期和持续时间必须为正，静止时间不得为负</translation>
     </message>
 </context>
 <context>

@@ -49,47 +49,17 @@ JointState lineStateAt(const Kinematics &kinematics, const CartesianLine &line, 
 JointTrajectory planLine(const Kinematics &kinematics, const CartesianLine &line,
                          const MotionTiming &timing)
 {
-    if (!(timing.samplePeriod > 0.0) || !(timing.motionDuration > 0.0) || timing.restBefore < 0.0 ||
-        timing.restAfter < 0.0) {
-        throw Error(QCoreApplication::translate(
-            "CartesianLine", "invalid timing: sample period and duration must be positive, "
-                             "rests non-negative"));
-    }
-    const double total = timing.restBefore + timing.motionDuration + timing.restAfter;
-    const int n = int(std::floor(total / timing.samplePeriod + 1e-9)) + 1;
-    const int dof = kinematics.dof();
-
-    JointTrajectory traj;
-    traj.samplePeriod = timing.samplePeriod;
-    traj.q.resize(dof, n);
-    traj.qd.resize(dof, n);
-    traj.qdd.resize(dof, n);
-
-    if (dof != 2)
+    if (kinematics.dof() != 2)
         throw Error(QCoreApplication::translate("CartesianLine", "a planar line needs 2 joints"));
     Eigen::Vector2d near = kinematics.inverse(line.start, Eigen::VectorXd());
     const Eigen::Vector2d dir = line.direction();
-    double previousT = -1.0;
-    for (int k = 0; k < n; ++k) {
-        const double t = k * timing.samplePeriod - timing.restBefore;
-        const double clamped = std::clamp(t, 0.0, timing.motionDuration);
-        if (clamped == previousT) {
-            // At rest: the same point as the previous sample (its state, computed again from
-            // the same inputs, would be the same numbers).
-            traj.q.col(k) = traj.q.col(k - 1);
-        } else {
-            lineStateAlong(kinematics, line, dir, timing.motionDuration, clamped, near,
-                           traj.q.col(k), traj.qd.col(k), traj.qdd.col(k));
-        }
-        previousT = clamped;
-        // At rest the time scaling is exactly zero; clamping t makes that so without rounding.
-        if (!(t > 0.0 && t < timing.motionDuration)) {
-            traj.qd.col(k).setZero();
-            traj.qdd.col(k).setZero();
-        }
-        near = traj.q.col(k);
-    }
-    return traj;
+    return sampleMotion(2, timing,
+                        [&](double t, Eigen::Ref<Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> qd,
+                            Eigen::Ref<Eigen::VectorXd> qdd) {
+                            lineStateAlong(kinematics, line, dir, timing.motionDuration, t, near, q,
+                                           qd, qdd);
+                            near = q;
+                        });
 }
 
 } // namespace learnid

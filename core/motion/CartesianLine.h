@@ -1,6 +1,7 @@
 #pragma once
 
 #include "motion/Kinematics.h"
+#include "motion/MotionTiming.h"
 #include "types/CartesianLine.h"
 #include "types/JointTrajectory.h"
 
@@ -24,15 +25,6 @@ JointState lineStateAt(const Kinematics &kinematics, const CartesianLine &line, 
 void lineStateInto(const Kinematics &kinematics, const CartesianLine &line, double T, double t,
                    const Eigen::Ref<const Eigen::VectorXd> &near, Eigen::Ref<Eigen::VectorXd> q,
                    Eigen::Ref<Eigen::VectorXd> qd, Eigen::Ref<Eigen::VectorXd> qdd);
-
-/// Timing of a trial: rest, motion of duration T, rest; sampled every samplePeriod.
-struct MotionTiming
-{
-    double motionDuration = 1.0; ///< T [s]
-    double restBefore = 0.1;     ///< [s]
-    double restAfter = 0.5;      ///< [s]
-    double samplePeriod = 0.002; ///< Ts [s]
-};
 
 /// The sampled joint trajectory of the line with rests, all samples t_k <= total time.
 /// Throws Error when the line leaves the workspace or passes a singularity.

@@ -216,39 +216,11 @@ void jointPathStateInto(const JointPath &path, double T, double t, Eigen::Ref<Ei
 
 JointTrajectory planJointPath(const JointPath &path, const MotionTiming &timing)
 {
-    // The same timing rule and sample count as planLine() (CartesianLine.cpp).
-    if (!(timing.samplePeriod > 0.0) || !(timing.motionDuration > 0.0) || timing.restBefore < 0.0 ||
-        timing.restAfter < 0.0) {
-        throw Error(Text::tr("invalid timing: sample period and duration must be positive, rests "
-                             "non-negative"));
-    }
-    const double total = timing.restBefore + timing.motionDuration + timing.restAfter;
-    const int samples = int(std::floor(total / timing.samplePeriod + 1e-9)) + 1;
-    const int dof = path.dof();
-
-    JointTrajectory traj;
-    traj.samplePeriod = timing.samplePeriod;
-    traj.q.resize(dof, samples);
-    traj.qd.resize(dof, samples);
-    traj.qdd.resize(dof, samples);
-    double previousT = -1.0;
-    for (int k = 0; k < samples; ++k) {
-        const double t = k * timing.samplePeriod - timing.restBefore;
-        const double clamped = std::clamp(t, 0.0, timing.motionDuration);
-        if (clamped == previousT) {
-            traj.q.col(k) = traj.q.col(k - 1); // at rest: the previous sample's point
-        } else {
-            jointPathStateInto(path, timing.motionDuration, clamped, traj.q.col(k), traj.qd.col(k),
-                               traj.qdd.col(k));
-        }
-        previousT = clamped;
-        // Before and after the motion (and on its first and last instant) the arm is at rest.
-        if (!(t > 0.0 && t < timing.motionDuration)) {
-            traj.qd.col(k).setZero();
-            traj.qdd.col(k).setZero();
-        }
-    }
-    return traj;
+    return sampleMotion(path.dof(), timing,
+                        [&](double t, Eigen::Ref<Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> qd,
+                            Eigen::Ref<Eigen::VectorXd> qdd) {
+                            jointPathStateInto(path, timing.motionDuration, t, q, qd, qdd);
+                        });
 }
 
 } // namespace learnid
