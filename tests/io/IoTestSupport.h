@@ -3,6 +3,7 @@
 // Test support for the io tests: bit-exact comparisons (QCOMPARE on doubles is fuzzy) and the
 // message of an expected learnid::Error.
 
+#include "../support/ErrorOf.h"
 #include "model/Error.h"
 
 #include <Eigen/Core>
@@ -27,16 +28,7 @@ inline bool bitEqual(const Eigen::MatrixXd &a, const Eigen::MatrixXd &b)
     return true;
 }
 
-/// The message of the learnid::Error that f throws, or "<no error>".
-template <typename F> QString errorOf(F &&f)
-{
-    try {
-        f();
-    } catch (const Error &e) {
-        return e.message();
-    }
-    return QStringLiteral("<no error>");
-}
+using learnid::test::errorOf;
 
 } // namespace learnid::test
 

@@ -1,6 +1,7 @@
 // Scenario format 2: URDF robots, joint paths and the simulated real robot. Round trips, paths
 // relative to the scenario file, version 1 still read, and every bad input named by its key.
 
+#include "../support/ErrorOf.h"
 #include "../support/NumericAssert.h"
 #include "io/ScenarioFile.h"
 #include "model/Error.h"
@@ -23,14 +24,9 @@ void writeText(const QString &path, const QByteArray &text)
     file.write(text);
 }
 
-QString errorOf(const QByteArray &json, const QString &directory = {})
+QString errorOf(const QByteArray &json)
 {
-    try {
-        scenarioFromJson(json, source, directory);
-    } catch (const Error &e) {
-        return e.message();
-    }
-    return QStringLiteral("<no error>");
+    return test::errorOf([&] { scenarioFromJson(json, source); });
 }
 
 const QByteArray pendulum = R"({"robot": {"model": "double-pendulum"},

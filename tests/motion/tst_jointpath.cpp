@@ -1,3 +1,4 @@
+#include "../support/ErrorOf.h"
 #include "../support/NumericAssert.h"
 #include "model/Error.h"
 #include "model/TwoLinkArm.h"
@@ -99,16 +100,7 @@ Eigen::Vector2d centralDifferenceErrors(const JointPath &path, const std::vector
     return worst;
 }
 
-// The message of the Error that f throws, or "<no error>".
-template <typename F> QString errorOf(F &&f)
-{
-    try {
-        f();
-    } catch (const Error &e) {
-        return e.message();
-    }
-    return QStringLiteral("<no error>");
-}
+using test::errorOf;
 
 const TwoLinkArm arm;
 const Eigen::Vector3d phiTrue(20.0, 5.0, 8.0); // docs/design.md §2
