@@ -17,9 +17,9 @@ struct MotionTiming
 };
 
 /// The joint state at motion time t in [0, T] into q, qd, qdd (n each).
-using MotionState = std::function<void(double t, Eigen::Ref<Eigen::VectorXd> q,
-                                       Eigen::Ref<Eigen::VectorXd> qd,
-                                       Eigen::Ref<Eigen::VectorXd> qdd)>;
+using MotionState =
+    std::function<void(double t, Eigen::Ref<Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> qd,
+                       Eigen::Ref<Eigen::VectorXd> qdd)>;
 
 /// The sampled trajectory of a motion with its rests, every path's one rule: samples at
 /// t_k = k Ts, k = 0 .. floor(total / Ts), total = restBefore + T + restAfter; motion time
