@@ -88,10 +88,21 @@ Eigen::MatrixXd BaseParameters::baseMatrix() const
 Eigen::VectorXd BaseParameters::baseFromStandard(const Eigen::VectorXd &pi) const
 {
     Eigen::VectorXd phi(baseCount());
-    for (size_t i = 0; i < m_independent.size(); ++i)
+    Eigen::VectorXd size(baseCount()); // the magnitude of each combination's terms
+    for (size_t i = 0; i < m_independent.size(); ++i) {
         phi[Eigen::Index(i)] = pi[m_independent[i]];
-    for (size_t d = 0; d < m_dependent.size(); ++d)
+        size[Eigen::Index(i)] = std::abs(pi[m_independent[i]]);
+    }
+    for (size_t d = 0; d < m_dependent.size(); ++d) {
         phi += m_beta.col(Eigen::Index(d)) * pi[m_dependent[d]];
+        size += m_beta.col(Eigen::Index(d)).cwiseAbs() * std::abs(pi[m_dependent[d]]);
+    }
+    // Terms that cancel (m cy3 + m cy4 of two mirrored links) leave a rounding residue of 1e-17
+    // instead of 0; the learning laws scale each parameter by its value, so a residue would never
+    // be learned. A sum below 1e-12 of its terms' size is that residue: it is 0.
+    for (Eigen::Index i = 0; i < phi.size(); ++i)
+        if (std::abs(phi[i]) <= 1e-12 * size[i])
+            phi[i] = 0.0;
     return phi;
 }
 

@@ -43,6 +43,9 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
         }
         m_ruleGrid = torqueRuleGrid(*m_model, *m_path);
         if (m_velocityLimit.size() == m_path->dof()) {
+            // 99 %: the sampled trajectory's peak lies between the grid's points, and the
+            // pre-trial check refuses a speed above the limit by any rounding.
+            constexpr double speedShare = 0.99;
             // qd = dq/du / T: the peak of |dq/du| over the path fixes the duration a limit needs.
             const int n = m_path->dof();
             Eigen::VectorXd q(n), dq(n), ddq(n), peak = Eigen::VectorXd::Zero(n);
@@ -52,7 +55,8 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
                 peak = peak.cwiseMax(dq.cwiseAbs());
             }
             for (int j = 0; j < n; ++j)
-                m_speedDuration = std::max(m_speedDuration, peak[j] / m_velocityLimit[j]);
+                m_speedDuration =
+                    std::max(m_speedDuration, peak[j] / (speedShare * m_velocityLimit[j]));
         }
         return;
     }

@@ -16,7 +16,7 @@ namespace learnid {
 /// (re-planned before every trial), the sampled trajectory and the feedforward. A path from a
 /// file never runs faster than it was recorded: its duration is the longer of the recording's
 /// and the torque rule's. A joint path of a robot with speed limits (URDF) also takes at least
-/// the duration at which every joint's peak speed is its limit.
+/// the duration at which every joint's peak speed is 99 % of its limit.
 class TrialPlanner
 {
 public:
@@ -40,8 +40,8 @@ private:
     std::unique_ptr<JointPath> m_path;
     double m_shortestDuration = 0.0; ///< [s] a recorded path's own duration
     Eigen::VectorXd m_positionLower, m_positionUpper, m_velocityLimit; ///< a URDF robot's
-    /// [s] the shortest duration keeping every joint's peak speed within its speed limit (0
-    /// without limits)
+    /// [s] the shortest duration keeping every joint's peak speed within 99 % of its speed limit
+    /// (0 without limits)
     double m_speedDuration = 0.0;
     TorqueRuleGrid m_ruleGrid; ///< the line's geometry, computed once
 };

@@ -66,6 +66,7 @@ class TestChainModel : public QObject
 private slots:
     void baseRegressor_reproducesStandardTorquesForAnyParameters();
     void baseParameters_roundTripThroughTheCadPrior();
+    void cancellingTerms_giveAnExactZero();
     void paperArmUrdf_equalsEquation21AfterTheChangeOfAngles();
     void paperArmUrdf_baseParametersAreABAndC();
     void pathNotMovingAJoint_leavesItsTermsUnobservedAndKept();
@@ -106,6 +107,34 @@ void TestChainModel::baseParameters_roundTripThroughTheCadPrior()
     // What the base parameters do not fix stays at the CAD value.
     for (const int d : model.base().dependent())
         LEARNID_COMPARE_NEAR(pi[d], model.cadStandard()[d], 0.0);
+}
+
+void TestChainModel::cancellingTerms_giveAnExactZero()
+{
+    // The LWR4+'s links 3 and 4 carry their centres of mass at y = +0.06 and -0.06 m with the
+    // same mass: m cy3 + m cy4 is 0 in the CAD model, exactly, not a rounding residue (which
+    // the learning laws, scaling each parameter by its value, would never move).
+    const QString urdf = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
+    if (urdf.isEmpty())
+        QSKIP(qPrintable(test::sharedDataMissing()));
+    const ChainModel model(readUrdfChain(urdf), allTerms(), QStringLiteral("lwr4"));
+    const Eigen::VectorXd phi = model.baseFromStandard(model.cadStandard());
+    int found = 0;
+    for (int i = 0; i < model.parameterCount(); ++i) {
+        if (model.parameters()[i].name == QStringLiteral("m·cy₃ + m·cy₄")) {
+            QCOMPARE(phi[i], 0.0);
+            ++found;
+        }
+    }
+    QCOMPARE(found, 1);
+    // A sum that does not cancel is kept, however small against other parameters.
+    Eigen::VectorXd pi = model.cadStandard();
+    pi[22] += 1e-9; // m cy of link 3
+    bool kept = false;
+    for (int i = 0; i < model.parameterCount(); ++i)
+        if (model.parameters()[i].name == QStringLiteral("m·cy₃ + m·cy₄"))
+            kept = std::abs(model.baseFromStandard(pi)[i] - 1e-9) < 1e-15;
+    QVERIFY(kept);
 }
 
 void TestChainModel::paperArmUrdf_equalsEquation21AfterTheChangeOfAngles()
