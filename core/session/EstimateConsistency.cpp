@@ -2,9 +2,9 @@
 
 #include "model/ChainModel.h"
 #include "model/Error.h"
+#include "session/PathIdentifiability.h"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/QR>
 #include <QCoreApplication>
 #include <algorithm>
 
@@ -21,23 +21,6 @@ constexpr double eigenvalueTolerance =
     1e-12;                           ///< relative to a link's largest (PhysicalConsistency.h)
 constexpr int maxPathSamples = 2000; ///< path rows used to weight the projection
 constexpr double priorShare = 1e-6; ///< the CAD prior's weight against the path rows, per parameter
-
-// The path's regressor rows reduced to R with ||W_path x|| = ||R x|| (r x r, or fewer rows).
-Eigen::MatrixXd pathFactor(const RobotModel &model, const JointTrajectory &path)
-{
-    const int n = model.dof();
-    const int m = model.parameterCount();
-    const int step = std::max(1, path.samples() / maxPathSamples);
-    const int used = (path.samples() + step - 1) / step;
-    Eigen::MatrixXd rows(Eigen::Index(used) * n, m);
-    for (int k = 0, i = 0; k < path.samples(); k += step, ++i)
-        model.regressor(path.q.col(k), path.qd.col(k), path.qdd.col(k),
-                        rows.middleRows(Eigen::Index(i) * n, n));
-    if (rows.rows() <= m)
-        return rows;
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(rows);
-    return qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
-}
 
 // The CAD model as the prior, each link made a real body where it is not (published data are
 // not always: a link whose mass never acts has none): its pseudo-inertia's eigenvalues floored
@@ -81,7 +64,7 @@ EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eige
     if (out.consistent || path.samples() == 0)
         return out;
     try {
-        const Eigen::MatrixXd r = pathFactor(model, path);
+        const Eigen::MatrixXd r = pathRegressorFactor(model, path, maxPathSamples);
         const Eigen::MatrixXd k = chain->base().baseMatrix();
         const Eigen::MatrixXd a = r * k;
         const Eigen::VectorXd b = r * phi;

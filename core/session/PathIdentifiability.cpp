@@ -45,36 +45,40 @@ QStringList PathIdentifiability::describe(const RobotModel &model) const
     return lines;
 }
 
-PathIdentifiability pathIdentifiability(const RobotModel &model, const JointTrajectory &path,
-                                        const Eigen::VectorXd &phi, double rankTolerance)
+Eigen::MatrixXd pathRegressorFactor(const RobotModel &model, const JointTrajectory &path,
+                                    int maxSamples)
 {
-    PathIdentifiability out;
     const int n = model.dof();
     const int m = model.parameterCount();
-    out.parameters = m;
-    out.observedShare.assign(size_t(m), 0.0);
-    if (path.samples() == 0 || phi.size() != m)
-        return out;
     const int step = std::max(1, path.samples() / maxSamples);
     const int used = (path.samples() + step - 1) / step;
     Eigen::MatrixXd rows(Eigen::Index(used) * n, m);
     for (int k = 0, i = 0; k < path.samples(); k += step, ++i)
         model.regressor(path.q.col(k), path.qd.col(k), path.qdd.col(k),
                         rows.middleRows(Eigen::Index(i) * n, n));
-    // The laws' scaling: by the estimate, or to unit norm where it is 0.
-    const Eigen::VectorXd norms = rows.colwise().norm();
+    if (rows.rows() <= m)
+        return rows;
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(rows);
+    return qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
+}
+
+PathIdentifiability pathIdentifiability(const RobotModel &model, const JointTrajectory &path,
+                                        const Eigen::VectorXd &phi, double rankTolerance)
+{
+    PathIdentifiability out;
+    const int m = model.parameterCount();
+    out.parameters = m;
+    out.observedShare.assign(size_t(m), 0.0);
+    if (path.samples() == 0 || phi.size() != m)
+        return out;
+    // The laws' scaling, by the estimate or to unit norm where it is 0, applied to the factor:
+    // (W D)^T (W D) = D R^T R D, so R D has W D's singular values and right vectors.
+    Eigen::MatrixXd r = pathRegressorFactor(model, path, maxSamples);
+    const Eigen::VectorXd norms = r.colwise().norm();
     for (int i = 0; i < m; ++i) {
         const double s = phi[i] != 0.0 ? std::abs(phi[i]) : (norms[i] > 0.0 ? 1.0 / norms[i] : 1.0);
-        rows.col(i) *= s;
+        r.col(i) *= s;
     }
-    // The SVD of the triangular factor: the same singular values and right vectors as the
-    // tall rows', at m x m cost.
-    const Eigen::MatrixXd r = rows.rows() > m
-                                  ? Eigen::MatrixXd(Eigen::HouseholderQR<Eigen::MatrixXd>(rows)
-                                                        .matrixQR()
-                                                        .topRows(m)
-                                                        .triangularView<Eigen::Upper>())
-                                  : rows;
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(r, Eigen::ComputeThinV);
     const Eigen::VectorXd &sigma = svd.singularValues();
     if (sigma.size() == 0 || !(sigma[0] > 0.0))

@@ -28,6 +28,12 @@ struct PathIdentifiability
     QStringList describe(const RobotModel &model) const;
 };
 
+/// The regressor rows of path (every sample's W, up to maxSamples samples evenly spread)
+/// reduced to their triangular factor R: ||W_path x|| = ||R x|| for every x (m x m; the rows
+/// themselves when there are no more than m). Column norms and singular values are W_path's.
+Eigen::MatrixXd pathRegressorFactor(const RobotModel &model, const JointTrajectory &path,
+                                    int maxSamples);
+
 /// The identifiability of path for model at the estimate phi (m). Uses up to 4000 samples of
 /// the path, evenly spread.
 PathIdentifiability pathIdentifiability(const RobotModel &model, const JointTrajectory &path,

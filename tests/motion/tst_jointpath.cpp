@@ -1,12 +1,9 @@
 #include "../support/ErrorOf.h"
 #include "../support/NumericAssert.h"
 #include "model/Error.h"
-#include "model/TwoLinkArm.h"
 #include "motion/JointPath.h"
-#include "motion/TorqueRule.h"
 #include "motion/TwoLinkKinematics.h"
 
-#include <QElapsedTimer>
 #include <QTest>
 #include <algorithm>
 #include <cmath>
@@ -102,11 +99,6 @@ Eigen::Vector2d centralDifferenceErrors(const JointPath &path, const std::vector
 
 using test::errorOf;
 
-const TwoLinkArm arm;
-const Eigen::Vector3d phiTrue(20.0, 5.0, 8.0); // docs/design.md §2
-const Eigen::Vector2d torqueLimit(8.0, 4.0);
-constexpr double fraction = 0.8;
-
 } // namespace
 
 class TestJointPath : public QObject
@@ -121,17 +113,12 @@ private slots:
     void waypointPath_badInputs_throwNamingWaypointAndJoint();
     void sampledPath_interpolatesSamplesAndApproximatesDerivatives();
     void sampledPath_isClampedC2RestsOutsideAndMatchesCentralDifferences();
-    void sampledPath_tenThousandSamples_buildFast();
+    void sampledPath_tenThousandSamples_interpolate();
     void sampledPath_badInputs_throwNamingSampleAndJoint();
     void jointPathStateInto_scalesDerivativesByDuration();
-    void planJointPath_sampleCount_asPlanLine_data();
     void planJointPath_sampleCount_asPlanLine();
     void planJointPath_samplesFollowPathAndRestAtItsEnds();
     void planJointPath_invalidTiming_throws();
-    void torqueRuleGrid_ofJointPath_equalsDirectRegressor();
-    void torqueRuleGrid_ofSampledLine_approximatesLineGrid();
-    void shortestDuration_ofJointPathWithoutGravity_isClosedForm();
-    void torqueRuleGrid_pathWithOtherJointCount_throws();
 };
 
 // The boundaries are the cumulative sqrt shares, computed here from the waypoints.
@@ -278,16 +265,13 @@ void TestJointPath::sampledPath_isClampedC2RestsOutsideAndMatchesCentralDifferen
              qPrintable(QStringLiteral("%1 %2").arg(err[0]).arg(err[1])));
 }
 
-// A dense solve would take minutes for 10^4 samples; the tridiagonal one takes milliseconds.
-void TestJointPath::sampledPath_tenThousandSamples_buildFast()
+// A long recording (a dense solve would take minutes; the tridiagonal one milliseconds).
+void TestJointPath::sampledPath_tenThousandSamples_interpolate()
 {
     Eigen::VectorXd t;
     Eigen::MatrixXd q;
     smoothSamples(10000, t, q);
-    QElapsedTimer timer;
-    timer.start();
     const SampledPath path(t, q);
-    QVERIFY2(timer.elapsed() < 1000, qPrintable(QString::number(timer.elapsed())));
     Eigen::Vector2d qv, qd, qdd;
     jointPathStateInto(path, D, 0.77, qv, qd, qdd);
     LEARNID_COMPARE_MATRIX(qv, smoothQ(0.77), 1e-12);
@@ -337,36 +321,18 @@ void TestJointPath::jointPathStateInto_scalesDerivativesByDuration()
     QVERIFY_THROWS_EXCEPTION(Error, jointPathStateInto(path, T, NAN, q, qd, qdd));
 }
 
-void TestJointPath::planJointPath_sampleCount_asPlanLine_data()
-{
-    QTest::addColumn<double>("duration");
-    QTest::addColumn<double>("restBefore");
-    QTest::addColumn<double>("restAfter");
-    QTest::addColumn<double>("period");
-    QTest::addColumn<int>("samples");
-    QTest::newRow("paper timing, exact multiple") << 1.0 << 0.1 << 0.5 << 0.002 << 801;
-    QTest::newRow("T = 4.93 s") << 4.93 << 0.1 << 0.5 << 0.002 << 2766;
-    QTest::newRow("not a multiple") << 1.0 << 0.1 << 0.5 << 0.003 << 534;
-    QTest::newRow("no rests") << 0.5 << 0.0 << 0.0 << 0.002 << 251;
-    QTest::newRow("period longer than total") << 0.01 << 0.0 << 0.0 << 0.02 << 1;
-}
-
 void TestJointPath::planJointPath_sampleCount_asPlanLine()
 {
-    QFETCH(double, duration);
-    QFETCH(double, restBefore);
-    QFETCH(double, restAfter);
-    QFETCH(double, period);
-    QFETCH(int, samples);
-    const MotionTiming timing{duration, restBefore, restAfter, period};
+    // Both sample through sampleMotion; its count rule is tst_cartesianline's data-driven test.
+    const MotionTiming timing{4.93, 0.1, 0.5, 0.002};
     const JointTrajectory traj = planJointPath(WaypointPath(threeJointWaypoints()), timing);
-    QCOMPARE(traj.samples(), samples);
+    QCOMPARE(traj.samples(), 2766);
     QCOMPARE(traj.samples(),
              planLine(TwoLinkKinematics(0.75, 0.75), CartesianLine(), timing).samples());
     QCOMPARE(traj.dof(), 3);
-    QCOMPARE(traj.samplePeriod, period);
-    QCOMPARE(int(traj.qd.cols()), samples);
-    QCOMPARE(int(traj.qdd.cols()), samples);
+    QCOMPARE(traj.samplePeriod, 0.002);
+    QCOMPARE(int(traj.qd.cols()), traj.samples());
+    QCOMPARE(int(traj.qdd.cols()), traj.samples());
 }
 
 void TestJointPath::planJointPath_samplesFollowPathAndRestAtItsEnds()
@@ -407,88 +373,6 @@ void TestJointPath::planJointPath_invalidTiming_throws()
     };
     for (const MotionTiming &timing : bad)
         QVERIFY_THROWS_EXCEPTION(Error, planJointPath(path, timing));
-}
-
-namespace {
-const std::vector<Eigen::VectorXd> armWaypoints = {
-    Eigen::Vector2d(-0.3, 1.9), Eigen::Vector2d(0.4, 1.2), Eigen::Vector2d(0.9, 2.4)};
-}
-
-void TestJointPath::torqueRuleGrid_ofJointPath_equalsDirectRegressor()
-{
-    const WaypointPath path(armWaypoints);
-    const int points = 201;
-    const TorqueRuleGrid grid = torqueRuleGrid(arm, path, points);
-    QCOMPARE(grid.dof, 2);
-    QCOMPARE(int(grid.inertial.rows()), 2 * points);
-    QCOMPARE(int(grid.inertial.cols()), 3);
-    QVERIFY(grid.inertial.cwiseAbs().maxCoeff() > 1.0);
-    const Eigen::Vector2d zero = Eigen::Vector2d::Zero();
-    for (int i = 0; i < points; ++i) {
-        const State s = stateOf(path, double(i) / (points - 1));
-        const Eigen::MatrixXd w = arm.regressorAt(s.q, s.d1, s.d2);
-        const Eigen::MatrixXd w0 = arm.regressorAt(s.q, zero, zero);
-        LEARNID_COMPARE_MATRIX(grid.gravity.middleRows(2 * i, 2), w0, 0.0);
-        LEARNID_COMPARE_MATRIX(grid.inertial.middleRows(2 * i, 2), w - w0, 1e-12);
-    }
-}
-
-// The paper's line planned at T = 1 and sampled at 2001 points is a SampledPath; its grid is
-// the line's to the spline's error in q'' (at most 3/8 h^2 |q''''|, h = 5e-4; measured 1.3e-6
-// of the peak torque, tolerance 1e-5 of it).
-void TestJointPath::torqueRuleGrid_ofSampledLine_approximatesLineGrid()
-{
-    const TwoLinkKinematics kinematics(0.75, 0.75);
-    const JointTrajectory line = planLine(kinematics, CartesianLine(), {1.0, 0.0, 0.0, 1.0 / 2000});
-    const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(line.samples(), 0.0, 1.0);
-    const SampledPath path(t, line.q);
-    const Eigen::VectorXd lineTau =
-        torqueRuleGrid(arm, kinematics, CartesianLine()).inertial * phiTrue;
-    const Eigen::VectorXd pathTau = torqueRuleGrid(arm, path).inertial * phiTrue;
-    const double peak = lineTau.cwiseAbs().maxCoeff();
-    LEARNID_COMPARE_MATRIX(pathTau / peak, lineTau / peak, 1e-5);
-}
-
-// No gravity: tau(u) at T = 1 is A(u), and at T it is A(u) / T^2, so T = sqrt(max_j max_u
-// |A_j| / (fraction limit_j)). A is computed here by the model's inverse dynamics.
-void TestJointPath::shortestDuration_ofJointPathWithoutGravity_isClosedForm()
-{
-    const WaypointPath path(armWaypoints);
-    const int points = 2001;
-    Eigen::Vector2d peak = Eigen::Vector2d::Zero();
-    for (int i = 0; i < points; ++i) {
-        const State s = stateOf(path, double(i) / (points - 1));
-        peak = peak.cwiseMax(arm.torqueAt(s.q, s.d1, s.d2, phiTrue).cwiseAbs());
-    }
-    const Eigen::Vector2d ratio = peak.cwiseQuotient(fraction * torqueLimit);
-    int limiting = 0;
-    const double expectedT = std::sqrt(ratio.maxCoeff(&limiting));
-
-    const TorqueRuleResult r =
-        shortestDuration(torqueRuleGrid(arm, path, points), phiTrue, torqueLimit, fraction);
-    LEARNID_COMPARE_NEAR(r.duration, expectedT, 1e-12 * expectedT);
-    QCOMPARE(r.limitingJoint, limiting);
-    LEARNID_COMPARE_MATRIX(r.peakTorque, peak / (expectedT * expectedT), 1e-12);
-    LEARNID_COMPARE_NEAR(r.peakTorque[limiting], fraction * torqueLimit[limiting], 1e-12);
-
-    // Planned densely at that T, the peak torque is the rule's to the grid's resolution (the
-    // 2001-point grid misses the peak by 2e-5 N m here).
-    const JointTrajectory traj = planJointPath(path, {r.duration, 0.0, 0.0, r.duration / 20000});
-    Eigen::Vector2d densePeak = Eigen::Vector2d::Zero();
-    for (int k = 0; k < traj.samples(); ++k) {
-        densePeak = densePeak.cwiseMax(
-            arm.torqueAt(traj.q.col(k), traj.qd.col(k), traj.qdd.col(k), phiTrue).cwiseAbs());
-    }
-    LEARNID_COMPARE_MATRIX(densePeak, r.peakTorque, 1e-5 * fraction * torqueLimit.maxCoeff());
-}
-
-void TestJointPath::torqueRuleGrid_pathWithOtherJointCount_throws()
-{
-    const WaypointPath path(threeJointWaypoints());
-    const QString message = errorOf([&] { torqueRuleGrid(arm, path); });
-    QVERIFY2(message.contains(QStringLiteral("the path has 3 joints, the robot model 2")),
-             qPrintable(message));
-    QVERIFY_THROWS_EXCEPTION(Error, torqueRuleGrid(arm, WaypointPath(armWaypoints), 1));
 }
 
 QTEST_GUILESS_MAIN(TestJointPath)

@@ -1,6 +1,8 @@
+#include "../support/ErrorOf.h"
 #include "../support/NumericAssert.h"
 #include "model/Error.h"
 #include "model/TwoLinkArm.h"
+#include "motion/JointPath.h"
 #include "motion/TorqueRule.h"
 #include "motion/TwoLinkKinematics.h"
 
@@ -103,6 +105,10 @@ private slots:
     void gravityAboveLimit_throws();
     void invalidArguments_throw();
     void zeroLengthLine_throws();
+    void torqueRuleGrid_ofJointPath_equalsDirectRegressor();
+    void torqueRuleGrid_ofSampledLine_approximatesLineGrid();
+    void shortestDuration_ofJointPathWithoutGravity_isClosedForm();
+    void torqueRuleGrid_pathWithOtherJointCount_throws();
 };
 
 // docs/design.md §2 reference: T_0 = 4.93 s with phi_0 (two decimals quoted, hence +- 0.005 s).
@@ -272,6 +278,107 @@ void TestTorqueRule::zeroLengthLine_throws()
     line.length = 0.0;
     QVERIFY_THROWS_EXCEPTION(Error,
                              shortestDuration(arm, phiTrue, paperArm, line, torqueLimit, fraction));
+}
+
+namespace {
+
+const TwoLinkArm planarArm;
+const std::vector<Eigen::VectorXd> armWaypoints = {
+    Eigen::Vector2d(-0.3, 1.9), Eigen::Vector2d(0.4, 1.2), Eigen::Vector2d(0.9, 2.4)};
+
+// A joint path's state at normalised time u: q, dq/du, d2q/du2.
+struct PathState
+{
+    Eigen::VectorXd q, d1, d2;
+};
+
+PathState pathState(const JointPath &path, double u)
+{
+    PathState s{Eigen::VectorXd(path.dof()), Eigen::VectorXd(path.dof()),
+                Eigen::VectorXd(path.dof())};
+    path.stateInto(u, s.q, s.d1, s.d2);
+    return s;
+}
+
+} // namespace
+
+// Joint-space paths (JointPath.h): the rule over their grid.
+
+void TestTorqueRule::torqueRuleGrid_ofJointPath_equalsDirectRegressor()
+{
+    const WaypointPath path(armWaypoints);
+    const int points = 201;
+    const TorqueRuleGrid grid = torqueRuleGrid(planarArm, path, points);
+    QCOMPARE(grid.dof, 2);
+    QCOMPARE(int(grid.inertial.rows()), 2 * points);
+    QCOMPARE(int(grid.inertial.cols()), 3);
+    QVERIFY(grid.inertial.cwiseAbs().maxCoeff() > 1.0);
+    const Eigen::Vector2d zero = Eigen::Vector2d::Zero();
+    for (int i = 0; i < points; ++i) {
+        const PathState s = pathState(path, double(i) / (points - 1));
+        const Eigen::MatrixXd w = planarArm.regressorAt(s.q, s.d1, s.d2);
+        const Eigen::MatrixXd w0 = planarArm.regressorAt(s.q, zero, zero);
+        LEARNID_COMPARE_MATRIX(grid.gravity.middleRows(2 * i, 2), w0, 0.0);
+        LEARNID_COMPARE_MATRIX(grid.inertial.middleRows(2 * i, 2), w - w0, 1e-12);
+    }
+}
+
+// The paper's line planned at T = 1 and sampled at 2001 points is a SampledPath; its grid is
+// the line's to the spline's error in q'' (at most 3/8 h^2 |q''''|, h = 5e-4; measured 1.3e-6
+// of the peak torque, tolerance 1e-5 of it).
+void TestTorqueRule::torqueRuleGrid_ofSampledLine_approximatesLineGrid()
+{
+    const TwoLinkKinematics kinematics(0.75, 0.75);
+    const JointTrajectory line = planLine(kinematics, CartesianLine(), {1.0, 0.0, 0.0, 1.0 / 2000});
+    const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(line.samples(), 0.0, 1.0);
+    const SampledPath path(t, line.q);
+    const Eigen::VectorXd lineTau =
+        torqueRuleGrid(planarArm, kinematics, CartesianLine()).inertial * phiTrue;
+    const Eigen::VectorXd pathTau = torqueRuleGrid(planarArm, path).inertial * phiTrue;
+    const double peak = lineTau.cwiseAbs().maxCoeff();
+    LEARNID_COMPARE_MATRIX(pathTau / peak, lineTau / peak, 1e-5);
+}
+
+// No gravity: tau(u) at T = 1 is A(u), and at T it is A(u) / T^2, so T = sqrt(max_j max_u
+// |A_j| / (fraction limit_j)). A is computed here by the model's inverse dynamics.
+void TestTorqueRule::shortestDuration_ofJointPathWithoutGravity_isClosedForm()
+{
+    const WaypointPath path(armWaypoints);
+    const int points = 2001;
+    Eigen::Vector2d peak = Eigen::Vector2d::Zero();
+    for (int i = 0; i < points; ++i) {
+        const PathState s = pathState(path, double(i) / (points - 1));
+        peak = peak.cwiseMax(planarArm.torqueAt(s.q, s.d1, s.d2, phiTrue).cwiseAbs());
+    }
+    const Eigen::Vector2d ratio = peak.cwiseQuotient(fraction * torqueLimit);
+    int limiting = 0;
+    const double expectedT = std::sqrt(ratio.maxCoeff(&limiting));
+
+    const TorqueRuleResult r =
+        shortestDuration(torqueRuleGrid(planarArm, path, points), phiTrue, torqueLimit, fraction);
+    LEARNID_COMPARE_NEAR(r.duration, expectedT, 1e-12 * expectedT);
+    QCOMPARE(r.limitingJoint, limiting);
+    LEARNID_COMPARE_MATRIX(r.peakTorque, peak / (expectedT * expectedT), 1e-12);
+    LEARNID_COMPARE_NEAR(r.peakTorque[limiting], fraction * torqueLimit[limiting], 1e-12);
+
+    // Planned densely at that T, the peak torque is the rule's to the grid's resolution (the
+    // 2001-point grid misses the peak by 2e-5 N m here).
+    const JointTrajectory traj = planJointPath(path, {r.duration, 0.0, 0.0, r.duration / 20000});
+    Eigen::Vector2d densePeak = Eigen::Vector2d::Zero();
+    for (int k = 0; k < traj.samples(); ++k) {
+        densePeak = densePeak.cwiseMax(
+            planarArm.torqueAt(traj.q.col(k), traj.qd.col(k), traj.qdd.col(k), phiTrue).cwiseAbs());
+    }
+    LEARNID_COMPARE_MATRIX(densePeak, r.peakTorque, 1e-5 * fraction * torqueLimit.maxCoeff());
+}
+
+void TestTorqueRule::torqueRuleGrid_pathWithOtherJointCount_throws()
+{
+    const WaypointPath path({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1)});
+    const QString message = test::errorOf([&] { torqueRuleGrid(planarArm, path); });
+    QVERIFY2(message.contains(QStringLiteral("the path has 3 joints, the robot model 2")),
+             qPrintable(message));
+    QVERIFY_THROWS_EXCEPTION(Error, torqueRuleGrid(planarArm, WaypointPath(armWaypoints), 1));
 }
 
 QTEST_GUILESS_MAIN(TestTorqueRule)
