@@ -1,4 +1,5 @@
 #include "../support/NumericAssert.h"
+#include "InertiaSamples.h"
 #include "model/LogCholesky.h"
 #include "model/PhysicalConsistency.h"
 
@@ -8,65 +9,9 @@
 #include <random>
 
 using namespace learnid;
+using namespace learnid::test;
 
 namespace {
-
-struct Box
-{
-    double mass;
-    Eigen::Vector3d size;   // edge lengths along the box's own axes [m]
-    Eigen::Matrix3d axes;   // box axes in the link frame (columns)
-    Eigen::Vector3d centre; // centre of mass in the link frame [m]
-};
-
-Box sampleBox()
-{
-    const Eigen::Matrix3d axes =
-        Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, -2.0, 0.5).normalized()).toRotationMatrix();
-    return {3.0, {0.4, 0.2, 0.1}, axes, {0.3, -0.1, 0.05}};
-}
-
-// pi10 from the textbook inertia of a box, I_c = m/12 diag(b^2 + c^2, ...), moved to the origin
-// by the parallel-axis theorem.
-Vector10d inertialOf(double m, const Eigen::Matrix3d &inertiaAtCentre, const Eigen::Vector3d &c)
-{
-    const Eigen::Matrix3d i =
-        inertiaAtCentre + m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
-    Vector10d pi;
-    pi << m, m * c.x(), m * c.y(), m * c.z(), i(0, 0), i(0, 1), i(1, 1), i(0, 2), i(1, 2), i(2, 2);
-    return pi;
-}
-
-Vector10d boxInertial(const Box &box)
-{
-    const Eigen::Vector3d s2 = box.size.cwiseAbs2();
-    const Eigen::Vector3d diag(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y());
-    const Eigen::Matrix3d ic =
-        box.axes * (box.mass / 12.0 * diag).asDiagonal() * box.axes.transpose();
-    return inertialOf(box.mass, ic, box.centre);
-}
-
-// The second moments of the box, integral of [r; 1][r; 1]^T dm, in closed form: a uniform
-// interval of length a has variance a^2 / 12.
-Eigen::Matrix4d boxSecondMoments(const Box &box)
-{
-    const Eigen::Matrix3d spread =
-        box.axes * (box.mass / 12.0 * box.size.cwiseAbs2()).asDiagonal() * box.axes.transpose();
-    Eigen::Matrix4d j;
-    j.topLeftCorner<3, 3>() = spread + box.mass * box.centre * box.centre.transpose();
-    j.topRightCorner<3, 1>() = box.mass * box.centre;
-    j.bottomLeftCorner<1, 3>() = box.mass * box.centre.transpose();
-    j(3, 3) = box.mass;
-    return j;
-}
-
-// A link's J moved by eps along its eigenvector of least eigenvalue, as pi10.
-Vector10d shiftedLeastEigenvalue(const Vector10d &pi, double eps)
-{
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(pseudoInertia(pi));
-    const Eigen::Vector4d v = eigen.eigenvectors().col(0);
-    return inertialFromPseudoInertia(pseudoInertia(pi) + eps * v * v.transpose());
-}
 
 double maxEigenvalue(const Vector10d &pi)
 {
@@ -127,10 +72,6 @@ private slots:
     void negativeMassOrBrokenTriangleInequality_isInconsistentForThatLink();
     void pointMassAndThinRod_areConsistentButDegenerate();
     void negativeJointTerms_listsTheNegativeOnes();
-    void logCholesky_givesUUTransposeAndRoundTrips();
-    void logCholeskyJacobian_matchesCentralDifferences();
-    void logCholeskyCurvature_matchesCentralDifferencesOfTheJacobian();
-    void logCholeskyOfInconsistentLink_throws();
     void nearest_ofConsistentTarget_returnsTheTarget();
     void nearest_ofInconsistentTarget_isConsistentAndNoWorseThanCandidates();
     void nearest_rankDeficientRows_keepUnseenDirectionsAtPrior();
@@ -232,78 +173,6 @@ void TestPhysicalConsistency::negativeJointTerms_listsTheNegativeOnes()
     QCOMPARE(negativeJointTerms(standard, {13, 11}), std::vector<int>({13, 11}));
     QVERIFY(negativeJointTerms(standard, {}).empty());
     QVERIFY_THROWS_EXCEPTION(Error, negativeJointTerms(standard, {14}));
-}
-
-void TestPhysicalConsistency::logCholesky_givesUUTransposeAndRoundTrips()
-{
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> value(-1.0, 1.0);
-    for (int trial = 0; trial < 20; ++trial) {
-        Vector10d theta;
-        for (int k = 0; k < 10; ++k)
-            theta[k] = value(rng);
-        const double e = std::exp(theta[0]);
-        Eigen::Matrix4d u;
-        u << std::exp(theta[1]), theta[4], theta[6], theta[7], 0.0, std::exp(theta[2]), theta[5],
-            theta[8], 0.0, 0.0, std::exp(theta[3]), theta[9], 0.0, 0.0, 0.0, 1.0;
-        u *= e;
-        const Vector10d pi = inertialFromLogCholesky(theta);
-        LEARNID_COMPARE_MATRIX(pseudoInertia(pi), u * u.transpose(), 1e-13);
-        QVERIFY(checkConsistency(pi, 1, 1e-12)[0].consistent);
-        LEARNID_COMPARE_MATRIX(logCholeskyFromInertial(pi), theta, 1e-11);
-    }
-    const Vector10d box = boxInertial(sampleBox());
-    LEARNID_COMPARE_MATRIX(inertialFromLogCholesky(logCholeskyFromInertial(box)), box, 1e-13);
-}
-
-void TestPhysicalConsistency::logCholeskyJacobian_matchesCentralDifferences()
-{
-    const Vector10d theta = logCholeskyFromInertial(boxInertial(sampleBox()));
-    Matrix10d jacobian;
-    const Vector10d pi = inertialFromLogCholesky(theta, jacobian);
-    LEARNID_COMPARE_MATRIX(pi, inertialFromLogCholesky(theta), 0.0);
-    Matrix10d differences;
-    for (int k = 0; k < 10; ++k) {
-        const double h = 1e-5 * std::max(1.0, std::abs(theta[k]));
-        Vector10d plus = theta, minus = theta;
-        plus[k] += h;
-        minus[k] -= h;
-        differences.col(k) =
-            (inertialFromLogCholesky(plus) - inertialFromLogCholesky(minus)) / (2.0 * h);
-    }
-    LEARNID_COMPARE_MATRIX(jacobian, differences, 1e-6 * jacobian.cwiseAbs().maxCoeff());
-}
-
-void TestPhysicalConsistency::logCholeskyCurvature_matchesCentralDifferencesOfTheJacobian()
-{
-    Vector10d theta;
-    theta << 0.3, -0.2, 0.4, -1.1, 0.25, -0.15, 0.05, 0.3, -0.1, 0.2;
-    Vector10d weights;
-    weights << 1.0, -2.0, 0.5, 0.7, -0.3, 1.2, 0.4, -0.9, 0.6, 1.5;
-    const Matrix10d curvature = logCholeskyCurvature(theta, weights);
-    Matrix10d differences;
-    for (int k = 0; k < 10; ++k) {
-        const double h = 1e-5;
-        Vector10d plus = theta, minus = theta;
-        plus[k] += h;
-        minus[k] -= h;
-        Matrix10d jPlus, jMinus;
-        inertialFromLogCholesky(plus, jPlus);
-        inertialFromLogCholesky(minus, jMinus);
-        differences.col(k) = (jPlus - jMinus).transpose() * weights / (2.0 * h);
-    }
-    LEARNID_COMPARE_MATRIX(curvature, differences, 1e-6 * curvature.cwiseAbs().maxCoeff());
-    LEARNID_COMPARE_MATRIX(curvature, curvature.transpose(), 0.0);
-}
-
-void TestPhysicalConsistency::logCholeskyOfInconsistentLink_throws()
-{
-    Vector10d pi = boxInertial(sampleBox());
-    pi[0] = -1.0;
-    QVERIFY_THROWS_EXCEPTION(Error, logCholeskyFromInertial(pi));
-    const Vector10d point = inertialOf(2.0, Eigen::Matrix3d::Zero(), {0.1, 0.2, 0.3});
-    QVERIFY_THROWS_EXCEPTION(Error, logCholeskyFromInertial(shiftedLeastEigenvalue(point, -1e-3)));
-    QVERIFY_THROWS_EXCEPTION(Error, inertialFromLogCholesky(Eigen::VectorXd::Zero(9)));
 }
 
 void TestPhysicalConsistency::nearest_ofConsistentTarget_returnsTheTarget()
