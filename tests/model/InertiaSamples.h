@@ -25,7 +25,8 @@ inline Box sampleBox()
 
 // pi10 from the textbook inertia of a box, I_c = m/12 diag(b^2 + c^2, ...), moved to the origin
 // by the parallel-axis theorem.
-inline Vector10d inertialOf(double m, const Eigen::Matrix3d &inertiaAtCentre, const Eigen::Vector3d &c)
+inline Vector10d inertialOf(double m, const Eigen::Matrix3d &inertiaAtCentre,
+                            const Eigen::Vector3d &c)
 {
     const Eigen::Matrix3d i =
         inertiaAtCentre + m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
