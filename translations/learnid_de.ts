@@ -697,7 +697,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+123"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+106"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
     </message>
@@ -1081,7 +1081,7 @@
         <translation>Knoten %1 ist zwei Gelenken zugeordnet</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+14"/>
         <source>must be a valid date and time</source>
         <translation>muss ein gültiges Datum mit Uhrzeit sein</translation>
     </message>
@@ -1118,7 +1118,7 @@
         <translation>Werte, %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>standard deviations, %1</source>
         <translation>Standardabweichungen, %1</translation>
     </message>
@@ -1732,7 +1732,7 @@
         <translation>die Bahn hat %1 Gelenke, der Roboter %2</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>nur ebene Zweigelenkarme haben eine kartesische Geradenkinematik</translation>
     </message>
@@ -1843,12 +1843,12 @@
 <context>
     <name>ValueChecks</name>
     <message>
-        <location filename="../core/io/ValueChecks.cpp" line="+22"/>
+        <location filename="../core/io/ValueChecks.cpp" line="+23"/>
         <source>must be a finite number, got %1</source>
         <translation>muss eine endliche Zahl sein, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+62"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
@@ -1858,7 +1858,12 @@
         <translation>muss eine positive Zahl sein, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-9"/>
+        <source>the drives store it as REAL32, so it must be a finite number of at most %1 in magnitude, got %2</source>
+        <translation>die Antriebe speichern den Wert als REAL32, er muss also eine endliche Zahl mit einem Betrag von höchstens %1 sein, erhalten: %2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>must be zero or a positive number, got %1</source>
         <translation>muss null oder eine positive Zahl sein, gefunden: %1</translation>
     </message>

@@ -697,7 +697,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+123"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+106"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>连杆 %1（%2）：质量 %3 kg：不是真实刚体</translation>
     </message>
@@ -1081,7 +1081,7 @@
         <translation>节点 %1 被分配给两个关节</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+14"/>
         <source>must be a valid date and time</source>
         <translation>必须是有效的日期时间</translation>
     </message>
@@ -1118,7 +1118,7 @@
         <translation>数值，%1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>standard deviations, %1</source>
         <translation>标准差，%1</translation>
     </message>
@@ -1732,7 +1732,7 @@
         <translation>路径有 %1 个关节，机器人有 %2 个</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>只有平面二连杆机械臂具有笛卡尔直线运动学</translation>
     </message>
@@ -1843,12 +1843,12 @@
 <context>
     <name>ValueChecks</name>
     <message>
-        <location filename="../core/io/ValueChecks.cpp" line="+22"/>
+        <location filename="../core/io/ValueChecks.cpp" line="+23"/>
         <source>must be a finite number, got %1</source>
         <translation>必须是有限数，实际为 %1</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+62"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
@@ -1858,7 +1858,12 @@
         <translation>必须是正数，实际为 %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-9"/>
+        <source>the drives store it as REAL32, so it must be a finite number of at most %1 in magnitude, got %2</source>
+        <translation>驱动器以 REAL32 存储该值，因此它必须是绝对值不超过 %1 的有限数，实际为 %2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>must be zero or a positive number, got %1</source>
         <translation>必须是零或正数，实际为 %1</translation>
     </message>

@@ -68,6 +68,15 @@ void validateParameterFileContent(const ParameterFileContent &c)
         }
     }
     validateControllerSettings(c.controller, n, key("controller"));
+    // The gains and the parameters go to the drives' REAL32 objects (the DCF fragment, apply).
+    const auto checkGains = [](const char *name, const Eigen::VectorXd &gains) {
+        for (int j = 0; j < int(gains.size()); ++j)
+            checkFitsReal32(jsonIndexPath(jsonKeyPath(key("controller"), key(name)), j), gains[j]);
+    };
+    checkGains("kp", c.controller.kp);
+    checkGains("ki", c.controller.ki);
+    checkGains("kd", c.controller.kd);
+    checkFitsReal32(key("controller.lambda"), c.controller.lambda);
     if (!c.created.isValid())
         throwAtKey(key("created"), Text::tr("must be a valid date and time"));
     if (c.toolVersion.isEmpty())
@@ -100,8 +109,11 @@ void validateParameterFileContent(const ParameterFileContent &c)
         }
     }
     checkLength(key("parameters"), c.values.size(), m, Text::tr("values, %1").arg(perParameter));
-    for (int i = 0; i < m; ++i)
-        checkFinite(jsonKeyPath(jsonIndexPath(key("parameters"), i), key("value")), c.values[i]);
+    for (int i = 0; i < m; ++i) {
+        const QString path = jsonKeyPath(jsonIndexPath(key("parameters"), i), key("value"));
+        checkFinite(path, c.values[i]);
+        checkFitsReal32(path, c.values[i]);
+    }
     if (c.standardDeviations.size() > 0) {
         checkLength(key("parameters"), c.standardDeviations.size(), m,
                     Text::tr("standard deviations, %1").arg(perParameter));

@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <cmath>
+#include <limits>
 
 namespace learnid {
 
@@ -20,6 +21,16 @@ void checkFinite(const QString &path, double value)
 {
     if (!std::isfinite(value))
         throwAtKey(path, Text::tr("must be a finite number, got %1").arg(describeNumber(value)));
+}
+
+void checkFitsReal32(const QString &path, double value)
+{
+    if (std::isfinite(value) && std::abs(value) <= double(std::numeric_limits<float>::max()))
+        return;
+    throwAtKey(path, Text::tr("the drives store it as REAL32, so it must be a finite number of at "
+                              "most %1 in magnitude, got %2")
+                         .arg(double(std::numeric_limits<float>::max()))
+                         .arg(describeNumber(value)));
 }
 
 void checkPositive(const QString &path, double value)

@@ -16,6 +16,8 @@ enum class Bounds {
 };
 
 void checkFinite(const QString &path, double value);
+/// Finite and within float's range: values written to a drive's REAL32 objects.
+void checkFitsReal32(const QString &path, double value);
 void checkPositive(const QString &path, double value);
 void checkNonNegative(const QString &path, double value);
 /// >= 0 or +inf; the files write +inf as null (a figure that is unbounded or not determined).

@@ -166,9 +166,10 @@ void TestParameterDcf::valueBeyondReal32_isRejected()
 {
     ParameterFileContent c = sampleParameterFile();
     c.values[2] = 1e39;
-    LEARNID_VERIFY_ERROR(
-        parameterDcfFragment(c, 0),
-        QStringLiteral("parameters[2].value: does not fit a REAL32 object entry, got 1e+39"));
+    LEARNID_VERIFY_ERROR(parameterDcfFragment(c, 0),
+                         QStringLiteral("parameters[2].value: the drives store it as REAL32, so it "
+                                        "must be a finite number of at "
+                                        "most 3.40282e+38 in magnitude, got 1e+39"));
 }
 
 QTEST_GUILESS_MAIN(TestParameterDcf)

@@ -324,6 +324,15 @@ void TestParameterFile::badField_isRejectedWithKeyPath_data()
     QTest::newRow("kp string entry") << edit([&](QJsonObject &o) {
         inSection(o, "controller", "kp", QJsonArray{4500, "nan"});
     }) << "controller.kp[1]: must be a number, got \"nan\"";
+    QTest::newRow("gain beyond REAL32")
+        << edit([&](QJsonObject &o) {
+               inSection(o, "controller", "ki", QJsonArray{3e104, 30});
+           })
+        << "controller.ki[0]: the drives store it as REAL32, so it must be a finite number of at "
+           "most 3.40282e+38 in magnitude, got 3e+104";
+    QTest::newRow("value beyond REAL32")
+        << edit([&](QJsonObject &o) { inListEntry(o, "parameters", 1, "value", -1e39); })
+        << "parameters[1].value: the drives store it as REAL32";
     QTest::newRow("unknown law") << edit([&](QJsonObject &o) {
         inSection(o, "identification", "law", "guess");
     }) << "identification.law: unknown learning law \"guess\"";
