@@ -1,10 +1,10 @@
 #include "session/EstimateConsistency.h"
 
+#include "model/CadPrior.h"
 #include "model/ChainModel.h"
 #include "model/Error.h"
 #include "session/PathIdentifiability.h"
 
-#include <Eigen/Eigenvalues>
 #include <QCoreApplication>
 #include <algorithm>
 
@@ -22,26 +22,6 @@ constexpr double eigenvalueTolerance =
 constexpr int maxPathSamples = 2000; ///< path rows used to weight the projection
 constexpr double priorShare = 1e-6; ///< the CAD prior's weight against the path rows, per parameter
 
-// The CAD model as the prior, each link made a real body where it is not (published data are
-// not always: a link whose mass never acts has none): its pseudo-inertia's eigenvalues floored
-// at 1e-6 of its largest (and that at 1e-6 kg m^2). The prior only holds what the path does
-// not see, so the floor decides nothing the data decide.
-Eigen::VectorXd consistentPrior(const Eigen::VectorXd &cad, int links)
-{
-    Eigen::VectorXd prior = cad;
-    for (const LinkConsistency &l : checkConsistency(cad, links, eigenvalueTolerance)) {
-        if (l.consistent && !l.degenerate)
-            continue;
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eig(
-            pseudoInertia(cad.segment<10>(10 * l.link)));
-        const double floor = 1e-6 * std::max(eig.eigenvalues().maxCoeff(), 1.0);
-        const Eigen::Vector4d values = eig.eigenvalues().cwiseMax(floor);
-        prior.segment<10>(10 * l.link) = inertialFromPseudoInertia(
-            eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose());
-    }
-    return prior;
-}
-
 } // namespace
 
 EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eigen::VectorXd &phi,
@@ -54,7 +34,7 @@ EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eige
     out.applicable = true;
     out.nearest = phi;
     const int n = chain->dof();
-    const Eigen::VectorXd prior = consistentPrior(chain->cadStandard(), n);
+    const Eigen::VectorXd prior = realBodyPrior(chain->cadStandard(), n);
     const Eigen::VectorXd pi = chain->base().standardFromBase(phi, prior);
     out.links = checkConsistency(pi, n, eigenvalueTolerance);
     out.negativeTerms = negativeJointTerms(pi, chain->nonnegativeStandard());
@@ -68,16 +48,9 @@ EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eige
         const Eigen::MatrixXd k = chain->base().baseMatrix();
         const Eigen::MatrixXd a = r * k;
         const Eigen::VectorXd b = r * phi;
-        // D: each standard parameter relative to its CAD size (floored at 1e-3 of its link's
-        // largest, so a zero CAD entry does not pin it); the prior weighs 1e-6 of the path
-        // rows per parameter: what the path sees follows the path, the rest stays at the CAD.
-        Eigen::VectorXd scale(prior.size());
-        for (Eigen::Index i = 0; i < prior.size(); ++i) {
-            const Eigen::Index block = i < 10 * n ? (i / 10) * 10 : i;
-            const Eigen::Index size = i < 10 * n ? 10 : 1;
-            const double floor = 1e-3 * prior.segment(block, size).cwiseAbs().maxCoeff() + 1e-9;
-            scale[i] = 1.0 / std::max(std::abs(prior[i]), floor);
-        }
+        // The prior weighs 1e-6 of the path rows per parameter: what the path sees follows the
+        // path, the rest stays at the CAD model.
+        const Eigen::VectorXd scale = priorScale(prior, n);
         const double weight = std::sqrt(priorShare * a.squaredNorm() / double(prior.size()));
         const ConsistentEstimate fit =
             nearestConsistentEstimate(a, b, prior, scale, weight, n, chain->nonnegativeStandard());
