@@ -35,6 +35,13 @@ QString usageText()
         "                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]\n"
         "      Re-identify from recorded trials: the session runs again with each log\n"
         "      (one per trial, in order) answering in place of the robot.\n"
+        "  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]\n"
+        "                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]\n"
+        "                       [--rho R] [--prior-share S] [--velocity auto|measured|q]\n"
+        "                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]\n"
+        "                       [--urdf-out FILE] [--scenario FILE] [--workspace DIR] [--quiet]\n"
+        "      Identify a real robot's inertia and friction from its recorded logs (CSV)\n"
+        "      and compare the result with its URDF on the --validate logs.\n"
         "  learnid-cli COMMAND --help\n"
         "      The options of one command.\n");
 }
@@ -234,6 +241,10 @@ CommandLine parseCommandLine(const QStringList &args)
         } else {
             cl.command = CommandLine::Command::PrintScenario;
         }
+        return cl;
+    }
+    if (command == QLatin1String("identify")) {
+        parseIdentifyCommandLine(args, &cl);
         return cl;
     }
     const bool replay = command == QLatin1String("replay");

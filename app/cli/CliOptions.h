@@ -1,6 +1,7 @@
 #pragma once
 
 #include "canrobot/CanRobotOptions.h"
+#include "cli/IdentifyOptions.h"
 
 #include <QString>
 #include <QStringList>
@@ -37,8 +38,17 @@ struct RunOptions
 /// The parsed command line: a command and its options, or an error to print with usage.
 struct CommandLine
 {
-    enum class Command { None, PrintScenario, Run, Replay, Help, Version } command = Command::None;
+    enum class Command {
+        None,
+        PrintScenario,
+        Run,
+        Replay,
+        Identify,
+        Help,
+        Version
+    } command = Command::None;
     RunOptions run;
+    IdentifyOptions identify;
     QString error;
     ExitCode errorCode = ExitUsage; ///< ExitUsage for syntax, ExitBadInput for a bad value
     QString usage;

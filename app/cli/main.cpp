@@ -1,4 +1,5 @@
 #include "cli/CliOptions.h"
+#include "cli/IdentifyCommand.h"
 #include "cli/RunCommand.h"
 #include "translations/Translations.h"
 
@@ -30,6 +31,8 @@ int main(int argc, char **argv)
     case CommandLine::Command::Run:
     case CommandLine::Command::Replay:
         return runCommand(cl.run, out, err);
+    case CommandLine::Command::Identify:
+        return identifyCommand(cl.identify, out, err);
     case CommandLine::Command::None:
         break;
     }

@@ -1,0 +1,253 @@
+#include "cli/IdentifyOptions.h"
+
+#include "cli/CliOptions.h"
+#include "io/OutputPath.h"
+#include "model/Error.h"
+#include "service/SessionExport.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDir>
+#include <cmath>
+#include <optional>
+
+namespace learnid::cli {
+
+namespace {
+
+// description: a QT_TRANSLATE_NOOP("learnid-cli", ...) text.
+QCommandLineOption option(const char *name, const char *description, const char *value = nullptr)
+{
+    const QString text = QCoreApplication::translate("learnid-cli", description);
+    return value ? QCommandLineOption(QLatin1String(name), text, QLatin1String(value))
+                 : QCommandLineOption(QLatin1String(name), text);
+}
+
+// A finite number in (low, high); nullopt otherwise.
+std::optional<double> numberIn(const QString &text, double low, double high)
+{
+    bool ok = false;
+    const double v = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(v) || v <= low || v >= high)
+        return std::nullopt;
+    return v;
+}
+
+// --joint-terms: a comma-separated subset of armature, viscous, coulomb, offset, or "none".
+QString parseJointTerms(const QString &text, JointTerms *terms)
+{
+    *terms = JointTerms{false, false, false, false};
+    if (text.trimmed() == QLatin1String("none"))
+        return {};
+    for (const QString &entry : text.split(QLatin1Char(','))) {
+        const QString name = entry.trimmed();
+        if (name == QLatin1String("armature"))
+            terms->armature = true;
+        else if (name == QLatin1String("viscous"))
+            terms->viscous = true;
+        else if (name == QLatin1String("coulomb"))
+            terms->coulomb = true;
+        else if (name == QLatin1String("offset"))
+            terms->offset = true;
+        else
+            return QCoreApplication::translate(
+                       "learnid-cli",
+                       "--joint-terms: unknown term '%1'; the terms are armature, viscous, "
+                       "coulomb and offset, or none")
+                .arg(name);
+    }
+    return {};
+}
+
+// The values of the options; an error names the option and the value.
+QString readValues(const QCommandLineParser &parser, IdentifyOptions *o)
+{
+    const auto value = [&parser](const char *name) {
+        return parser.value(QLatin1String(name));
+    };
+    const auto isSet = [&parser](const char *name) {
+        return parser.isSet(QLatin1String(name));
+    };
+    if (isSet("columns"))
+        o->columns = parseLogColumns(value("columns")); // throws "--columns: ..."
+    if (isSet("joint-terms")) {
+        const QString error = parseJointTerms(value("joint-terms"), &o->terms);
+        if (!error.isEmpty())
+            return error;
+    }
+    if (isSet("rho")) {
+        const auto rho = numberIn(value("rho"), 0.0, HUGE_VAL);
+        if (!rho)
+            return QCoreApplication::translate("learnid-cli",
+                                               "--rho: must be a positive number [rad/s], got '%1'")
+                .arg(value("rho"));
+        o->filter.rho = *rho;
+    }
+    if (isSet("prior-share")) {
+        const auto share = numberIn(value("prior-share"), 0.0, 1.0);
+        if (!share)
+            return QCoreApplication::translate(
+                       "learnid-cli", "--prior-share: must be a number between 0 and 1, got '%1'")
+                .arg(value("prior-share"));
+        o->fit.priorShare = *share;
+    }
+    if (isSet("velocity")) {
+        const QString v = value("velocity");
+        if (v == QLatin1String("auto"))
+            o->filter.velocity = LogFilterSettings::Velocity::Auto;
+        else if (v == QLatin1String("measured"))
+            o->filter.velocity = LogFilterSettings::Velocity::Measured;
+        else if (v == QLatin1String("q"))
+            o->filter.velocity = LogFilterSettings::Velocity::FromPositions;
+        else
+            return QCoreApplication::translate("learnid-cli",
+                                               "--velocity: must be auto, measured or q, got '%1'")
+                .arg(v);
+    }
+    if (isSet("max-gap")) {
+        const auto ms = numberIn(value("max-gap"), 0.0, 1e6);
+        if (!ms)
+            return QCoreApplication::translate(
+                       "learnid-cli", "--max-gap: must be a positive number of ms, got '%1'")
+                .arg(value("max-gap"));
+        o->resample.maxGap = *ms / 1000.0;
+    }
+    const QString ws = isSet("workspace") ? value("workspace") : QDir::currentPath();
+    if (isSet("export"))
+        o->exportPath = resolveOutputPath(ws, value("export"), QStringLiteral("--export"));
+    if (isSet("urdf-out"))
+        o->urdfPath = resolveOutputPath(ws, value("urdf-out"), QStringLiteral("--urdf-out"));
+    if (!o->urdfPath.isEmpty() &&
+        (o->urdfPath == o->exportPath || o->urdfPath == dcfPathFor(o->exportPath)))
+        return QCoreApplication::translate("learnid-cli", "--urdf-out: %1 is where --export writes")
+            .arg(o->urdfPath);
+    return {};
+}
+
+} // namespace
+
+void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
+{
+    QCommandLineParser parser;
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    parser.addOptions({
+        option("robot",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "A built-in URDF robot (e.g. double-pendulum) or a URDF file."),
+               "ROBOT"),
+        option("log",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "A recorded log (CSV) to identify from; once per log."),
+               "FILE"),
+        option("validate",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "A recorded log to check the result on; once per log."),
+               "FILE"),
+        option("columns",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "The log's column names, e.g. t=time,q=pos%1,dq=vel%1,tau=tau%1."),
+               "SPEC"),
+        option("joint-terms",
+               QT_TRANSLATE_NOOP(
+                   "learnid-cli",
+                   "Joint terms to identify: armature, viscous, coulomb, offset, or none; default: "
+                   "viscous,coulomb,offset."),
+               "LIST"),
+        option("rho",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "Bandwidth of the zero-phase log filter [rad/s]; default 50."),
+               "R"),
+        option("prior-share",
+               QT_TRANSLATE_NOOP(
+                   "learnid-cli",
+                   "Directions weaker than this share of the strongest keep the URDF's values; "
+                   "default 0.03."),
+               "S"),
+        option("velocity",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "Joint velocities: auto, measured or q (from positions)."),
+               "V"),
+        option(
+            "max-gap",
+            QT_TRANSLATE_NOOP("learnid-cli",
+                              "Longest time step allowed in a log [ms]; default 5 sample periods."),
+            "MS"),
+        option("base-link",
+               QT_TRANSLATE_NOOP("learnid-cli", "The chain's base link; default: the URDF's root."),
+               "LINK"),
+        option("tip-link",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "The chain's tip link; default: the one leaf below the base."),
+               "LINK"),
+        option("export",
+               QT_TRANSLATE_NOOP(
+                   "learnid-cli",
+                   "Write the identified base parameters as a parameter file (and DCF)."),
+               "FILE"),
+        option("urdf-out",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "Write the URDF with the identified inertia and friction."),
+               "FILE"),
+        option("scenario",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "Scenario whose controller gains the parameter file records."),
+               "FILE"),
+        option(
+            "workspace",
+            QT_TRANSLATE_NOOP("learnid-cli", "Folder that relative output paths are taken from."),
+            "DIR"),
+        option("quiet", QT_TRANSLATE_NOOP("learnid-cli", "No progress lines on stderr.")),
+        QCommandLineOption(
+            {QStringLiteral("h"), QStringLiteral("help")},
+            QCoreApplication::translate("learnid-cli", "Show this command's options.")),
+    });
+    if (!parser.parse(args.mid(1))) {
+        cl->error = parser.errorText();
+        return;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        QString options = parser.helpText();
+        const qsizetype at = options.indexOf(QLatin1String("Options:"));
+        cl->command = CommandLine::Command::Help;
+        cl->usage = QCoreApplication::translate(
+                        "learnid-cli",
+                        "Usage: learnid-cli identify --robot ROBOT --log FILE [options]\n\n"
+                        "Identify a robot's inertia and joint friction from its recorded logs,\n"
+                        "and compare the result with the URDF as given on --validate logs.\n\n%1")
+                        .arg(at >= 0 ? options.mid(at) : options);
+        return;
+    }
+    if (!parser.positionalArguments().isEmpty()) {
+        cl->error = QCoreApplication::translate("learnid-cli", "unexpected argument '%1'")
+                        .arg(parser.positionalArguments().constFirst());
+        return;
+    }
+    IdentifyOptions &o = cl->identify;
+    o.robot = parser.value(QStringLiteral("robot"));
+    o.logs = parser.values(QStringLiteral("log"));
+    if (o.robot.isEmpty() || o.logs.isEmpty()) {
+        cl->error =
+            o.robot.isEmpty()
+                ? QCoreApplication::translate("learnid-cli", "'identify' needs --robot ROBOT")
+                : QCoreApplication::translate("learnid-cli",
+                                              "'identify' needs at least one --log FILE");
+        return;
+    }
+    o.validationLogs = parser.values(QStringLiteral("validate"));
+    o.baseLink = parser.value(QStringLiteral("base-link"));
+    o.tipLink = parser.value(QStringLiteral("tip-link"));
+    o.scenarioPath = parser.value(QStringLiteral("scenario"));
+    o.quiet = parser.isSet(QStringLiteral("quiet"));
+    try {
+        cl->error = readValues(parser, &o);
+    } catch (const Error &e) {
+        cl->error = e.message();
+    }
+    if (!cl->error.isEmpty()) {
+        cl->errorCode = ExitBadInput;
+        return;
+    }
+    cl->command = CommandLine::Command::Identify;
+}
+
+} // namespace learnid::cli

@@ -1,0 +1,42 @@
+#pragma once
+
+#include "identify/LogFit.h"
+#include "identify/LogSignals.h"
+#include "identify/UniformLog.h"
+#include "io/RobotLogCsv.h"
+#include "types/ChainSettings.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace learnid::cli {
+
+struct CommandLine;
+
+/// What `learnid-cli identify` was asked to do (docs/cli.md). Output paths are already absolute
+/// (resolveOutputPath against --workspace).
+struct IdentifyOptions
+{
+    QString robot;              ///< a built-in robot id (ModelFactory.h) or a URDF file
+    QString baseLink;           ///< empty: the URDF's root link
+    QString tipLink;            ///< empty: the one leaf below the base
+    QStringList logs;           ///< --log: the logs fitted together
+    QStringList validationLogs; ///< --validate: the logs the result is checked on
+    LogColumns columns;
+    JointTerms terms{false, true, true, true}; ///< viscous, Coulomb friction and an offset
+    LogFilterSettings filter;
+    LogFitSettings fit;
+    ResampleOptions resample;
+    QString scenarioPath; ///< --scenario: the controller gains the parameter file records
+    QString exportPath;   ///< the parameter file (JSON, and its DCF beside it); empty: none
+    QString urdfPath;     ///< the identified URDF; empty: none
+    bool quiet = false;
+};
+
+/// Parses `learnid-cli identify ...` (args[1] is "identify") into cl: cl->identify and the
+/// command Identify, or Help with this command's usage, or an error with its exit code
+/// (ExitUsage for a syntax error, an unknown option or no --log; ExitBadInput for a bad value,
+/// including a --columns entry with an unknown key).
+void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl);
+
+} // namespace learnid::cli
