@@ -37,6 +37,11 @@ public:
                          double gravityScale = 1.0) const;
     /// M(q, pi) into out (n x n).
     void massMatrix(const VectorRef &q, const VectorRef &pi, Eigen::Ref<Eigen::MatrixXd> out) const;
+    /// massMatrix() and the bias torque inverseDynamics(q, qd, 0) at once, the joint frames
+    /// placed once: what forward dynamics needs at every step of the simulator.
+    void massMatrixAndBias(const VectorRef &q, const VectorRef &qd, const VectorRef &pi,
+                           Eigen::Ref<Eigen::MatrixXd> mass,
+                           Eigen::Ref<Eigen::VectorXd> bias) const;
     /// -sum_k m_k g . (position of link k's centre of mass) [J]: U(q, pi), linear in pi.
     double potentialEnergy(const VectorRef &q, const VectorRef &pi) const;
     /// Pose of each moving joint's frame in the base link's frame (n).
@@ -50,12 +55,20 @@ private:
     };
     using Placements = std::array<Placement, maxJoints>;
     void place(const VectorRef &q, Placements &out) const;
+    void massMatrixPlaced(const Placements &pl, const VectorRef &pi,
+                          Eigen::Ref<Eigen::MatrixXd> out) const;
+    void inverseDynamicsPlaced(const Placements &pl, const VectorRef &qd, const VectorRef &qdd,
+                               const VectorRef &pi, Eigen::Ref<Eigen::VectorXd> out,
+                               double gravityScale) const;
 
     SerialChain m_chain;
     int m_dof = 0;
     std::array<Eigen::Matrix3d, maxJoints> m_originRotation;
     std::array<Eigen::Vector3d, maxJoints> m_originTranslation;
     std::array<Eigen::Vector3d, maxJoints> m_axis;
+    /// A revolute joint's placement R0 Rot(a, q) = F + cos q C + sin q S with F = R0 a a^T,
+    /// C = R0 - F and S = R0 [a]x (Rodrigues' formula, precomputed per joint).
+    std::array<Eigen::Matrix3d, maxJoints> m_rotationFixed, m_rotationCos, m_rotationSin;
     std::array<bool, maxJoints> m_prismatic{};
 };
 

@@ -267,8 +267,14 @@ void ChainModel::forwardDynamics(const VectorRef &q, const VectorRef &qd, const 
     constexpr int maxN = ChainDynamics::maxJoints;
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, maxN, maxN> m(dof(), dof());
     Eigen::Matrix<double, Eigen::Dynamic, 1, 0, maxN, 1> h(dof());
-    massMatrix(q, phi, m);
-    biasTorque(q, qd, phi, h);
+    StandardVector pi;
+    fillStandard(phi, pi);
+    m_dynamics.massMatrixAndBias(q, qd, pi.head(10 * dof()), m, h);
+    if (m_terms.armature) {
+        for (int j = 0; j < dof(); ++j)
+            m(j, j) += pi[10 * dof() + j * m_terms.count()];
+    }
+    addJointTerms(qd, nullptr, pi, h);
     out = tau - h;
     const Eigen::LLT<decltype(m)> llt(m);
     llt.solveInPlace(out);
