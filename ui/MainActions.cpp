@@ -39,6 +39,9 @@ MainActions::MainActions(QObject *parent)
     newSession =
         make(this, QString(), tr("&New session"), QKeySequence::New,
              tr("Start a new session with the settings of the form (the history is discarded)"));
+    identifyFromLogs =
+        make(this, QString(), tr("Identify from recorded &data\u2026"), QKeySequence(),
+             tr("Identify a robot's parameters from logs its controller recorded"));
     openScenario = make(this, QStringLiteral("open"), tr("&Open scenario..."), QKeySequence::Open,
                         tr("Load a scenario file into the form"));
     saveScenario = make(this, QStringLiteral("save"), tr("&Save scenario..."), QKeySequence::Save,
@@ -104,6 +107,8 @@ void MainActions::populate(QMenuBar *menuBar, QToolBar *toolBar)
     file->addAction(quit);
     QMenu *robot = menuBar->addMenu(tr("&Robot"));
     robot->addActions({connectRobot, newSession});
+    robot->addSeparator();
+    robot->addAction(identifyFromLogs);
     QMenu *trials = menuBar->addMenu(tr("&Trials"));
     trials->addActions({runTrial, runAll, stop});
     QMenu *params = menuBar->addMenu(tr("&Parameters"));

@@ -24,6 +24,7 @@ public:
 
     QAction *connectRobot;
     QAction *newSession;
+    QAction *identifyFromLogs;
     QAction *openScenario;
     QAction *saveScenario;
     QAction *exportParameters;

@@ -9,6 +9,7 @@
 #include "ui/MainActions.h"
 #include "ui/MessageBar.h"
 #include "ui/PreTrialCheckView.h"
+#include "ui/RecordedDataDialog.h"
 #include "ui/RobotPanel.h"
 #include "ui/RunPanel.h"
 #include "ui/ScenarioForm.h"
@@ -152,6 +153,12 @@ void MainWindow::connectViews()
     connect(a->newSession, &QAction::triggered, this, [this] {
         if (const auto s = m_form->scenario())
             m_controller->open(*s);
+    });
+    connect(a->identifyFromLogs, &QAction::triggered, this, [this] {
+        if (!m_recordedData)
+            m_recordedData = new RecordedDataDialog(&m_settings, this);
+        m_recordedData->show();
+        m_recordedData->raise();
     });
     connect(a->runTrial, &QAction::triggered, this, [this] {
         m_run->startSeries(1);

@@ -18,6 +18,7 @@ class FileController;
 class MainActions;
 class MessageBar;
 class PreTrialCheckView;
+class RecordedDataDialog;
 class RobotPanel;
 class RunPanel;
 class ScenarioForm;
@@ -52,6 +53,8 @@ public:
     TrackingErrorPlot *plot() const { return m_plot; }
     ConvergenceTableModel *tableModel() const { return m_table; }
     MessageBar *messageBar() const { return m_message; }
+    /// "Identify from recorded data", made when first opened (null before).
+    RecordedDataDialog *recordedDataDialog() const { return m_recordedData; }
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -79,6 +82,7 @@ private:
     FileController *m_files;
     SessionPresenter *m_presenter;
     QLabel *m_statusRobot;
+    RecordedDataDialog *m_recordedData = nullptr;
     ApplyConfirmation m_confirm;
 };
 

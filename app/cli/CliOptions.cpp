@@ -39,9 +39,18 @@ QString usageText()
         "                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]\n"
         "                       [--rho R] [--prior-share S] [--velocity auto|measured|q]\n"
         "                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]\n"
-        "                       [--urdf-out FILE] [--scenario FILE] [--workspace DIR] [--quiet]\n"
+        "                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]\n"
+        "                       [--workspace DIR] [--quiet]\n"
         "      Identify a real robot's inertia and friction from its recorded logs (CSV)\n"
         "      and compare the result with its URDF on the --validate logs.\n"
+        "  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]\n"
+        "                   [--workspace DIR] [--quiet]\n"
+        "      Plan the next trial for the robot's own controller: q_d(t) and tau_f(t)\n"
+        "      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).\n"
+        "  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]\n"
+        "                    [--workspace DIR] [--quiet]\n"
+        "      Learn from the controller's log of a plan; the next plan uses the new\n"
+        "      estimate.\n"
         "  learnid-cli COMMAND --help\n"
         "      The options of one command.\n");
 }
@@ -245,6 +254,10 @@ CommandLine parseCommandLine(const QStringList &args)
     }
     if (command == QLatin1String("identify")) {
         parseIdentifyCommandLine(args, &cl);
+        return cl;
+    }
+    if (command == QLatin1String("plan") || command == QLatin1String("learn")) {
+        parseLoopCommandLine(args, &cl);
         return cl;
     }
     const bool replay = command == QLatin1String("replay");

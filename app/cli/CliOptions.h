@@ -2,6 +2,7 @@
 
 #include "canrobot/CanRobotOptions.h"
 #include "cli/IdentifyOptions.h"
+#include "cli/LoopOptions.h"
 
 #include <QString>
 #include <QStringList>
@@ -44,11 +45,14 @@ struct CommandLine
         Run,
         Replay,
         Identify,
+        Plan,
+        Learn,
         Help,
         Version
     } command = Command::None;
     RunOptions run;
     IdentifyOptions identify;
+    LoopOptions loop; ///< `plan` and `learn`
     QString error;
     ExitCode errorCode = ExitUsage; ///< ExitUsage for syntax, ExitBadInput for a bad value
     QString usage;

@@ -1,60 +1,48 @@
 #include "cli/IdentifyCommand.h"
 
-#include "can/ManufacturerObjects.h"
+#include "cli/IdentifyReportPdf.h"
+#include "cli/TorquePlotPng.h"
+
 #include "cli/IdentifyTable.h"
 #include "io/AtomicFile.h"
-#include "io/ParameterFile.h"
 #include "io/ScenarioFile.h"
-#include "io/UrdfExport.h"
-#include "model/ChainModel.h"
 #include "model/Error.h"
-#include "model/ModelFactory.h"
-#include "model/UrdfChain.h"
-#include "service/SessionExport.h"
-#include "session/EstimateConsistency.h"
+#include "service/LogIdentification.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
-#include <algorithm>
 
 namespace learnid::cli {
 
 namespace {
 
-constexpr double consistencyTolerance = 1e-12; ///< relative to a link's largest eigenvalue
-
-/// The robot as --robot names it: its URDF text (kept for --urdf-out) and the chain read from it.
-struct Robot
+LogIdentificationRequest identificationRequest(const IdentifyOptions &o)
 {
-    QString model;  ///< the parameter file's robot.model: the built-in id, or "urdf"
-    QString source; ///< the URDF in messages
-    QByteArray urdf;
-    SerialChain chain;
-};
+    LogIdentificationRequest r;
+    r.robot = o.robot;
+    r.baseLink = o.baseLink;
+    r.tipLink = o.tipLink;
+    r.terms = o.terms;
+    r.trainingLogs = o.logs;
+    r.validationLogs = o.validationLogs;
+    r.columns = o.columns;
+    r.filter = o.filter;
+    r.fit = o.fit;
+    r.resample = o.resample;
+    return r;
+}
 
-Robot loadRobot(const IdentifyOptions &o)
+LogRobot loadRobot(const LogIdentificationRequest &request)
 {
-    QStringList builtIns;
-    for (const QString &id : knownRobotModels())
-        if (isUrdfModel(id) && id != QLatin1String("urdf"))
-            builtIns << id;
-    Robot r;
-    const bool builtIn = builtIns.contains(o.robot);
-    if (!builtIn && !QFileInfo(o.robot).isFile()) {
+    if (!builtInUrdfRobots().contains(request.robot) && !QFileInfo(request.robot).isFile()) {
         throw Error(
             QCoreApplication::translate(
                 "learnid-cli", "--robot: '%1' is neither a URDF file nor a built-in robot (%2)")
-                .arg(o.robot, builtIns.join(QStringLiteral(", "))));
+                .arg(request.robot, builtInUrdfRobots().join(QStringLiteral(", "))));
     }
-    r.model = builtIn ? o.robot : QStringLiteral("urdf");
-    const QString path = builtIn ? urdfFileOf(o.robot, {}) : o.robot;
-    r.source = builtIn ? QCoreApplication::translate("learnid-cli", "built-in %1").arg(o.robot)
-                       : QDir::toNativeSeparators(path);
-    r.urdf = readFile(path);
-    r.chain = parseUrdfChain(r.urdf, r.source, o.baseLink, o.tipLink);
-    return r;
+    return loadLogRobot(request);
 }
 
 // The parameter file records the gains the data were recorded with; logs do not say, so they
@@ -68,92 +56,49 @@ ControllerSettings exportController(const IdentifyOptions &o, int joints)
             QStringLiteral("%1: controller").arg(QDir::toNativeSeparators(o.scenarioPath)));
         return scenario.controller;
     }
-    const ControllerSettings defaults;
-    if (defaults.dof() != joints) {
-        throw Error(QCoreApplication::translate(
-                        "learnid-cli",
-                        "--export: a parameter file records the controller's gains, and the "
-                        "default gains are for %1 joints, the robot has %2: give them with "
-                        "--scenario FILE (its controller section)")
-                        .arg(defaults.dof())
-                        .arg(joints));
+    if (const auto defaults = defaultExportController(joints))
+        return *defaults;
+    throw Error(QCoreApplication::translate(
+                    "learnid-cli",
+                    "--export: a parameter file records the controller's gains, and the "
+                    "default gains are for %1 joints, the robot has %2: give them with "
+                    "--scenario FILE (its controller section)")
+                    .arg(ControllerSettings().dof())
+                    .arg(joints));
+}
+
+// --plots DIR: DIR/<log name>-torque.png per validation log; --report FILE: the text and the
+// plots as PDF. Images need the QGuiApplication main() makes for them (imagesWanted()).
+QList<QPair<QString, QByteArray>>
+plotFiles(const IdentifyOptions &o, const LogIdentificationResult &result, const QString &text)
+{
+    QList<QPair<QString, QByteArray>> files;
+    if (o.plotsDir.isEmpty() && o.reportPath.isEmpty())
+        return files;
+    QStringList names;
+    for (const ChainJoint &j : result.robot.chain.joints)
+        names << j.name;
+    QList<QByteArray> pngs;
+    for (const LogValidation &v : result.validation) {
+        const QFileInfo log(v.source);
+        const QByteArray png = torquePlotPng(
+            {QCoreApplication::translate("learnid-cli", "%1: torque predicted and measured")
+                 .arg(log.fileName()),
+             names, v.time, v.measured, v.predictedGiven, v.predictedIdentified});
+        pngs << png;
+        if (!o.plotsDir.isEmpty())
+            files.append(
+                {QDir(o.plotsDir).filePath(log.completeBaseName() + QStringLiteral("-torque.png")),
+                 png});
     }
-    return defaults;
-}
-
-FilteredLog loadLog(const QString &path, const ChainModel &model, const IdentifyOptions &o,
-                    QTextStream &err)
-{
-    if (!o.quiet)
-        err << QCoreApplication::translate("learnid-cli", "learnid-cli: reading %1")
-                   .arg(QDir::toNativeSeparators(path))
-            << Qt::endl;
-    QList<bool> angular; // revolute joints: a log in degrees is refused
-    for (const ChainJoint &j : model.chain().joints)
-        angular << (j.type == JointType::Revolute);
-    return filterLog(
-        resampleUniform(readRobotLogFile(path, model.dof(), o.columns, angular), o.resample),
-        o.filter);
-}
-
-// The verdict on the identified standard parameters themselves (not on base parameters with
-// the CAD model filling the rest, as checkEstimateConsistency() judges an estimate).
-QStringList consistencyLines(const ChainModel &model, const Eigen::VectorXd &standard)
-{
-    EstimateConsistency c;
-    c.applicable = true;
-    c.links = checkConsistency(standard, model.dof(), consistencyTolerance);
-    c.negativeTerms = negativeJointTerms(standard, model.nonnegativeStandard());
-    c.consistent = c.negativeTerms.empty() &&
-                   std::all_of(c.links.begin(), c.links.end(),
-                               [](const LinkConsistency &l) { return l.consistent; });
-    return c.describe(model);
-}
-
-ParameterFileContent parameterFile(const Robot &robot, const ChainModel &model, const LogFit &fit,
-                                   const IdentifyOptions &o, const ControllerSettings &controller)
-{
-    QStringList logs;
-    for (const QString &log : o.logs)
-        logs << QFileInfo(log).fileName();
-    ParameterFileContent c;
-    c.robotModel = robot.model;
-    c.robotDescription =
-        QCoreApplication::translate("learnid-cli", "%1 (%2), identified from the logs %3")
-            .arg(robot.chain.name, robot.source, logs.join(QStringLiteral(", ")));
-    c.controller = controller;
-    c.created = QDateTime::currentDateTimeUtc();
-    c.toolVersion = QStringLiteral(LEARNID_VERSION);
-    c.law = QStringLiteral("improved"); // its zero-phase filter F(s) prepares the logs
-    c.parameters = model.parameters();
-    c.values = fit.base;
-    c.residualRms = fit.trainingRms;
-    c.condition = fit.condition;
-    c.rank = fit.rank;
-    c.canWrites = objects::parameterWriteSequence(c.nodes(), fit.base);
-    return c;
-}
-
-// The URDF with the identified bodies and friction; a term the model does not have is 0.
-QByteArray urdfFile(const Robot &robot, const ChainModel &model, const LogFit &fit)
-{
-    const int n = model.dof();
-    const JointTerms &t = model.jointTerms();
-    std::vector<InertialParameters> bodies(size_t(n), InertialParameters::Zero());
-    std::vector<IdentifiedJoint> friction(static_cast<size_t>(n));
-    for (int j = 0; j < n; ++j) {
-        bodies[size_t(j)] = fit.standard.segment<10>(10 * j);
-        Eigen::Index at = 10 * n + Eigen::Index(j) * t.count() + (t.armature ? 1 : 0);
-        if (t.viscous)
-            friction[size_t(j)].viscous = fit.standard[at++];
-        if (t.coulomb)
-            friction[size_t(j)].coulomb = fit.standard[at];
+    if (!o.reportPath.isEmpty()) {
+        files.append(
+            {o.reportPath, identifyReportPdf(QCoreApplication::translate(
+                                                 "learnid-cli", "learnid: %1 identified from logs")
+                                                 .arg(result.robot.chain.name),
+                                             text, pngs)});
     }
-    const QString comment =
-        QCoreApplication::translate("learnid-cli", "identified by learnid-cli %1 identify on %2")
-            .arg(QStringLiteral(LEARNID_VERSION),
-                 QDateTime::currentDateTimeUtc().toString(Qt::ISODate));
-    return identifiedUrdf(robot.urdf, robot.source, robot.chain, bodies, friction, comment);
+    return files;
 }
 
 } // namespace
@@ -167,53 +112,63 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
     };
     QList<QPair<QString, QByteArray>> files;
     try {
-        const Robot robot = loadRobot(o);
-        const ChainModel model(robot.chain, o.terms, robot.model);
-        const ControllerSettings controller =
-            o.exportPath.isEmpty() ? ControllerSettings{} : exportController(o, model.dof());
+        const LogIdentificationRequest request = identificationRequest(o);
+        const LogRobot robot = loadRobot(request);
+        const ChainModel &model = *robot.model;
+        LogExportRequest exports;
+        if (!o.exportPath.isEmpty()) {
+            exports.parameterPath = o.exportPath;
+            exports.controller = exportController(o, model.dof());
+        }
         progress(QCoreApplication::translate("learnid-cli", "robot %1 (%2): %3 moving joints")
                      .arg(robot.chain.name, robot.source)
                      .arg(model.dof()));
 
-        std::vector<FilteredLog> training;
-        for (const QString &path : o.logs)
-            training.push_back(loadLog(path, model, o, err));
-        std::vector<FilteredLog> validation;
-        for (const QString &path : o.validationLogs)
-            validation.push_back(loadLog(path, model, o, err));
-        progress(
-            QCoreApplication::translate("learnid-cli", "fitting %1 standard parameters to %2 logs")
-                .arg(model.standardCount())
-                .arg(training.size()));
-        const LogFit fit = fitLogs(model, training, o.fit);
-
-        QStringList undetermined;
-        for (const int i : fit.undetermined())
-            undetermined << model.parameters().at(i).name;
-        if (!undetermined.isEmpty())
+        const auto stage = [&](const LogIdentificationProgress &p) {
+            switch (p.stage) {
+            case LogIdentificationStage::ReadTraining:
+            case LogIdentificationStage::ReadValidation:
+                if (!o.quiet)
+                    err << QCoreApplication::translate("learnid-cli", "learnid-cli: reading %1")
+                               .arg(QDir::toNativeSeparators(p.path))
+                        << Qt::endl;
+                break;
+            case LogIdentificationStage::Fit:
+                progress(QCoreApplication::translate("learnid-cli",
+                                                     "fitting %1 standard parameters to %2 logs")
+                             .arg(model.standardCount())
+                             .arg(p.count));
+                break;
+            case LogIdentificationStage::Robot:
+            case LogIdentificationStage::Validate:
+                break;
+            }
+        };
+        const LogIdentificationResult result = identifyFromLogs(robot, request, stage);
+        if (!result.undetermined.isEmpty())
             progress(QCoreApplication::translate("learnid-cli",
                                                  "base parameters the logs leave undetermined "
                                                  "(kept near the URDF's values): %1")
-                         .arg(undetermined.join(QStringLiteral(", "))));
+                         .arg(result.undetermined.join(QStringLiteral(", "))));
 
-        out << identifySummary(model, fit, int(training.size()),
-                               consistencyLines(model, fit.standard))
-            << QLatin1Char('\n') << trainingTable(model, fit);
-        for (const FilteredLog &log : validation) {
-            out << QLatin1Char('\n')
-                << validationTable(model, log.source, static_cast<long long>(log.keptSamples()),
-                                   torqueFigures(model, model.cadStandard(), log),
-                                   torqueFigures(model, fit.standard, log));
+        QString text = identifySummary(model, result.fit, int(result.trainingLogs.size()),
+                                       result.consistency) +
+                       QLatin1Char('\n') + trainingTable(model, result.fit);
+        for (const LogValidation &v : result.validation) {
+            text += QLatin1Char('\n') + validationTable(model, v.source,
+                                                        static_cast<long long>(v.samples()),
+                                                        v.given, v.identified);
         }
+        out << text;
         out.flush();
+        files += plotFiles(o, result, text);
 
-        if (!o.exportPath.isEmpty()) {
-            const ParameterFileContent content = parameterFile(robot, model, fit, o, controller);
-            files.append({o.exportPath, parameterFileToJson(content)});
-            files.append({dcfPathFor(o.exportPath), parameterDcfFragment(content)});
-        }
-        if (!o.urdfPath.isEmpty())
-            files.append({o.urdfPath, urdfFile(robot, model, fit)});
+        exports.urdfPath = o.urdfPath;
+        exports.urdfComment = QCoreApplication::translate(
+                                  "learnid-cli", "identified by learnid-cli %1 identify on %2")
+                                  .arg(QStringLiteral(LEARNID_VERSION),
+                                       QDateTime::currentDateTimeUtc().toString(Qt::ISODate));
+        files += logExportFiles(result, exports);
     } catch (const Error &e) {
         out.flush();
         err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(e.message())
@@ -221,6 +176,9 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
         return ExitBadInput;
     }
     try {
+        if (!o.plotsDir.isEmpty() && !QDir().mkpath(o.plotsDir))
+            throw Error(QCoreApplication::translate("learnid-cli", "--plots: cannot create %1")
+                            .arg(QDir::toNativeSeparators(o.plotsDir)));
         writeFilesAtomically(files);
     } catch (const Error &e) {
         err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(e.message())

@@ -7,7 +7,7 @@
 namespace learnid::cli {
 
 /// `learnid-cli identify`: the robot's inertia and joint friction fitted to its recorded logs
-/// (read, resampled, filtered and fitted as bench/realdata.cpp does), checked on the --validate
+/// (identifyFromLogs(), service/LogIdentification.h), checked on the --validate
 /// logs against the URDF as given. Writes the tables to out, progress and errors to err, and
 /// the requested files (all or none) only when everything succeeded.
 ExitCode identifyCommand(const IdentifyOptions &options, QTextStream &out, QTextStream &err);

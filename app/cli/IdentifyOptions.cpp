@@ -117,6 +117,10 @@ QString readValues(const QCommandLineParser &parser, IdentifyOptions *o)
         o->exportPath = resolveOutputPath(ws, value("export"), QStringLiteral("--export"));
     if (isSet("urdf-out"))
         o->urdfPath = resolveOutputPath(ws, value("urdf-out"), QStringLiteral("--urdf-out"));
+    if (isSet("report"))
+        o->reportPath = resolveOutputPath(ws, value("report"), QStringLiteral("--report"));
+    if (isSet("plots"))
+        o->plotsDir = resolveOutputPath(ws, value("plots"), QStringLiteral("--plots"));
     if (!o->urdfPath.isEmpty() &&
         (o->urdfPath == o->exportPath || o->urdfPath == dcfPathFor(o->exportPath)))
         return QCoreApplication::translate("learnid-cli", "--urdf-out: %1 is where --export writes")
@@ -188,6 +192,15 @@ void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
                QT_TRANSLATE_NOOP("learnid-cli",
                                  "Write the URDF with the identified inertia and friction."),
                "FILE"),
+        option("report",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "Write the report (PDF): the tables and the torque plots."),
+               "FILE"),
+        option("plots",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "Write the predicted and measured torque of each validation log "
+                                 "as PNG into this folder (made if missing)."),
+               "DIR"),
         option("scenario",
                QT_TRANSLATE_NOOP("learnid-cli",
                                  "Scenario whose controller gains the parameter file records."),

@@ -30,6 +30,8 @@ struct IdentifyOptions
     QString scenarioPath; ///< --scenario: the controller gains the parameter file records
     QString exportPath;   ///< the parameter file (JSON, and its DCF beside it); empty: none
     QString urdfPath;     ///< the identified URDF; empty: none
+    QString reportPath;   ///< the report (PDF: tables and plots); empty: none
+    QString plotsDir;     ///< one PNG per validation log; empty: none
     bool quiet = false;
 };
 

@@ -1,16 +1,25 @@
 #include "cli/CliOptions.h"
 #include "cli/IdentifyCommand.h"
+#include "cli/LoopCommands.h"
 #include "cli/RunCommand.h"
+#include "cli/TorquePlotPng.h"
 #include "translations/Translations.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
 #include <QLocale>
 #include <QTextStream>
 #include <cstdio>
+#include <memory>
 
 int main(int argc, char **argv)
 {
-    QCoreApplication app(argc, argv);
+    // identify --plots / --report draw images, which needs Qt's GUI library (fonts); every
+    // other command stays a plain console program.
+    const std::unique_ptr<QCoreApplication> application =
+        learnid::cli::imagesWanted(argc, argv) ? std::make_unique<QGuiApplication>(argc, argv)
+                                               : std::make_unique<QCoreApplication>(argc, argv);
+    QCoreApplication &app = *application;
     QCoreApplication::setApplicationName(QStringLiteral("learnid-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(LEARNID_VERSION));
     learnid::installTranslators(app, QLocale::system()); // messages in the user's language
@@ -33,6 +42,10 @@ int main(int argc, char **argv)
         return runCommand(cl.run, out, err);
     case CommandLine::Command::Identify:
         return identifyCommand(cl.identify, out, err);
+    case CommandLine::Command::Plan:
+        return planCommand(cl.loop, out, err);
+    case CommandLine::Command::Learn:
+        return learnCommand(cl.loop, out, err);
     case CommandLine::Command::None:
         break;
     }

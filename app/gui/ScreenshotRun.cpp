@@ -5,12 +5,16 @@
 #include "ui/ApplyPreview.h"
 #include "ui/MainActions.h"
 #include "ui/MainWindow.h"
+#include "ui/MessageBar.h"
+#include "ui/RecordedDataDialog.h"
 #include "ui/RobotPanel.h"
 #include "ui/ScenarioForm.h"
 #include "ui/TrackingErrorPlot.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QDir>
+#include <QFileInfo>
 #include <QPushButton>
 #include <QTimer>
 #include <cstdio>
@@ -20,7 +24,7 @@ namespace learnid {
 namespace {
 
 const QStringList kViewNames = {QStringLiteral("main"), QStringLiteral("apply-dialog"),
-                                QStringLiteral("refused-check")};
+                                QStringLiteral("refused-check"), QStringLiteral("recorded-data")};
 
 } // namespace
 
@@ -44,6 +48,8 @@ QStringList ScreenshotRun::viewNames()
 
 void ScreenshotRun::start()
 {
+    if (m_view == View::RecordedData)
+        return startRecordedData();
     SessionController *c = m_window->controller();
     m_window->setApplyConfirmation(
         [this](const ApplyPreview &preview) { return confirmByScreenshot(preview); });
@@ -86,6 +92,41 @@ void ScreenshotRun::start()
     QTimer::singleShot(180000, this, [this] { finish(QStringLiteral("timed out")); });
     m_window->show();
     m_window->robotPanel()->connectButton()->click();
+}
+
+void ScreenshotRun::startRecordedData()
+{
+    const QDir data(qEnvironmentVariable("LEARNID_DATA"));
+    const QString urdf = data.filePath(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
+    if (qEnvironmentVariableIsEmpty("LEARNID_DATA") || !QFileInfo::exists(urdf)) {
+        // After exec() has started: exit() before it would be lost.
+        QTimer::singleShot(0, this, [this] {
+            finish(QStringLiteral("set LEARNID_DATA to the folder of the recorded robot data "
+                                  "(with kuka-lwr4/)"));
+        });
+        return;
+    }
+    m_window->show();
+    m_window->actions()->identifyFromLogs->trigger();
+    RecordedDataDialog *dialog = m_window->recordedDataDialog();
+    dialog->resize(1440, 940); // the picture's size, whatever the screen's
+    const auto log = [&data](int run) {
+        return data.filePath(QStringLiteral("kuka-lwr4/measurements_%1.csv").arg(run));
+    };
+    dialog->form()->setRobot(urdf);
+    dialog->form()->setTrainingLogs({log(1), log(2)});
+    dialog->form()->setValidationLogs({log(3)});
+    connect(dialog, &RecordedDataDialog::identificationFinished, this, [this, dialog](bool ok) {
+        if (!ok)
+            return finish(dialog->messageBar()->text());
+        // Let the table and the plots lay out the result before grabbing.
+        QTimer::singleShot(300, this, [this, dialog] {
+            const bool saved = dialog->grab().save(m_path, "PNG");
+            finish(saved ? QString() : QStringLiteral("cannot write %1").arg(m_path));
+        });
+    });
+    QTimer::singleShot(180000, this, [this] { finish(QStringLiteral("timed out")); });
+    dialog->identify();
 }
 
 void ScreenshotRun::grabWindowLater()

@@ -16,13 +16,15 @@ struct ApplyPreview;
 /// - `main` (default): the window after the session, the last estimate accepted and applied;
 /// - `apply-dialog`: the confirmation dialog of applying the last estimate (nothing is applied);
 /// - `refused-check`: the window after a session with the paper's lambda = 40, whose pre-trial
-///   check refuses the second trial.
+///   check refuses the second trial;
+/// - `recorded-data`: the "Identify from recorded data" dialog after identifying the KUKA LWR4+
+///   from its runs 1 + 2, validated on run 3 (the recorded data in the folder LEARNID_DATA).
 class ScreenshotRun : public QObject
 {
     Q_OBJECT
 
 public:
-    enum class View { Main, ApplyDialog, RefusedCheck };
+    enum class View { Main, ApplyDialog, RefusedCheck, RecordedData };
 
     ScreenshotRun(MainWindow *window, QString path, View view = View::Main);
     void start();
@@ -32,6 +34,7 @@ public:
     static QStringList viewNames();
 
 private:
+    void startRecordedData();
     void grabWindowLater();
     bool confirmByScreenshot(const ApplyPreview &preview);
     void finish(const QString &error);

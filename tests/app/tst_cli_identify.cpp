@@ -13,6 +13,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QImage>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
@@ -79,6 +80,7 @@ class TestCliIdentify : public QObject
 private slots:
     void doublePendulum_printsTheLibrarysFiguresAndWritesItsFit();
     void kuka_identifiedModelPredictsTheHeldOutRunBetterThanItsUrdf();
+    void plotsAndReport_drawEveryJointOfEveryValidationLog();
     void badInput_exitsWithMessageAndWritesNothing_data();
     void badInput_exitsWithMessageAndWritesNothing();
     void help_listsTheCommandAndItsOptions();
@@ -171,6 +173,51 @@ void TestCliIdentify::kuka_identifiedModelPredictsTheHeldOutRunBetterThanItsUrdf
     QCOMPARE(table.jointRows, 7);
     QVERIFY2(table.identifiedOverall.toDouble() < 3.5, qPrintable(r.out));
     QVERIFY2(table.identifiedOverall.toDouble() < table.givenOverall.toDouble(), qPrintable(r.out));
+}
+
+void TestCliIdentify::plotsAndReport_drawEveryJointOfEveryValidationLog()
+{
+    QStringList files;
+    for (const char *name : {"trajectory_00.csv", "trajectory_02.csv", "trajectory_03.csv"}) {
+        files << test::sharedDataFile(QStringLiteral("double-pendulum/") + QLatin1String(name));
+        if (files.constLast().isEmpty())
+            QSKIP(qPrintable(test::sharedDataMissing()));
+    }
+    QTemporaryDir dir;
+    const test::ToolRun r =
+        cli({QStringLiteral("identify"), QStringLiteral("--robot"),
+             QStringLiteral("double-pendulum"), QStringLiteral("--columns"),
+             QStringLiteral("t=time,q=pos_meas%1,dq=vel_meas%1,tau=tau_meas%1"),
+             QStringLiteral("--log"), files[0], QStringLiteral("--validate"), files[1],
+             QStringLiteral("--validate"), files[2], QStringLiteral("--plots"),
+             QStringLiteral("plots"), QStringLiteral("--report"), QStringLiteral("report.pdf")},
+            dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    // One PNG per validation log: a panel per joint (2 x 170 px, 14 between, 96 of title,
+    // legend and time axis), the identified torque drawn in its blue in every panel.
+    for (const char *name : {"trajectory_02-torque.png", "trajectory_03-torque.png"}) {
+        QImage image(dir.filePath(QStringLiteral("plots/") + QLatin1String(name)));
+        QVERIFY2(!image.isNull(), name);
+        QCOMPARE(image.size(), QSize(1200, 56 + 2 * 170 + 14 + 40));
+        for (const int panelTop : {56, 56 + 170 + 14}) {
+            int blue = 0;
+            for (int y = panelTop; y < panelTop + 170; ++y) {
+                for (int x = 90; x < 1180; ++x)
+                    blue += image.pixelColor(x, y) == QColor(30, 90, 200) ? 1 : 0;
+            }
+            QVERIFY2(blue > 500, qPrintable(QStringLiteral("%1: %2 blue pixels in the panel at "
+                                                           "y = %3")
+                                                .arg(QLatin1String(name))
+                                                .arg(blue)
+                                                .arg(panelTop)));
+        }
+    }
+    // The report: the tables' text, then one page per plot.
+    QFile pdf(dir.filePath(QStringLiteral("report.pdf")));
+    QVERIFY(pdf.open(QIODevice::ReadOnly));
+    const QByteArray bytes = pdf.readAll();
+    QVERIFY(bytes.startsWith("%PDF-"));
+    QCOMPARE(bytes.count("/Type /Page\n"), 3);
 }
 
 void TestCliIdentify::badInput_exitsWithMessageAndWritesNothing_data()

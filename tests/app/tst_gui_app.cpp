@@ -1,6 +1,7 @@
 // The `learnid` executable as a technician starts it: --screenshot renders the main window after
 // a simulated session (the README's and the user guide's pictures come from it), and bad
 // options end with a clear message and a non-zero exit.
+#include "../support/SharedData.h"
 #include "../support/ToolRun.h"
 
 #include <QImage>
@@ -16,11 +17,15 @@ class TestGuiApp : public QObject
 private:
     using Run = learnid::test::ToolRun;
 
-    static Run learnid(const QStringList &arguments)
+    /// data: LEARNID_DATA for the recorded-data view ("": unset).
+    static Run learnid(const QStringList &arguments, const QString &data = {})
     {
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
         env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
+        env.remove(QStringLiteral("LEARNID_DATA"));
+        if (!data.isEmpty())
+            env.insert(QStringLiteral("LEARNID_DATA"), data);
         return learnid::test::runTool(QStringLiteral(LEARNID_GUI_PATH), arguments, {}, 120000, env);
     }
 
@@ -58,6 +63,28 @@ private slots:
         QVERIFY2(image.width() >= minWidth && image.height() >= 200,
                  qPrintable(QStringLiteral("%1 x %2").arg(image.width()).arg(image.height())));
         QVERIFY2(distinctColours(image) > 40, qPrintable(QString::number(distinctColours(image))));
+    }
+
+    // docs/images/recorded-data.png: the KUKA LWR4+ identified from its recorded runs.
+    void screenshot_recordedData_rendersTheIdentifiedRobot()
+    {
+        if (learnid::test::sharedDataFile(QStringLiteral("kuka-lwr4/measurements_3.csv")).isEmpty())
+            QSKIP(qPrintable(learnid::test::sharedDataMissing()));
+        QTemporaryDir dir;
+        const QString png = dir.filePath(QStringLiteral("recorded-data.png"));
+        const QStringList args{QStringLiteral("--screenshot"), png,
+                               QStringLiteral("--screenshot-view"),
+                               QStringLiteral("recorded-data")};
+        const Run run = learnid(args, learnid::test::sharedDataDir());
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        const QImage image(png);
+        QVERIFY2(image.width() >= 1000 && image.height() >= 600,
+                 qPrintable(QStringLiteral("%1 x %2").arg(image.width()).arg(image.height())));
+        QVERIFY2(distinctColours(image) > 40, qPrintable(QString::number(distinctColours(image))));
+
+        const Run without = learnid(args);
+        QCOMPARE(without.exitCode, 1);
+        QVERIFY2(without.err.contains(QStringLiteral("set LEARNID_DATA")), qPrintable(without.err));
     }
 
     void badOptions_endWithAClearMessage_data()

@@ -1,0 +1,146 @@
+#include "cli/LoopOptions.h"
+
+#include "cli/CliOptions.h"
+#include "io/OutputPath.h"
+#include "model/Error.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+
+namespace learnid::cli {
+
+namespace {
+
+// description: a QT_TRANSLATE_NOOP("learnid-cli", ...) text.
+QCommandLineOption option(const char *name, const char *description, const char *value = nullptr)
+{
+    const QString text = QCoreApplication::translate("learnid-cli", description);
+    return value ? QCommandLineOption(QLatin1String(name), text, QLatin1String(value))
+                 : QCommandLineOption(QLatin1String(name), text);
+}
+
+QString usageOf(bool plan, const QCommandLineParser &parser)
+{
+    QString options = parser.helpText();
+    const qsizetype at = options.indexOf(QLatin1String("Options:"));
+    options = at >= 0 ? options.mid(at) : options;
+    return plan ? QCoreApplication::translate(
+                      "learnid-cli",
+                      "Usage: learnid-cli plan --out DIR [options]\n\n"
+                      "Plan the next trial for the robot's own controller: q_d(t) and the\n"
+                      "feedforward tau_f(t) per joint (DIR/plan.csv) and the pre-trial check\n"
+                      "(DIR/check.txt). A plan that fails the check is not written.\n\n%1")
+                      .arg(options)
+                : QCoreApplication::translate(
+                      "learnid-cli",
+                      "Usage: learnid-cli learn --trial-log FILE [options]\n\n"
+                      "Learn from the log the robot's own controller recorded while running a\n"
+                      "plan: the new estimate joins the history, the convergence table goes to\n"
+                      "stdout, and the next plan uses the new estimate.\n\n%1")
+                      .arg(options);
+}
+
+} // namespace
+
+void parseLoopCommandLine(const QStringList &args, CommandLine *cl)
+{
+    const bool plan = args.value(1) == QLatin1String("plan");
+    QCommandLineParser parser;
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    parser.addOptions({
+        option("scenario",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "Scenario file (JSON, docs/scenario.md); default: the paper "
+                                 "scenario."),
+               "FILE"),
+        option("history",
+               QT_TRANSLATE_NOOP("learnid-cli",
+                                 "The learning history's folder; default: learnid-history beside "
+                                 "plan.csv (plan) or the trial log (learn)."),
+               "DIR"),
+        option(
+            "workspace",
+            QT_TRANSLATE_NOOP("learnid-cli", "Folder that relative output paths are taken from."),
+            "DIR"),
+        option("quiet", QT_TRANSLATE_NOOP("learnid-cli", "No progress lines on stderr.")),
+        QCommandLineOption(
+            {QStringLiteral("h"), QStringLiteral("help")},
+            QCoreApplication::translate("learnid-cli", "Show this command's options.")),
+    });
+    if (plan) {
+        parser.addOptions({
+            option("out",
+                   QT_TRANSLATE_NOOP("learnid-cli", "Folder to write plan.csv and check.txt into."),
+                   "DIR"),
+            option("estimate",
+                   QT_TRANSLATE_NOOP("learnid-cli",
+                                     "Parameter file of the estimate to plan with; default: the "
+                                     "history's newest, or the scenario's initial estimate."),
+                   "FILE"),
+        });
+    } else {
+        parser.addOption(
+            option("trial-log",
+                   QT_TRANSLATE_NOOP("learnid-cli",
+                                     "The controller's log of a run of the plan (CSV); once per "
+                                     "repetition."),
+                   "FILE"));
+    }
+    if (!parser.parse(args.mid(1))) {
+        cl->error = parser.errorText();
+        return;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        cl->command = CommandLine::Command::Help;
+        cl->usage = usageOf(plan, parser);
+        return;
+    }
+    if (!parser.positionalArguments().isEmpty()) {
+        cl->error = QCoreApplication::translate("learnid-cli", "unexpected argument '%1'")
+                        .arg(parser.positionalArguments().constFirst());
+        return;
+    }
+    LoopOptions &o = cl->loop;
+    o.scenarioPath = parser.value(QStringLiteral("scenario"));
+    o.quiet = parser.isSet(QStringLiteral("quiet"));
+    if (plan) {
+        o.estimatePath = parser.value(QStringLiteral("estimate"));
+        if (!parser.isSet(QStringLiteral("out"))) {
+            cl->error = QCoreApplication::translate("learnid-cli", "'plan' needs --out DIR");
+            return;
+        }
+    } else {
+        o.trialLogs = parser.values(QStringLiteral("trial-log"));
+        if (o.trialLogs.isEmpty()) {
+            cl->error =
+                QCoreApplication::translate("learnid-cli", "'learn' needs --trial-log FILE");
+            return;
+        }
+    }
+    const QString ws = parser.isSet(QStringLiteral("workspace"))
+                           ? parser.value(QStringLiteral("workspace"))
+                           : QDir::currentPath();
+    try {
+        if (plan)
+            o.outDir =
+                resolveOutputPath(ws, parser.value(QStringLiteral("out")), QStringLiteral("--out"));
+        if (parser.isSet(QStringLiteral("history")))
+            o.historyDir = resolveOutputPath(ws, parser.value(QStringLiteral("history")),
+                                             QStringLiteral("--history"));
+        else if (plan)
+            o.historyDir = QDir(o.outDir).filePath(QLatin1String(defaultHistoryFolder));
+        else
+            o.historyDir = QFileInfo(o.trialLogs.constFirst())
+                               .absoluteDir()
+                               .filePath(QLatin1String(defaultHistoryFolder));
+    } catch (const Error &e) {
+        cl->error = e.message();
+        cl->errorCode = ExitBadInput;
+        return;
+    }
+    cl->command = plan ? CommandLine::Command::Plan : CommandLine::Command::Learn;
+}
+
+} // namespace learnid::cli

@@ -1,0 +1,92 @@
+#include "io/ControllerLogCsv.h"
+
+#include "io/AtomicFile.h"
+#include "io/RobotLogCsv.h"
+#include "model/Error.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <cmath>
+
+namespace learnid {
+
+namespace {
+
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(ControllerLogCsv)
+};
+
+[[noreturn]] void throwAtLine(const QString &source, int line, const QString &what)
+{
+    throw Error(Text::tr("%1: line %2: %3").arg(source, QString::number(line), what));
+}
+
+// A time for messages: 3 * 0.01 shows as 0.03, not 0.030000000000000002.
+QString seconds(double t)
+{
+    return QString::number(t, 'g', 10);
+}
+
+} // namespace
+
+ControllerLog readControllerLog(const QByteArray &csv, const QString &source, const PlanCsv &plan,
+                                const QList<bool> &angular)
+{
+    ControllerLog log;
+    log.planId = planIdLine(csv, source);
+    if (log.planId.isEmpty())
+        throw Error(Text::tr("%1: no \"# plan-id:\" comment line; the controller copies the "
+                             "plan's line \"# plan-id: %2\" into its log")
+                        .arg(source, plan.planId));
+    if (log.planId != plan.planId)
+        throw Error(Text::tr("%1: the log is of plan %2, not of plan %3")
+                        .arg(source, log.planId, plan.planId));
+
+    const RobotLog robotLog = readRobotLog(csv, source, plan.joints(), LogColumns{}, angular);
+    const double ts = plan.samplePeriod;
+    const int planned = plan.samples();
+    const int samples = int(robotLog.samples());
+    for (int k = 0; k < samples; ++k) {
+        const double t = robotLog.t[k];
+        if (k >= planned)
+            throwAtLine(source, robotLog.rows.at(size_t(k)),
+                        Text::tr("sample %1 (t = %2 s) is beyond the plan's %3 samples, the last "
+                                 "at t = %4 s")
+                            .arg(k)
+                            .arg(seconds(t))
+                            .arg(planned)
+                            .arg(seconds((planned - 1) * ts)));
+        if (std::abs(t - k * ts) > controllerLogJitter * ts)
+            throwAtLine(
+                source, robotLog.rows.at(size_t(k)),
+                Text::tr("t = %1 s is off the plan's grid: sample %2 is planned at t = %3 s "
+                         "(+-%4 s); a log holds every sample of the plan, at the plan's "
+                         "times")
+                    .arg(seconds(t))
+                    .arg(k)
+                    .arg(seconds(k * ts), seconds(controllerLogJitter * ts)));
+    }
+    log.rows = robotLog.rows;
+    log.record.samplePeriod = ts;
+    log.record.q = robotLog.q;
+    log.record.tau = robotLog.tau;
+    if (samples < planned) {
+        log.record.status = TrialStatus::Aborted;
+        log.record.message =
+            Text::tr("the log ends after %1 of the plan's %2 samples (t = %3 s "
+                     "of %4 s): the trial ended early")
+                .arg(samples)
+                .arg(planned)
+                .arg(seconds(robotLog.t[samples - 1]), seconds((planned - 1) * ts));
+    }
+    return log;
+}
+
+ControllerLog readControllerLogFile(const QString &path, const PlanCsv &plan,
+                                    const QList<bool> &angular)
+{
+    return readControllerLog(readFile(path), QDir::toNativeSeparators(path), plan, angular);
+}
+
+} // namespace learnid

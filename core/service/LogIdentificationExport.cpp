@@ -1,0 +1,102 @@
+// The exports of an identification from logs (LogIdentification.h): the parameter file with its
+// DCF fragment and the identified URDF, as `learnid-cli identify` and the window write them.
+#include "service/LogIdentification.h"
+
+#include "can/ManufacturerObjects.h"
+#include "io/AtomicFile.h"
+#include "io/UrdfExport.h"
+#include "model/Error.h"
+#include "service/SessionExport.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFileInfo>
+
+namespace learnid {
+
+std::optional<ControllerSettings> defaultExportController(int joints)
+{
+    const ControllerSettings defaults;
+    if (defaults.dof() != joints)
+        return std::nullopt;
+    return defaults;
+}
+
+ParameterFileContent logParameterFile(const LogIdentificationResult &result,
+                                      const ControllerSettings &controller)
+{
+    QStringList logs;
+    for (const QString &log : result.trainingLogs)
+        logs << QFileInfo(log).fileName();
+    const LogFit &fit = result.fit;
+    ParameterFileContent c;
+    c.robotModel = result.robot.modelId;
+    c.robotDescription =
+        QCoreApplication::translate("LogIdentification", "%1 (%2), identified from the logs %3")
+            .arg(result.robot.chain.name, result.robot.source, logs.join(QStringLiteral(", ")));
+    c.controller = controller;
+    c.created = QDateTime::currentDateTimeUtc();
+    c.toolVersion = QStringLiteral(LEARNID_VERSION);
+    c.law = QStringLiteral("improved"); // its zero-phase filter F(s) prepares the logs
+    c.parameters = result.model().parameters();
+    c.values = fit.base;
+    c.residualRms = fit.trainingRms;
+    c.condition = fit.condition;
+    c.rank = fit.rank;
+    c.canWrites = objects::parameterWriteSequence(c.nodes(), fit.base);
+    return c;
+}
+
+QByteArray logIdentifiedUrdf(const LogIdentificationResult &result, const QString &comment)
+{
+    const ChainModel &model = result.model();
+    const LogFit &fit = result.fit;
+    const int n = model.dof();
+    const JointTerms &t = model.jointTerms();
+    std::vector<InertialParameters> bodies(size_t(n), InertialParameters::Zero());
+    std::vector<IdentifiedJoint> friction(static_cast<size_t>(n));
+    for (int j = 0; j < n; ++j) {
+        bodies[size_t(j)] = fit.standard.segment<10>(10 * j);
+        // pi: 10 n inertia entries, then per joint its terms in JointTerms' order.
+        Eigen::Index at = 10 * n + Eigen::Index(j) * t.count() + (t.armature ? 1 : 0);
+        if (t.viscous)
+            friction[size_t(j)].viscous = fit.standard[at++];
+        if (t.coulomb)
+            friction[size_t(j)].coulomb = fit.standard[at];
+    }
+    return identifiedUrdf(result.robot.urdf, result.robot.source, result.robot.chain, bodies,
+                          friction, comment);
+}
+
+QList<QPair<QString, QByteArray>> logExportFiles(const LogIdentificationResult &result,
+                                                 const LogExportRequest &request)
+{
+    QList<QPair<QString, QByteArray>> files;
+    if (!request.parameterPath.isEmpty()) {
+        if (request.controller.dof() != result.model().dof()) {
+            throw Error(QCoreApplication::translate("LogIdentification",
+                                                    "the controller gains the parameter file "
+                                                    "records are for %1 joints, the robot has %2")
+                            .arg(request.controller.dof())
+                            .arg(result.model().dof()));
+        }
+        const ParameterFileContent content = logParameterFile(result, request.controller);
+        files.append({request.parameterPath, parameterFileToJson(content)});
+        files.append({dcfPathFor(request.parameterPath), parameterDcfFragment(content)});
+    }
+    if (!request.urdfPath.isEmpty())
+        files.append({request.urdfPath, logIdentifiedUrdf(result, request.urdfComment)});
+    return files;
+}
+
+QStringList writeLogExport(const LogIdentificationResult &result, const LogExportRequest &request)
+{
+    const QList<QPair<QString, QByteArray>> files = logExportFiles(result, request);
+    writeFilesAtomically(files);
+    QStringList paths;
+    for (const auto &file : files)
+        paths << file.first;
+    return paths;
+}
+
+} // namespace learnid

@@ -1,0 +1,89 @@
+#include "ui/LogIdentificationText.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+
+namespace learnid {
+
+namespace {
+
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(LogIdentificationText)
+};
+
+QString number(double v, char format, int precision)
+{
+    return QString::number(v, format, precision);
+}
+
+} // namespace
+
+QString logIdentificationStageText(const LogIdentificationProgress &p)
+{
+    const QString index = QString::number(p.index + 1), count = QString::number(p.count);
+    const QString file = QFileInfo(p.path).fileName();
+    switch (p.stage) {
+    case LogIdentificationStage::Robot:
+        return Text::tr("Reading the robot %1\u2026").arg(p.path);
+    case LogIdentificationStage::ReadTraining:
+        return Text::tr("Reading training log %1 of %2: %3\u2026").arg(index, count, file);
+    case LogIdentificationStage::ReadValidation:
+        return Text::tr("Reading validation log %1 of %2: %3\u2026").arg(index, count, file);
+    case LogIdentificationStage::Fit:
+        return Text::tr("Fitting the parameters to %n log(s)\u2026", nullptr, p.count);
+    case LogIdentificationStage::Validate:
+        return Text::tr("Predicting validation log %1 of %2: %3\u2026").arg(index, count, file);
+    }
+    return {};
+}
+
+QString logIdentificationSummaryHtml(const LogIdentificationResult &r)
+{
+    const ChainModel &model = r.model();
+    const LogFit &fit = r.fit;
+    QStringList residual;
+    for (int j = 0; j < model.dof(); ++j)
+        residual << QStringLiteral("%1: %2").arg(j + 1).arg(number(fit.trainingRms[j], 'f', 4));
+    const QString robot = Text::tr("<p><b>%1</b> (%2), %3 moving joints.</p>")
+                              .arg(model.chain().name.toHtmlEscaped(),
+                                   r.robot.source.toHtmlEscaped(), QString::number(model.dof()));
+    const QString fitText =
+        Text::tr("<p>Fitted to %n log(s), %1 samples: %2 of %3 standard-parameter directions "
+                 "determined (condition %4); %5.</p>",
+                 nullptr, int(r.trainingLogs.size()))
+            .arg(QString::number(fit.samples), QString::number(fit.rank),
+                 QString::number(model.standardCount()), number(fit.condition, 'g', 3),
+                 fit.converged ? Text::tr("the consistent fit converged")
+                               : Text::tr("the consistent fit stopped at its step limit"));
+    const QString consistency =
+        Text::tr("<p><b>Consistency:</b> <span style=\"color:%1\">%2</span></p>")
+            .arg(r.consistent ? QStringLiteral("#1e7b34") : QStringLiteral("#b06000"),
+                 r.consistency.join(QStringLiteral("; ")).toHtmlEscaped());
+    const QString undetermined =
+        r.undetermined.isEmpty()
+            ? Text::tr("<p><b>Undetermined base parameters:</b> none of %1.</p>")
+                  .arg(QString::number(fit.baseCount))
+            : Text::tr(
+                  "<p><b>Undetermined base parameters</b> (kept near the URDF's values), %1 of "
+                  "%2: %3</p>")
+                  .arg(QString::number(r.undetermined.size()), QString::number(fit.baseCount),
+                       r.undetermined.join(QStringLiteral(", ")).toHtmlEscaped());
+    const QString training = Text::tr("<p><b>Training residual</b>, RMS per joint [N m]: %1</p>")
+                                 .arg(residual.join(QStringLiteral(", ")));
+    return robot + fitText + consistency + undetermined + training;
+}
+
+QString logIdentificationMessage(const LogIdentificationResult &r)
+{
+    if (r.validation.empty())
+        return Text::tr("Identified; no validation log. Accept the result to export it.");
+    const LogValidation &v = r.validation.front();
+    return Text::tr(
+               "Identified: on %1 the torque error is %2 % of the measured torque (URDF as given: "
+               "%3 %). Accept the result to export it.")
+        .arg(QFileInfo(v.source).fileName(), number(100.0 * v.identified.overall, 'f', 3),
+             number(100.0 * v.given.overall, 'f', 3));
+}
+
+} // namespace learnid
