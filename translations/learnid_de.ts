@@ -331,7 +331,7 @@
 <context>
     <name>ChainDynamics</name>
     <message>
-        <location filename="../core/model/ChainDynamics.cpp" line="+56"/>
+        <location filename="../core/model/ChainDynamics.cpp" line="+54"/>
         <source>%1 has %2 moving joints: a chain needs 1 to %3</source>
         <translation>%1 hat %2 bewegliche Gelenke: eine Kette braucht 1 bis %3</translation>
     </message>
@@ -435,6 +435,39 @@
         <location line="+3"/>
         <source>Unknown drive state</source>
         <translation>Unbekannter Antriebszustand</translation>
+    </message>
+</context>
+<context>
+    <name>ControllerLogCsv</name>
+    <message>
+        <location filename="../core/io/ControllerLogCsv.cpp" line="+22"/>
+        <source>%1: line %2: %3</source>
+        <translation>%1: Zeile %2: %3</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s line &quot;# plan-id: %2&quot; into its log</source>
+        <translation>%1: keine Kommentarzeile „# plan-id:“; der Regler übernimmt die Zeile „# plan-id: %2“ des Plans in sein Log</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the log is of plan %2, not of plan %3</source>
+        <translation>%1: das Log gehört zu Plan %2, nicht zu Plan %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>sample %1 (t = %2 s) is beyond the plan&apos;s %3 samples, the last at t = %4 s</source>
+        <translation>Abtastwert %1 (t = %2 s) liegt hinter den %3 Abtastwerten des Plans, deren letzter bei t = %4 s liegt</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>t = %1 s is off the plan&apos;s grid: sample %2 is planned at t = %3 s (+-%4 s); a log holds every sample of the plan, at the plan&apos;s times</source>
+        <translation>t = %1 s liegt nicht im Zeitraster des Plans: Abtastwert %2 ist bei t = %3 s (+-%4 s) geplant; ein Log enthält jeden Abtastwert des Plans, zu den Zeiten des Plans</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the trial ended early</source>
+        <translation>das Log endet nach %1 der %2 Abtastwerte des Plans (t = %3 s von %4 s): der Versuch endete vorzeitig</translation>
     </message>
 </context>
 <context>
@@ -697,7 +730,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+106"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+79"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
     </message>
@@ -715,6 +748,154 @@
         <location line="+4"/>
         <source>physically consistent: every link a real body</source>
         <translation>physikalisch konsistent: jedes Glied ein realer Körper</translation>
+    </message>
+</context>
+<context>
+    <name>FileLoop</name>
+    <message>
+        <location filename="../core/service/FileLoop.cpp" line="+35"/>
+        <source>unknown robot model &quot;%1&quot;</source>
+        <translation>unbekanntes Robotermodell „%1“</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>cannot create the folder %1</source>
+        <translation>Ordner %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>the history %1 is of robot %2 (%3 joints, %4 parameters), the scenario&apos;s robot is %5 (%6 joints, %7 parameters)</source>
+        <translation>der Verlauf %1 gehört zum Roboter %2 (%3 Gelenke, %4 Parameter), der Roboter des Szenarios ist %5 (%6 Gelenke, %7 Parameter)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the history %1 learns with the law %2, the scenario with %3: a history keeps its law (start a new history for another)</source>
+        <translation>der Verlauf %1 lernt mit dem Gesetz %2, das Szenario mit %3: ein Verlauf behält sein Gesetz (für ein anderes einen neuen Verlauf beginnen)</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>trial %1: check passed, the trial may run.</source>
+        <translation>Versuch %1: Prüfung bestanden, der Versuch darf laufen.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>trial %1 refused: %2</source>
+        <translation>Versuch %1 abgelehnt: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedforward built with: %1</source>
+        <translation>Vorsteuerung berechnet mit: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>planned motion: %1 s, %2 s with rests, %3 samples of %4 s</source>
+        <translation>geplante Bewegung: %1 s, %2 s mit Ruhezeiten, %3 Abtastwerte zu je %4 s</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>closed loop: estimate not physical (mass matrix not positive definite)</source>
+        <translation>Regelkreis: Schätzung nicht physikalisch (Massenmatrix nicht positiv definit)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>closed loop: stable, max |z| = %1, decay rate %2 1/s</source>
+        <translation>Regelkreis: stabil, max |z| = %1, Abklingrate %2 1/s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>closed loop: UNSTABLE, max |z| = %1 at t = %2 s (growth %3 1/s)</source>
+        <translation>Regelkreis: INSTABIL, max |z| = %1 bei t = %2 s (Anstieg %3 1/s)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>joint   peak [N m]  limit [N m]     use</source>
+        <translation> Gel. Spitze [N m] Grenze [N m]   Ausl.</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoopLearn.cpp" line="+54"/>
+        <source>%1 ran plan %2, which the history %3 has learned from already as trial %4: plan the next trial and run that</source>
+        <translation>%1 lief mit Plan %2, aus dem der Verlauf %3 bereits als Versuch %4 gelernt hat: den nächsten Versuch planen und diesen ausführen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 ran plan %2, which the history %3 does not know; its plans to run are: %4</source>
+        <translation>%1 lief mit Plan %2, den der Verlauf %3 nicht kennt; seine auszuführenden Pläne sind: %4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>none (plan the next trial first)</source>
+        <translation>keine (zuerst den nächsten Versuch planen)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: plan %2 is not the plan %3 that trial %4 of the history ran</source>
+        <translation>%1: Plan %2 ist nicht der Plan %3, mit dem Versuch %4 des Verlaufs lief</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 holds no learning history (no %2): plan the trial with `learnid-cli plan` into this history, or give its --history</source>
+        <translation>%1 enthält keinen Lernverlauf (kein %2): den Versuch mit `learnid-cli plan` in diesen Verlauf planen oder dessen --history angeben</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s &quot;# plan-id:&quot; line into its log</source>
+        <translation>%1: keine Kommentarzeile „# plan-id:“; der Regler übernimmt die Zeile „# plan-id:“ des Plans in sein Log</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 ran plan %2, %3 plan %4: the logs of one learning step are of one plan</source>
+        <translation>%1 lief mit Plan %2, %3 mit Plan %4: die Logs eines Lernschritts gehören zu einem Plan</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the scenario runs every trial %1 times (repetitions): give one --trial-log per run, %2 given</source>
+        <translation>das Szenario führt jeden Versuch %1-mal aus (repetitions): ein --trial-log pro Durchlauf angeben, %2 angegeben</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 was made with another estimate than the history&apos;s newest (estimate %2): plan the next trial again</source>
+        <translation>%1 wurde mit einer anderen Schätzung als der neuesten des Verlaufs (Schätzung %2) erstellt: den nächsten Versuch neu planen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: %2; nothing learned</source>
+        <translation>%1: %2; nichts gelernt</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>the history %1 does not replay: trial %2: %3</source>
+        <translation>der Verlauf %1 lässt sich nicht wiedergeben: Versuch %2: %3</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 is not the estimate %2 that the history&apos;s trials give with this scenario: is its estimator the history&apos;s?</source>
+        <translation>%1 ist nicht die Schätzung %2, die die Versuche des Verlaufs mit diesem Szenario ergeben: ist sein Schätzer der des Verlaufs?</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoopPlan.cpp" line="+32"/>
+        <source>initial estimate of a learning loop through files</source>
+        <translation>Anfangsschätzung einer Lernschleife über Dateien</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>--estimate: the history %1 has learned from %2 trials; its next trial runs with its newest estimate (leave out --estimate, or give another --history to start a new history)</source>
+        <translation>--estimate: der Verlauf %1 hat aus %2 Versuchen gelernt; sein nächster Versuch läuft mit seiner neuesten Schätzung (--estimate weglassen oder ein anderes --history angeben, um einen neuen Verlauf zu beginnen)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>estimate %1 of %2</source>
+        <translation>Schätzung %1 aus %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the scenario&apos;s initial estimate</source>
+        <translation>die Anfangsschätzung des Szenarios</translation>
     </message>
 </context>
 <context>
@@ -916,6 +1097,218 @@
         <location line="+0"/>
         <source>angle</source>
         <translation>Winkel</translation>
+    </message>
+</context>
+<context>
+    <name>LogFit</name>
+    <message>
+        <location filename="../core/identify/LogFit.cpp" line="+140"/>
+        <source>%1 has %2 joints, the robot %3</source>
+        <translation>%1 hat %2 Gelenke, der Roboter %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the filtered signals are not finite</source>
+        <translation>%1: die gefilterten Signale sind nicht endlich</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no samples to fit</source>
+        <translation>keine Abtastwerte für die Anpassung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the prior share must lie between 0 and 1</source>
+        <translation>der Prior-Anteil muss zwischen 0 und 1 liegen</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>%1 does not fit the robot&apos;s joints or parameters</source>
+        <translation>%1 passt nicht zu den Gelenken oder Parametern des Roboters</translation>
+    </message>
+</context>
+<context>
+    <name>LogIdentification</name>
+    <message>
+        <location filename="../core/service/LogIdentification.cpp" line="+94"/>
+        <source>identification cancelled; nothing was produced</source>
+        <translation>Identifikation abgebrochen; nichts wurde erzeugt</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>the robot &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
+        <translation>der Roboter &apos;%1&apos; ist weder eine URDF-Datei noch ein eingebauter Roboter (%2)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>built-in %1</source>
+        <translation>eingebauter Roboter %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>no log to identify from: add a training log</source>
+        <translation>kein Log zum Identifizieren: ein Trainings-Log hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../core/service/LogIdentificationExport.cpp" line="+35"/>
+        <source>%1 (%2), identified from the logs %3</source>
+        <translation>%1 (%2), identifiziert aus den Logs %3</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
+        <translation>die Reglerverstärkungen, die die Parameterdatei festhält, gelten für %1 Gelenke, der Roboter hat %2</translation>
+    </message>
+</context>
+<context>
+    <name>LogIdentificationText</name>
+    <message>
+        <location filename="../ui/LogIdentificationText.cpp" line="+28"/>
+        <source>Reading the robot %1…</source>
+        <translation>Roboter %1 wird gelesen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reading training log %1 of %2: %3…</source>
+        <translation>Trainings-Log %1 von %2 wird gelesen: %3…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reading validation log %1 of %2: %3…</source>
+        <translation>Validierungs-Log %1 von %2 wird gelesen: %3…</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Fitting the parameters to %n log(s)…</source>
+        <translation>
+            <numerusform>Die Parameter werden an %n Log angepasst…</numerusform>
+            <numerusform>Die Parameter werden an %n Logs angepasst…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Predicting validation log %1 of %2: %3…</source>
+        <translation>Validierungs-Log %1 von %2 wird vorhergesagt: %3…</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; (%2), %3 moving joints.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; (%2), %3 bewegliche Gelenke.&lt;/p&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>&lt;p&gt;Fitted to %n log(s), %1 samples: %2 of %3 standard-parameter directions determined (condition %4); %5.&lt;/p&gt;</source>
+        <translation>
+            <numerusform>&lt;p&gt;An %n Log angepasst, %1 Abtastwerte: %2 von %3 Standardparameter-Richtungen bestimmt (Kondition %4); %5.&lt;/p&gt;</numerusform>
+            <numerusform>&lt;p&gt;An %n Logs angepasst, %1 Abtastwerte: %2 von %3 Standardparameter-Richtungen bestimmt (Kondition %4); %5.&lt;/p&gt;</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the consistent fit converged</source>
+        <translation>die konsistente Anpassung ist konvergiert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the consistent fit stopped at its step limit</source>
+        <translation>die konsistente Anpassung hielt an ihrer Schrittgrenze an</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Konsistenz:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters:&lt;/b&gt; none of %1.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Unbestimmte Basisparameter:&lt;/b&gt; keiner von %1.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters&lt;/b&gt; (kept near the URDF&apos;s values), %1 of %2: %3&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Unbestimmte Basisparameter&lt;/b&gt; (nahe den Werten des URDF gehalten), %1 von %2: %3&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Trainingsresiduum&lt;/b&gt;, RMS pro Gelenk [N m]: %1&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Identified; no validation log. Accept the result to export it.</source>
+        <translation>Identifiziert; kein Validierungs-Log. Das Ergebnis akzeptieren, um es zu exportieren.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identified: on %1 the torque error is %2 % of the measured torque (URDF as given: %3 %). Accept the result to export it.</source>
+        <translation>Identifiziert: an %1 beträgt der Momentenfehler %2 % des gemessenen Moments (URDF wie gegeben: %3 %). Das Ergebnis akzeptieren, um es zu exportieren.</translation>
+    </message>
+</context>
+<context>
+    <name>LogSignals</name>
+    <message>
+        <location filename="../core/identify/LogSignals.cpp" line="+55"/>
+        <source>the log filter needs positive bandwidths and a stride of 1 or more</source>
+        <translation>der Log-Filter braucht positive Bandbreiten und eine Schrittweite von 1 oder mehr</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the log has no measured velocities (dq columns) to use</source>
+        <translation>%1: das Log hat keine gemessenen Geschwindigkeiten (dq-Spalten), die verwendet werden könnten</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: %2 s of data is too short: the filter (bandwidth %3 rad/s) needs %4 s at each end to settle, and some data between</source>
+        <translation>%1: %2 s Daten sind zu kurz: der Filter (Bandbreite %3 rad/s) braucht an jedem Ende %4 s zum Einschwingen, und dazwischen noch einige Daten</translation>
+    </message>
+</context>
+<context>
+    <name>LoopHistory</name>
+    <message>
+        <location filename="../core/io/LoopHistory.cpp" line="+33"/>
+        <source>must be a plain file name in the history folder (letters, digits, &apos;.&apos;, &apos;_&apos;, &apos;-&apos;), got &quot;%1&quot;</source>
+        <translation>muss ein einfacher Dateiname im Verlaufsordner sein (Buchstaben, Ziffern, &apos;.&apos;, &apos;_&apos;, &apos;-&apos;), gefunden: „%1“</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>must be 64 lower-case hex digits (SHA-256), got &quot;%1&quot;</source>
+        <translation>muss aus 64 kleingeschriebenen Hexadezimalziffern bestehen (SHA-256), gefunden: „%1“</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+2"/>
+        <source>must not be empty</source>
+        <translation>darf nicht leer sein</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>one more than trials, the initial estimate first</source>
+        <translation>einer mehr als Versuche, die Anfangsschätzung zuerst</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>one per joint</source>
+        <translation>einer pro Gelenk</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>must name at least one log</source>
+        <translation>muss mindestens ein Log nennen</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>is missing; this is not a learnid history index</source>
+        <translation>fehlt; dies ist kein learnid-Verlaufsindex</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>this version of learnid reads &quot;%1&quot;, got %2</source>
+        <translation>diese Version von learnid liest „%1“, gefunden: %2</translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -1258,6 +1651,266 @@
         <location line="+91"/>
         <source>The link is not strictly physically consistent (mass %1 kg, smallest pseudo-inertia eigenvalue %2); it has no log-Cholesky parameters.</source>
         <translation>Das Glied ist nicht streng physikalisch konsistent (Masse %1 kg, kleinster Eigenwert der Pseudoträgheitsmatrix %2); es hat keine Log-Cholesky-Parameter.</translation>
+    </message>
+</context>
+<context>
+    <name>PlanCsv</name>
+    <message>
+        <location filename="../core/io/PlanCsv.cpp" line="+45"/>
+        <source>%1: line %2: %3</source>
+        <translation>%1: Zeile %2: %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: line %2, column %3 (%4): %5</source>
+        <translation>%1: Zeile %2, Spalte %3 (%4): %5</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>a second &quot;# %1:&quot; line; the first is on line %2</source>
+        <translation>eine zweite Zeile „# %1:“; die erste steht in Zeile %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>no &quot;# %1:&quot; line before the header</source>
+        <translation>keine Zeile „# %1:“ vor der Kopfzeile</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+199"/>
+        <source>the plan-id must be 64 hex digits (SHA-256), got %1</source>
+        <translation>die plan-id muss aus 64 Hexadezimalziffern bestehen (SHA-256), gefunden: %1</translation>
+    </message>
+    <message>
+        <location line="-191"/>
+        <source>expected &quot;# robot: &lt;model&gt;, &lt;n&gt; joints&quot;, got %1</source>
+        <translation>erwartet: „# robot: &lt;model&gt;, &lt;n&gt; joints“, gefunden: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the sample period must be a positive number [s], got %1</source>
+        <translation>die Abtastperiode muss eine positive Zahl [s] sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>estimate value %1 is not a finite number: %2</source>
+        <translation>Schätzwert %1 ist keine endliche Zahl: %2</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>plan CSV: the plan (%1 joints, %2 samples, %3 feedforward columns) is empty, does not fit its feedforward or holds non-finite numbers</source>
+        <translation>Plan-CSV: der Plan (%1 Gelenke, %2 Abtastwerte, %3 Vorsteuerungsspalten) ist leer, passt nicht zu seiner Vorsteuerung oder enthält nicht endliche Zahlen</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>plan CSV: the estimate the feedforward was built with is empty or not finite</source>
+        <translation>Plan-CSV: die Schätzung, mit der die Vorsteuerung berechnet wurde, ist leer oder nicht endlich</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>not a plan file of this version: the first line must be &quot;%1&quot;</source>
+        <translation>keine Plandatei dieser Version: die erste Zeile muss „%1“ lauten</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>no header line; expected %1</source>
+        <translation>keine Kopfzeile; erwartet: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the header of a plan of %1 joints is %2</source>
+        <translation>die Kopfzeile eines Plans mit %1 Gelenken lautet %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>no samples after the header</source>
+        <translation>keine Abtastwerte nach der Kopfzeile</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>a blank or comment line among the samples; comments go before the header</source>
+        <translation>eine Leer- oder Kommentarzeile zwischen den Abtastwerten; Kommentare stehen vor der Kopfzeile</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>expected %1 fields, got %2</source>
+        <translation>%1 Felder erwartet, gefunden: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not a finite number: %1</source>
+        <translation>keine endliche Zahl: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>sample %1 is at k Ts = %2 s, got %3 s</source>
+        <translation>Abtastwert %1 liegt bei k Ts = %2 s, gefunden: %3 s</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the plan-id %1 is not that of the plan&apos;s numbers (%2): the plan was changed after learnid wrote it</source>
+        <translation>die plan-id %1 ist nicht die der Zahlen des Plans (%2): der Plan wurde nach dem Schreiben durch learnid geändert</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>a second plan-id, %1, other than %2 on line %3; a log is of one plan</source>
+        <translation>eine zweite plan-id, %1, anders als %2 in Zeile %3; ein Log gehört zu einem Plan</translation>
+    </message>
+</context>
+<context>
+    <name>RecordedTrialRobot</name>
+    <message>
+        <location filename="../core/service/RecordedTrialRobot.cpp" line="+24"/>
+        <source>the robot&apos;s own controller (plan and log files)</source>
+        <translation>der eigene Regler des Roboters (Plan- und Log-Dateien)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>no logged trial is left for trial run %1</source>
+        <translation>für Versuchslauf %1 ist kein aufgezeichneter Versuch mehr übrig</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 ran plan %2, but with this scenario the trial is planned as %3: the scenario is not the one the plan was made with</source>
+        <translation>%1 lief mit Plan %2, aber mit diesem Szenario wird der Versuch als %3 geplant: das Szenario ist nicht das, mit dem der Plan erstellt wurde</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the robot&apos;s own controller takes its parameters its own way: give it the estimate&apos;s parameter file</source>
+        <translation>der eigene Regler des Roboters übernimmt seine Parameter auf eigenem Weg: ihm die Parameterdatei der Schätzung geben</translation>
+    </message>
+</context>
+<context>
+    <name>RobotLogCsv</name>
+    <message>
+        <location filename="../core/io/RobotLogCsv.cpp" line="+30"/>
+        <source>%1: line %2, column %3</source>
+        <translation>%1: Zeile %2, Spalte %3</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: line %2: %3</source>
+        <translation>%1: Zeile %2: %3</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>, ... (%1 columns)</source>
+        <translation>, ... (%1 Spalten)</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>the name repeats that of column %1; each column name may appear only once</source>
+        <translation>der Name wiederholt den der Spalte %1; jeder Spaltenname darf nur einmal vorkommen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>no column &quot;%1&quot; (%2); the header has: %3</source>
+        <translation>keine Spalte „%1“ (%2); die Kopfzeile enthält: %3</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>the log has %1 joints (%2..%3), the robot %4</source>
+        <translation>das Log hat %1 Gelenke (%2..%3), der Roboter %4</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the time [s]</source>
+        <translation>die Zeit [s]</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the position of joint %1</source>
+        <translation>die Position des Gelenks %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the velocity of joint %1, as the log has velocities of other joints</source>
+        <translation>die Geschwindigkeit des Gelenks %1, da das Log Geschwindigkeiten anderer Gelenke enthält</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the torque of joint %1</source>
+        <translation>das Moment des Gelenks %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: t= names no column; the time column is needed</source>
+        <translation>%1: t= nennt keine Spalte; die Zeitspalte wird gebraucht</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: %2=%3 has no %4 where the joint number goes, e.g. %2=%3%4</source>
+        <translation>%1: %2=%3 hat kein %4 an der Stelle der Gelenknummer, z. B. %2=%3%4</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: &quot;%2&quot; has no &apos;=&apos;; expected key=pattern with the keys t, q, dq and tau, e.g. q=pos_meas%3</source>
+        <translation>%1: „%2“ hat kein &apos;=&apos;; erwartet wird Schlüssel=Muster mit den Schlüsseln t, q, dq und tau, z. B. q=pos_meas%3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: unknown key &quot;%2&quot;; the keys are t, q, dq and tau</source>
+        <translation>%1: unbekannter Schlüssel „%2“; die Schlüssel sind t, q, dq und tau</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the key %2 is given twice</source>
+        <translation>%1: der Schlüssel %2 ist zweimal angegeben</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: a log is read for 1 joint or more, not %2</source>
+        <translation>%1: ein Log wird für 1 Gelenk oder mehr gelesen, nicht für %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 joint kinds given for a robot of %3 joints</source>
+        <translation>%1: %2 Gelenkarten für einen Roboter mit %3 Gelenken angegeben</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>expected %1 fields (%2), got %3</source>
+        <translation>%1 Felder erwartet (%2), gefunden: %3</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the field is empty; expected a number</source>
+        <translation>das Feld ist leer; erwartet wird eine Zahl</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not a number: %1</source>
+        <translation>keine Zahl: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 rad/s is faster than any robot joint turns (at most %2 rad/s); the log looks like it holds degrees per second, radians per second are expected</source>
+        <translation>%1 rad/s ist schneller, als sich irgendein Robotergelenk dreht (höchstens %2 rad/s); das Log scheint Grad pro Sekunde zu enthalten, erwartet wird Radiant pro Sekunde</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 rad is more than 1.05 turns (%2 rad); the log looks like it holds degrees, radians are expected</source>
+        <translation>%1 rad ist mehr als 1,05 Umdrehungen (%2 rad); das Log scheint Grad zu enthalten, erwartet wird Radiant</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the times must increase from sample to sample, got %1 after %2 on line %3</source>
+        <translation>die Zeiten müssen von Abtastwert zu Abtastwert zunehmen, gefunden: %1 nach %2 in Zeile %3</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>the time %1 repeats that of line %2 with other values (%3: %4 there, %5 here); only an exact repeat of a row is dropped</source>
+        <translation>die Zeit %1 wiederholt die der Zeile %2 mit anderen Werten (%3: dort %4, hier %5); nur eine exakte Wiederholung einer Zeile wird verworfen</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>the file holds no header line; expected one naming the columns %1</source>
+        <translation>die Datei enthält keine Kopfzeile; erwartet wird eine, die die Spalten %1 nennt</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 samples after the header on line %2; a log needs at least %3</source>
+        <translation>%1 Abtastwerte nach der Kopfzeile in Zeile %2; ein Log braucht mindestens %3</translation>
     </message>
 </context>
 <context>
@@ -1657,6 +2310,21 @@
         <source>simulation.realUrdf: joint %1 (%2) is placed differently from the robot&apos;s URDF: the real robot may differ in inertia and friction only</source>
         <translation>simulation.realUrdf: Gelenk %1 (%2) sitzt anders als im URDF des Roboters: der reale Roboter darf nur in Trägheit und Reibung abweichen</translation>
     </message>
+    <message>
+        <location filename="../core/identify/UniformLog.cpp" line="+123"/>
+        <source>%1: the time stamps are off the nominal times t0 + k T (T = %2 ms) by %3 ms at %4 (t = %5 s) and by %6 ms at %7 (t = %8 s), more than half a step apart: the samples are not equidistant (one lost or added?), so the nominal times do not apply</source>
+        <translation>%1: die Zeitstempel weichen von den Sollzeiten t0 + k T (T = %2 ms) um %3 ms bei %4 (t = %5 s) und um %6 ms bei %7 (t = %8 s) ab, mehr als einen halben Schritt auseinander: die Abtastwerte sind nicht äquidistant (einer verloren oder hinzugekommen?), also gelten die Sollzeiten nicht</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoop.cpp" line="-45"/>
+        <source>%1: %2 holds %3 parameters of robot %4; the scenario&apos;s robot %5 has %6</source>
+        <translation>%1: %2 enthält %3 Parameter des Roboters %4; der Roboter des Szenarios, %5, hat %6</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: %2: parameter %3 is &quot;%4&quot;, the robot&apos;s is &quot;%5&quot;</source>
+        <translation>%1: %2: Parameter %3 ist „%4“, der des Roboters ist „%5“</translation>
+    </message>
 </context>
 <context>
     <name>TorqueRule</name>
@@ -1792,6 +2460,64 @@
     </message>
 </context>
 <context>
+    <name>UniformLog</name>
+    <message>
+        <location filename="../core/identify/UniformLog.cpp" line="-78"/>
+        <source>sample %1</source>
+        <translation>Abtastwert %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1: a log of %2 times, %3 x %4 positions, %5 x %6 velocities, %7 x %8 torques and %9 line numbers; expected n x N for all</source>
+        <translation>%1: ein Log mit %2 Zeiten, %3 x %4 Positionen, %5 x %6 Geschwindigkeiten, %7 x %8 Momenten und %9 Zeilennummern; erwartet wird n x N für alle</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 samples; resampling needs at least 2</source>
+        <translation>%1: %2 Abtastwerte; das Neuabtasten braucht mindestens 2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: a value is not a finite number</source>
+        <translation>%1: ein Wert ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the times must increase from sample to sample, got %2 after %3</source>
+        <translation>%1: die Zeiten müssen von Abtastwert zu Abtastwert zunehmen, gefunden: %2 nach %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: the log spans %2 to %3 s, too long to resample</source>
+        <translation>%1: das Log reicht von %2 bis %3 s, zu lang zum Neuabtasten</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>%1: the period (%2 s) and the largest gap (%3 s) must be zero (the default) or positive</source>
+        <translation>%1: die Periode (%2 s) und die größte Lücke (%3 s) müssen null (der Standard) oder positiv sein</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1: a gap of %2 ms after the sample at t = %3 s, more than the %4 ms allowed (--max-gap)</source>
+        <translation>%1: eine Lücke von %2 ms nach dem Abtastwert bei t = %3 s, mehr als die erlaubten %4 ms (--max-gap)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: a period of %2 ms over the log&apos;s %3 s gives %4 samples; expected 2 to %5 (100 per sample of the log)</source>
+        <translation>%1: eine Periode von %2 ms über die %3 s des Logs ergibt %4 Abtastwerte; erwartet: 2 bis %5 (100 pro Abtastwert des Logs)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: values this close to the largest double cannot be interpolated</source>
+        <translation>%1: Werte so nahe am größten double-Wert lassen sich nicht interpolieren</translation>
+    </message>
+</context>
+<context>
     <name>UrdfChain</name>
     <message>
         <location filename="../core/model/UrdfChain.cpp" line="+21"/>
@@ -1838,6 +2564,49 @@
         <location line="+10"/>
         <source>%1: cannot read the URDF: %2</source>
         <translation>%1: das URDF kann nicht gelesen werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfExport</name>
+    <message>
+        <location filename="../core/io/UrdfExport.cpp" line="+120"/>
+        <source>%1: link &quot;%2&quot;: the identified body has an entry that is not a finite number</source>
+        <translation>%1: Glied „%2“: der identifizierte Körper hat einen Eintrag, der keine endliche Zahl ist</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: link &quot;%2&quot;: the identified mass (%3 kg) is not positive</source>
+        <translation>%1: Glied „%2“: die identifizierte Masse (%3 kg) ist nicht positiv</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: link &quot;%2&quot;: the identified inertia is not that of a physical body (its pseudo-inertia has the negative eigenvalue %3)</source>
+        <translation>%1: Glied „%2“: die identifizierte Trägheit ist nicht die eines physikalischen Körpers (ihre Pseudoträgheit hat den negativen Eigenwert %3)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: joint &quot;%2&quot;: the friction must be finite and not negative, got viscous %3 and Coulomb %4</source>
+        <translation>%1: Gelenk „%2“: die Reibung muss endlich und nicht negativ sein, gefunden: viskos %3 und Coulomb %4</translation>
+    </message>
+    <message>
+        <location line="+132"/>
+        <source>%1: the identified URDF reads back with another body or friction at link &quot;%2&quot; than was written</source>
+        <translation>%1: das identifizierte URDF ergibt beim Zurücklesen am Glied „%2“ einen anderen Körper oder eine andere Reibung, als geschrieben wurde</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: bodies for %2 and friction for %3 joints given, the chain has %4 moving joints</source>
+        <translation>%1: Körper für %2 und Reibung für %3 Gelenke angegeben, die Kette hat %4 bewegliche Gelenke</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: the chain&apos;s moving joints (%2) are not the URDF&apos;s from link &quot;%3&quot; to link &quot;%4&quot; (%5): the chain was not read from this URDF</source>
+        <translation>%1: die beweglichen Gelenke der Kette (%2) sind nicht die des URDF von Glied „%3“ bis Glied „%4“ (%5): die Kette wurde nicht aus diesem URDF gelesen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: line %2, column %3: not XML: %4</source>
+        <translation>%1: Zeile %2, Spalte %3: kein XML: %4</translation>
     </message>
 </context>
 <context>
@@ -1901,13 +2670,71 @@
 <context>
     <name>learnid-cli</name>
     <message>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+41"/>
+        <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
+        <translation>--robot: &apos;%1&apos; ist weder eine URDF-Datei noch ein eingebauter Roboter (%2)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>--export: a parameter file records the controller&apos;s gains, and the default gains are for %1 joints, the robot has %2: give them with --scenario FILE (its controller section)</source>
+        <translation>--export: eine Parameterdatei hält die Verstärkungen des Reglers fest, und die Standardverstärkungen gelten für %1 Gelenke, der Roboter hat %2: sie mit --scenario FILE angeben (in dessen Abschnitt controller)</translation>
+    </message>
+    <message>
+        <location line="+72"/>
+        <source>learnid-cli: reading %1</source>
+        <translation>learnid-cli: %1 wird gelesen</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>identified by learnid-cli %1 identify on %2</source>
+        <translation>identifiziert von learnid-cli %1 identify am %2</translation>
+    </message>
+    <message>
+        <location line="-44"/>
+        <source>robot %1 (%2): %3 moving joints</source>
+        <translation>Roboter %1 (%2): %3 bewegliche Gelenke</translation>
+    </message>
+    <message>
+        <location line="-38"/>
+        <source>%1: torque predicted and measured</source>
+        <translation>%1: vorhergesagtes und gemessenes Moment</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>learnid: %1 identified from logs</source>
+        <translation>learnid: %1 aus Logs identifiziert</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>fitting %1 standard parameters to %2 logs</source>
+        <translation>%1 Standardparameter werden an %2 Logs angepasst</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>base parameters the logs leave undetermined (kept near the URDF&apos;s values): %1</source>
+        <translation>Basisparameter, die die Logs unbestimmt lassen (nahe den Werten des URDF gehalten): %1</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <location line="+10"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
         <location filename="../app/cli/RunCommand.cpp" line="+76"/>
         <location line="+14"/>
         <location line="+52"/>
         <location line="+44"/>
-        <location filename="../app/cli/main.cpp" line="+36"/>
+        <location filename="../app/cli/main.cpp" line="+53"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli: Fehler: %1</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>--plots: cannot create %1</source>
+        <translation>--plots: %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>wrote %1</source>
+        <translation>%1 geschrieben</translation>
     </message>
     <message>
         <location filename="../app/cli/CliOptions.cpp" line="+17"/>
@@ -1930,6 +2757,22 @@
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
       Re-identify from recorded trials: the session runs again with each log
       (one per trial, in order) answering in place of the robot.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
+      and compare the result with its URDF on the --validate logs.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
+      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Learn from the controller&apos;s log of a plan; the next plan uses the new
+      estimate.
   learnid-cli COMMAND --help
       The options of one command.
 </source>
@@ -1952,12 +2795,29 @@
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
       Identifiziert neu aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
       und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identifiziert Trägheit und Reibung eines realen Roboters aus seinen
+      aufgezeichneten Logs (CSV) und vergleicht das Ergebnis an den --validate-Logs
+      mit seinem URDF.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plant den nächsten Versuch für den eigenen Regler des Roboters: q_d(t) und
+      tau_f(t) (DIR/plan.csv) und die Prüfung vor dem Versuch (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Lernt aus dem Log des Reglers zu einem Plan; der nächste Plan verwendet
+      die neue Schätzung.
   learnid-cli COMMAND --help
       Die Optionen eines Befehls.
 </translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+48"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -2012,6 +2872,8 @@
     </message>
     <message>
         <location line="+26"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+215"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+70"/>
         <source>Show this command&apos;s options.</source>
         <translation>Die Optionen dieses Befehls anzeigen.</translation>
     </message>
@@ -2022,6 +2884,7 @@
     </message>
     <message>
         <location line="+3"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-16"/>
         <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
         <translation>Szenariodatei (JSON, docs/scenario.md); Standard: das Szenario des Artikels.</translation>
     </message>
@@ -2067,6 +2930,8 @@
     </message>
     <message>
         <location line="+6"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-3"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+13"/>
         <source>No progress lines on stderr.</source>
         <translation>Keine Fortschrittszeilen auf stderr.</translation>
     </message>
@@ -2116,7 +2981,7 @@
         <translation>&apos;scenario&apos; braucht --print</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+18"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
@@ -2141,6 +3006,8 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+8"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+22"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+34"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
@@ -2255,12 +3122,13 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-79"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+7"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+15"/>
         <source>estimate %1:</source>
         <translation>Schätzung %1:</translation>
     </message>
@@ -2275,12 +3143,29 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>keine konsistente Schätzung gefunden: %1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="+47"/>
+        <source>trial %1 refused by the pre-trial check: %2</source>
+        <translation>Versuch %1 von der Prüfung vor dem Versuch abgelehnt: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+35"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+12"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli: keine Dateien geschrieben</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-27"/>
+        <source>plan-id: %1</source>
+        <translation>plan-id: %1</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>learnid-cli: trial %1 (plan %2) learned; the next plan uses estimate %3</source>
+        <translation>learnid-cli: aus Versuch %1 (Plan %2) gelernt; der nächste Plan verwendet Schätzung %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/RunCommand.cpp" line="+14"/>
         <source>learnid-cli: error: apply failed: %1</source>
         <translation>learnid-cli: Fehler: Übertragen fehlgeschlagen: %1</translation>
     </message>
@@ -2290,9 +3175,321 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: Schätzung %1 auf den Roboter übertragen</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+26"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-181"/>
+        <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
+        <translation>--joint-terms: unbekannter Term &apos;%1&apos;; die Terme sind armature, viscous, coulomb und offset, oder none</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>--rho: must be a positive number [rad/s], got &apos;%1&apos;</source>
+        <translation>--rho: muss eine positive Zahl [rad/s] sein, gefunden: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--prior-share: must be a number between 0 and 1, got &apos;%1&apos;</source>
+        <translation>--prior-share: muss eine Zahl zwischen 0 und 1 sein, gefunden: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>--velocity: must be auto, measured or q, got &apos;%1&apos;</source>
+        <translation>--velocity: muss auto, measured oder q sein, gefunden: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--max-gap: must be a positive number of ms, got &apos;%1&apos;</source>
+        <translation>--max-gap: muss eine positive Zahl von ms sein, gefunden: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>--urdf-out: %1 is where --export writes</source>
+        <translation>--urdf-out: nach %1 schreibt schon --export</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>A built-in URDF robot (e.g. double-pendulum) or a URDF file.</source>
+        <translation>Ein eingebauter URDF-Roboter (z. B. double-pendulum) oder eine URDF-Datei.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A recorded log (CSV) to identify from; once per log.</source>
+        <translation>Ein aufgezeichnetes Log (CSV), aus dem identifiziert wird; einmal pro Log.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A recorded log to check the result on; once per log.</source>
+        <translation>Ein aufgezeichnetes Log, an dem das Ergebnis geprüft wird; einmal pro Log.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The log&apos;s column names, e.g. t=time,q=pos%1,dq=vel%1,tau=tau%1.</source>
+        <translation>Die Spaltennamen des Logs, z. B. t=time,q=pos%1,dq=vel%1,tau=tau%1.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Joint terms to identify: armature, viscous, coulomb, offset, or none; default: viscous,coulomb,offset.</source>
+        <translation>Zu identifizierende Gelenkterme: armature, viscous, coulomb, offset oder none; Standard: viscous,coulomb,offset.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Bandwidth of the zero-phase log filter [rad/s]; default 50.</source>
+        <translation>Bandbreite des nullphasigen Log-Filters [rad/s]; Standard 50.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Directions weaker than this share of the strongest keep the URDF&apos;s values; default 0.03.</source>
+        <translation>Richtungen, die schwächer als dieser Anteil der stärksten sind, behalten die Werte des URDF; Standard 0.03.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Joint velocities: auto, measured or q (from positions).</source>
+        <translation>Gelenkgeschwindigkeiten: auto, measured oder q (aus den Positionen).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Longest time step allowed in a log [ms]; default 5 sample periods.</source>
+        <translation>Längster erlaubter Zeitschritt in einem Log [ms]; Standard 5 Abtastperioden.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
+        <translation>Basisglied der Kette; Standard: die Wurzel des URDF.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The chain&apos;s tip link; default: the one leaf below the base.</source>
+        <translation>Endglied der Kette; Standard: das einzige Blatt unterhalb der Basis.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write the identified base parameters as a parameter file (and DCF).</source>
+        <translation>Die identifizierten Basisparameter als Parameterdatei (und DCF) schreiben.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Write the URDF with the identified inertia and friction.</source>
+        <translation>Das URDF mit der identifizierten Trägheit und Reibung schreiben.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write the report (PDF): the tables and the torque plots.</source>
+        <translation>Den Bericht (PDF) schreiben: die Tabellen und die Momentendiagramme.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write the predicted and measured torque of each validation log as PNG into this folder (made if missing).</source>
+        <translation>Das vorhergesagte und gemessene Moment jedes Validierungs-Logs als PNG in diesen Ordner schreiben (wird bei Bedarf angelegt).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Scenario whose controller gains the parameter file records.</source>
+        <translation>Szenario, dessen Reglerverstärkungen die Parameterdatei festhält.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-36"/>
+        <source>Folder that relative output paths are taken from.</source>
+        <translation>Ordner, ab dem relative Ausgabepfade gelten.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
+
+Identify a robot&apos;s inertia and joint friction from its recorded logs,
+and compare the result with the URDF as given on --validate logs.
+
+%1</source>
+        <translation>Aufruf: learnid-cli identify --robot ROBOT --log FILE [Optionen]
+
+Trägheit und Gelenkreibung eines Roboters aus seinen aufgezeichneten Logs identifizieren
+und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
+
+%1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>&apos;identify&apos; needs --robot ROBOT</source>
+        <translation>&apos;identify&apos; braucht --robot ROBOT</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&apos;identify&apos; needs at least one --log FILE</source>
+        <translation>&apos;identify&apos; braucht mindestens ein --log FILE</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+23"/>
+        <location line="+16"/>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>joint</source>
+        <translation>Gel.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>fit: %1 logs, %2 samples; %3 of %4 standard-parameter directions determined (condition %5)
+fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %8
+</source>
+        <translation>Anpassung: %1 Logs, %2 Abtastwerte; %3 von %4 Standardparameter-Richtungen bestimmt (Kondition %5)
+Anpassung: %6 von %7 Basisparametern unbestimmt (nahe den Werten des URDF gehalten); %8
+</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>consistent fit converged</source>
+        <translation>konsistente Anpassung konvergiert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>consistent fit stopped at its step limit</source>
+        <translation>konsistente Anpassung an ihrer Schrittgrenze angehalten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>identified parameters: %1
+</source>
+        <translation>identifizierte Parameter: %1
+</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>training logs: residual of the fit</source>
+        <translation>Trainings-Logs: Residuum der Anpassung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS residual [N m]</source>
+        <translation>RMS-Residuum [N m]</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>ratio %</source>
+        <translation>Verh. %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMS error [N m]</source>
+        <translation>RMS-Fehler [N m]</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>validation on %1 (%2 samples)</source>
+        <translation>Validierung an %1 (%2 Abtastwerte)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="+124"/>
+        <source>URDF as given</source>
+        <translation>URDF wie gegeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="+2"/>
+        <source>identified</source>
+        <translation>identifiziert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS measured [N m]</source>
+        <translation>RMS gemessen [N m]</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>overall sqrt(sum e^2 / sum tau^2) %</source>
+        <translation>gesamt sqrt(sum e^2 / sum tau^2) %</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>mean of the joint ratios %</source>
+        <translation>Mittel der Gelenkverhältnisse %</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/LoopOptions.cpp" line="-36"/>
+        <source>Usage: learnid-cli plan --out DIR [options]
+
+Plan the next trial for the robot&apos;s own controller: q_d(t) and the
+feedforward tau_f(t) per joint (DIR/plan.csv) and the pre-trial check
+(DIR/check.txt). A plan that fails the check is not written.
+
+%1</source>
+        <translation>Aufruf: learnid-cli plan --out DIR [Optionen]
+
+Den nächsten Versuch für den eigenen Regler des Roboters planen: q_d(t) und
+die Vorsteuerung tau_f(t) je Gelenk (DIR/plan.csv) sowie die Prüfung vor dem
+Versuch (DIR/check.txt). Ein Plan, der die Prüfung nicht besteht, wird nicht
+geschrieben.
+
+%1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Usage: learnid-cli learn --trial-log FILE [options]
+
+Learn from the log the robot&apos;s own controller recorded while running a
+plan: the new estimate joins the history, the convergence table goes to
+stdout, and the next plan uses the new estimate.
+
+%1</source>
+        <translation>Aufruf: learnid-cli learn --trial-log FILE [Optionen]
+
+Aus dem Log lernen, das der eigene Regler des Roboters beim Ausführen eines
+Plans aufgezeichnet hat: die neue Schätzung kommt in den Verlauf, die
+Konvergenztabelle geht nach stdout, und der nächste Plan verwendet die
+neue Schätzung.
+
+%1</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>The learning history&apos;s folder; default: learnid-history beside plan.csv (plan) or the trial log (learn).</source>
+        <translation>Ordner des Lernverlaufs; Standard: learnid-history neben plan.csv (plan) bzw. neben dem Versuchs-Log (learn).</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Folder to write plan.csv and check.txt into.</source>
+        <translation>Ordner, in den plan.csv und check.txt geschrieben werden.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Parameter file of the estimate to plan with; default: the history&apos;s newest, or the scenario&apos;s initial estimate.</source>
+        <translation>Parameterdatei der Schätzung, mit der geplant wird; Standard: die neueste des Verlaufs oder die Anfangsschätzung des Szenarios.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The controller&apos;s log of a run of the plan (CSV); once per repetition.</source>
+        <translation>Das Log des Reglers von einem Lauf des Plans (CSV); einmal pro Wiederholung.</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>&apos;plan&apos; needs --out DIR</source>
+        <translation>&apos;plan&apos; braucht --out DIR</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;learn&apos; needs --trial-log FILE</source>
+        <translation>&apos;learn&apos; braucht --trial-log FILE</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="-26"/>
+        <source>joint %1 (%2) [N m]</source>
+        <translation>Gelenk %1 (%2) [N m]</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
     </message>
 </context>
 <context>
@@ -3046,6 +4243,113 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
 </context>
 <context>
+    <name>learnid::LogExportController</name>
+    <message>
+        <location filename="../ui/LogExportController.cpp" line="+59"/>
+        <source>a parameter file records the controller&apos;s gains, and the default gains are for %1 joints, the robot has %2: choose a scenario of this robot under &quot;Gains from&quot;</source>
+        <translation>eine Parameterdatei hält die Verstärkungen des Reglers fest, und die Standardverstärkungen gelten für %1 Gelenke, der Roboter hat %2: unter „Verstärkungen aus“ ein Szenario dieses Roboters wählen</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>identify and accept a result first</source>
+        <translation>zuerst ein Ergebnis identifizieren und akzeptieren</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+6"/>
+        <source>Parameter file not written: %1</source>
+        <translation>Parameterdatei nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Parameter file written: %1</source>
+        <translation>Parameterdatei geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>URDF not written: identify and accept a result first</source>
+        <translation>URDF nicht geschrieben: zuerst ein Ergebnis identifizieren und akzeptieren</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>identified by learnid %1 (Identify from recorded data) on %2</source>
+        <translation>identifiziert von learnid %1 (Aus aufgezeichneten Daten identifizieren) am %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>URDF written: %1</source>
+        <translation>URDF geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>URDF not written: %1</source>
+        <translation>URDF nicht geschrieben: %1</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::LogValidationTableModel</name>
+    <message>
+        <location filename="../ui/LogValidationTableModel.cpp" line="+101"/>
+        <source>sqrt(sum e^2 / sum tau^2) over the joints and samples, in %</source>
+        <translation>sqrt(sum e^2 / sum tau^2) über die Gelenke und Abtastwerte, in %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The mean over the joints of RMS error / RMS measured, in %</source>
+        <translation>Der Mittelwert über die Gelenke von RMS-Fehler / RMS gemessen, in %</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>overall %</source>
+        <translation>gesamt %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>mean ratio %</source>
+        <translation>mittl. Verhältnis %</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS measured
+[N m]</source>
+        <translation>RMS gemessen
+[N m]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF as given
+RMS error [N m]</source>
+        <translation>URDF wie gegeben
+RMS-Fehler [N m]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF as given
+ratio %</source>
+        <translation>URDF wie gegeben
+Verhältnis %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identified
+RMS error [N m]</source>
+        <translation>Identifiziert
+RMS-Fehler [N m]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identified
+ratio %</source>
+        <translation>Identifiziert
+Verhältnis %</translation>
+    </message>
+</context>
+<context>
     <name>learnid::MainActions</name>
     <message>
         <location filename="../ui/MainActions.cpp" line="+37"/>
@@ -3071,6 +4375,16 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <location line="+1"/>
         <source>Start a new session with the settings of the form (the history is discarded)</source>
         <translation>Neue Sitzung mit den Einstellungen des Formulars beginnen (der Verlauf wird verworfen)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identify from recorded &amp;data…</source>
+        <translation>Aus aufgezeichneten &amp;Daten identifizieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Identify a robot&apos;s parameters from logs its controller recorded</source>
+        <translation>Die Parameter eines Roboters aus Logs identifizieren, die sein Regler aufgezeichnet hat</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3283,7 +4597,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>&amp;Roboter</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>&amp;Trials</source>
         <translation>&amp;Versuche</translation>
     </message>
@@ -3311,7 +4625,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
 <context>
     <name>learnid::MainWindow</name>
     <message>
-        <location filename="../ui/MainWindow.cpp" line="+78"/>
+        <location filename="../ui/MainWindow.cpp" line="+79"/>
         <source>learnid – commissioning</source>
         <translation>learnid – Inbetriebnahme</translation>
     </message>
@@ -3356,7 +4670,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Parameterkonvergenz</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+50"/>
         <source>The language changes when learnid is started again.</source>
         <translation>Die Sprache wechselt beim nächsten Start von learnid.</translation>
     </message>
@@ -3576,6 +4890,263 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <location line="+4"/>
         <source>UNSTABLE: max |z| = %1 at t = %2 s (growth %3 1/s)</source>
         <translation>INSTABIL: max |z| = %1 bei t = %2 s (Anstieg %3 1/s)</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::RecordedDataDialog</name>
+    <message>
+        <location filename="../ui/RecordedDataDialog.cpp" line="+51"/>
+        <source>&amp;Identify</source>
+        <translation>&amp;Identifizieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Accept</source>
+        <translation>&amp;Akzeptieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export &amp;parameter file…</source>
+        <translation>&amp;Parameterdatei exportieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export &amp;URDF…</source>
+        <translation>&amp;URDF exportieren…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Identify from recorded data</source>
+        <translation>Aus aufgezeichneten Daten identifizieren</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>Not identified: %1</source>
+        <translation>Nicht identifiziert: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Identification cancelled; nothing was identified or written.</source>
+        <translation>Identifikation abgebrochen; nichts wurde identifiziert oder geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Robot and logs</source>
+        <translation>Roboter und Logs</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Fit</source>
+        <translation>Anpassung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Validation on:</source>
+        <translation>Validierung an:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Validation</source>
+        <translation>Validierung</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Predicted against measured torque (validation log)</source>
+        <translation>Vorhergesagtes gegenüber gemessenem Moment (Validierungs-Log)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Add the robot&apos;s logs and press Identify.</source>
+        <translation>Die Logs des Roboters hinzufügen und auf „Identifizieren“ drücken.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot identify: %1</source>
+        <translation>Identifikation nicht möglich: %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Cancelling after the current step…</source>
+        <translation>Abbruch nach dem aktuellen Schritt…</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>Result accepted: export the parameter file or the URDF.</source>
+        <translation>Ergebnis akzeptiert: die Parameterdatei oder das URDF exportieren.</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::RecordedDataForm</name>
+    <message>
+        <location filename="../ui/RecordedDataForm.cpp" line="+48"/>
+        <source>Robot logs (*.csv);;All files (*)</source>
+        <translation>Roboter-Logs (*.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Robot URDF</source>
+        <translation>Roboter-URDF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF (*.urdf);;All files (*)</source>
+        <translation>URDF (*.urdf);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Logs to identify from</source>
+        <translation>Logs, aus denen identifiziert wird</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Logs to validate on</source>
+        <translation>Logs, an denen validiert wird</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Scenario with the controller gains</source>
+        <translation>Szenario mit den Reglerverstärkungen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scenario files (*.json);;All files (*)</source>
+        <translation>Szenariodateien (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export parameter file</source>
+        <translation>Parameterdatei exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter files (*.json)</source>
+        <translation>Parameterdateien (*.json)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export URDF</source>
+        <translation>URDF exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF (*.urdf)</source>
+        <translation>URDF (*.urdf)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+5"/>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 (built-in URDF)</source>
+        <translation>%1 (eingebautes URDF)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF file…</source>
+        <translation>URDF-Datei…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the robot&apos;s URDF file</source>
+        <translation>die URDF-Datei des Roboters</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The logs&apos; column names as learnid-cli identify --columns takes them: t=, q=, dq=, tau= with %1 for the joint number. Empty: t, q%1, dq%1, tau%1.</source>
+        <translation>Die Spaltennamen der Logs, wie learnid-cli identify --columns sie nimmt: t=, q=, dq=, tau= mit %1 für die Gelenknummer. Leer: t, q%1, dq%1, tau%1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>default gains (robots with 2 joints)</source>
+        <translation>Standardverstärkungen (Roboter mit 2 Gelenken)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A scenario of this robot whose controller gains the parameter file records; the logs do not say which gains they were recorded with.</source>
+        <translation>Ein Szenario dieses Roboters, dessen Reglerverstärkungen die Parameterdatei festhält; die Logs sagen nicht, mit welchen Verstärkungen sie aufgezeichnet wurden.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>armature</source>
+        <translation>Rotorträgheit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>viscous</source>
+        <translation>viskos</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Coulomb</source>
+        <translation>Coulomb</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>offset</source>
+        <translation>Offset</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Robot:</source>
+        <translation>Roboter:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Training logs:</source>
+        <translation>Trainings-Logs:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Validation logs:</source>
+        <translation>Validierungs-Logs:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Columns:</source>
+        <translation>Spalten:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Joint terms:</source>
+        <translation>Gelenkterme:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gains from:</source>
+        <translation>Verstärkungen aus:</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Add…</source>
+        <translation>Hinzufügen…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location line="+109"/>
+        <source>choose the robot&apos;s URDF file</source>
+        <translation>die URDF-Datei des Roboters wählen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>add at least one training log (the logs to identify from)</source>
+        <translation>mindestens ein Trainings-Log hinzufügen (die Logs, aus denen identifiziert wird)</translation>
     </message>
 </context>
 <context>
@@ -4079,6 +5650,49 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <location line="+39"/>
         <source>no session to export</source>
         <translation>keine Sitzung zum Exportieren</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::TorqueFitPlot</name>
+    <message>
+        <location filename="../ui/TorqueFitPlot.cpp" line="+79"/>
+        <source>Identify to see the predicted against the measured torque.</source>
+        <translation>Identifizieren, um das vorhergesagte gegenüber dem gemessenen Moment zu sehen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Time [s]</source>
+        <translation>Zeit [s]</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>identified</source>
+        <translation>identifiziert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF as given</source>
+        <translation>URDF wie gegeben</translation>
+    </message>
+    <message>
+        <location line="+82"/>
+        <source>All joints</source>
+        <translation>Alle Gelenke</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Joint %1 [N m]</source>
+        <translation>Gelenk %1 [N m]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Joint %1</source>
+        <translation>Gelenk %1</translation>
     </message>
 </context>
 <context>

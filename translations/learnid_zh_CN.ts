@@ -331,7 +331,7 @@
 <context>
     <name>ChainDynamics</name>
     <message>
-        <location filename="../core/model/ChainDynamics.cpp" line="+56"/>
+        <location filename="../core/model/ChainDynamics.cpp" line="+54"/>
         <source>%1 has %2 moving joints: a chain needs 1 to %3</source>
         <translation>%1 有 %2 个可动关节：运动链需要 1 到 %3 个</translation>
     </message>
@@ -435,6 +435,39 @@
         <location line="+3"/>
         <source>Unknown drive state</source>
         <translation>未知驱动器状态</translation>
+    </message>
+</context>
+<context>
+    <name>ControllerLogCsv</name>
+    <message>
+        <location filename="../core/io/ControllerLogCsv.cpp" line="+22"/>
+        <source>%1: line %2: %3</source>
+        <translation>%1：第 %2 行：%3</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s line &quot;# plan-id: %2&quot; into its log</source>
+        <translation>%1：没有“# plan-id:”注释行；控制器会把计划中的“# plan-id: %2”行复制到其日志中</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the log is of plan %2, not of plan %3</source>
+        <translation>%1：该日志属于计划 %2，而不是计划 %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>sample %1 (t = %2 s) is beyond the plan&apos;s %3 samples, the last at t = %4 s</source>
+        <translation>采样点 %1（t = %2 s）超出了计划的 %3 个采样点，最后一个位于 t = %4 s</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>t = %1 s is off the plan&apos;s grid: sample %2 is planned at t = %3 s (+-%4 s); a log holds every sample of the plan, at the plan&apos;s times</source>
+        <translation>t = %1 s 不在计划的时间网格上：采样点 %2 计划位于 t = %3 s（+-%4 s）；日志应包含计划的每个采样点，且时刻与计划一致</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the trial ended early</source>
+        <translation>日志在计划的 %2 个采样点中的 %1 个之后结束（t = %3 s，共 %4 s）：试验提前结束</translation>
     </message>
 </context>
 <context>
@@ -697,7 +730,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+106"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+79"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>连杆 %1（%2）：质量 %3 kg：不是真实刚体</translation>
     </message>
@@ -715,6 +748,154 @@
         <location line="+4"/>
         <source>physically consistent: every link a real body</source>
         <translation>物理一致：每个连杆都是真实刚体</translation>
+    </message>
+</context>
+<context>
+    <name>FileLoop</name>
+    <message>
+        <location filename="../core/service/FileLoop.cpp" line="+35"/>
+        <source>unknown robot model &quot;%1&quot;</source>
+        <translation>未知的机器人模型“%1”</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>cannot create the folder %1</source>
+        <translation>无法创建文件夹 %1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>the history %1 is of robot %2 (%3 joints, %4 parameters), the scenario&apos;s robot is %5 (%6 joints, %7 parameters)</source>
+        <translation>历史 %1 属于机器人 %2（%3 个关节，%4 个参数），而场景的机器人是 %5（%6 个关节，%7 个参数）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the history %1 learns with the law %2, the scenario with %3: a history keeps its law (start a new history for another)</source>
+        <translation>历史 %1 使用学习律 %2，而场景使用 %3：一个历史始终保持其学习律（如需其他学习律，请新建一个历史）</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>trial %1: check passed, the trial may run.</source>
+        <translation>试验 %1：检查通过，可以运行。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>trial %1 refused: %2</source>
+        <translation>试验 %1 被拒绝：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedforward built with: %1</source>
+        <translation>前馈基于：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>planned motion: %1 s, %2 s with rests, %3 samples of %4 s</source>
+        <translation>规划运动：%1 s，含静止 %2 s，%3 个采样点，采样周期 %4 s</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>closed loop: estimate not physical (mass matrix not positive definite)</source>
+        <translation>闭环：估计不符合物理（质量矩阵非正定）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>closed loop: stable, max |z| = %1, decay rate %2 1/s</source>
+        <translation>闭环：稳定，max |z| = %1，衰减率 %2 1/s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>closed loop: UNSTABLE, max |z| = %1 at t = %2 s (growth %3 1/s)</source>
+        <translation>闭环：不稳定，max |z| = %1，t = %2 s（增长 %3 1/s）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>joint   peak [N m]  limit [N m]     use</source>
+        <translation> 关节   峰值 [N m]   限值 [N m]    占用</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoopLearn.cpp" line="+54"/>
+        <source>%1 ran plan %2, which the history %3 has learned from already as trial %4: plan the next trial and run that</source>
+        <translation>%1 运行的是计划 %2，历史 %3 已将其作为试验 %4 学习过：请规划下一次试验并运行它</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 ran plan %2, which the history %3 does not know; its plans to run are: %4</source>
+        <translation>%1 运行的是计划 %2，而历史 %3 中没有该计划；其待运行的计划为：%4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>none (plan the next trial first)</source>
+        <translation>无（请先规划下一次试验）</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: plan %2 is not the plan %3 that trial %4 of the history ran</source>
+        <translation>%1：计划 %2 不是历史中试验 %4 所运行的计划 %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 holds no learning history (no %2): plan the trial with `learnid-cli plan` into this history, or give its --history</source>
+        <translation>%1 中没有学习历史（没有 %2）：请用 `learnid-cli plan` 将试验规划到此历史中，或给出其 --history</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s &quot;# plan-id:&quot; line into its log</source>
+        <translation>%1：没有“# plan-id:”注释行；控制器会把计划中的“# plan-id:”行复制到其日志中</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 ran plan %2, %3 plan %4: the logs of one learning step are of one plan</source>
+        <translation>%1 运行的是计划 %2，%3 运行的是计划 %4：同一学习步骤的日志必须属于同一个计划</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the scenario runs every trial %1 times (repetitions): give one --trial-log per run, %2 given</source>
+        <translation>场景中每次试验运行 %1 次（repetitions）：请为每次运行给出一个 --trial-log，实际给出了 %2 个</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 was made with another estimate than the history&apos;s newest (estimate %2): plan the next trial again</source>
+        <translation>%1 所用的估计不是历史中最新的估计（估计 %2）：请重新规划下一次试验</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: %2; nothing learned</source>
+        <translation>%1：%2；未学习任何内容</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>the history %1 does not replay: trial %2: %3</source>
+        <translation>历史 %1 无法回放：试验 %2：%3</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 is not the estimate %2 that the history&apos;s trials give with this scenario: is its estimator the history&apos;s?</source>
+        <translation>%1 不是历史中的试验在此场景下得到的估计 %2：场景的估计器是否与历史的一致？</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoopPlan.cpp" line="+32"/>
+        <source>initial estimate of a learning loop through files</source>
+        <translation>基于文件的学习循环的初始估计</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>--estimate: the history %1 has learned from %2 trials; its next trial runs with its newest estimate (leave out --estimate, or give another --history to start a new history)</source>
+        <translation>--estimate：历史 %1 已从 %2 次试验中学习；其下一次试验使用其最新估计（请去掉 --estimate，或给出另一个 --history 以开始新的历史）</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>estimate %1 of %2</source>
+        <translation>估计 %1（%2）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the scenario&apos;s initial estimate</source>
+        <translation>场景的初始估计</translation>
     </message>
 </context>
 <context>
@@ -916,6 +1097,216 @@
         <location line="+0"/>
         <source>angle</source>
         <translation>角度</translation>
+    </message>
+</context>
+<context>
+    <name>LogFit</name>
+    <message>
+        <location filename="../core/identify/LogFit.cpp" line="+140"/>
+        <source>%1 has %2 joints, the robot %3</source>
+        <translation>%1 有 %2 个关节，机器人有 %3 个</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the filtered signals are not finite</source>
+        <translation>%1：滤波后的信号不是有限值</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no samples to fit</source>
+        <translation>没有可用于拟合的采样点</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the prior share must lie between 0 and 1</source>
+        <translation>先验比例必须在 0 到 1 之间</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>%1 does not fit the robot&apos;s joints or parameters</source>
+        <translation>%1 与机器人的关节或参数不符</translation>
+    </message>
+</context>
+<context>
+    <name>LogIdentification</name>
+    <message>
+        <location filename="../core/service/LogIdentification.cpp" line="+94"/>
+        <source>identification cancelled; nothing was produced</source>
+        <translation>辨识已取消；未生成任何结果</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>the robot &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
+        <translation>机器人 &apos;%1&apos; 既不是 URDF 文件，也不是内置机器人（%2）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>built-in %1</source>
+        <translation>内置机器人 %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>no log to identify from: add a training log</source>
+        <translation>没有可用于辨识的日志：请添加一个训练日志</translation>
+    </message>
+    <message>
+        <location filename="../core/service/LogIdentificationExport.cpp" line="+35"/>
+        <source>%1 (%2), identified from the logs %3</source>
+        <translation>%1（%2），由日志 %3 辨识</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
+        <translation>参数文件记录的控制器增益适用于 %1 个关节，机器人有 %2 个</translation>
+    </message>
+</context>
+<context>
+    <name>LogIdentificationText</name>
+    <message>
+        <location filename="../ui/LogIdentificationText.cpp" line="+28"/>
+        <source>Reading the robot %1…</source>
+        <translation>正在读取机器人 %1…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reading training log %1 of %2: %3…</source>
+        <translation>正在读取训练日志 %1/%2：%3…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reading validation log %1 of %2: %3…</source>
+        <translation>正在读取验证日志 %1/%2：%3…</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Fitting the parameters to %n log(s)…</source>
+        <translation>
+            <numerusform>正在用 %n 个日志拟合参数…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Predicting validation log %1 of %2: %3…</source>
+        <translation>正在预测验证日志 %1/%2：%3…</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; (%2), %3 moving joints.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt;（%2），%3 个可动关节。&lt;/p&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>&lt;p&gt;Fitted to %n log(s), %1 samples: %2 of %3 standard-parameter directions determined (condition %4); %5.&lt;/p&gt;</source>
+        <translation>
+            <numerusform>&lt;p&gt;用 %n 个日志、%1 个采样点拟合：%3 个标准参数方向中确定了 %2 个（条件数 %4）；%5。&lt;/p&gt;</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the consistent fit converged</source>
+        <translation>一致拟合已收敛</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the consistent fit stopped at its step limit</source>
+        <translation>一致拟合在步数上限处停止</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;一致性：&lt;/b&gt;&lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters:&lt;/b&gt; none of %1.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;未确定的基参数：&lt;/b&gt;无（共 %1 个）。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters&lt;/b&gt; (kept near the URDF&apos;s values), %1 of %2: %3&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;未确定的基参数&lt;/b&gt;（保持在 URDF 值附近），%2 个中有 %1 个：%3&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;训练残差&lt;/b&gt;，各关节 RMS [N m]：%1&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Identified; no validation log. Accept the result to export it.</source>
+        <translation>已辨识；没有验证日志。接受结果后即可导出。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identified: on %1 the torque error is %2 % of the measured torque (URDF as given: %3 %). Accept the result to export it.</source>
+        <translation>已辨识：在 %1 上，力矩误差为测量力矩的 %2 %（给定的 URDF：%3 %）。接受结果后即可导出。</translation>
+    </message>
+</context>
+<context>
+    <name>LogSignals</name>
+    <message>
+        <location filename="../core/identify/LogSignals.cpp" line="+55"/>
+        <source>the log filter needs positive bandwidths and a stride of 1 or more</source>
+        <translation>日志滤波器需要正的带宽和不小于 1 的步长</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the log has no measured velocities (dq columns) to use</source>
+        <translation>%1：日志中没有可用的测量速度（dq 列）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: %2 s of data is too short: the filter (bandwidth %3 rad/s) needs %4 s at each end to settle, and some data between</source>
+        <translation>%1：%2 s 的数据太短：滤波器（带宽 %3 rad/s）在两端各需要 %4 s 来稳定，中间还需要一些数据</translation>
+    </message>
+</context>
+<context>
+    <name>LoopHistory</name>
+    <message>
+        <location filename="../core/io/LoopHistory.cpp" line="+33"/>
+        <source>must be a plain file name in the history folder (letters, digits, &apos;.&apos;, &apos;_&apos;, &apos;-&apos;), got &quot;%1&quot;</source>
+        <translation>必须是历史文件夹中的简单文件名（字母、数字、&apos;.&apos;、&apos;_&apos;、&apos;-&apos;），实际为“%1”</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>must be 64 lower-case hex digits (SHA-256), got &quot;%1&quot;</source>
+        <translation>必须是 64 位小写十六进制数字（SHA-256），实际为“%1”</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+2"/>
+        <source>must not be empty</source>
+        <translation>不得为空</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>one more than trials, the initial estimate first</source>
+        <translation>比试验多一个，初始估计在最前</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>one per joint</source>
+        <translation>每个关节一个</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>must name at least one log</source>
+        <translation>必须至少列出一个日志</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>is missing; this is not a learnid history index</source>
+        <translation>缺失；这不是 learnid 历史索引</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>this version of learnid reads &quot;%1&quot;, got %2</source>
+        <translation>此版本的 learnid 读取“%1”，实际为 %2</translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
     </message>
 </context>
 <context>
@@ -1258,6 +1649,266 @@
         <location line="+91"/>
         <source>The link is not strictly physically consistent (mass %1 kg, smallest pseudo-inertia eigenvalue %2); it has no log-Cholesky parameters.</source>
         <translation>该连杆不满足严格的物理一致性（质量 %1 kg，伪惯量矩阵的最小特征值 %2）；它没有对数 Cholesky 参数。</translation>
+    </message>
+</context>
+<context>
+    <name>PlanCsv</name>
+    <message>
+        <location filename="../core/io/PlanCsv.cpp" line="+45"/>
+        <source>%1: line %2: %3</source>
+        <translation>%1：第 %2 行：%3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: line %2, column %3 (%4): %5</source>
+        <translation>%1：第 %2 行第 %3 列（%4）：%5</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>a second &quot;# %1:&quot; line; the first is on line %2</source>
+        <translation>第二个“# %1:”行；第一个在第 %2 行</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>no &quot;# %1:&quot; line before the header</source>
+        <translation>表头之前没有“# %1:”行</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+199"/>
+        <source>the plan-id must be 64 hex digits (SHA-256), got %1</source>
+        <translation>plan-id 必须是 64 位十六进制数字（SHA-256），实际为 %1</translation>
+    </message>
+    <message>
+        <location line="-191"/>
+        <source>expected &quot;# robot: &lt;model&gt;, &lt;n&gt; joints&quot;, got %1</source>
+        <translation>应为“# robot: &lt;model&gt;, &lt;n&gt; joints”，实际为 %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the sample period must be a positive number [s], got %1</source>
+        <translation>采样周期必须是正数 [s]，实际为 %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>estimate value %1 is not a finite number: %2</source>
+        <translation>估计值 %1 不是有限数：%2</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>plan CSV: the plan (%1 joints, %2 samples, %3 feedforward columns) is empty, does not fit its feedforward or holds non-finite numbers</source>
+        <translation>计划 CSV：计划（%1 个关节，%2 个采样点，%3 个前馈列）为空、与其前馈不符或含有非有限数</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>plan CSV: the estimate the feedforward was built with is empty or not finite</source>
+        <translation>计划 CSV：用于构建前馈的估计为空或不是有限值</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>not a plan file of this version: the first line must be &quot;%1&quot;</source>
+        <translation>不是此版本的计划文件：第一行必须是“%1”</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>no header line; expected %1</source>
+        <translation>没有表头行；应为 %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the header of a plan of %1 joints is %2</source>
+        <translation>%1 个关节的计划的表头为 %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>no samples after the header</source>
+        <translation>表头之后没有采样点</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>a blank or comment line among the samples; comments go before the header</source>
+        <translation>采样点之间有空行或注释行；注释应位于表头之前</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>expected %1 fields, got %2</source>
+        <translation>应有 %1 个字段，实际为 %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not a finite number: %1</source>
+        <translation>不是有限数：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>sample %1 is at k Ts = %2 s, got %3 s</source>
+        <translation>采样点 %1 应位于 k Ts = %2 s，实际为 %3 s</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the plan-id %1 is not that of the plan&apos;s numbers (%2): the plan was changed after learnid wrote it</source>
+        <translation>plan-id %1 与计划数值对应的 plan-id（%2）不符：计划在 learnid 写入后被修改过</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>a second plan-id, %1, other than %2 on line %3; a log is of one plan</source>
+        <translation>第二个 plan-id %1 与第 %3 行的 %2 不同；一个日志只属于一个计划</translation>
+    </message>
+</context>
+<context>
+    <name>RecordedTrialRobot</name>
+    <message>
+        <location filename="../core/service/RecordedTrialRobot.cpp" line="+24"/>
+        <source>the robot&apos;s own controller (plan and log files)</source>
+        <translation>机器人自身的控制器（计划和日志文件）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>no logged trial is left for trial run %1</source>
+        <translation>试验运行 %1 已没有剩余的记录试验</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 ran plan %2, but with this scenario the trial is planned as %3: the scenario is not the one the plan was made with</source>
+        <translation>%1 运行的是计划 %2，但在此场景下该试验被规划为 %3：此场景不是制定该计划时所用的场景</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the robot&apos;s own controller takes its parameters its own way: give it the estimate&apos;s parameter file</source>
+        <translation>机器人自身的控制器以自己的方式获取参数：请把该估计的参数文件交给它</translation>
+    </message>
+</context>
+<context>
+    <name>RobotLogCsv</name>
+    <message>
+        <location filename="../core/io/RobotLogCsv.cpp" line="+30"/>
+        <source>%1: line %2, column %3</source>
+        <translation>%1：第 %2 行第 %3 列</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: line %2: %3</source>
+        <translation>%1：第 %2 行：%3</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>, ... (%1 columns)</source>
+        <translation>, ...（共 %1 列）</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>the name repeats that of column %1; each column name may appear only once</source>
+        <translation>该名称与第 %1 列的名称重复；每个列名只能出现一次</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>no column &quot;%1&quot; (%2); the header has: %3</source>
+        <translation>没有列“%1”（%2）；表头包含：%3</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>the log has %1 joints (%2..%3), the robot %4</source>
+        <translation>日志有 %1 个关节（%2..%3），机器人有 %4 个</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the position of joint %1</source>
+        <translation>关节 %1 的位置</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the velocity of joint %1, as the log has velocities of other joints</source>
+        <translation>关节 %1 的速度，因为日志中有其他关节的速度</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the torque of joint %1</source>
+        <translation>关节 %1 的力矩</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: t= names no column; the time column is needed</source>
+        <translation>%1：t= 未指定任何列；需要时间列</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: %2=%3 has no %4 where the joint number goes, e.g. %2=%3%4</source>
+        <translation>%1：%2=%3 中没有代表关节编号的 %4，例如 %2=%3%4</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: &quot;%2&quot; has no &apos;=&apos;; expected key=pattern with the keys t, q, dq and tau, e.g. q=pos_meas%3</source>
+        <translation>%1：“%2”中没有 &apos;=&apos;；应为“键=模式”的形式，键为 t、q、dq 和 tau，例如 q=pos_meas%3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: unknown key &quot;%2&quot;; the keys are t, q, dq and tau</source>
+        <translation>%1：未知的键“%2”；键为 t、q、dq 和 tau</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the key %2 is given twice</source>
+        <translation>%1：键 %2 被给出两次</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: a log is read for 1 joint or more, not %2</source>
+        <translation>%1：日志只能按 1 个或更多关节读取，而不是 %2 个</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 joint kinds given for a robot of %3 joints</source>
+        <translation>%1：为有 %3 个关节的机器人给出了 %2 个关节类型</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>expected %1 fields (%2), got %3</source>
+        <translation>应有 %1 个字段（%2），实际为 %3</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the field is empty; expected a number</source>
+        <translation>字段为空；应为数字</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not a number: %1</source>
+        <translation>不是数字：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 rad/s is faster than any robot joint turns (at most %2 rad/s); the log looks like it holds degrees per second, radians per second are expected</source>
+        <translation>%1 rad/s 超过了任何机器人关节的转速（最多 %2 rad/s）；日志中似乎是度每秒，而应为弧度每秒</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 rad is more than 1.05 turns (%2 rad); the log looks like it holds degrees, radians are expected</source>
+        <translation>%1 rad 超过 1.05 圈（%2 rad）；日志中似乎是角度（度），而应为弧度</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the times must increase from sample to sample, got %1 after %2 on line %3</source>
+        <translation>时间必须逐个采样点递增，实际在第 %3 行的 %2 之后为 %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>the time %1 repeats that of line %2 with other values (%3: %4 there, %5 here); only an exact repeat of a row is dropped</source>
+        <translation>时间 %1 与第 %2 行的相同，但数值不同（%3：那里为 %4，这里为 %5）；只有完全重复的行才会被丢弃</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>the file holds no header line; expected one naming the columns %1</source>
+        <translation>文件中没有表头行；应有一行表头列出各列 %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 samples after the header on line %2; a log needs at least %3</source>
+        <translation>第 %2 行的表头之后有 %1 个采样点；日志至少需要 %3 个</translation>
     </message>
 </context>
 <context>
@@ -1657,6 +2308,21 @@
         <source>simulation.realUrdf: joint %1 (%2) is placed differently from the robot&apos;s URDF: the real robot may differ in inertia and friction only</source>
         <translation>simulation.realUrdf：关节 %1（%2）的位置与机器人 URDF 中的不同：真实机器人只能在惯量和摩擦上有所不同</translation>
     </message>
+    <message>
+        <location filename="../core/identify/UniformLog.cpp" line="+123"/>
+        <source>%1: the time stamps are off the nominal times t0 + k T (T = %2 ms) by %3 ms at %4 (t = %5 s) and by %6 ms at %7 (t = %8 s), more than half a step apart: the samples are not equidistant (one lost or added?), so the nominal times do not apply</source>
+        <translation>%1：时间戳偏离名义时刻 t0 + k T（T = %2 ms），在%4（t = %5 s）处偏离 %3 ms，在%7（t = %8 s）处偏离 %6 ms，两者相差超过半个步长：采样点不等距（丢失或多出了一个？），因此名义时刻不适用</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoop.cpp" line="-45"/>
+        <source>%1: %2 holds %3 parameters of robot %4; the scenario&apos;s robot %5 has %6</source>
+        <translation>%1：%2 包含机器人 %4 的 %3 个参数；场景的机器人 %5 有 %6 个</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: %2: parameter %3 is &quot;%4&quot;, the robot&apos;s is &quot;%5&quot;</source>
+        <translation>%1：%2：参数 %3 为“%4”，而机器人的为“%5”</translation>
+    </message>
 </context>
 <context>
     <name>TorqueRule</name>
@@ -1792,6 +2458,64 @@
     </message>
 </context>
 <context>
+    <name>UniformLog</name>
+    <message>
+        <location filename="../core/identify/UniformLog.cpp" line="-78"/>
+        <source>sample %1</source>
+        <translation>采样点 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line %1</source>
+        <translation>第 %1 行</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1: a log of %2 times, %3 x %4 positions, %5 x %6 velocities, %7 x %8 torques and %9 line numbers; expected n x N for all</source>
+        <translation>%1：日志有 %2 个时间、%3 x %4 个位置、%5 x %6 个速度、%7 x %8 个力矩和 %9 个行号；全部应为 n x N</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 samples; resampling needs at least 2</source>
+        <translation>%1：%2 个采样点；重采样至少需要 2 个</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: a value is not a finite number</source>
+        <translation>%1：有一个值不是有限数</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the times must increase from sample to sample, got %2 after %3</source>
+        <translation>%1：时间必须逐个采样点递增，实际在 %3 之后为 %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: the log spans %2 to %3 s, too long to resample</source>
+        <translation>%1：日志跨度为 %2 到 %3 s，太长，无法重采样</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>%1: the period (%2 s) and the largest gap (%3 s) must be zero (the default) or positive</source>
+        <translation>%1：周期（%2 s）和最大间隔（%3 s）必须为零（默认）或正数</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1: a gap of %2 ms after the sample at t = %3 s, more than the %4 ms allowed (--max-gap)</source>
+        <translation>%1：t = %3 s 处的采样点之后有 %2 ms 的间隔，超过允许的 %4 ms（--max-gap）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: a period of %2 ms over the log&apos;s %3 s gives %4 samples; expected 2 to %5 (100 per sample of the log)</source>
+        <translation>%1：以 %2 ms 的周期覆盖日志的 %3 s 会得到 %4 个采样点；应为 2 到 %5 个（日志每个采样点至多 100 个）</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: values this close to the largest double cannot be interpolated</source>
+        <translation>%1：如此接近 double 最大值的数值无法插值</translation>
+    </message>
+</context>
+<context>
     <name>UrdfChain</name>
     <message>
         <location filename="../core/model/UrdfChain.cpp" line="+21"/>
@@ -1838,6 +2562,49 @@
         <location line="+10"/>
         <source>%1: cannot read the URDF: %2</source>
         <translation>%1：无法读取 URDF：%2</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfExport</name>
+    <message>
+        <location filename="../core/io/UrdfExport.cpp" line="+120"/>
+        <source>%1: link &quot;%2&quot;: the identified body has an entry that is not a finite number</source>
+        <translation>%1：连杆“%2”：辨识出的刚体有一个条目不是有限数</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: link &quot;%2&quot;: the identified mass (%3 kg) is not positive</source>
+        <translation>%1：连杆“%2”：辨识出的质量（%3 kg）不为正</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: link &quot;%2&quot;: the identified inertia is not that of a physical body (its pseudo-inertia has the negative eigenvalue %3)</source>
+        <translation>%1：连杆“%2”：辨识出的惯量不可能属于物理刚体（其伪惯量有负特征值 %3）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: joint &quot;%2&quot;: the friction must be finite and not negative, got viscous %3 and Coulomb %4</source>
+        <translation>%1：关节“%2”：摩擦必须为有限值且非负，实际为粘性 %3、库仑 %4</translation>
+    </message>
+    <message>
+        <location line="+132"/>
+        <source>%1: the identified URDF reads back with another body or friction at link &quot;%2&quot; than was written</source>
+        <translation>%1：辨识出的 URDF 读回后，连杆“%2”处的刚体或摩擦与写入的不同</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: bodies for %2 and friction for %3 joints given, the chain has %4 moving joints</source>
+        <translation>%1：给出了 %2 个关节的刚体和 %3 个关节的摩擦，而运动链有 %4 个可动关节</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: the chain&apos;s moving joints (%2) are not the URDF&apos;s from link &quot;%3&quot; to link &quot;%4&quot; (%5): the chain was not read from this URDF</source>
+        <translation>%1：运动链的可动关节（%2）不是 URDF 中从连杆“%3”到连杆“%4”的可动关节（%5）：该运动链不是从此 URDF 读取的</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: line %2, column %3: not XML: %4</source>
+        <translation>%1：第 %2 行第 %3 列：不是 XML：%4</translation>
     </message>
 </context>
 <context>
@@ -1901,13 +2668,71 @@
 <context>
     <name>learnid-cli</name>
     <message>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+41"/>
+        <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
+        <translation>--robot：&apos;%1&apos; 既不是 URDF 文件，也不是内置机器人（%2）</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>--export: a parameter file records the controller&apos;s gains, and the default gains are for %1 joints, the robot has %2: give them with --scenario FILE (its controller section)</source>
+        <translation>--export：参数文件会记录控制器的增益，而默认增益适用于 %1 个关节，机器人有 %2 个：请用 --scenario FILE 给出增益（在其 controller 部分）</translation>
+    </message>
+    <message>
+        <location line="+72"/>
+        <source>learnid-cli: reading %1</source>
+        <translation>learnid-cli：正在读取 %1</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>identified by learnid-cli %1 identify on %2</source>
+        <translation>由 learnid-cli %1 identify 于 %2 辨识</translation>
+    </message>
+    <message>
+        <location line="-44"/>
+        <source>robot %1 (%2): %3 moving joints</source>
+        <translation>机器人 %1（%2）：%3 个可动关节</translation>
+    </message>
+    <message>
+        <location line="-38"/>
+        <source>%1: torque predicted and measured</source>
+        <translation>%1：预测力矩与测量力矩</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>learnid: %1 identified from logs</source>
+        <translation>learnid：根据日志辨识 %1</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>fitting %1 standard parameters to %2 logs</source>
+        <translation>正在用 %2 个日志拟合 %1 个标准参数</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>base parameters the logs leave undetermined (kept near the URDF&apos;s values): %1</source>
+        <translation>日志未能确定的基参数（保持在 URDF 值附近）：%1</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <location line="+10"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
         <location filename="../app/cli/RunCommand.cpp" line="+76"/>
         <location line="+14"/>
         <location line="+52"/>
         <location line="+44"/>
-        <location filename="../app/cli/main.cpp" line="+36"/>
+        <location filename="../app/cli/main.cpp" line="+53"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli：错误：%1</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>--plots: cannot create %1</source>
+        <translation>--plots：无法创建 %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>wrote %1</source>
+        <translation>已写入 %1</translation>
     </message>
     <message>
         <location filename="../app/cli/CliOptions.cpp" line="+17"/>
@@ -1930,6 +2755,22 @@
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
       Re-identify from recorded trials: the session runs again with each log
       (one per trial, in order) answering in place of the robot.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
+      and compare the result with its URDF on the --validate logs.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
+      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Learn from the controller&apos;s log of a plan; the next plan uses the new
+      estimate.
   learnid-cli COMMAND --help
       The options of one command.
 </source>
@@ -1952,12 +2793,28 @@
                      [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
       根据记录的试验重新辨识：会话再次运行，由每个日志
       （每次试验一个，按顺序）代替机器人应答。
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      根据真实机器人记录的日志（CSV）辨识其惯量和摩擦，
+      并在 --validate 日志上将结果与其 URDF 进行比较。
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      为机器人自身的控制器规划下一次试验：q_d(t) 和 tau_f(t)
+      （DIR/plan.csv）以及试验前检查（DIR/check.txt）。
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      从控制器按某个计划记录的日志中学习；下一个计划使用
+      新的估计。
   learnid-cli COMMAND --help
       某个命令的选项。
 </translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+48"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -2012,6 +2869,8 @@
     </message>
     <message>
         <location line="+26"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+215"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+70"/>
         <source>Show this command&apos;s options.</source>
         <translation>显示此命令的选项。</translation>
     </message>
@@ -2022,6 +2881,7 @@
     </message>
     <message>
         <location line="+3"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-16"/>
         <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
         <translation>场景文件（JSON，docs/scenario.md）；默认：论文场景。</translation>
     </message>
@@ -2067,6 +2927,8 @@
     </message>
     <message>
         <location line="+6"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-3"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+13"/>
         <source>No progress lines on stderr.</source>
         <translation>不在 stderr 上输出进度行。</translation>
     </message>
@@ -2116,7 +2978,7 @@
         <translation>&apos;scenario&apos; 需要 --print</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+18"/>
         <source>no command given</source>
         <translation>未给出命令</translation>
     </message>
@@ -2141,6 +3003,8 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+8"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+22"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+34"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
@@ -2255,12 +3119,13 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-79"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+7"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+15"/>
         <source>estimate %1:</source>
         <translation>估计 %1：</translation>
     </message>
@@ -2275,12 +3140,29 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>未找到一致的估计：%1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="+47"/>
+        <source>trial %1 refused by the pre-trial check: %2</source>
+        <translation>试验 %1 未通过试验前检查：%2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+35"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+12"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli：未写入文件</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-27"/>
+        <source>plan-id: %1</source>
+        <translation>plan-id: %1</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>learnid-cli: trial %1 (plan %2) learned; the next plan uses estimate %3</source>
+        <translation>learnid-cli：已从试验 %1（计划 %2）学习；下一个计划使用估计 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/RunCommand.cpp" line="+14"/>
         <source>learnid-cli: error: apply failed: %1</source>
         <translation>learnid-cli：错误：写入失败：%1</translation>
     </message>
@@ -2290,9 +3172,319 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：估计 %1 已写入机器人</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+26"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-181"/>
+        <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
+        <translation>--joint-terms：未知项 &apos;%1&apos;；可用的项为 armature、viscous、coulomb 和 offset，或 none</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>--rho: must be a positive number [rad/s], got &apos;%1&apos;</source>
+        <translation>--rho：必须是正数 [rad/s]，实际为 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--prior-share: must be a number between 0 and 1, got &apos;%1&apos;</source>
+        <translation>--prior-share：必须是 0 到 1 之间的数，实际为 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>--velocity: must be auto, measured or q, got &apos;%1&apos;</source>
+        <translation>--velocity：必须是 auto、measured 或 q，实际为 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--max-gap: must be a positive number of ms, got &apos;%1&apos;</source>
+        <translation>--max-gap：必须是正的毫秒数，实际为 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>--urdf-out: %1 is where --export writes</source>
+        <translation>--urdf-out：%1 已是 --export 的写入位置</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>A built-in URDF robot (e.g. double-pendulum) or a URDF file.</source>
+        <translation>内置 URDF 机器人（例如 double-pendulum）或 URDF 文件。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A recorded log (CSV) to identify from; once per log.</source>
+        <translation>用于辨识的记录日志（CSV）；每个日志一个。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A recorded log to check the result on; once per log.</source>
+        <translation>用于检验结果的记录日志；每个日志一个。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The log&apos;s column names, e.g. t=time,q=pos%1,dq=vel%1,tau=tau%1.</source>
+        <translation>日志的列名，例如 t=time,q=pos%1,dq=vel%1,tau=tau%1。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Joint terms to identify: armature, viscous, coulomb, offset, or none; default: viscous,coulomb,offset.</source>
+        <translation>要辨识的关节项：armature、viscous、coulomb、offset 或 none；默认：viscous,coulomb,offset。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Bandwidth of the zero-phase log filter [rad/s]; default 50.</source>
+        <translation>零相位日志滤波器的带宽 [rad/s]；默认 50。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Directions weaker than this share of the strongest keep the URDF&apos;s values; default 0.03.</source>
+        <translation>弱于最强方向的此比例的方向保持 URDF 的值；默认 0.03。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Joint velocities: auto, measured or q (from positions).</source>
+        <translation>关节速度：auto、measured 或 q（由位置求得）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Longest time step allowed in a log [ms]; default 5 sample periods.</source>
+        <translation>日志中允许的最长时间步长 [ms]；默认 5 个采样周期。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
+        <translation>运动链的基座连杆；默认：URDF 的根连杆。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The chain&apos;s tip link; default: the one leaf below the base.</source>
+        <translation>运动链的末端连杆；默认：基座之下唯一的叶连杆。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write the identified base parameters as a parameter file (and DCF).</source>
+        <translation>将辨识出的基参数写为参数文件（及 DCF）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Write the URDF with the identified inertia and friction.</source>
+        <translation>写出带有辨识出的惯量和摩擦的 URDF。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write the report (PDF): the tables and the torque plots.</source>
+        <translation>写出报告（PDF）：表格和力矩图。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write the predicted and measured torque of each validation log as PNG into this folder (made if missing).</source>
+        <translation>将每个验证日志的预测力矩与测量力矩以 PNG 写入此文件夹（不存在时自动创建）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Scenario whose controller gains the parameter file records.</source>
+        <translation>场景，其控制器增益记录在参数文件中。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-36"/>
+        <source>Folder that relative output paths are taken from.</source>
+        <translation>相对输出路径的基准文件夹。</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
+
+Identify a robot&apos;s inertia and joint friction from its recorded logs,
+and compare the result with the URDF as given on --validate logs.
+
+%1</source>
+        <translation>用法：learnid-cli identify --robot ROBOT --log FILE [选项]
+
+根据机器人记录的日志辨识其惯量和关节摩擦，
+并在 --validate 日志上将结果与给定的 URDF 进行比较。
+
+%1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>&apos;identify&apos; needs --robot ROBOT</source>
+        <translation>&apos;identify&apos; 需要 --robot ROBOT</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&apos;identify&apos; needs at least one --log FILE</source>
+        <translation>&apos;identify&apos; 至少需要一个 --log FILE</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+23"/>
+        <location line="+16"/>
+        <source>name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>joint</source>
+        <translation>关节</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>fit: %1 logs, %2 samples; %3 of %4 standard-parameter directions determined (condition %5)
+fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %8
+</source>
+        <translation>拟合：%1 个日志，%2 个采样点；%4 个标准参数方向中确定了 %3 个（条件数 %5）
+拟合：%7 个基参数中有 %6 个未确定（保持在 URDF 值附近）；%8
+</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>consistent fit converged</source>
+        <translation>一致拟合已收敛</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>consistent fit stopped at its step limit</source>
+        <translation>一致拟合在步数上限处停止</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>identified parameters: %1
+</source>
+        <translation>辨识出的参数：%1
+</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>training logs: residual of the fit</source>
+        <translation>训练日志：拟合残差</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS residual [N m]</source>
+        <translation>RMS 残差 [N m]</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>ratio %</source>
+        <translation>比值 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMS error [N m]</source>
+        <translation>RMS 误差 [N m]</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>validation on %1 (%2 samples)</source>
+        <translation>在 %1 上验证（%2 个采样点）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="+124"/>
+        <source>URDF as given</source>
+        <translation>给定的 URDF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="+2"/>
+        <source>identified</source>
+        <translation>辨识结果</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS measured [N m]</source>
+        <translation>RMS 测量值 [N m]</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>overall sqrt(sum e^2 / sum tau^2) %</source>
+        <translation>总体 sqrt(sum e^2 / sum tau^2) %</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>mean of the joint ratios %</source>
+        <translation>各关节比值的平均 %</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/LoopOptions.cpp" line="-36"/>
+        <source>Usage: learnid-cli plan --out DIR [options]
+
+Plan the next trial for the robot&apos;s own controller: q_d(t) and the
+feedforward tau_f(t) per joint (DIR/plan.csv) and the pre-trial check
+(DIR/check.txt). A plan that fails the check is not written.
+
+%1</source>
+        <translation>用法：learnid-cli plan --out DIR [选项]
+
+为机器人自身的控制器规划下一次试验：每个关节的 q_d(t) 和
+前馈 tau_f(t)（DIR/plan.csv）以及试验前检查
+（DIR/check.txt）。未通过检查的计划不会被写出。
+
+%1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Usage: learnid-cli learn --trial-log FILE [options]
+
+Learn from the log the robot&apos;s own controller recorded while running a
+plan: the new estimate joins the history, the convergence table goes to
+stdout, and the next plan uses the new estimate.
+
+%1</source>
+        <translation>用法：learnid-cli learn --trial-log FILE [选项]
+
+从机器人自身的控制器运行计划时记录的日志中学习：
+新的估计加入历史，收敛表输出到 stdout，
+下一个计划使用新的估计。
+
+%1</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>The learning history&apos;s folder; default: learnid-history beside plan.csv (plan) or the trial log (learn).</source>
+        <translation>学习历史的文件夹；默认：plan.csv 旁（plan）或试验日志旁（learn）的 learnid-history。</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Folder to write plan.csv and check.txt into.</source>
+        <translation>写入 plan.csv 和 check.txt 的文件夹。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Parameter file of the estimate to plan with; default: the history&apos;s newest, or the scenario&apos;s initial estimate.</source>
+        <translation>用于规划的估计的参数文件；默认：历史中最新的估计，或场景的初始估计。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The controller&apos;s log of a run of the plan (CSV); once per repetition.</source>
+        <translation>控制器运行该计划一次所记录的日志（CSV）；每次重复一个。</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>&apos;plan&apos; needs --out DIR</source>
+        <translation>&apos;plan&apos; 需要 --out DIR</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;learn&apos; needs --trial-log FILE</source>
+        <translation>&apos;learn&apos; 需要 --trial-log FILE</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="-26"/>
+        <source>joint %1 (%2) [N m]</source>
+        <translation>关节 %1（%2）[N m]</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>measured</source>
+        <translation>测量值</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
     </message>
 </context>
 <context>
@@ -3045,6 +4237,113 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
 </context>
 <context>
+    <name>learnid::LogExportController</name>
+    <message>
+        <location filename="../ui/LogExportController.cpp" line="+59"/>
+        <source>a parameter file records the controller&apos;s gains, and the default gains are for %1 joints, the robot has %2: choose a scenario of this robot under &quot;Gains from&quot;</source>
+        <translation>参数文件会记录控制器的增益，而默认增益适用于 %1 个关节，机器人有 %2 个：请在“增益来源”中选择此机器人的场景</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>identify and accept a result first</source>
+        <translation>请先辨识并接受一个结果</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+6"/>
+        <source>Parameter file not written: %1</source>
+        <translation>参数文件未写入：%1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Parameter file written: %1</source>
+        <translation>参数文件已写入：%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>URDF not written: identify and accept a result first</source>
+        <translation>URDF 未写入：请先辨识并接受一个结果</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>identified by learnid %1 (Identify from recorded data) on %2</source>
+        <translation>由 learnid %1（根据记录的数据辨识）于 %2 辨识</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>URDF written: %1</source>
+        <translation>URDF 已写入：%1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>URDF not written: %1</source>
+        <translation>URDF 未写入：%1</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::LogValidationTableModel</name>
+    <message>
+        <location filename="../ui/LogValidationTableModel.cpp" line="+101"/>
+        <source>sqrt(sum e^2 / sum tau^2) over the joints and samples, in %</source>
+        <translation>对所有关节和采样点计算的 sqrt(sum e^2 / sum tau^2)，单位 %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The mean over the joints of RMS error / RMS measured, in %</source>
+        <translation>各关节 RMS 误差 / RMS 测量值的平均，单位 %</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>overall %</source>
+        <translation>总体 %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>mean ratio %</source>
+        <translation>平均比值 %</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Joint</source>
+        <translation>关节</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS measured
+[N m]</source>
+        <translation>RMS 测量值
+[N m]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF as given
+RMS error [N m]</source>
+        <translation>给定的 URDF
+RMS 误差 [N m]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF as given
+ratio %</source>
+        <translation>给定的 URDF
+比值 %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identified
+RMS error [N m]</source>
+        <translation>辨识结果
+RMS 误差 [N m]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identified
+ratio %</source>
+        <translation>辨识结果
+比值 %</translation>
+    </message>
+</context>
+<context>
     <name>learnid::MainActions</name>
     <message>
         <location filename="../ui/MainActions.cpp" line="+37"/>
@@ -3070,6 +4369,16 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <location line="+1"/>
         <source>Start a new session with the settings of the form (the history is discarded)</source>
         <translation>以表单中的设置开始新会话（历史记录将被丢弃）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identify from recorded &amp;data…</source>
+        <translation>根据记录的数据辨识(&amp;D)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Identify a robot&apos;s parameters from logs its controller recorded</source>
+        <translation>根据机器人控制器记录的日志辨识其参数</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3282,7 +4591,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>机器人(&amp;R)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>&amp;Trials</source>
         <translation>试验(&amp;T)</translation>
     </message>
@@ -3310,7 +4619,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 <context>
     <name>learnid::MainWindow</name>
     <message>
-        <location filename="../ui/MainWindow.cpp" line="+78"/>
+        <location filename="../ui/MainWindow.cpp" line="+79"/>
         <source>learnid – commissioning</source>
         <translation>learnid – 调试</translation>
     </message>
@@ -3355,7 +4664,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>参数收敛</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+50"/>
         <source>The language changes when learnid is started again.</source>
         <translation>语言将在下次启动 learnid 时切换。</translation>
     </message>
@@ -3575,6 +4884,263 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <location line="+4"/>
         <source>UNSTABLE: max |z| = %1 at t = %2 s (growth %3 1/s)</source>
         <translation>不稳定：max |z| = %1，t = %2 s（增长 %3 1/s）</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::RecordedDataDialog</name>
+    <message>
+        <location filename="../ui/RecordedDataDialog.cpp" line="+51"/>
+        <source>&amp;Identify</source>
+        <translation>辨识(&amp;I)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Accept</source>
+        <translation>接受(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export &amp;parameter file…</source>
+        <translation>导出参数文件(&amp;P)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export &amp;URDF…</source>
+        <translation>导出 URDF(&amp;U)…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Identify from recorded data</source>
+        <translation>根据记录的数据辨识</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>Not identified: %1</source>
+        <translation>未辨识：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Identification cancelled; nothing was identified or written.</source>
+        <translation>辨识已取消；未辨识或写入任何内容。</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Robot and logs</source>
+        <translation>机器人和日志</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Validation on:</source>
+        <translation>验证所用日志：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Validation</source>
+        <translation>验证</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Predicted against measured torque (validation log)</source>
+        <translation>预测力矩与测量力矩对比（验证日志）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Add the robot&apos;s logs and press Identify.</source>
+        <translation>添加机器人的日志，然后点击“辨识”。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot identify: %1</source>
+        <translation>无法辨识：%1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Cancelling after the current step…</source>
+        <translation>将在当前步骤完成后取消…</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>Result accepted: export the parameter file or the URDF.</source>
+        <translation>结果已接受：可导出参数文件或 URDF。</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::RecordedDataForm</name>
+    <message>
+        <location filename="../ui/RecordedDataForm.cpp" line="+48"/>
+        <source>Robot logs (*.csv);;All files (*)</source>
+        <translation>机器人日志 (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Robot URDF</source>
+        <translation>机器人 URDF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF (*.urdf);;All files (*)</source>
+        <translation>URDF (*.urdf);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Logs to identify from</source>
+        <translation>用于辨识的日志</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Logs to validate on</source>
+        <translation>用于验证的日志</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Scenario with the controller gains</source>
+        <translation>包含控制器增益的场景</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scenario files (*.json);;All files (*)</source>
+        <translation>场景文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export parameter file</source>
+        <translation>导出参数文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter files (*.json)</source>
+        <translation>参数文件 (*.json)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export URDF</source>
+        <translation>导出 URDF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF (*.urdf)</source>
+        <translation>URDF (*.urdf)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+5"/>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 (built-in URDF)</source>
+        <translation>%1（内置 URDF）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF file…</source>
+        <translation>URDF 文件…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the robot&apos;s URDF file</source>
+        <translation>机器人的 URDF 文件</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The logs&apos; column names as learnid-cli identify --columns takes them: t=, q=, dq=, tau= with %1 for the joint number. Empty: t, q%1, dq%1, tau%1.</source>
+        <translation>日志的列名，格式与 learnid-cli identify --columns 相同：t=、q=、dq=、tau=，用 %1 表示关节编号。留空：t、q%1、dq%1、tau%1。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>default gains (robots with 2 joints)</source>
+        <translation>默认增益（2 关节机器人）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A scenario of this robot whose controller gains the parameter file records; the logs do not say which gains they were recorded with.</source>
+        <translation>此机器人的一个场景，其控制器增益将记录在参数文件中；日志本身不说明记录时所用的增益。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>armature</source>
+        <translation>转子惯量</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>viscous</source>
+        <translation>粘性</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Coulomb</source>
+        <translation>库仑</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>offset</source>
+        <translation>偏置</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Robot:</source>
+        <translation>机器人：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Training logs:</source>
+        <translation>训练日志：</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Validation logs:</source>
+        <translation>验证日志：</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Columns:</source>
+        <translation>列：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Joint terms:</source>
+        <translation>关节项：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gains from:</source>
+        <translation>增益来源：</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Add…</source>
+        <translation>添加…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <location line="+109"/>
+        <source>choose the robot&apos;s URDF file</source>
+        <translation>请选择机器人的 URDF 文件</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>add at least one training log (the logs to identify from)</source>
+        <translation>请至少添加一个训练日志（用于辨识的日志）</translation>
     </message>
 </context>
 <context>
@@ -4078,6 +5644,49 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <location line="+39"/>
         <source>no session to export</source>
         <translation>没有可导出的会话</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::TorqueFitPlot</name>
+    <message>
+        <location filename="../ui/TorqueFitPlot.cpp" line="+79"/>
+        <source>Identify to see the predicted against the measured torque.</source>
+        <translation>辨识后即可查看预测力矩与测量力矩的对比。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>measured</source>
+        <translation>测量值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>identified</source>
+        <translation>辨识结果</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF as given</source>
+        <translation>给定的 URDF</translation>
+    </message>
+    <message>
+        <location line="+82"/>
+        <source>All joints</source>
+        <translation>所有关节</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Joint %1 [N m]</source>
+        <translation>关节 %1 [N m]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Joint %1</source>
+        <translation>关节 %1</translation>
     </message>
 </context>
 <context>
