@@ -440,12 +440,7 @@
 <context>
     <name>ControllerLogCsv</name>
     <message>
-        <location filename="../core/io/ControllerLogCsv.cpp" line="+22"/>
-        <source>%1: line %2: %3</source>
-        <translation>%1: Zeile %2: %3</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location filename="../core/io/ControllerLogCsv.cpp" line="+37"/>
         <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s line &quot;# plan-id: %2&quot; into its log</source>
         <translation>%1: keine Kommentarzeile „# plan-id:“; der Regler übernimmt die Zeile „# plan-id: %2“ des Plans in sein Log</translation>
     </message>
@@ -468,6 +463,19 @@
         <location line="+14"/>
         <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the trial ended early</source>
         <translation>das Log endet nach %1 der %2 Abtastwerte des Plans (t = %3 s von %4 s): der Versuch endete vorzeitig</translation>
+    </message>
+</context>
+<context>
+    <name>CsvPlace</name>
+    <message>
+        <location filename="../core/io/CsvPlace.cpp" line="+21"/>
+        <source>%1: line %2, column %3</source>
+        <translation>%1: Zeile %2, Spalte %3</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: line %2: %3</source>
+        <translation>%1: Zeile %2: %3</translation>
     </message>
 </context>
 <context>
@@ -1529,17 +1537,7 @@
 <context>
     <name>PathCsv</name>
     <message>
-        <location filename="../core/io/PathCsv.cpp" line="+39"/>
-        <source>%1: line %2, column %3</source>
-        <translation>%1: Zeile %2, Spalte %3</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>%1: line %2: %3</source>
-        <translation>%1: Zeile %2: %3</translation>
-    </message>
-    <message>
-        <location line="+20"/>
+        <location filename="../core/io/PathCsv.cpp" line="+54"/>
         <source>the header must be %1 (the time, then one column per joint); expected %2, got %3</source>
         <translation>die Kopfzeile muss %1 lauten (die Zeit, dann eine Spalte pro Gelenk); erwartet: %2, gefunden: %3</translation>
     </message>
@@ -1656,17 +1654,7 @@
 <context>
     <name>PlanCsv</name>
     <message>
-        <location filename="../core/io/PlanCsv.cpp" line="+45"/>
-        <source>%1: line %2: %3</source>
-        <translation>%1: Zeile %2: %3</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1: line %2, column %3 (%4): %5</source>
-        <translation>%1: Zeile %2, Spalte %3 (%4): %5</translation>
-    </message>
-    <message>
-        <location line="+71"/>
+        <location filename="../core/io/PlanCsv.cpp" line="+109"/>
         <source>a second &quot;# %1:&quot; line; the first is on line %2</source>
         <translation>eine zweite Zeile „# %1:“; die erste steht in Zeile %2</translation>
     </message>
@@ -1783,17 +1771,7 @@
 <context>
     <name>RobotLogCsv</name>
     <message>
-        <location filename="../core/io/RobotLogCsv.cpp" line="+30"/>
-        <source>%1: line %2, column %3</source>
-        <translation>%1: Zeile %2, Spalte %3</translation>
-    </message>
-    <message>
-        <location line="+15"/>
-        <source>%1: line %2: %3</source>
-        <translation>%1: Zeile %2: %3</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location filename="../core/io/RobotLogCsv.cpp" line="+49"/>
         <source>, ... (%1 columns)</source>
         <translation>, ... (%1 Spalten)</translation>
     </message>
@@ -2357,12 +2335,7 @@
 <context>
     <name>TrialCsv</name>
     <message>
-        <location filename="../core/io/TrialCsv.cpp" line="+45"/>
-        <source>%1: line %2: %3</source>
-        <translation>%1: Zeile %2: %3</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location filename="../core/io/TrialCsv.cpp" line="+55"/>
         <source>trial CSV: the record (%1 joints, %2 samples) does not fit its plan (%3 joints, %4 samples)</source>
         <translation>Versuchs-CSV: die Aufzeichnung (%1 Gelenke, %2 Abtastwerte) passt nicht zu ihrem Plan (%3 Gelenke, %4 Abtastwerte)</translation>
     </message>
@@ -2680,7 +2653,7 @@
         <translation>--export: eine Parameterdatei hält die Verstärkungen des Reglers fest, und die Standardverstärkungen gelten für %1 Gelenke, der Roboter hat %2: sie mit --scenario FILE angeben (in dessen Abschnitt controller)</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+71"/>
         <source>learnid-cli: reading %1</source>
         <translation>learnid-cli: %1 wird gelesen</translation>
     </message>
@@ -2722,7 +2695,7 @@
         <location line="+14"/>
         <location line="+52"/>
         <location line="+44"/>
-        <location filename="../app/cli/main.cpp" line="+53"/>
+        <location filename="../app/cli/main.cpp" line="+52"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli: Fehler: %1</translation>
     </message>
@@ -2817,7 +2790,7 @@
 </translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+45"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -2872,8 +2845,8 @@
     </message>
     <message>
         <location line="+26"/>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+215"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="+70"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+61"/>
         <source>Show this command&apos;s options.</source>
         <translation>Die Optionen dieses Befehls anzeigen.</translation>
     </message>
@@ -2884,7 +2857,7 @@
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="-16"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-17"/>
         <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
         <translation>Szenariodatei (JSON, docs/scenario.md); Standard: das Szenario des Artikels.</translation>
     </message>
@@ -2931,7 +2904,7 @@
     <message>
         <location line="+6"/>
         <location filename="../app/cli/IdentifyOptions.cpp" line="-3"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="+13"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <source>No progress lines on stderr.</source>
         <translation>Keine Fortschrittszeilen auf stderr.</translation>
     </message>
@@ -3006,8 +2979,8 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+22"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="+34"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+20"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+35"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
@@ -3181,7 +3154,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-181"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-183"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms: unbekannter Term &apos;%1&apos;; die Terme sind armature, viscous, coulomb und offset, oder none</translation>
     </message>
@@ -3226,12 +3199,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Ein aufgezeichnetes Log, an dem das Ergebnis geprüft wird; einmal pro Log.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>The log&apos;s column names, e.g. t=time,q=pos%1,dq=vel%1,tau=tau%1.</source>
         <translation>Die Spaltennamen des Logs, z. B. t=time,q=pos%1,dq=vel%1,tau=tau%1.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Joint terms to identify: armature, viscous, coulomb, offset, or none; default: viscous,coulomb,offset.</source>
         <translation>Zu identifizierende Gelenkterme: armature, viscous, coulomb, offset oder none; Standard: viscous,coulomb,offset.</translation>
     </message>
@@ -3256,7 +3229,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Längster erlaubter Zeitschritt in einem Log [ms]; Standard 5 Abtastperioden.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
         <translation>Basisglied der Kette; Standard: die Wurzel des URDF.</translation>
     </message>
@@ -3281,7 +3254,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Den Bericht (PDF) schreiben: die Tabellen und die Momentendiagramme.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Write the predicted and measured torque of each validation log as PNG into this folder (made if missing).</source>
         <translation>Das vorhergesagte und gemessene Moment jedes Validierungs-Logs als PNG in diesen Ordner schreiben (wird bei Bedarf angelegt).</translation>
     </message>
@@ -3292,12 +3265,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="-36"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-37"/>
         <source>Folder that relative output paths are taken from.</source>
         <translation>Ordner, ab dem relative Ausgabepfade gelten.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+13"/>
         <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
 
 Identify a robot&apos;s inertia and joint friction from its recorded logs,
@@ -3411,7 +3384,7 @@ Anpassung: %6 von %7 Basisparametern unbestimmt (nahe den Werten des URDF gehalt
         <translation>Mittel der Gelenkverhältnisse %</translation>
     </message>
     <message>
-        <location filename="../app/cli/LoopOptions.cpp" line="-36"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-37"/>
         <source>Usage: learnid-cli plan --out DIR [options]
 
 Plan the next trial for the robot&apos;s own controller: q_d(t) and the
@@ -3447,12 +3420,12 @@ neue Schätzung.
 %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>The learning history&apos;s folder; default: learnid-history beside plan.csv (plan) or the trial log (learn).</source>
         <translation>Ordner des Lernverlaufs; Standard: learnid-history neben plan.csv (plan) bzw. neben dem Versuchs-Log (learn).</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Folder to write plan.csv and check.txt into.</source>
         <translation>Ordner, in den plan.csv und check.txt geschrieben werden.</translation>
     </message>

@@ -440,12 +440,7 @@
 <context>
     <name>ControllerLogCsv</name>
     <message>
-        <location filename="../core/io/ControllerLogCsv.cpp" line="+22"/>
-        <source>%1: line %2: %3</source>
-        <translation>%1：第 %2 行：%3</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location filename="../core/io/ControllerLogCsv.cpp" line="+37"/>
         <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s line &quot;# plan-id: %2&quot; into its log</source>
         <translation>%1：没有“# plan-id:”注释行；控制器会把计划中的“# plan-id: %2”行复制到其日志中</translation>
     </message>
@@ -468,6 +463,19 @@
         <location line="+14"/>
         <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the trial ended early</source>
         <translation>日志在计划的 %2 个采样点中的 %1 个之后结束（t = %3 s，共 %4 s）：试验提前结束</translation>
+    </message>
+</context>
+<context>
+    <name>CsvPlace</name>
+    <message>
+        <location filename="../core/io/CsvPlace.cpp" line="+21"/>
+        <source>%1: line %2, column %3</source>
+        <translation>%1：第 %2 行第 %3 列</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: line %2: %3</source>
+        <translation>%1：第 %2 行：%3</translation>
     </message>
 </context>
 <context>
@@ -1527,17 +1535,7 @@
 <context>
     <name>PathCsv</name>
     <message>
-        <location filename="../core/io/PathCsv.cpp" line="+39"/>
-        <source>%1: line %2, column %3</source>
-        <translation>%1：第 %2 行第 %3 列</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>%1: line %2: %3</source>
-        <translation>%1：第 %2 行：%3</translation>
-    </message>
-    <message>
-        <location line="+20"/>
+        <location filename="../core/io/PathCsv.cpp" line="+54"/>
         <source>the header must be %1 (the time, then one column per joint); expected %2, got %3</source>
         <translation>表头必须是 %1（先是时间，然后每个关节一列）；应为 %2，实际为 %3</translation>
     </message>
@@ -1654,17 +1652,7 @@
 <context>
     <name>PlanCsv</name>
     <message>
-        <location filename="../core/io/PlanCsv.cpp" line="+45"/>
-        <source>%1: line %2: %3</source>
-        <translation>%1：第 %2 行：%3</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1: line %2, column %3 (%4): %5</source>
-        <translation>%1：第 %2 行第 %3 列（%4）：%5</translation>
-    </message>
-    <message>
-        <location line="+71"/>
+        <location filename="../core/io/PlanCsv.cpp" line="+109"/>
         <source>a second &quot;# %1:&quot; line; the first is on line %2</source>
         <translation>第二个“# %1:”行；第一个在第 %2 行</translation>
     </message>
@@ -1781,17 +1769,7 @@
 <context>
     <name>RobotLogCsv</name>
     <message>
-        <location filename="../core/io/RobotLogCsv.cpp" line="+30"/>
-        <source>%1: line %2, column %3</source>
-        <translation>%1：第 %2 行第 %3 列</translation>
-    </message>
-    <message>
-        <location line="+15"/>
-        <source>%1: line %2: %3</source>
-        <translation>%1：第 %2 行：%3</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location filename="../core/io/RobotLogCsv.cpp" line="+49"/>
         <source>, ... (%1 columns)</source>
         <translation>, ...（共 %1 列）</translation>
     </message>
@@ -2355,12 +2333,7 @@
 <context>
     <name>TrialCsv</name>
     <message>
-        <location filename="../core/io/TrialCsv.cpp" line="+45"/>
-        <source>%1: line %2: %3</source>
-        <translation>%1：第 %2 行：%3</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location filename="../core/io/TrialCsv.cpp" line="+55"/>
         <source>trial CSV: the record (%1 joints, %2 samples) does not fit its plan (%3 joints, %4 samples)</source>
         <translation>试验 CSV：记录（%1 个关节，%2 个采样点）与其计划（%3 个关节，%4 个采样点）不符</translation>
     </message>
@@ -2678,7 +2651,7 @@
         <translation>--export：参数文件会记录控制器的增益，而默认增益适用于 %1 个关节，机器人有 %2 个：请用 --scenario FILE 给出增益（在其 controller 部分）</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+71"/>
         <source>learnid-cli: reading %1</source>
         <translation>learnid-cli：正在读取 %1</translation>
     </message>
@@ -2720,7 +2693,7 @@
         <location line="+14"/>
         <location line="+52"/>
         <location line="+44"/>
-        <location filename="../app/cli/main.cpp" line="+53"/>
+        <location filename="../app/cli/main.cpp" line="+52"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli：错误：%1</translation>
     </message>
@@ -2814,7 +2787,7 @@
 </translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+45"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -2869,8 +2842,8 @@
     </message>
     <message>
         <location line="+26"/>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+215"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="+70"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+61"/>
         <source>Show this command&apos;s options.</source>
         <translation>显示此命令的选项。</translation>
     </message>
@@ -2881,7 +2854,7 @@
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="-16"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-17"/>
         <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
         <translation>场景文件（JSON，docs/scenario.md）；默认：论文场景。</translation>
     </message>
@@ -2928,7 +2901,7 @@
     <message>
         <location line="+6"/>
         <location filename="../app/cli/IdentifyOptions.cpp" line="-3"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="+13"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <source>No progress lines on stderr.</source>
         <translation>不在 stderr 上输出进度行。</translation>
     </message>
@@ -3003,8 +2976,8 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+8"/>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+22"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="+34"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+20"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+35"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
@@ -3178,7 +3151,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-181"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-183"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms：未知项 &apos;%1&apos;；可用的项为 armature、viscous、coulomb 和 offset，或 none</translation>
     </message>
@@ -3223,12 +3196,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>用于检验结果的记录日志；每个日志一个。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>The log&apos;s column names, e.g. t=time,q=pos%1,dq=vel%1,tau=tau%1.</source>
         <translation>日志的列名，例如 t=time,q=pos%1,dq=vel%1,tau=tau%1。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Joint terms to identify: armature, viscous, coulomb, offset, or none; default: viscous,coulomb,offset.</source>
         <translation>要辨识的关节项：armature、viscous、coulomb、offset 或 none；默认：viscous,coulomb,offset。</translation>
     </message>
@@ -3253,7 +3226,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>日志中允许的最长时间步长 [ms]；默认 5 个采样周期。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
         <translation>运动链的基座连杆；默认：URDF 的根连杆。</translation>
     </message>
@@ -3278,7 +3251,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>写出报告（PDF）：表格和力矩图。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Write the predicted and measured torque of each validation log as PNG into this folder (made if missing).</source>
         <translation>将每个验证日志的预测力矩与测量力矩以 PNG 写入此文件夹（不存在时自动创建）。</translation>
     </message>
@@ -3289,12 +3262,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="-36"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-37"/>
         <source>Folder that relative output paths are taken from.</source>
         <translation>相对输出路径的基准文件夹。</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+13"/>
         <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
 
 Identify a robot&apos;s inertia and joint friction from its recorded logs,
@@ -3408,7 +3381,7 @@ fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %
         <translation>各关节比值的平均 %</translation>
     </message>
     <message>
-        <location filename="../app/cli/LoopOptions.cpp" line="-36"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-37"/>
         <source>Usage: learnid-cli plan --out DIR [options]
 
 Plan the next trial for the robot&apos;s own controller: q_d(t) and the
@@ -3442,12 +3415,12 @@ stdout, and the next plan uses the new estimate.
 %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>The learning history&apos;s folder; default: learnid-history beside plan.csv (plan) or the trial log (learn).</source>
         <translation>学习历史的文件夹；默认：plan.csv 旁（plan）或试验日志旁（learn）的 learnid-history。</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Folder to write plan.csv and check.txt into.</source>
         <translation>写入 plan.csv 和 check.txt 的文件夹。</translation>
     </message>

@@ -59,11 +59,8 @@ QString usageText()
 QString commandHelp(const QString &command, const QString &summary,
                     const QCommandLineParser &parser)
 {
-    QString options = parser.helpText();
-    const qsizetype at = options.indexOf(QLatin1String("Options:"));
-    options = at >= 0 ? options.mid(at) : options;
     return QCoreApplication::translate("learnid-cli", "Usage: learnid-cli %1 [options]\n\n%2\n\n%3")
-        .arg(command, summary, options);
+        .arg(command, summary, optionsHelp(parser));
 }
 
 // --robot and the CAN options; returns the error naming the option and value. An empty
@@ -364,6 +361,20 @@ CommandLine parseCommandLine(const QStringList &args)
     }
     cl.command = replay ? CommandLine::Command::Replay : CommandLine::Command::Run;
     return cl;
+}
+
+QCommandLineOption cliOption(const char *name, const char *description, const char *value)
+{
+    const QString text = QCoreApplication::translate("learnid-cli", description);
+    return value ? QCommandLineOption(QLatin1String(name), text, QLatin1String(value))
+                 : QCommandLineOption(QLatin1String(name), text);
+}
+
+QString optionsHelp(const QCommandLineParser &parser)
+{
+    const QString text = parser.helpText();
+    const qsizetype at = text.indexOf(QLatin1String("Options:"));
+    return at >= 0 ? text.mid(at) : text;
 }
 
 } // namespace learnid::cli

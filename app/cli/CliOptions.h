@@ -4,6 +4,8 @@
 #include "cli/IdentifyOptions.h"
 #include "cli/LoopOptions.h"
 
+#include <QCommandLineOption>
+#include <QCommandLineParser>
 #include <QString>
 #include <QStringList>
 #include <optional>
@@ -62,5 +64,13 @@ struct CommandLine
 /// Relative output paths are taken from --workspace (default: the current directory); an error
 /// names the option and the path. `COMMAND --help` gives Help with that command's usage.
 CommandLine parseCommandLine(const QStringList &args);
+
+/// A command's option; description is a QT_TRANSLATE_NOOP("learnid-cli", ...) text, translated
+/// here; value names the option's argument (none: a switch).
+QCommandLineOption cliOption(const char *name, const char *description,
+                             const char *value = nullptr);
+
+/// The "Options:" part of the parser's help text, for a command's --help.
+QString optionsHelp(const QCommandLineParser &parser);
 
 } // namespace learnid::cli

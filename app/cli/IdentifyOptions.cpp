@@ -15,14 +15,6 @@ namespace learnid::cli {
 
 namespace {
 
-// description: a QT_TRANSLATE_NOOP("learnid-cli", ...) text.
-QCommandLineOption option(const char *name, const char *description, const char *value = nullptr)
-{
-    const QString text = QCoreApplication::translate("learnid-cli", description);
-    return value ? QCommandLineOption(QLatin1String(name), text, QLatin1String(value))
-                 : QCommandLineOption(QLatin1String(name), text);
-}
-
 // A finite number in (low, high); nullopt otherwise.
 std::optional<double> numberIn(const QString &text, double low, double high)
 {
@@ -135,81 +127,85 @@ void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
     QCommandLineParser parser;
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     parser.addOptions({
-        option("robot",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "A built-in URDF robot (e.g. double-pendulum) or a URDF file."),
-               "ROBOT"),
-        option("log",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "A recorded log (CSV) to identify from; once per log."),
-               "FILE"),
-        option("validate",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "A recorded log to check the result on; once per log."),
-               "FILE"),
-        option("columns",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "The log's column names, e.g. t=time,q=pos%1,dq=vel%1,tau=tau%1."),
-               "SPEC"),
-        option("joint-terms",
-               QT_TRANSLATE_NOOP(
-                   "learnid-cli",
-                   "Joint terms to identify: armature, viscous, coulomb, offset, or none; default: "
-                   "viscous,coulomb,offset."),
-               "LIST"),
-        option("rho",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "Bandwidth of the zero-phase log filter [rad/s]; default 50."),
-               "R"),
-        option("prior-share",
-               QT_TRANSLATE_NOOP(
-                   "learnid-cli",
-                   "Directions weaker than this share of the strongest keep the URDF's values; "
-                   "default 0.03."),
-               "S"),
-        option("velocity",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "Joint velocities: auto, measured or q (from positions)."),
-               "V"),
-        option(
+        cliOption("robot",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "A built-in URDF robot (e.g. double-pendulum) or a URDF file."),
+                  "ROBOT"),
+        cliOption("log",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "A recorded log (CSV) to identify from; once per log."),
+                  "FILE"),
+        cliOption("validate",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "A recorded log to check the result on; once per log."),
+                  "FILE"),
+        cliOption(
+            "columns",
+            QT_TRANSLATE_NOOP("learnid-cli",
+                              "The log's column names, e.g. t=time,q=pos%1,dq=vel%1,tau=tau%1."),
+            "SPEC"),
+        cliOption(
+            "joint-terms",
+            QT_TRANSLATE_NOOP(
+                "learnid-cli",
+                "Joint terms to identify: armature, viscous, coulomb, offset, or none; default: "
+                "viscous,coulomb,offset."),
+            "LIST"),
+        cliOption("rho",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "Bandwidth of the zero-phase log filter [rad/s]; default 50."),
+                  "R"),
+        cliOption("prior-share",
+                  QT_TRANSLATE_NOOP(
+                      "learnid-cli",
+                      "Directions weaker than this share of the strongest keep the URDF's values; "
+                      "default 0.03."),
+                  "S"),
+        cliOption("velocity",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "Joint velocities: auto, measured or q (from positions)."),
+                  "V"),
+        cliOption(
             "max-gap",
             QT_TRANSLATE_NOOP("learnid-cli",
                               "Longest time step allowed in a log [ms]; default 5 sample periods."),
             "MS"),
-        option("base-link",
-               QT_TRANSLATE_NOOP("learnid-cli", "The chain's base link; default: the URDF's root."),
-               "LINK"),
-        option("tip-link",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "The chain's tip link; default: the one leaf below the base."),
-               "LINK"),
-        option("export",
-               QT_TRANSLATE_NOOP(
-                   "learnid-cli",
-                   "Write the identified base parameters as a parameter file (and DCF)."),
-               "FILE"),
-        option("urdf-out",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "Write the URDF with the identified inertia and friction."),
-               "FILE"),
-        option("report",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "Write the report (PDF): the tables and the torque plots."),
-               "FILE"),
-        option("plots",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "Write the predicted and measured torque of each validation log "
-                                 "as PNG into this folder (made if missing)."),
-               "DIR"),
-        option("scenario",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "Scenario whose controller gains the parameter file records."),
-               "FILE"),
-        option(
+        cliOption(
+            "base-link",
+            QT_TRANSLATE_NOOP("learnid-cli", "The chain's base link; default: the URDF's root."),
+            "LINK"),
+        cliOption("tip-link",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "The chain's tip link; default: the one leaf below the base."),
+                  "LINK"),
+        cliOption("export",
+                  QT_TRANSLATE_NOOP(
+                      "learnid-cli",
+                      "Write the identified base parameters as a parameter file (and DCF)."),
+                  "FILE"),
+        cliOption("urdf-out",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "Write the URDF with the identified inertia and friction."),
+                  "FILE"),
+        cliOption("report",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "Write the report (PDF): the tables and the torque plots."),
+                  "FILE"),
+        cliOption(
+            "plots",
+            QT_TRANSLATE_NOOP("learnid-cli",
+                              "Write the predicted and measured torque of each validation log "
+                              "as PNG into this folder (made if missing)."),
+            "DIR"),
+        cliOption("scenario",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "Scenario whose controller gains the parameter file records."),
+                  "FILE"),
+        cliOption(
             "workspace",
             QT_TRANSLATE_NOOP("learnid-cli", "Folder that relative output paths are taken from."),
             "DIR"),
-        option("quiet", QT_TRANSLATE_NOOP("learnid-cli", "No progress lines on stderr.")),
+        cliOption("quiet", QT_TRANSLATE_NOOP("learnid-cli", "No progress lines on stderr.")),
         QCommandLineOption(
             {QStringLiteral("h"), QStringLiteral("help")},
             QCoreApplication::translate("learnid-cli", "Show this command's options.")),
@@ -219,15 +215,13 @@ void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
         return;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        QString options = parser.helpText();
-        const qsizetype at = options.indexOf(QLatin1String("Options:"));
         cl->command = CommandLine::Command::Help;
         cl->usage = QCoreApplication::translate(
                         "learnid-cli",
                         "Usage: learnid-cli identify --robot ROBOT --log FILE [options]\n\n"
                         "Identify a robot's inertia and joint friction from its recorded logs,\n"
                         "and compare the result with the URDF as given on --validate logs.\n\n%1")
-                        .arg(at >= 0 ? options.mid(at) : options);
+                        .arg(optionsHelp(parser));
         return;
     }
     if (!parser.positionalArguments().isEmpty()) {

@@ -13,19 +13,9 @@ namespace learnid::cli {
 
 namespace {
 
-// description: a QT_TRANSLATE_NOOP("learnid-cli", ...) text.
-QCommandLineOption option(const char *name, const char *description, const char *value = nullptr)
-{
-    const QString text = QCoreApplication::translate("learnid-cli", description);
-    return value ? QCommandLineOption(QLatin1String(name), text, QLatin1String(value))
-                 : QCommandLineOption(QLatin1String(name), text);
-}
-
 QString usageOf(bool plan, const QCommandLineParser &parser)
 {
-    QString options = parser.helpText();
-    const qsizetype at = options.indexOf(QLatin1String("Options:"));
-    options = at >= 0 ? options.mid(at) : options;
+    const QString options = optionsHelp(parser);
     return plan ? QCoreApplication::translate(
                       "learnid-cli",
                       "Usage: learnid-cli plan --out DIR [options]\n\n"
@@ -50,43 +40,45 @@ void parseLoopCommandLine(const QStringList &args, CommandLine *cl)
     QCommandLineParser parser;
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     parser.addOptions({
-        option("scenario",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "Scenario file (JSON, docs/scenario.md); default: the paper "
-                                 "scenario."),
-               "FILE"),
-        option("history",
-               QT_TRANSLATE_NOOP("learnid-cli",
-                                 "The learning history's folder; default: learnid-history beside "
-                                 "plan.csv (plan) or the trial log (learn)."),
-               "DIR"),
-        option(
+        cliOption("scenario",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "Scenario file (JSON, docs/scenario.md); default: the paper "
+                                    "scenario."),
+                  "FILE"),
+        cliOption(
+            "history",
+            QT_TRANSLATE_NOOP("learnid-cli",
+                              "The learning history's folder; default: learnid-history beside "
+                              "plan.csv (plan) or the trial log (learn)."),
+            "DIR"),
+        cliOption(
             "workspace",
             QT_TRANSLATE_NOOP("learnid-cli", "Folder that relative output paths are taken from."),
             "DIR"),
-        option("quiet", QT_TRANSLATE_NOOP("learnid-cli", "No progress lines on stderr.")),
+        cliOption("quiet", QT_TRANSLATE_NOOP("learnid-cli", "No progress lines on stderr.")),
         QCommandLineOption(
             {QStringLiteral("h"), QStringLiteral("help")},
             QCoreApplication::translate("learnid-cli", "Show this command's options.")),
     });
     if (plan) {
         parser.addOptions({
-            option("out",
-                   QT_TRANSLATE_NOOP("learnid-cli", "Folder to write plan.csv and check.txt into."),
-                   "DIR"),
-            option("estimate",
-                   QT_TRANSLATE_NOOP("learnid-cli",
-                                     "Parameter file of the estimate to plan with; default: the "
-                                     "history's newest, or the scenario's initial estimate."),
-                   "FILE"),
+            cliOption(
+                "out",
+                QT_TRANSLATE_NOOP("learnid-cli", "Folder to write plan.csv and check.txt into."),
+                "DIR"),
+            cliOption("estimate",
+                      QT_TRANSLATE_NOOP("learnid-cli",
+                                        "Parameter file of the estimate to plan with; default: the "
+                                        "history's newest, or the scenario's initial estimate."),
+                      "FILE"),
         });
     } else {
         parser.addOption(
-            option("trial-log",
-                   QT_TRANSLATE_NOOP("learnid-cli",
-                                     "The controller's log of a run of the plan (CSV); once per "
-                                     "repetition."),
-                   "FILE"));
+            cliOption("trial-log",
+                      QT_TRANSLATE_NOOP("learnid-cli",
+                                        "The controller's log of a run of the plan (CSV); once per "
+                                        "repetition."),
+                      "FILE"));
     }
     if (!parser.parse(args.mid(1))) {
         cl->error = parser.errorText();

@@ -15,11 +15,11 @@ namespace {
 
 constexpr int width = 1200;
 constexpr int panelHeight = 170;
-constexpr int top = 56;        ///< title and legend
-constexpr int bottom = 40;     ///< time axis labels
-constexpr int left = 90;       ///< torque labels
+constexpr int top = 56;    ///< title and legend
+constexpr int bottom = 40; ///< time axis labels
+constexpr int left = 90;   ///< torque labels
 constexpr int right = 20;
-constexpr int gap = 14;        ///< between panels
+constexpr int gap = 14; ///< between panels
 
 // A "nice" step for about `ticks` ticks over span: 1, 2 or 5 times a power of ten.
 double niceStep(double span, int ticks)
@@ -33,8 +33,8 @@ double niceStep(double span, int ticks)
     return 10.0 * power;
 }
 
-void drawSeries(QPainter &p, const QRectF &r, const Eigen::VectorXd &t,
-                const Eigen::RowVectorXd &y, double lo, double hi, const QPen &pen)
+void drawSeries(QPainter &p, const QRectF &r, const Eigen::VectorXd &t, const Eigen::RowVectorXd &y,
+                double lo, double hi, const QPen &pen)
 {
     if (t.size() < 2)
         return;
@@ -135,8 +135,7 @@ QByteArray torquePlotPng(const TorquePlotData &d)
             x += 60 + p.fontMetrics().horizontalAdvance(item.name);
         }
         for (int j = 0; j < n; ++j) {
-            const QRectF r(left, top + j * (panelHeight + gap), width - left - right,
-                           panelHeight);
+            const QRectF r(left, top + j * (panelHeight + gap), width - left - right, panelHeight);
             drawPanel(p, r, d, j, j == n - 1);
         }
         p.drawText(QRectF(left, height - 18, width - left - right, 16), Qt::AlignCenter,

@@ -1,6 +1,7 @@
 #include "io/ControllerLogCsv.h"
 
 #include "io/AtomicFile.h"
+#include "io/CsvPlace.h"
 #include "io/RobotLogCsv.h"
 #include "model/Error.h"
 
@@ -12,15 +13,12 @@ namespace learnid {
 
 namespace {
 
+using csv::throwAtLine;
+
 struct Text
 {
     Q_DECLARE_TR_FUNCTIONS(ControllerLogCsv)
 };
-
-[[noreturn]] void throwAtLine(const QString &source, int line, const QString &what)
-{
-    throw Error(Text::tr("%1: line %2: %3").arg(source, QString::number(line), what));
-}
 
 // A time for messages: 3 * 0.01 shows as 0.03, not 0.030000000000000002.
 QString seconds(double t)

@@ -1,6 +1,7 @@
 #include "io/PathCsv.h"
 
 #include "io/AtomicFile.h"
+#include "io/CsvPlace.h"
 #include "io/JsonReader.h"
 #include "io/ValueChecks.h"
 #include "model/Error.h"
@@ -15,6 +16,11 @@
 namespace learnid {
 
 namespace {
+
+using csv::fieldPlace;
+using csv::quoted;
+using csv::throwAtField;
+using csv::throwAtLine;
 
 struct Text
 {
@@ -31,31 +37,6 @@ QByteArray number(double v)
 QString expectedHeader()
 {
     return QStringLiteral("t,q1,...,qn");
-}
-
-// "<source>: line L, column C (name)": where a field is, as ValueChecks' key paths name a key.
-QString fieldPlace(const QString &source, int line, int column, const QByteArray &name)
-{
-    QString place = Text::tr("%1: line %2, column %3").arg(source).arg(line).arg(column);
-    if (!name.isEmpty())
-        place += QStringLiteral(" (%1)").arg(QString::fromUtf8(name));
-    return place;
-}
-
-[[noreturn]] void throwAtField(const QString &source, int line, int column, const QByteArray &name,
-                               const QString &what)
-{
-    throwAtKey(fieldPlace(source, line, column, name), what);
-}
-
-[[noreturn]] void throwAtLine(const QString &source, int line, const QString &what)
-{
-    throw Error(Text::tr("%1: line %2: %3").arg(source).arg(line).arg(what));
-}
-
-QString quoted(const QByteArray &field)
-{
-    return QLatin1Char('"') + QString::fromUtf8(field.left(40)) + QLatin1Char('"');
 }
 
 // The column names of the header line, checked against t,q1,...,qn and expectedJoints.

@@ -1,6 +1,7 @@
 #include "io/PlanCsv.h"
 
 #include "io/AtomicFile.h"
+#include "io/CsvPlace.h"
 #include "io/JsonReader.h"
 #include "model/Error.h"
 
@@ -15,6 +16,10 @@
 namespace learnid {
 
 namespace {
+
+using csv::quoted;
+using csv::throwAtField;
+using csv::throwAtLine;
 
 struct Text
 {
@@ -40,19 +45,6 @@ QList<QByteArray> headerNames(int joints)
     return names;
 }
 
-[[noreturn]] void throwAtLine(const QString &source, int line, const QString &what)
-{
-    throw Error(Text::tr("%1: line %2: %3").arg(source, QString::number(line), what));
-}
-
-[[noreturn]] void throwAtField(const QString &source, int line, int column, const QByteArray &name,
-                               const QString &what)
-{
-    throw Error(Text::tr("%1: line %2, column %3 (%4): %5")
-                    .arg(source, QString::number(line), QString::number(column),
-                         QString::fromUtf8(name), what));
-}
-
 // A finite number, or nullopt.
 std::optional<double> finiteNumber(const QByteArray &field)
 {
@@ -61,11 +53,6 @@ std::optional<double> finiteNumber(const QByteArray &field)
     if (!ok || !std::isfinite(v))
         return std::nullopt;
     return v;
-}
-
-QString quoted(const QByteArray &field)
-{
-    return QLatin1Char('"') + QString::fromUtf8(field.trimmed().left(40)) + QLatin1Char('"');
 }
 
 // The file's lines without their \r, the final empty piece after the last \n dropped.

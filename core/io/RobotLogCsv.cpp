@@ -1,6 +1,7 @@
 #include "io/RobotLogCsv.h"
 
 #include "io/AtomicFile.h"
+#include "io/CsvPlace.h"
 #include "io/JsonReader.h"
 #include "io/ValueChecks.h"
 #include "model/Error.h"
@@ -16,6 +17,11 @@ namespace learnid {
 
 namespace {
 
+using csv::fieldPlace;
+using csv::quoted;
+using csv::throwAtField;
+using csv::throwAtLine;
+
 struct Text
 {
     Q_DECLARE_TR_FUNCTIONS(RobotLogCsv)
@@ -23,32 +29,6 @@ struct Text
 
 constexpr int minimumSamples = 4;
 constexpr int listedHeaderNames = 12; // a longer header is shortened in messages
-
-// "<source>: line L, column C (name)", as PathCsv names a field.
-QString fieldPlace(const QString &source, int line, int column, const QByteArray &name)
-{
-    QString place = Text::tr("%1: line %2, column %3")
-                        .arg(source, QString::number(line), QString::number(column));
-    if (!name.isEmpty())
-        place += QStringLiteral(" (%1)").arg(QString::fromUtf8(name));
-    return place;
-}
-
-[[noreturn]] void throwAtField(const QString &source, int line, int column, const QByteArray &name,
-                               const QString &what)
-{
-    throwAtKey(fieldPlace(source, line, column, name), what);
-}
-
-[[noreturn]] void throwAtLine(const QString &source, int line, const QString &what)
-{
-    throw Error(Text::tr("%1: line %2: %3").arg(source, QString::number(line), what));
-}
-
-QString quoted(const QByteArray &field)
-{
-    return QLatin1Char('"') + QString::fromUtf8(field.left(40)) + QLatin1Char('"');
-}
 
 QString columnName(const QString &pattern, int joint)
 {

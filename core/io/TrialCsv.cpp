@@ -1,6 +1,7 @@
 #include "io/TrialCsv.h"
 
 #include "io/AtomicFile.h"
+#include "io/CsvPlace.h"
 #include "model/Error.h"
 
 #include <QCoreApplication>
@@ -12,6 +13,8 @@
 namespace learnid {
 
 namespace {
+
+using csv::throwAtLine;
 
 struct Text
 {
@@ -38,11 +41,6 @@ QList<QByteArray> header(int dof)
           << "tau" + n + "_Nm";
     }
     return h;
-}
-
-[[noreturn]] void throwAtLine(const QString &source, int line, const QString &what)
-{
-    throw Error(Text::tr("%1: line %2: %3").arg(source).arg(line).arg(what));
 }
 
 } // namespace
