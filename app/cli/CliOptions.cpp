@@ -273,13 +273,8 @@ CommandLine parseCommandLine(const QStringList &args)
         parser.addOption(candump);
     else
         parser.addOptions({robot, canPlugin, canInterface, canLog, canSyncTimeout});
-    if (!parser.parse(args.mid(1))) {
-        cl.error = parser.errorText();
-        return cl;
-    }
-    if (parser.isSet(help)) {
-        cl.command = CommandLine::Command::Help;
-        cl.usage = commandHelp(
+    const auto usage = [&] {
+        return commandHelp(
             command,
             replay ? QCoreApplication::translate(
                          "learnid-cli",
@@ -290,13 +285,9 @@ CommandLine parseCommandLine(const QStringList &args)
                          "Run a commissioning session on the simulated robot, or with --robot can\n"
                          "on CiA 402 drives on a CAN bus (docs/can-protocol.md)."),
             parser);
+    };
+    if (!parseCommandOptions(parser, args, &cl, usage))
         return cl;
-    }
-    if (!parser.positionalArguments().isEmpty()) {
-        cl.error = QCoreApplication::translate("learnid-cli", "unexpected argument '%1'")
-                       .arg(parser.positionalArguments().first());
-        return cl;
-    }
     RunOptions &run = cl.run;
     run.scenarioPath = parser.value(scenario);
     if (parser.isSet(estimator))
@@ -375,6 +366,26 @@ QString optionsHelp(const QCommandLineParser &parser)
     const QString text = parser.helpText();
     const qsizetype at = text.indexOf(QLatin1String("Options:"));
     return at >= 0 ? text.mid(at) : text;
+}
+
+bool parseCommandOptions(QCommandLineParser &parser, const QStringList &args, CommandLine *cl,
+                         const std::function<QString()> &usage)
+{
+    if (!parser.parse(args.mid(1))) {
+        cl->error = parser.errorText();
+        return false;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        cl->command = CommandLine::Command::Help;
+        cl->usage = usage();
+        return false;
+    }
+    if (!parser.positionalArguments().isEmpty()) {
+        cl->error = QCoreApplication::translate("learnid-cli", "unexpected argument '%1'")
+                        .arg(parser.positionalArguments().constFirst());
+        return false;
+    }
+    return true;
 }
 
 } // namespace learnid::cli

@@ -8,6 +8,7 @@
 #include <QCommandLineParser>
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <optional>
 
 namespace learnid::cli {
@@ -72,5 +73,11 @@ QCommandLineOption cliOption(const char *name, const char *description,
 
 /// The "Options:" part of the parser's help text, for a command's --help.
 QString optionsHelp(const QCommandLineParser &parser);
+
+/// Parses a command's arguments (args[1] is the command) with parser, whose options include
+/// --help. Returns false when cl is complete: a syntax error or a positional argument (cl->error),
+/// or --help (command Help, cl->usage = usage()). True: the caller reads the options.
+bool parseCommandOptions(QCommandLineParser &parser, const QStringList &args, CommandLine *cl,
+                         const std::function<QString()> &usage);
 
 } // namespace learnid::cli

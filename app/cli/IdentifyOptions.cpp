@@ -210,25 +210,16 @@ void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
             {QStringLiteral("h"), QStringLiteral("help")},
             QCoreApplication::translate("learnid-cli", "Show this command's options.")),
     });
-    if (!parser.parse(args.mid(1))) {
-        cl->error = parser.errorText();
+    const auto usage = [&] {
+        return QCoreApplication::translate(
+                   "learnid-cli",
+                   "Usage: learnid-cli identify --robot ROBOT --log FILE [options]\n\n"
+                   "Identify a robot's inertia and joint friction from its recorded logs,\n"
+                   "and compare the result with the URDF as given on --validate logs.\n\n%1")
+            .arg(optionsHelp(parser));
+    };
+    if (!parseCommandOptions(parser, args, cl, usage))
         return;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        cl->command = CommandLine::Command::Help;
-        cl->usage = QCoreApplication::translate(
-                        "learnid-cli",
-                        "Usage: learnid-cli identify --robot ROBOT --log FILE [options]\n\n"
-                        "Identify a robot's inertia and joint friction from its recorded logs,\n"
-                        "and compare the result with the URDF as given on --validate logs.\n\n%1")
-                        .arg(optionsHelp(parser));
-        return;
-    }
-    if (!parser.positionalArguments().isEmpty()) {
-        cl->error = QCoreApplication::translate("learnid-cli", "unexpected argument '%1'")
-                        .arg(parser.positionalArguments().constFirst());
-        return;
-    }
     IdentifyOptions &o = cl->identify;
     o.robot = parser.value(QStringLiteral("robot"));
     o.logs = parser.values(QStringLiteral("log"));

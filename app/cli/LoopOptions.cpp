@@ -80,20 +80,8 @@ void parseLoopCommandLine(const QStringList &args, CommandLine *cl)
                                         "repetition."),
                       "FILE"));
     }
-    if (!parser.parse(args.mid(1))) {
-        cl->error = parser.errorText();
+    if (!parseCommandOptions(parser, args, cl, [&] { return usageOf(plan, parser); }))
         return;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        cl->command = CommandLine::Command::Help;
-        cl->usage = usageOf(plan, parser);
-        return;
-    }
-    if (!parser.positionalArguments().isEmpty()) {
-        cl->error = QCoreApplication::translate("learnid-cli", "unexpected argument '%1'")
-                        .arg(parser.positionalArguments().constFirst());
-        return;
-    }
     LoopOptions &o = cl->loop;
     o.scenarioPath = parser.value(QStringLiteral("scenario"));
     o.quiet = parser.isSet(QStringLiteral("quiet"));

@@ -227,16 +227,21 @@ TorqueFigures torqueFigures(const ChainModel &model, const Eigen::VectorXd &pi,
 {
     if (log.dof() != model.dof() || pi.size() != model.standardCount())
         throw Error(Text::tr("%1 does not fit the robot's joints or parameters").arg(log.source));
-    const Eigen::MatrixXd measured = measuredTorque(log);
-    const Eigen::MatrixXd e = predictedTorque(model, pi, log) - measured;
+    return torqueFigures(measuredTorque(log), predictedTorque(model, pi, log));
+}
+
+TorqueFigures torqueFigures(const Eigen::MatrixXd &measured, const Eigen::MatrixXd &predicted)
+{
+    const Eigen::MatrixXd e = predicted - measured;
     const double samples = double(std::max<Eigen::Index>(measured.cols(), 1));
     TorqueFigures f;
     f.rmsError = (e.rowwise().squaredNorm() / samples).cwiseSqrt();
     f.rmsMeasured = (measured.rowwise().squaredNorm() / samples).cwiseSqrt();
     const double size = measured.squaredNorm();
     f.overall = size > 0.0 ? std::sqrt(e.squaredNorm() / size) : 0.0;
-    for (int j = 0; j < model.dof(); ++j)
-        f.meanRatio += f.ratio(j) / double(model.dof());
+    const int n = int(measured.rows());
+    for (int j = 0; j < n; ++j)
+        f.meanRatio += f.ratio(j) / double(n);
     return f;
 }
 

@@ -68,6 +68,8 @@ struct TorqueFigures
 /// The torque model predicts with standard parameters pi along log, against the log's torque.
 TorqueFigures torqueFigures(const ChainModel &model, const Eigen::VectorXd &pi,
                             const FilteredLog &log);
+/// The same figures from the torques themselves (n x K each, filtered alike).
+TorqueFigures torqueFigures(const Eigen::MatrixXd &measured, const Eigen::MatrixXd &predicted);
 /// The torque pi predicts along log, filtered as the fit filters it (n x log.keptSamples()).
 Eigen::MatrixXd predictedTorque(const ChainModel &model, const Eigen::VectorXd &pi,
                                 const FilteredLog &log);

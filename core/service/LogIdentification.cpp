@@ -14,8 +14,6 @@ namespace learnid {
 
 namespace {
 
-constexpr double consistencyTolerance = 1e-12; ///< relative to a link's largest eigenvalue
-
 /// Reports stages and checks the cancel flag between them.
 class StageReporter
 {
@@ -59,20 +57,6 @@ FilteredLog loadLog(const QString &path, const ChainModel &model,
                      request.filter);
 }
 
-// The verdict on the identified standard parameters themselves (not on base parameters with
-// the CAD model filling the rest, as checkEstimateConsistency() judges an estimate).
-EstimateConsistency standardConsistency(const ChainModel &model, const Eigen::VectorXd &standard)
-{
-    EstimateConsistency c;
-    c.applicable = true;
-    c.links = checkConsistency(standard, model.dof(), consistencyTolerance);
-    c.negativeTerms = negativeJointTerms(standard, model.nonnegativeStandard());
-    c.consistent = c.negativeTerms.empty() &&
-                   std::all_of(c.links.begin(), c.links.end(),
-                               [](const LinkConsistency &l) { return l.consistent; });
-    return c;
-}
-
 LogValidation validate(const ChainModel &model, const LogFit &fit, const FilteredLog &log)
 {
     LogValidation v;
@@ -83,8 +67,8 @@ LogValidation validate(const ChainModel &model, const LogFit &fit, const Filtere
     v.measured = measuredTorque(log);
     v.predictedGiven = predictedTorque(model, model.cadStandard(), log);
     v.predictedIdentified = predictedTorque(model, fit.standard, log);
-    v.given = torqueFigures(model, model.cadStandard(), log);
-    v.identified = torqueFigures(model, fit.standard, log);
+    v.given = torqueFigures(v.measured, v.predictedGiven);
+    v.identified = torqueFigures(v.measured, v.predictedIdentified);
     return v;
 }
 
@@ -160,7 +144,7 @@ LogIdentificationResult run(const LogRobot &robot, const LogIdentificationReques
     r.trainingLogs = request.trainingLogs;
     r.fit = fitLogs(model, trainingLogs, request.fit);
     trainingLogs.clear();
-    const EstimateConsistency consistency = standardConsistency(model, r.fit.standard);
+    const EstimateConsistency consistency = checkStandardConsistency(model, r.fit.standard);
     r.consistency = consistency.describe(model);
     r.consistent = consistency.consistent;
     for (const int i : r.fit.undetermined())

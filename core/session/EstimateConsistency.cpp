@@ -24,23 +24,30 @@ constexpr double priorShare = 1e-6; ///< the CAD prior's weight against the path
 
 } // namespace
 
-EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eigen::VectorXd &phi,
-                                             const JointTrajectory &path)
+EstimateConsistency checkStandardConsistency(const ChainModel &model,
+                                             const Eigen::VectorXd &standard)
 {
     EstimateConsistency out;
-    const auto *chain = dynamic_cast<const ChainModel *>(&model);
-    if (!chain || phi.size() != model.parameterCount() || !phi.allFinite())
-        return out;
     out.applicable = true;
-    out.nearest = phi;
-    const int n = chain->dof();
-    const Eigen::VectorXd prior = realBodyPrior(chain->cadStandard(), n);
-    const Eigen::VectorXd pi = chain->base().standardFromBase(phi, prior);
-    out.links = checkConsistency(pi, n, eigenvalueTolerance);
-    out.negativeTerms = negativeJointTerms(pi, chain->nonnegativeStandard());
+    out.links = checkConsistency(standard, model.dof(), eigenvalueTolerance);
+    out.negativeTerms = negativeJointTerms(standard, model.nonnegativeStandard());
     out.consistent = out.negativeTerms.empty() &&
                      std::all_of(out.links.begin(), out.links.end(),
                                  [](const LinkConsistency &l) { return l.consistent; });
+    return out;
+}
+
+EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eigen::VectorXd &phi,
+                                             const JointTrajectory &path)
+{
+    const auto *chain = dynamic_cast<const ChainModel *>(&model);
+    if (!chain || phi.size() != model.parameterCount() || !phi.allFinite())
+        return {};
+    const int n = chain->dof();
+    const Eigen::VectorXd prior = realBodyPrior(chain->cadStandard(), n);
+    EstimateConsistency out =
+        checkStandardConsistency(*chain, chain->base().standardFromBase(phi, prior));
+    out.nearest = phi;
     if (out.consistent || path.samples() == 0)
         return out;
     try {

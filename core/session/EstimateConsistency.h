@@ -9,6 +9,8 @@
 
 namespace learnid {
 
+class ChainModel;
+
 /// Whether an estimate describes real bodies (docs/robots.md §6), for models with standard
 /// parameters (URDF robots): the estimate's base parameters with the CAD model's values for
 /// what they do not fix (each CAD link first made a real body where the published data are
@@ -32,6 +34,11 @@ struct EstimateConsistency
     /// One line per problem ("link 3 (lwr_3_link): ..."), or that the estimate is consistent.
     QStringList describe(const RobotModel &model) const;
 };
+
+/// The verdict on standard parameters themselves (links and joint terms of a URDF robot's
+/// model, ChainModel's layout), without a nearest estimate.
+EstimateConsistency checkStandardConsistency(const ChainModel &model,
+                                             const Eigen::VectorXd &standard);
 
 /// Checks phi (base parameters of model) and, when it is not consistent, finds the nearest
 /// consistent estimate weighting parameter errors by the torque they cause on path (the
