@@ -1,0 +1,155 @@
+#include "session/RobotScenario.h"
+
+#include "model/ChainModel.h"
+#include "model/Error.h"
+#include "model/ModelFactory.h"
+
+#include <Eigen/LU>
+#include <QCoreApplication>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace learnid {
+
+namespace {
+
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(RobotScenario)
+};
+
+constexpr double kBandwidth = 25.0; ///< closed-loop bandwidth the default gains aim at [rad/s]
+/// Damping ratio: critical damping leaves the 7-axis arms' coupled loops a slow mode at the
+/// edge of stability when they move (Coriolis terms); 1.5 keeps every built-in robot stable.
+constexpr double kDamping = 1.5;
+
+// The middle of a joint's range and how far the default path moves it: a fifth of the range,
+// at most 0.5 rad (0.05 m); a joint without limits moves about 0.
+void jointSpan(const ChainJoint &joint, double &middle, double &amplitude)
+{
+    const bool prismatic = joint.type == JointType::Prismatic;
+    const double cap = prismatic ? 0.05 : 0.5;
+    if (!std::isfinite(joint.lower) || !std::isfinite(joint.upper) || joint.upper <= joint.lower) {
+        middle = 0.0;
+        amplitude = cap;
+        return;
+    }
+    middle = 0.5 * (joint.lower + joint.upper);
+    amplitude = std::min(cap, 0.2 * (joint.upper - joint.lower));
+}
+
+QString valueText(double v, bool prismatic)
+{
+    return prismatic ? Text::tr("%1 m").arg(v, 0, 'f', 4)
+                     : Text::tr("%1 deg").arg(v * 180.0 / M_PI, 0, 'f', 2);
+}
+
+} // namespace
+
+Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf)
+{
+    Scenario s;
+    if (!isUrdfModel(modelId)) {
+        if (!knownRobotModels().contains(modelId))
+            throw Error(Text::tr("robot.model: unknown model \"%1\"").arg(modelId));
+        return s; // the paper scenario
+    }
+    s.model = modelId;
+    s.urdf = urdf;
+    const auto model = makeRobotModel(modelId, urdf);
+    const auto *chain = dynamic_cast<const ChainModel *>(model.get());
+    const int n = model->dof();
+    Eigen::VectorXd middle(n), amplitude(n);
+    for (int j = 0; j < n; ++j)
+        jointSpan(chain->chain().joints[size_t(j)], middle[j], amplitude[j]);
+    Eigen::VectorXd sign(n);
+    for (int j = 0; j < n; ++j)
+        sign[j] = j % 2 == 0 ? 1.0 : -1.0;
+    s.path.kind = PathKind::Waypoints;
+    s.path.waypoints = {middle, middle + amplitude.cwiseProduct(sign),
+                        middle - amplitude.cwiseProduct(sign)};
+
+    // The smallest inertia each joint's controller sees along the path (at the waypoints and
+    // halfway), with the CAD parameters: 1 / (M^-1)_jj, the joint's inertia when the others
+    // give way (the other controllers are as soft as its own). Gains sized for it keep the
+    // loop within its bandwidth where the joint is lightest.
+    const Eigen::VectorXd cad = chain->baseFromStandard(chain->cadStandard());
+    Eigen::VectorXd inertia = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
+    Eigen::VectorXd gravityShare = Eigen::VectorXd::Zero(n), gravity(n), shifted(n);
+    Eigen::VectorXd gravityStiffness = Eigen::VectorXd::Zero(n); ///< max |dg_j/dq_j| [N m/rad]
+    Eigen::MatrixXd mass(n, n);
+    for (size_t w = 0; w < s.path.waypoints.size(); ++w) {
+        const Eigen::VectorXd &a = s.path.waypoints[w];
+        const Eigen::VectorXd &b = s.path.waypoints[(w + 1) % s.path.waypoints.size()];
+        for (const Eigen::VectorXd &q : {a, Eigen::VectorXd(0.5 * (a + b))}) {
+            model->massMatrix(q, cad, mass);
+            inertia = inertia.cwiseMin(mass.inverse().diagonal().cwiseInverse());
+            model->biasTorque(q, Eigen::VectorXd::Zero(n), cad, gravity);
+            for (int j = 0; j < n; ++j) {
+                Eigen::VectorXd qj = q;
+                qj[j] += 1e-6;
+                model->biasTorque(qj, Eigen::VectorXd::Zero(n), cad, shifted);
+                gravityStiffness[j] =
+                    std::max(gravityStiffness[j], std::abs(shifted[j] - gravity[j]) / 1e-6);
+                const double limit = chain->chain().joints[size_t(j)].effortLimit;
+                if (std::isfinite(limit) && limit > 0.0)
+                    gravityShare[j] = std::max(gravityShare[j], std::abs(gravity[j]) / limit);
+            }
+        }
+    }
+    // Each joint as m s^2 + (fv + kd) s + kp: the bandwidth's m w^2 on top of what gravity
+    // takes away where the link hangs above its joint (dg_j/dq_j), or stiff enough that the
+    // CAD's Coulomb friction would move it by at most 0.05 rad; then damped (kDamping) by the
+    // joint's own viscous friction and kd together.
+    s.controller.kp.resize(n);
+    s.controller.kd.resize(n);
+    for (int j = 0; j < n; ++j) {
+        const ChainJoint &joint = chain->chain().joints[size_t(j)];
+        const double kp = std::max(inertia[j] * kBandwidth * kBandwidth + gravityStiffness[j],
+                                   joint.friction / 0.05);
+        const double damping = kDamping * 2.0 * std::sqrt(kp * inertia[j]);
+        s.controller.kp[j] = kp;
+        s.controller.kd[j] = std::max(damping - joint.damping, 0.1 * damping);
+    }
+    s.controller.ki = s.controller.kp * 0.1;
+    s.controller.lambda = 1000.0;
+    // The torque rule needs room above gravity: plan at 1.5 times the largest gravity share,
+    // at least 30 % and at most 80 % of the limits.
+    s.planningFraction = std::clamp(1.5 * gravityShare.maxCoeff(), 0.3, 0.8);
+    s.torqueLimits.resize(0);
+    s.initialParameters.resize(0);
+    s.simulation.trueParameters.resize(0);
+    s.simulation.inertiaPerturbation = 0.3;
+    s.simulation.encoderCounts = 1 << 20;
+    s.simulation.torqueNoise = 0.01;
+    s.maxTrackingErrorDeg = 5.0;
+    return s;
+}
+
+QString waypointLimitError(const RobotModel &model, const std::vector<Eigen::VectorXd> &waypoints)
+{
+    const auto *chain = dynamic_cast<const ChainModel *>(&model);
+    if (!chain)
+        return {};
+    for (size_t i = 0; i < waypoints.size(); ++i) {
+        const Eigen::VectorXd &w = waypoints[i];
+        for (int j = 0; j < std::min<int>(int(w.size()), chain->dof()); ++j) {
+            const ChainJoint &joint = chain->chain().joints[size_t(j)];
+            const bool prismatic = joint.type == JointType::Prismatic;
+            const bool below = w[j]<joint.lower, above = w[j]> joint.upper;
+            if (!below && !above)
+                continue;
+            return Text::tr("path.waypoints[%1][%2]: %3 is %4 joint %5 (%6)'s %7 limit %8")
+                .arg(i)
+                .arg(j)
+                .arg(valueText(w[j], prismatic), below ? Text::tr("below") : Text::tr("above"))
+                .arg(j + 1)
+                .arg(joint.name, below ? Text::tr("lower") : Text::tr("upper"),
+                     valueText(below ? joint.lower : joint.upper, prismatic));
+        }
+    }
+    return {};
+}
+
+} // namespace learnid

@@ -1,0 +1,29 @@
+#pragma once
+
+#include "model/RobotModel.h"
+#include "types/Scenario.h"
+
+#include <QString>
+#include <vector>
+
+namespace learnid {
+
+/// A scenario to start from when the technician picks a robot (the window's robot choice):
+/// the paper scenario for "paper-2link"; for a URDF robot a path of three joint waypoints
+/// around the middle of each joint's range (a fifth of the range, at most 0.5 rad or 0.05 m,
+/// alternating in sign from joint to joint) and PID gains from the CAD model along it: each
+/// joint's lightest inertia m = 1 / (M^-1)_jj, kp = max(m w^2 + max |dg_j/dq_j|, Coulomb
+/// friction / 0.05 rad) with w = 25 rad/s, kd damping it 1.5 times critically together with
+/// the joint's viscous friction, ki = 0.1 kp per second; the planning fraction 1.5 times the
+/// largest gravity share of a limit (30 to 80 %); the torque limits and initial parameters left to
+/// the robot (its URDF, its CAD base parameters) and, for the simulated robot, the CAD robot
+/// perturbed by 30 % with a 20-bit encoder and 1 % torque noise. Throws Error when the model is
+/// unknown or its URDF cannot be read.
+Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf = {});
+
+/// Why waypoints leave the robot's joint limits, or "" when they stay within: the first
+/// offending value named by key (path.waypoints[i][j]), joint, value and limit (in degrees for
+/// revolute joints). A model without limits (the paper's arm) accepts any waypoint.
+QString waypointLimitError(const RobotModel &model, const std::vector<Eigen::VectorXd> &waypoints);
+
+} // namespace learnid

@@ -1,0 +1,112 @@
+// The scenario the window starts from when the technician picks a robot (RobotScenario.h):
+// for every built-in URDF robot it is a valid scenario whose path stays within the joint
+// limits, whose first trial passes the pre-trial check, and whose session learns the path
+// torques of the simulated real robot (the CAD one perturbed by 30 %). And waypoints beyond a
+// joint limit are named by key, joint and limit.
+
+#include "io/ScenarioFile.h"
+#include "model/ChainModel.h"
+#include "model/Error.h"
+#include "model/ModelFactory.h"
+#include "session/CommissioningSession.h"
+#include "session/ConvergenceFigures.h"
+#include "session/RobotScenario.h"
+#include "session/ScenarioRobot.h"
+
+#include <QTest>
+
+using namespace learnid;
+
+class TestRobotScenario : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void builtInRobot_learnsFromItsDefaultScenario_data();
+    void builtInRobot_learnsFromItsDefaultScenario();
+    void paperArm_isThePaperScenario();
+    void waypointBeyondALimit_isNamedWithJointAndLimit();
+    void unknownModel_isRefused();
+};
+
+void TestRobotScenario::builtInRobot_learnsFromItsDefaultScenario_data()
+{
+    QTest::addColumn<QString>("model");
+    for (const QString &id : knownRobotModels())
+        if (isUrdfModel(id) && id != QLatin1String("urdf"))
+            QTest::newRow(qPrintable(id)) << id;
+}
+
+void TestRobotScenario::builtInRobot_learnsFromItsDefaultScenario()
+{
+    QFETCH(QString, model);
+    const Scenario requested = scenarioForRobot(model);
+    validateScenario(requested); // throws on anything the scenario file would refuse
+    const auto robotModel = makeRobotModel(model, requested.urdf);
+    QCOMPARE(waypointLimitError(*robotModel, requested.path.waypoints), QString());
+    QVERIFY((requested.controller.kp.array() > 0).all());
+    QVERIFY((requested.controller.kd.array() > 0).all());
+
+    const Scenario s = withRobotDefaults(requested, *robotModel);
+    CommissioningSession session(s, robotModel, makeSimulatedRobot(s, robotModel));
+    QVERIFY2(session.checkNextTrial().passed(), qPrintable(session.checkNextTrial().reason()));
+    for (int k = 0; k <= 2; ++k) {
+        const TrialResult &result = session.runTrial();
+        QVERIFY2(result.record.completed(),
+                 qPrintable(QStringLiteral("trial %1: %2").arg(k).arg(result.message)));
+    }
+    const JointTrajectory &path = session.history().constLast().plan().desired;
+    const double before = pathTorqueErrorPercent(*robotModel, path, session.estimates().front(),
+                                                 s.simulation.trueParameters);
+    const double after = pathTorqueErrorPercent(*robotModel, path, session.estimates().back(),
+                                                s.simulation.trueParameters);
+    qInfo("%s: path-torque error %.3f %% -> %.3f %%", qPrintable(model), before, after);
+    QVERIFY2(before > 2.0, "the perturbation must matter");
+    QVERIFY2(after < 1.5 && after < before / 10.0, qPrintable(QString::number(after)));
+}
+
+void TestRobotScenario::paperArm_isThePaperScenario()
+{
+    const Scenario s = scenarioForRobot(QStringLiteral("paper-2link"));
+    const Scenario paper;
+    QCOMPARE(s.model, paper.model);
+    QCOMPARE(s.path.kind, PathKind::Line);
+    QCOMPARE(s.controller.kp, paper.controller.kp);
+    QCOMPARE(s.initialParameters, paper.initialParameters);
+}
+
+void TestRobotScenario::waypointBeyondALimit_isNamedWithJointAndLimit()
+{
+    const auto model = makeRobotModel(QStringLiteral("puma560"));
+    const auto *chain = dynamic_cast<const ChainModel *>(model.get());
+    QVERIFY(chain);
+    Scenario s = scenarioForRobot(QStringLiteral("puma560"));
+    const ChainJoint &joint3 = chain->chain().joints[2];
+    s.path.waypoints[1][2] = joint3.upper + 0.01;
+    const QString error = waypointLimitError(*model, s.path.waypoints);
+    const QString expected =
+        QStringLiteral("path.waypoints[1][2]: %1 deg is above joint 3 (%2)'s upper limit %3 deg")
+            .arg((joint3.upper + 0.01) * 180.0 / M_PI, 0, 'f', 2)
+            .arg(joint3.name)
+            .arg(joint3.upper * 180.0 / M_PI, 0, 'f', 2);
+    QCOMPARE(error, expected);
+    s.path.waypoints[1][2] = joint3.lower - 0.01;
+    QVERIFY2(waypointLimitError(*model, s.path.waypoints).contains(QLatin1String("lower limit")),
+             qPrintable(waypointLimitError(*model, s.path.waypoints)));
+    // The paper's arm has no joint limits.
+    const auto paper = makeRobotModel(QStringLiteral("paper-2link"));
+    QCOMPARE(waypointLimitError(*paper, {Eigen::Vector2d(100, -100)}), QString());
+}
+
+void TestRobotScenario::unknownModel_isRefused()
+{
+    try {
+        scenarioForRobot(QStringLiteral("no-such-robot"));
+        QFAIL("an unknown model was accepted");
+    } catch (const Error &e) {
+        QCOMPARE(e.message(), QStringLiteral("robot.model: unknown model \"no-such-robot\""));
+    }
+}
+
+QTEST_GUILESS_MAIN(TestRobotScenario)
+#include "tst_robotscenario.moc"
