@@ -32,6 +32,8 @@ QList<ParameterInfo> standardInfo(const SerialChain &chain, const JointTerms &te
     for (int k = 0; k < chain.dof(); ++k) {
         const QString s = subscript(k + 1);
         const QString link = chain.joints[size_t(k)].link;
+        const QString linkGroup = Text::tr("link %1 (%2)").arg(k + 1).arg(link);
+        const qsizetype first = info.size();
         info.append({QStringLiteral("m") + s, kg, Text::tr("mass of link %1").arg(link)});
         for (const char *axis : {"x", "y", "z"}) {
             info.append({QStringLiteral("m·c%1").arg(QLatin1String(axis)) + s, kgm,
@@ -43,11 +45,14 @@ QList<ParameterInfo> standardInfo(const SerialChain &chain, const JointTerms &te
                          Text::tr("inertia %1 of link %2 about its frame origin")
                              .arg(QLatin1String(pair), link)});
         }
+        for (qsizetype i = first; i < info.size(); ++i)
+            info[i].group = linkGroup;
     }
     for (int k = 0; k < chain.dof(); ++k) {
         const QString s = subscript(k + 1);
         const QString joint = chain.joints[size_t(k)].name;
         const bool prismatic = chain.joints[size_t(k)].type == JointType::Prismatic;
+        const qsizetype first = info.size();
         if (terms.armature)
             info.append({QStringLiteral("Ia") + s, prismatic ? kg : kgm2,
                          Text::tr("rotor inertia at joint %1").arg(joint)});
@@ -63,6 +68,8 @@ QList<ParameterInfo> standardInfo(const SerialChain &chain, const JointTerms &te
             info.append({QStringLiteral("τo") + s,
                          prismatic ? QStringLiteral("N") : QStringLiteral("N m"),
                          Text::tr("torque offset of joint %1").arg(joint)});
+        for (qsizetype i = first; i < info.size(); ++i)
+            info[i].group = Text::tr("joint %1 (%2)").arg(k + 1).arg(joint);
     }
     return info;
 }
@@ -120,7 +127,8 @@ ChainModel::ChainModel(const SerialChain &chain, const JointTerms &terms, const 
         m_baseInfo.append({m_base.describe(i, names), lead.unit,
                            m_base.beta().row(i).isZero()
                                ? lead.description
-                               : Text::tr("a combination led by the %1").arg(lead.description)});
+                               : Text::tr("a combination led by the %1").arg(lead.description),
+                           lead.group});
     }
 }
 

@@ -20,7 +20,7 @@ const QString urdfId = QStringLiteral("urdf");
 QStringList builtInUrdfRobots()
 {
     return {QStringLiteral("paper-2link-urdf"), QStringLiteral("double-pendulum"),
-            QStringLiteral("puma560")};
+            QStringLiteral("puma560"), QStringLiteral("panda")};
 }
 
 // Everything a chain model depends on, the URDF by its contents (a file edited between two

@@ -10,7 +10,7 @@ namespace learnid {
 
 /// Ids of the models makeRobotModel() knows, for validation messages: "paper-2link" (the
 /// paper's arm in closed form), "urdf" (any serial arm from urdf.file) and the built-in URDF
-/// robots ("paper-2link-urdf", "double-pendulum", "puma560"; resources/robots/).
+/// robots ("paper-2link-urdf", "double-pendulum", "puma560", "panda"; resources/robots/).
 QStringList knownRobotModels();
 
 /// True for the models read from a URDF (every known model but "paper-2link").

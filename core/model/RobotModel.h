@@ -14,6 +14,8 @@ struct ParameterInfo
     QString name;
     QString unit;
     QString description;
+    QString group; ///< what it belongs to, e.g. "link 3 (lwr_arm_3_link)"; empty for a model
+                   ///< without links
 };
 
 /// Rigid-body dynamics linear in a parameter vector phi (paper eq. 1-2):

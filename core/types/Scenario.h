@@ -35,9 +35,9 @@ struct Scenario
 {
     // robot
     /// "paper-2link" (the paper's arm, closed form), "urdf" (any serial arm: urdf.file) or a
-    /// built-in URDF robot ("double-pendulum", "puma560"). For URDF robots, empty vectors take
-    /// the robot's values when the session starts: torqueLimits the URDF's efforts,
-    /// initialParameters the CAD model's base parameters.
+    /// built-in URDF robot ("paper-2link-urdf", "double-pendulum", "puma560", "panda"). For URDF
+    /// robots, empty vectors take the robot's values when the session starts: torqueLimits the
+    /// URDF's efforts, initialParameters the CAD model's base parameters.
     QString model = QStringLiteral("paper-2link");
     UrdfRobotSettings urdf;
     Eigen::VectorXd linkLengths = Eigen::Vector2d(0.75, 0.75);       ///< [m]

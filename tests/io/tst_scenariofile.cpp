@@ -311,7 +311,7 @@ void TestScenarioFile::badValue_isRejectedWithKeyPath_data()
     row("elbow 2", "robot.elbow", 2, "robot.elbow: must be 1 or -1, got 2");
     row("unknown model", "robot.model", QStringLiteral("puma600"),
         "robot.model: unknown model \"puma600\"; known models: paper-2link, urdf, "
-        "paper-2link-urdf, double-pendulum, puma560");
+        "paper-2link-urdf, double-pendulum, puma560, panda");
     row("unknown law", "estimator.law", QStringLiteral("magic"),
         "estimator.law: unknown learning law \"magic\"; known laws: paper, improved");
     row("length zero", "path.length", 0, "path.length: must be a positive number, got 0");
