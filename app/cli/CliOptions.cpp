@@ -106,6 +106,7 @@ QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOpti
     } // a replay's device (candump/replay) is the robot factory's (makeRobot)
     if (parser.isSet(nodes)) {
         QString error;
+        run->nodesGiven = true;
         run->can.nodes = parseNodeList(parser.value(nodes), &error);
         if (run->can.nodes.isEmpty())
             return QCoreApplication::translate("learnid-cli", "--nodes: %1 in '%2'")
@@ -122,7 +123,8 @@ QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOpti
                 .arg(text);
         setSyncTimeoutMs(run->can, ms);
     }
-    const QString invalid = canRobotOptionsError(run->can);
+    // The bus load needs the scenario's SYNC period: checkCanAgainstScenario, once it is read.
+    const QString invalid = canNodeOptionsError(run->can);
     if (!invalid.isEmpty())
         return parser.isSet(nodes) ? QCoreApplication::translate("learnid-cli", "--nodes %1: %2")
                                          .arg(parser.value(nodes), invalid)

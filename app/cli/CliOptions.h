@@ -36,7 +36,8 @@ struct RunOptions
     bool quiet = false;
     QString robot = QStringLiteral("sim"); ///< "sim", "can", or "replay" (`learnid-cli replay`)
     CanRobotOptions can;                   ///< --can-plugin, --can-interface, --nodes, --can-log
-    QStringList candumpFiles;              ///< `replay`: the trial logs, in trial order
+    bool nodesGiven = false;  ///< --nodes was set; else joint j is node j (checkCanAgainstScenario)
+    QStringList candumpFiles; ///< `replay`: the trial logs, in trial order
 };
 
 /// The parsed command line: a command and its options, or an error to print with usage.

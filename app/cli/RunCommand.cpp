@@ -40,6 +40,36 @@ Scenario loadScenario(const RunOptions &options)
     return scenario;
 }
 
+// The CAN options against the scenario (docs/can-protocol.md §8.5): without --nodes joint j is
+// node j; the SYNC period is the scenario's controller.samplePeriod, and the bus load at it is
+// checked before anything is sent. Returns the error naming the option, or empty.
+QString checkCanAgainstScenario(RunOptions &options, const Scenario &scenario)
+{
+    if (options.robot == QLatin1String("sim"))
+        return {};
+    const int joints = scenario.controller.dof();
+    if (!options.nodesGiven)
+        options.can.nodes = defaultNodeList(joints);
+    QStringList nodes;
+    for (const int n : std::as_const(options.can.nodes))
+        nodes << QString::number(n);
+    if (options.can.nodes.size() != joints)
+        return QCoreApplication::translate("learnid-cli",
+                                           "--nodes %1: %2 node ids for a robot of %3 joints: one "
+                                           "node per joint is needed")
+            .arg(nodes.join(QLatin1Char(',')))
+            .arg(options.can.nodes.size())
+            .arg(joints);
+    setSyncPeriod(options.can, scenario.controller.samplePeriod);
+    const QString invalid = canRobotOptionsError(options.can);
+    if (invalid.isEmpty())
+        return {};
+    return options.nodesGiven ? QCoreApplication::translate("learnid-cli", "--nodes %1: %2")
+                                    .arg(nodes.join(QLatin1Char(',')), invalid)
+                              : QCoreApplication::translate("learnid-cli", "--robot %1: %2")
+                                    .arg(options.robot, invalid);
+}
+
 // The robot the options ask for, as the session service's factory makes it.
 RobotRequest robotRequest(const RunOptions &options)
 {
@@ -61,8 +91,9 @@ ExitCode printScenarioCommand(QTextStream &out)
     return ExitOk;
 }
 
-ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &err)
+ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
 {
+    RunOptions options = given;
     // The tool reports trials and errors itself: the session's log lines would repeat them.
     // --quiet silences the CAN robot's progress lines too; its warnings still show.
     QString rules = QStringLiteral("learnid.session=false\n");
@@ -79,6 +110,11 @@ ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &er
     }
     if (options.robot == QLatin1String("replay") && !options.iterations)
         scenario.iterations = int(options.candumpFiles.size());
+    if (const QString canError = checkCanAgainstScenario(options, scenario); !canError.isEmpty()) {
+        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(canError)
+            << Qt::endl;
+        return ExitBadInput;
+    }
 
     // The session service, run synchronously in this thread: its robot factory, its session,
     // its export path, as the window uses them from its worker thread.

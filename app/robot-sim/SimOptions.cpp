@@ -100,8 +100,9 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
         QCoreApplication::translate("learnid-robot-sim", "interface"));
     const QCommandLineOption nodes(
         QStringLiteral("nodes"),
-        QCoreApplication::translate("learnid-robot-sim",
-                                    "Node ids of joint 1, 2, ... (default 1,2)."),
+        QCoreApplication::translate(
+            "learnid-robot-sim",
+            "Node ids of joint 1, 2, ..., up to 127 (default: joint j is node j)."),
         QCoreApplication::translate("learnid-robot-sim", "ids"));
     const QCommandLineOption scenario(
         QStringLiteral("scenario"),

@@ -20,7 +20,7 @@ struct SimOptions
 {
     QString plugin;
     QString interface;
-    QList<int> nodes = {1, 2};
+    QList<int> nodes;     ///< empty: joint j is node j, for every joint of the scenario's robot
     QString scenarioPath; ///< empty: the paper scenario
     QString statePath;    ///< empty: no state file
     CanSimFaults faults;

@@ -69,7 +69,12 @@ int SimProcess::setUp()
             scenario = readScenarioFile(m_options.scenarioPath);
         validateScenario(scenario);
         const auto model = makeRobotModel(scenario.model, scenario.urdf);
-        settings = canArmSettings(scenario, model, m_options.nodes);
+        QList<int> nodes = m_options.nodes;
+        if (nodes.isEmpty()) { // --nodes not given: joint j is node j
+            for (int j = 1; j <= model->dof(); ++j)
+                nodes << j;
+        }
+        settings = canArmSettings(scenario, model, nodes);
         settings.setPointTimeoutSyncs = m_options.setPointTimeoutSyncs;
     } catch (const Error &e) {
         m_err << tr("learnid-robot-sim: error: %1").arg(e.message()) << Qt::endl;

@@ -34,16 +34,61 @@ CanDeviceFactory qcanbusDeviceFactory(const QString &plugin, const QString &inte
     };
 }
 
-BusLoad configuredBusLoad(const CanRobotOptions &options)
+BusLoadConfig busLoadConfig(const CanRobotOptions &options)
 {
     BusLoadConfig config;
     config.joints = int(options.nodes.size());
     config.sampleRate = options.syncPeriod > 0 ? 1.0 / options.syncPeriod : 1.0;
     config.bitrate = options.bitrate > 0 ? options.bitrate : 1.0;
-    return estimateBusLoad(config);
+    return config;
 }
 
-QString canRobotOptionsError(const CanRobotOptions &options)
+BusLoad configuredBusLoad(const CanRobotOptions &options)
+{
+    return estimateBusLoad(busLoadConfig(options));
+}
+
+int shortestFittingSyncPeriodMs(const CanRobotOptions &options)
+{
+    // 0x60C2:01 carries whole milliseconds (UNSIGNED8, exponent -3): 1 to 255 ms.
+    BusLoadConfig config = busLoadConfig(options);
+    for (int ms = 1; ms <= 255; ++ms) {
+        config.sampleRate = 1000.0 / ms;
+        if (estimateBusLoad(config).percent <= options.maxBusLoadPercent)
+            return ms;
+    }
+    return 0;
+}
+
+QString busLoadError(const CanRobotOptions &options)
+{
+    const BusLoad load = configuredBusLoad(options);
+    if (load.percent <= options.maxBusLoadPercent)
+        return {};
+    const QString figures =
+        Text::tr("the configuration of %1 nodes at %2 Hz (SYNC every %3 ms) needs %4 of the bus, "
+                 "more than the %5 % the tool allows")
+            .arg(options.nodes.size())
+            .arg(1.0 / options.syncPeriod, 0, 'f', 0)
+            .arg(options.syncPeriod * 1000.0, 0, 'g', 4)
+            .arg(load.text(options.bitrate))
+            .arg(options.maxBusLoadPercent, 0, 'f', 0);
+    const int ms = shortestFittingSyncPeriodMs(options);
+    if (ms == 0)
+        return Text::tr("%1; no SYNC period up to 255 ms fits: use a faster bus").arg(figures);
+    CanRobotOptions offered = options;
+    offered.syncPeriod = ms / 1000.0;
+    // One trial drives every joint at every SYNC (docs/can-protocol.md §8.5): a longer SYNC
+    // period is the only offer; the gains must suit it (the pre-trial check says so).
+    return Text::tr("%1; the shortest SYNC period that fits is %2 ms (%3): set the scenario's "
+                    "controller.samplePeriod to %4 s and the robot side's SYNC period to match")
+        .arg(figures)
+        .arg(ms)
+        .arg(configuredBusLoad(offered).text(options.bitrate))
+        .arg(ms / 1000.0, 0, 'g', 3);
+}
+
+QString canNodeOptionsError(const CanRobotOptions &options)
 {
     if (options.nodes.isEmpty())
         return Text::tr("no CAN node given: one node per joint is needed");
@@ -60,21 +105,36 @@ QString canRobotOptionsError(const CanRobotOptions &options)
         options.heartbeatTimeoutFactor < 1 || options.enableTimeoutMs <= 0 ||
         options.syncGapPeriods < 2 || !(options.syncPeriod > 0) || !(options.bitrate > 0))
         return Text::tr("CAN timing options must be positive (heartbeat period at most 65535 ms)");
-    const BusLoad load = configuredBusLoad(options);
-    if (load.percent > options.maxBusLoadPercent) {
-        return Text::tr("the configuration of %1 nodes at %2 Hz needs %3 of the bus, more than the "
-                        "%4 % the tool allows: use fewer nodes per bus or a longer SYNC period")
-            .arg(options.nodes.size())
-            .arg(1.0 / options.syncPeriod, 0, 'f', 0)
-            .arg(load.text(options.bitrate))
-            .arg(options.maxBusLoadPercent, 0, 'f', 0);
-    }
     return {};
+}
+
+QString canRobotOptionsError(const CanRobotOptions &options)
+{
+    const QString invalid = canNodeOptionsError(options);
+    return invalid.isEmpty() ? busLoadError(options) : invalid;
+}
+
+QList<int> defaultNodeList(int joints)
+{
+    QList<int> nodes;
+    for (int j = 1; j <= joints; ++j)
+        nodes << j;
+    return nodes;
 }
 
 void setSyncTimeoutMs(CanRobotOptions &options, int ms)
 {
-    options.syncGapPeriods = std::max(2, int(std::ceil(ms / (1000.0 * options.syncPeriod))));
+    // 1e-9: 20 ms at 0.004 s is 5 periods, not 6 by the rounding of 1000 * 0.004.
+    options.syncGapPeriods = std::max(2, int(std::ceil(ms / (1000.0 * options.syncPeriod) - 1e-9)));
+}
+
+void setSyncPeriod(CanRobotOptions &options, double seconds)
+{
+    if (!(seconds > 0) || seconds == options.syncPeriod)
+        return;
+    const int ms = int(std::lround(options.syncGapPeriods * options.syncPeriod * 1000.0));
+    options.syncPeriod = seconds;
+    setSyncTimeoutMs(options, ms);
 }
 
 QList<int> parseNodeList(const QString &text, QString *error)

@@ -33,15 +33,39 @@ struct CanRobotOptions
 using CanDeviceFactory = std::function<QCanBusDevice *(QString *error)>;
 CanDeviceFactory qcanbusDeviceFactory(const QString &plugin, const QString &interface);
 
-/// The cyclic load of the options' configuration (SYNC, one RPDO and one TPDO per node).
+/// The cyclic traffic of the options' configuration (SYNC, one RPDO and one TPDO per node at
+/// the SYNC period, on the options' bitrate).
+BusLoadConfig busLoadConfig(const CanRobotOptions &options);
+
+/// The cyclic load of the options' configuration: estimateBusLoad(busLoadConfig(options)).
 BusLoad configuredBusLoad(const CanRobotOptions &options);
 
-/// Why the options cannot work (invalid or repeated node ids, non-positive times, a bus load
-/// above the limit, with the figures), or empty.
+/// The offer when the load is above the limit: the shortest SYNC period in whole milliseconds
+/// (what 0x60C2 and the robot side's SYNC grid take, docs/can-protocol.md §8.5) from 1 to
+/// 255 ms at which the options' nodes stay within maxBusLoadPercent, by the same
+/// estimateBusLoad; 0 when none does.
+int shortestFittingSyncPeriodMs(const CanRobotOptions &options);
+
+/// Why the bus load of the options is above maxBusLoadPercent, with the figures and the
+/// shortest SYNC period that fits (the scenario's controller.samplePeriod), or empty.
+QString busLoadError(const CanRobotOptions &options);
+
+/// Why the node list or the timing options cannot work (invalid or repeated node ids,
+/// non-positive times), or empty; the bus load is not looked at.
+QString canNodeOptionsError(const CanRobotOptions &options);
+
+/// canNodeOptionsError, then busLoadError: why the options cannot work, or empty.
 QString canRobotOptionsError(const CanRobotOptions &options);
 
 /// Sets syncGapPeriods so that a trial stops after ms without SYNC (at least 2 periods).
 void setSyncTimeoutMs(CanRobotOptions &options, int ms);
+
+/// Sets the SYNC period [s] (the scenario's controller.samplePeriod, which the robot side
+/// produces) and keeps the time without SYNC that stops a trial (syncGapPeriods x period).
+void setSyncPeriod(CanRobotOptions &options, double seconds);
+
+/// Nodes 1, 2, ..., joints: joint j is node j (the default of --nodes for an n-joint robot).
+QList<int> defaultNodeList(int joints);
 
 /// "1,2,3" -> {1, 2, 3}; on failure returns empty and sets error (naming the bad element).
 QList<int> parseNodeList(const QString &text, QString *error);

@@ -131,6 +131,9 @@ void CanRobotWorker::runTrial(const TrialPlan &plan, const TrialMonitor &monitor
     }
     m_trialDone = std::move(done);
     m_samplePeriod = ts;
+    // The robot side's SYNC period is the plan's (0x1006 is checked in step 1): the bus load
+    // is checked at it before anything is sent (connectBus), with the offer of what fits.
+    setSyncPeriod(m_options, ts);
     connectBus([this, plan, monitor](const QString &error) {
         if (!error.isEmpty())
             return endTrial(notStarted(m_samplePeriod, TrialStatus::Refused, error));

@@ -1,5 +1,6 @@
 #include "cansim/ScenarioCanArm.h"
 
+#include "session/ScenarioRobot.h"
 #include "session/TrialPlanner.h"
 
 #include <QJsonArray>
@@ -8,13 +9,24 @@
 
 namespace learnid {
 
-CanArmSettings canArmSettings(const Scenario &scenario, std::shared_ptr<const RobotModel> model,
+CanArmSettings canArmSettings(const Scenario &given, std::shared_ptr<const RobotModel> model,
                               const QList<int> &nodes)
 {
     CanArmSettings s;
-    // The path's first sample is the inverse kinematics of its start point (planLine()).
+    // What a URDF robot leaves out of the scenario (torque limits, the simulated robot's true
+    // parameters), as the session fills it in: the same seed gives the same robot.
+    const Scenario scenario = withRobotDefaults(given, *model);
+    // The arm rests at the path's first sample: the inverse kinematics of the line's start
+    // point (planLine()), or the joint path at u = 0.
     const TrialPlanner planner(scenario, model);
-    s.initialPose = planner.kinematics().inverse(scenario.line.start, Eigen::VectorXd());
+    if (const JointPath *path = planner.jointPath()) {
+        const int n = model->dof();
+        Eigen::VectorXd dq(n), ddq(n);
+        s.initialPose.resize(n);
+        path->stateInto(0.0, s.initialPose, dq, ddq);
+    } else {
+        s.initialPose = planner.kinematics().inverse(scenario.line.start, Eigen::VectorXd());
+    }
     s.model = std::move(model);
     s.trueParameters = scenario.simulation.trueParameters;
     s.measurement.encoderCounts = scenario.simulation.encoderCounts;

@@ -1,6 +1,7 @@
 // learnid-cli's CAN options without a robot on the bus: bad values name the option and the
-// value, a configuration above the bus limit is refused with its figures, a bus nobody answers
-// on fails quickly with the node and object, a malformed log names file and line.
+// value, a configuration above the bus limit is refused with its figures and the SYNC period
+// that fits, a bus nobody answers on fails quickly with the node and object, a malformed log
+// names file and line.
 #include "../support/ToolRun.h"
 
 #include <QElapsedTimer>
@@ -62,9 +63,27 @@ void TestCliCan::badOption_exitsNamingOptionAndValue_data()
                                        QStringList{QStringLiteral("--nodes"), QStringLiteral("3,3")}
                                 << 2
                                 << QStringList{QStringLiteral("--nodes"), QStringLiteral("node 3")};
+    // A 6-axis robot (the built-in PUMA 560) at the default 2 ms: the load of its 6 nodes.
+    const QString puma = m_dir.filePath(QStringLiteral("puma560.json"));
+    QFile f(puma);
+    if (f.open(QIODevice::WriteOnly)) {
+        f.write(R"({"schema": "learnid-scenario/2", "robot": {"model": "puma560"},
+            "path": {"kind": "waypoints",
+                     "waypoints": [[0, 0.5, -0.5, 0, 0.3, 0], [0.6, 0.2, -0.2, 0.5, -0.3, 0.4]]},
+            "controller": {"kp": [2000, 4000, 1500, 50, 50, 30], "ki": [20, 40, 15, 1, 1, 1],
+                           "kd": [200, 400, 150, 5, 5, 3]}})");
+    }
     QTest::newRow("bus overloaded")
-        << can + QStringList{QStringLiteral("--nodes"), QStringLiteral("1,2,3,4,5,6")} << 2
-        << QStringList{QStringLiteral("84.3 %"), QStringLiteral("70 %")};
+        << can + QStringList{QStringLiteral("--scenario"), puma, QStringLiteral("--nodes"),
+                             QStringLiteral("1,2,3,4,5,6")}
+        << 2
+        << QStringList{QStringLiteral("--nodes 1,2,3,4,5,6"), QStringLiteral("84.3 %"),
+                       QStringLiteral("70 %"),
+                       QStringLiteral("shortest SYNC period that fits is 3 ms")};
+    QTest::newRow("nodes of another robot")
+        << can + QStringList{QStringLiteral("--nodes"), QStringLiteral("1,2,3")} << 2
+        << QStringList{QStringLiteral("--nodes 1,2,3"),
+                       QStringLiteral("3 node ids for a robot of 2 joints")};
     QTest::newRow("unknown plugin") << QStringList{run,
                                                    QStringLiteral("--robot"),
                                                    QStringLiteral("can"),

@@ -97,6 +97,7 @@ private slots:
     void apply_abort_storesNothing();
     void lostConnection_failedReconnect_trialAndApplyEndWithTheError();
     void apply_silentNode_saysSoInOneSentence();
+    void busLoadAtThePlansPeriod_refusedBeforeAnyFrame_offeredPeriodPasses();
 };
 
 void TestCanRobotWorker::trial_collectsSamplesBySyncAcrossCounterWrap()
@@ -324,6 +325,32 @@ void TestCanRobotWorker::apply_silentNode_saysSoInOneSentence()
              qPrintable(error));
     QVERIFY2(!error.contains(QLatin1String(".;")), qPrintable(error));
     QCOMPARE(s.drives.node(1).stores, 0);
+}
+
+// The load is checked at the plan's sample period, before any frame is sent: 2 joints at 2 ms on
+// a 125 kbit/s bus need 242 %; the offered 7 ms passes the check and reaches the drives.
+void TestCanRobotWorker::busLoadAtThePlansPeriod_refusedBeforeAnyFrame_offeredPeriodPasses()
+{
+    CanRobotOptions slowBus;
+    slowBus.bitrate = 125'000.0;
+    slowBus.syncPeriod = 0.007; // what the options say is overridden by the plan's period
+    Setup s(slowBus);
+    s.drives.startSync();
+    const TrialRecord refused = s.run(test::testPlan(50));
+    QCOMPARE(refused.status, TrialStatus::Refused);
+    QCOMPARE(refused.samples(), 0);
+    for (const char *part : {"2 nodes at 500 Hz", "242.0 % of 125 kbit/s",
+                             "shortest SYNC period that fits is 7 ms", "controller.samplePeriod"})
+        QVERIFY2(refused.message.contains(QLatin1String(part)), qPrintable(refused.message));
+    QVERIFY(!s.master); // not even connected: nothing sent
+    QCOMPARE(s.drives.node(1).od.value(0x1017, 0), 0.0);
+
+    TrialPlan at7ms = test::testPlan(50);
+    at7ms.desired.samplePeriod = 0.007;
+    const TrialRecord offered = s.run(at7ms);
+    QVERIFY2(!offered.message.contains(QLatin1String("kbit/s")), qPrintable(offered.message));
+    QVERIFY(s.master);
+    QCOMPARE(s.drives.node(1).od.value(0x1017, 0), 100.0); // configuration reached the drives
 }
 
 QTEST_GUILESS_MAIN(TestCanRobotWorker)
