@@ -1,8 +1,12 @@
 // GUI benchmark (issue 3 targets): start-up to the first painted window, the update of the plots,
-// table and chart after each of 10 trials, and memory over 100 trials. Prints Markdown.
-// Usage: learnid-bench-gui [startups] (QT_QPA_PLATFORM=offscreen without a display).
+// table and chart after each of 10 trials, and memory over 100 trials; then the same update and
+// the GUI thread's responsiveness during trials for a 7-axis arm (guiserialarm.cpp). Prints
+// Markdown. Usage: learnid-bench-gui [startups] (QT_QPA_PLATFORM=offscreen without a display);
+// `learnid-bench-gui --arm [model] [repetitions]` runs the 7-axis part alone (default: panda, 20;
+// the responsiveness probe runs 5 sessions of 10 trials).
 // Internally it starts copies of itself: `--startup-child` and `--memory-child gui|headless`.
 #include "BenchSupport.h"
+#include "guiserialarm.h"
 #include "service/SessionController.h"
 #include "service/SessionInfo.h"
 #include "service/TrackingErrorData.h"
@@ -226,6 +230,16 @@ int main(int argc, char **argv)
     if (mem > 0 && mem + 1 < args.size())
         return memoryChild(app, args[mem + 1] == QStringLiteral("gui"));
 
+    const int arm = int(args.indexOf(QStringLiteral("--arm")));
+    const QString armModel =
+        arm > 0 && arm + 1 < args.size() ? args[arm + 1] : QStringLiteral("panda");
+    const int armRepetitions =
+        arm > 0 && arm + 2 < args.size() ? std::max(1, args[arm + 2].toInt()) : 20;
+    if (arm > 0) {
+        std::printf("Platform: %s\n\n", qPrintable(QGuiApplication::platformName()));
+        bench::serialArmGui(armModel, armRepetitions, 5);
+        return 0;
+    }
     const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 7;
     const QString self = QCoreApplication::applicationFilePath();
     std::printf("Platform: %s\n\n", qPrintable(QGuiApplication::platformName()));
@@ -234,5 +248,6 @@ int main(int argc, char **argv)
                 startupMs(self, runs), runs);
     updateTimes();
     memory(self);
+    bench::serialArmGui(armModel, armRepetitions, 5);
     return 0;
 }

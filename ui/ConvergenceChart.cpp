@@ -1,5 +1,7 @@
 #include "ui/ConvergenceChart.h"
 
+#include "ui/ConvergenceTableModel.h"
+
 #include <QVBoxLayout>
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
@@ -67,14 +69,44 @@ QLineSeries *ConvergenceChart::seriesAt(int p)
 
 void ConvergenceChart::setData(const QList<ParameterInfo> &parameters,
                                const QVector<Eigen::VectorXd> &estimates,
-                               const std::optional<Eigen::VectorXd> &truth)
+                               const std::optional<Eigen::VectorXd> &truth,
+                               const EstimateFigures &figures)
 {
     m_x->setRange(0, std::max<int>(1, int(estimates.size()) - 1));
-    m_y->setTitleText(truth ? tr("|error| [%]") : tr("change [%]"));
+    QList<Curve> curves = parameters.size() > ConvergenceTableModel::maxParameterColumns
+                              ? pathTorqueCurves(figures)
+                              : parameterCurves(parameters, estimates, truth);
+    const bool many = parameters.size() > ConvergenceTableModel::maxParameterColumns;
+    m_y->setTitleText(many ? tr("path torque [%]") : truth ? tr("|error| [%]") : tr("change [%]"));
     m_chart->setTitle(truth ? tr("Convergence to the truth") : tr("Convergence"));
     double lo = 1.0, hi = 100.0;
+    for (int c = 0; c < curves.size(); ++c) {
+        for (QPointF &point : curves[c].points) {
+            point.setY(std::max(kFloorPercent, point.y()));
+            lo = std::min(lo, point.y());
+            hi = std::max(hi, point.y());
+        }
+        QLineSeries *series = seriesAt(c);
+        series->setName(curves[c].name);
+        series->replace(curves[c].points);
+    }
+    while (m_series.size() > curves.size()) {
+        QLineSeries *series = m_series.takeLast();
+        m_chart->removeSeries(series);
+        delete series;
+    }
+    m_y->setRange(std::pow(10.0, std::floor(std::log10(lo))),
+                  std::pow(10.0, std::ceil(std::log10(hi))));
+}
+
+QList<ConvergenceChart::Curve>
+ConvergenceChart::parameterCurves(const QList<ParameterInfo> &parameters,
+                                  const QVector<Eigen::VectorXd> &estimates,
+                                  const std::optional<Eigen::VectorXd> &truth)
+{
+    QList<Curve> curves;
     for (int p = 0; p < parameters.size(); ++p) {
-        QList<QPointF> points;
+        Curve curve{parameters.at(p).name, {}};
         for (int k = 0; k < estimates.size(); ++k) {
             const Eigen::VectorXd &phi = estimates.at(k);
             if (p >= phi.size())
@@ -87,22 +119,32 @@ void ConvergenceChart::setData(const QList<ParameterInfo> &parameters,
                           std::abs(estimates.at(k - 1)[p]);
             else if (!truth)
                 continue;
-            percent = std::max(kFloorPercent, percent);
-            lo = std::min(lo, percent);
-            hi = std::max(hi, percent);
-            points.append(QPointF(k, percent));
+            curve.points.append(QPointF(k, percent));
         }
-        QLineSeries *series = seriesAt(p);
-        series->setName(parameters.at(p).name);
-        series->replace(points);
+        curves.append(curve);
     }
-    while (m_series.size() > parameters.size()) {
-        QLineSeries *series = m_series.takeLast();
-        m_chart->removeSeries(series);
-        delete series;
-    }
-    m_y->setRange(std::pow(10.0, std::floor(std::log10(lo))),
-                  std::pow(10.0, std::ceil(std::log10(hi))));
+    return curves;
+}
+
+// An n-joint arm: what the torques on the path say, not 50 parameter curves. Against the truth
+// on a simulated robot; and against the newest estimate (how much each estimate still differs
+// from where the trials arrived; the newest itself is 0 and left out).
+QList<ConvergenceChart::Curve> ConvergenceChart::pathTorqueCurves(const EstimateFigures &figures)
+{
+    QList<Curve> curves;
+    auto curve = [](const QString &name, const QVector<double> &values, int count) {
+        Curve c{name, {}};
+        for (int k = 0; k < count; ++k)
+            if (std::isfinite(values.at(k)))
+                c.points.append(QPointF(k, values.at(k)));
+        return c;
+    };
+    if (!figures.vsTruth.isEmpty())
+        curves << curve(tr("vs truth"), figures.vsTruth, int(figures.vsTruth.size()));
+    if (figures.vsNewest.size() > 1)
+        curves << curve(tr("vs newest estimate"), figures.vsNewest,
+                        int(figures.vsNewest.size()) - 1);
+    return curves;
 }
 
 } // namespace learnid

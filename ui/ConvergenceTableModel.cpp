@@ -41,6 +41,18 @@ void ConvergenceTableModel::setHistory(const QVector<TrialResult> &history,
     endResetModel();
 }
 
+void ConvergenceTableModel::setFigures(const EstimateFigures &figures)
+{
+    beginResetModel();
+    m_figures = figures;
+    endResetModel();
+}
+
+int ConvergenceTableModel::shownParameters() const
+{
+    return m_parameters.size() <= maxParameterColumns ? int(m_parameters.size()) : 0;
+}
+
 void ConvergenceTableModel::setAccepted(std::optional<int> estimateIndex)
 {
     m_accepted = estimateIndex;
@@ -64,8 +76,9 @@ const TrialResult *ConvergenceTableModel::producer(int k) const
 
 ConvergenceTableModel::Column ConvergenceTableModel::columnKind(int c, int *parameter) const
 {
-    const int m = int(m_parameters.size());
+    const int m = shownParameters();
     const int truth = m_truth ? m : 0;
+    const int path = m_truth && m == 0 ? 1 : 0; // the path-torque error instead
     int p = 0;
     Column kind;
     if (c == 0)
@@ -82,7 +95,9 @@ ConvergenceTableModel::Column ConvergenceTableModel::columnKind(int c, int *para
         kind = Column::Observable;
     else if (c < m + 5 + truth)
         kind = Column::TruthError, p = c - m - 5;
-    else if (c == m + 5 + truth)
+    else if (c < m + 5 + truth + path)
+        kind = Column::PathTorque;
+    else if (c == m + 5 + truth + path)
         kind = Column::Trials;
     else
         kind = Column::State;
@@ -110,8 +125,8 @@ int ConvergenceTableModel::columnCount(const QModelIndex &parent) const
 {
     if (parent.isValid())
         return 0;
-    const int m = int(m_parameters.size());
-    return 1 + m + 4 + (m_truth ? m : 0) + 2;
+    const int m = shownParameters();
+    return 1 + m + 4 + (m_truth ? std::max(m, 1) : 0) + 2;
 }
 
 QVariant ConvergenceTableModel::number(int k, Column kind, int p) const
@@ -140,6 +155,8 @@ QVariant ConvergenceTableModel::number(int k, Column kind, int p) const
         if (!m_truth || p >= m_truth->size() || (*m_truth)[p] == 0.0)
             return {};
         return 100.0 * (phi[p] - (*m_truth)[p]) / (*m_truth)[p];
+    case Column::PathTorque:
+        return k < m_figures.vsTruth.size() ? QVariant(m_figures.vsTruth.at(k)) : QVariant();
     default:
         return {};
     }
@@ -171,11 +188,16 @@ QString ConvergenceTableModel::text(int k, Column kind, int p) const
         for (int i = 0; i < int(obs.size()) && i < m_parameters.size(); ++i)
             if (!obs[i])
                 kept << m_parameters.at(i).name;
-        return kept.isEmpty() ? tr("all (rank %1)").arg(made->update->rank)
-                              : tr("\u26a0 kept: %1").arg(kept.join(QStringLiteral(", ")));
+        if (kept.isEmpty())
+            return tr("all (rank %1)").arg(made->update->rank);
+        if (kept.size() > maxParameterColumns) // the Parameters table marks which
+            return tr("\u26a0 kept %1 of %2").arg(kept.size()).arg(m_parameters.size());
+        return tr("\u26a0 kept: %1").arg(kept.join(QStringLiteral(", ")));
     }
     case Column::TruthError:
         return v.isValid() ? QString::asprintf("%+.3f", v.toDouble()) : QString();
+    case Column::PathTorque:
+        return v.isValid() ? QString::number(v.toDouble(), 'f', 3) : QStringLiteral("\u2013");
     case Column::Trials: {
         QStringList trials;
         for (int i : m_trialsWith.at(k)) {
@@ -272,6 +294,8 @@ QVariant ConvergenceTableModel::headerData(int section, Qt::Orientation orientat
         return tr("Observable");
     case Column::TruthError:
         return tr("%1 vs truth [%]").arg(m_parameters.at(p).name);
+    case Column::PathTorque:
+        return tr("Path torque vs truth [%]");
     case Column::Trials:
         return tr("Trials run");
     case Column::State:

@@ -15,6 +15,7 @@
 #include "ui/UiLogging.h"
 #include "ui/UiSettings.h"
 
+#include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -39,6 +40,16 @@ FileController::FileController(SessionController *session, Views views, UiSettin
                         true);
                 else
                     emit finished(tr("Parameter file not written: %1").arg(error), false);
+            });
+    connect(m_session, &SessionController::urdfExported, this,
+            [this](const QStringList &paths, const QString &error) {
+                if (error.isEmpty())
+                    emit finished(
+                        tr("Identified URDF written: %1")
+                            .arg(QDir::toNativeSeparators(paths.join(QStringLiteral(", ")))),
+                        true);
+                else
+                    emit finished(tr("URDF not written: %1").arg(error), false);
             });
     connect(m_session, &SessionController::trialCsvExported, this,
             [this](const QString &folder, int files, const QString &error) {
@@ -82,6 +93,9 @@ QString FileController::dialogPath(Purpose purpose, const QString &suggested)
     case Purpose::Report:
         return QFileDialog::getSaveFileName(m_dialogParent, tr("Export commissioning report"),
                                             suggested, tr("PDF (*.pdf)"));
+    case Purpose::Urdf:
+        return QFileDialog::getSaveFileName(m_dialogParent, tr("Export identified URDF"), suggested,
+                                            tr("URDF (*.urdf)"));
     }
     return {};
 }
@@ -112,6 +126,28 @@ void FileController::exportParameterFile()
         exportParameterFileTo(path);
 }
 
+void FileController::exportIdentifiedUrdf()
+{
+    const QString path = choose(Purpose::Urdf, QStringLiteral("identified.urdf"));
+    if (!path.isEmpty())
+        exportIdentifiedUrdfTo(path);
+}
+
+void FileController::exportIdentifiedUrdfTo(const QString &path)
+{
+    if (!m_session->acceptedIndex()) {
+        emit finished(tr("URDF not written: accept an estimate first"), false);
+        return;
+    }
+    remember(path);
+    m_session->exportIdentifiedUrdf(
+        path, *m_session->acceptedIndex(),
+        tr("identified by learnid %1 (estimate %2 of a commissioning session) on %3")
+            .arg(QStringLiteral(LEARNID_VERSION))
+            .arg(*m_session->acceptedIndex())
+            .arg(QDateTime::currentDateTimeUtc().toString(Qt::ISODate)));
+}
+
 void FileController::exportTrialCsv()
 {
     const QString path = choose(Purpose::TrialCsvFolder, QStringLiteral("trials"));
@@ -138,13 +174,6 @@ void FileController::openScenarioFrom(const QString &path)
     try {
         const Scenario scenario = readScenarioFile(path);
         validateScenario(scenario);
-        if (scenario.model != QLatin1String("paper-2link")) {
-            // The window's editors, plots and tables show the paper's arm and its line; any
-            // serial arm runs with learnid-cli until they show n joints.
-            throw Error(tr("%1 is a URDF robot (%2): the window runs the paper's 2-link arm; "
-                           "run this scenario with learnid-cli run --scenario %1")
-                            .arg(QDir::toNativeSeparators(path), scenario.model));
-        }
         remember(path);
         emit scenarioLoaded(scenario);
         emit finished(tr("Scenario loaded: %1").arg(QDir::toNativeSeparators(path)), true);

@@ -26,7 +26,15 @@ class FileController : public QObject
     Q_OBJECT
 
 public:
-    enum class Purpose { OpenScenario, SaveScenario, ParameterFile, TrialCsvFolder, Plot, Report };
+    enum class Purpose {
+        OpenScenario,
+        SaveScenario,
+        ParameterFile,
+        TrialCsvFolder,
+        Plot,
+        Report,
+        Urdf
+    };
     /// Asks the technician for a path; returns "" when cancelled. The default uses QFileDialog;
     /// tests inject their own.
     using PathChooser = std::function<QString(Purpose, const QString &suggested)>;
@@ -52,6 +60,7 @@ public slots:
     void exportTrialCsv();
     void exportPlot();
     void exportReport();
+    void exportIdentifiedUrdf();
 
     void openScenarioFrom(const QString &path);
     void saveScenarioTo(const QString &path);
@@ -61,6 +70,9 @@ public slots:
     void exportTrialCsvTo(const QString &folder);
     void exportPlotTo(const QString &path);
     void exportReportTo(const QString &path);
+    /// The robot's URDF with the accepted estimate as real bodies (URDF robots); the result
+    /// arrives asynchronously by finished().
+    void exportIdentifiedUrdfTo(const QString &path);
 
 signals:
     void scenarioLoaded(const learnid::Scenario &scenario);

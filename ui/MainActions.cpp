@@ -49,6 +49,9 @@ MainActions::MainActions(QObject *parent)
     exportParameters = make(this, QStringLiteral("export"), tr("Export &parameter file..."),
                             QKeySequence(tr("Ctrl+E")),
                             tr("Write the accepted estimate as a parameter file (JSON and DCF)"));
+    exportUrdf = make(this, QString(), tr("Export identified &URDF..."), QKeySequence(),
+                      tr("Write the robot's URDF with the accepted estimate as real bodies and "
+                         "its friction (URDF robots)"));
     exportTrialCsv = make(this, QString(), tr("Export trial &CSV..."),
                           QKeySequence(tr("Ctrl+Shift+E")), tr("Write one CSV file per trial"));
     exportPlot =
@@ -102,7 +105,7 @@ void MainActions::populate(QMenuBar *menuBar, QToolBar *toolBar)
     QMenu *file = menuBar->addMenu(tr("&File"));
     file->addActions({openScenario, saveScenario});
     file->addSeparator();
-    file->addActions({exportParameters, exportTrialCsv, exportPlot, exportReport});
+    file->addActions({exportParameters, exportUrdf, exportTrialCsv, exportPlot, exportReport});
     file->addSeparator();
     file->addAction(quit);
     QMenu *robot = menuBar->addMenu(tr("&Robot"));

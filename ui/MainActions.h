@@ -31,6 +31,7 @@ public:
     QAction *exportTrialCsv;
     QAction *exportPlot;
     QAction *exportReport;
+    QAction *exportUrdf;
     QAction *quit;
     QAction *runTrial;
     QAction *runAll;

@@ -4,10 +4,12 @@
 #include "ui/ApplyConfirmDialog.h"
 #include "ui/ApplyPanel.h"
 #include "ui/ConvergenceChart.h"
+#include "ui/ConvergencePanel.h"
 #include "ui/ConvergenceTableModel.h"
 #include "ui/FileController.h"
 #include "ui/MainActions.h"
 #include "ui/MessageBar.h"
+#include "ui/ParameterTableModel.h"
 #include "ui/PreTrialCheckView.h"
 #include "ui/RecordedDataDialog.h"
 #include "ui/RobotPanel.h"
@@ -22,14 +24,11 @@
 #include <QDockWidget>
 #include <QGroupBox>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
-#include <QSplitter>
 #include <QStatusBar>
-#include <QTableView>
 #include <QToolBar>
 #include <QVBoxLayout>
 
@@ -70,6 +69,7 @@ MainWindow::MainWindow(QSettings *settings, QWidget *parent)
     , m_apply(new ApplyPanel(m_actions->accept, m_actions->apply, m_actions->revert))
     , m_plot(new TrackingErrorPlot)
     , m_table(new ConvergenceTableModel(this))
+    , m_parameters(new ParameterTableModel(this))
     , m_chart(new ConvergenceChart)
     , m_statusRobot(new QLabel)
     , m_confirm([this](const ApplyPreview &preview) {
@@ -85,9 +85,10 @@ MainWindow::MainWindow(QSettings *settings, QWidget *parent)
     m_actions->setLanguage(m_settings.language());
     buildLayout();
     connectViews();
-    m_presenter = new SessionPresenter(
-        m_controller,
-        {m_robot, m_form, m_check, m_run, m_apply, m_plot, m_table, m_chart, m_message}, this);
+    m_presenter = new SessionPresenter(m_controller,
+                                       {m_robot, m_form, m_check, m_run, m_apply, m_plot, m_table,
+                                        m_parameters, m_chart, m_message},
+                                       this);
     connect(m_controller, &SessionController::stateChanged, this, &MainWindow::updateActions);
     statusBar()->addPermanentWidget(m_statusRobot);
     restoreGeometry(m_settings.windowGeometry());
@@ -100,18 +101,7 @@ MainWindow::~MainWindow() = default;
 void MainWindow::buildLayout()
 {
     m_actions->populate(menuBar(), addToolBar(tr("Main")));
-    auto *table = new QTableView;
-    table->setObjectName(QStringLiteral("convergenceTable"));
-    table->setModel(m_table);
-    table->setAlternatingRowColors(true);
-    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    table->verticalHeader()->hide();
-    connect(m_table, &QAbstractItemModel::modelReset, table, &QTableView::resizeColumnsToContents);
-    auto *convergence = new QSplitter(Qt::Horizontal);
-    convergence->addWidget(table);
-    convergence->addWidget(m_chart);
-    convergence->setStretchFactor(0, 3);
-    convergence->setStretchFactor(1, 1);
+    auto *convergence = new ConvergencePanel(m_table, m_parameters, m_chart);
 
     auto *controls = new QHBoxLayout;
     controls->addWidget(group(tr("Pre-trial check"), m_check), 3);
@@ -125,7 +115,7 @@ void MainWindow::buildLayout()
     setCentralWidget(central);
 
     auto *setup = new QWidget;
-    setup->setMinimumWidth(440);
+    setup->setMinimumWidth(480);
     auto *setupLayout = new QVBoxLayout(setup);
     setupLayout->addWidget(group(tr("Robot"), m_robot));
     auto *scroll = new QScrollArea;
@@ -140,7 +130,7 @@ void MainWindow::buildLayout()
     addDockWidget(Qt::LeftDockWidgetArea, setupDock);
     addDockWidget(Qt::BottomDockWidgetArea, convergenceDock);
     resize(1600, 1000);
-    resizeDocks({setupDock}, {400}, Qt::Horizontal);
+    resizeDocks({setupDock}, {480}, Qt::Horizontal);
     resizeDocks({convergenceDock}, {300}, Qt::Vertical);
 }
 
@@ -181,6 +171,7 @@ void MainWindow::connectViews()
     connect(a->exportTrialCsv, &QAction::triggered, m_files, &FileController::exportTrialCsv);
     connect(a->exportPlot, &QAction::triggered, m_files, &FileController::exportPlot);
     connect(a->exportReport, &QAction::triggered, m_files, &FileController::exportReport);
+    connect(a->exportUrdf, &QAction::triggered, m_files, &FileController::exportIdentifiedUrdf);
     connect(a->quit, &QAction::triggered, this, &QWidget::close);
     connect(a->about, &QAction::triggered, this, &MainWindow::showAbout);
     connect(a->aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
@@ -197,6 +188,8 @@ void MainWindow::connectViews()
                                ok ? MessageBar::Severity::Success : MessageBar::Severity::Error);
     });
     connect(m_form, &ScenarioForm::edited, this, [this](bool valid) {
+        if (m_form->model())
+            m_robot->setJointCount(m_form->model()->dof());
         if (!valid)
             return updateActions();
         m_settings.setScenario(*m_form->scenario());
@@ -229,6 +222,8 @@ void MainWindow::updateActions()
     a->exportTrialCsv->setEnabled(allowed.exportTrialData);
     a->exportPlot->setEnabled(allowed.exportTrialData);
     a->exportReport->setEnabled(allowed.exportReport);
+    a->exportUrdf->setEnabled(allowed.exportParameters && m_form->model() &&
+                              m_form->model()->id() != QLatin1String("paper-2link"));
     a->openScenario->setEnabled(allowed.editScenario);
     const SessionController *c = m_controller;
     const bool open = c->isOpen(), busy = c->isBusy();
@@ -248,7 +243,9 @@ void MainWindow::connectOrDisconnect()
     if (m_controller->isOpen())
         return m_controller->close();
     QString error;
-    const auto robot = m_robot->choice(&error);
+    const auto scenario = m_form->scenario();
+    const auto robot = m_robot->choice(&error, scenario ? scenario->controller.samplePeriod : 0.002,
+                                       m_form->model() ? m_form->model()->dof() : 0);
     if (!robot)
         return m_message->showMessage(tr("Cannot connect: %1").arg(error),
                                       MessageBar::Severity::Error);
@@ -256,8 +253,8 @@ void MainWindow::connectOrDisconnect()
     if (robot->kind == RobotRequest::Kind::Can)
         m_robot->setConnected(
             false, tr("connecting to %1/%2\u2026").arg(robot->can.plugin, robot->can.interface));
-    if (const auto s = m_form->scenario())
-        m_controller->open(*s);
+    if (scenario)
+        m_controller->open(*scenario);
     else
         m_message->showMessage(tr("Correct the scenario first: %1").arg(m_form->firstError()),
                                MessageBar::Severity::Error);

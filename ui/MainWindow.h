@@ -17,6 +17,7 @@ class ConvergenceTableModel;
 class FileController;
 class MainActions;
 class MessageBar;
+class ParameterTableModel;
 class PreTrialCheckView;
 class RecordedDataDialog;
 class RobotPanel;
@@ -52,6 +53,7 @@ public:
     ApplyPanel *applyPanel() const { return m_apply; }
     TrackingErrorPlot *plot() const { return m_plot; }
     ConvergenceTableModel *tableModel() const { return m_table; }
+    ParameterTableModel *parameterModel() const { return m_parameters; }
     MessageBar *messageBar() const { return m_message; }
     /// "Identify from recorded data", made when first opened (null before).
     RecordedDataDialog *recordedDataDialog() const { return m_recordedData; }
@@ -78,6 +80,7 @@ private:
     ApplyPanel *m_apply;
     TrackingErrorPlot *m_plot;
     ConvergenceTableModel *m_table;
+    ParameterTableModel *m_parameters;
     ConvergenceChart *m_chart;
     FileController *m_files;
     SessionPresenter *m_presenter;

@@ -25,18 +25,21 @@ PreTrialCheckView::PreTrialCheckView(QWidget *parent)
     , m_verdict(new QLabel(this))
     , m_duration(new QLabel(this))
     , m_stability(new QLabel(this))
-    , m_torques(new QTableWidget(0, 4, this))
+    , m_torques(new QTableWidget(0, 5, this))
 {
     m_verdict->setObjectName(QStringLiteral("checkVerdict"));
     m_verdict->setWordWrap(true);
     m_verdict->setMargin(6);
     m_stability->setWordWrap(true);
     m_torques->setHorizontalHeaderLabels(
-        {tr("Joint"), tr("Peak [N m]"), tr("Limit [N m]"), tr("Use")});
+        {tr("Joint"), tr("Peak [N m]"), tr("Limit [N m]"), tr("Use"), tr("Gravity")});
+    m_torques->horizontalHeaderItem(4)->setToolTip(
+        tr("The largest torque holding the arm against gravity takes on this path, as a share "
+           "of the limit"));
     m_torques->verticalHeader()->hide();
     m_torques->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_torques->setSelectionMode(QAbstractItemView::NoSelection);
-    m_torques->setMaximumHeight(90);
+    m_torques->setMaximumHeight(150);
 
     auto *form = new QFormLayout;
     form->addRow(tr("Planned motion:"), m_duration);
@@ -105,6 +108,10 @@ void PreTrialCheckView::setCheck(const PreTrialCheck &check, int nextTrial)
         if (use > 1.0)
             useCell->setForeground(QColor(0x8c, 0x1d, 0x18));
         m_torques->setItem(j, 3, useCell);
+        const double gravity = j < v.peakGravityTorque.size() ? v.peakGravityTorque[j] : 0.0;
+        m_torques->setItem(
+            j, 4,
+            cell(QStringLiteral("%1 %").arg(limit > 0 ? 100.0 * gravity / limit : 0.0, 0, 'f', 1)));
     }
 }
 

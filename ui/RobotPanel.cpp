@@ -70,7 +70,21 @@ RobotPanel::RobotKind RobotPanel::robotKind() const
     return RobotKind(m_kind->currentData().toInt());
 }
 
-std::optional<RobotRequest> RobotPanel::choice(QString *error) const
+void RobotPanel::setJointCount(int joints)
+{
+    QString why;
+    const QList<int> nodes = parseNodeList(m_nodes->text(), &why);
+    for (int i = 0; i < nodes.size(); ++i)
+        if (nodes.at(i) != i + 1)
+            return; // the technician's own list stays
+    QStringList ids;
+    for (int j = 1; j <= joints; ++j)
+        ids << QString::number(j);
+    m_nodes->setText(ids.join(QLatin1Char(',')));
+}
+
+std::optional<RobotRequest> RobotPanel::choice(QString *error, double samplePeriod,
+                                               int joints) const
 {
     RobotRequest c;
     if (robotKind() != RobotKind::Can)
@@ -78,11 +92,16 @@ std::optional<RobotRequest> RobotPanel::choice(QString *error) const
     c.kind = RobotRequest::Kind::Can;
     c.can.plugin = m_plugin->currentText();
     c.can.interface = m_interface->text().trimmed();
+    setSyncPeriod(c.can, samplePeriod);
     setSyncTimeoutMs(c.can, m_syncTimeout->value());
     QString why;
     c.can.nodes = parseNodeList(m_nodes->text(), &why);
     if (c.can.nodes.isEmpty())
         *error = tr("CAN nodes: %1").arg(why);
+    else if (joints > 0 && c.can.nodes.size() != joints)
+        *error = tr("CAN nodes: %1 node ids for a robot of %2 joints: one node per joint")
+                     .arg(c.can.nodes.size())
+                     .arg(joints);
     else if (c.can.interface.isEmpty())
         *error = tr("CAN interface: enter one, e.g. can0");
     else

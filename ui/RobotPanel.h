@@ -27,7 +27,12 @@ public:
 
     RobotKind robotKind() const;
     /// The chosen robot, or nullopt with error saying which CAN setting is wrong.
-    std::optional<RobotRequest> choice(QString *error) const;
+    /// samplePeriod: the scenario's controller period, the SYNC period the bus load is checked
+    /// at; joints: the robot's, one node each (0: not checked).
+    std::optional<RobotRequest> choice(QString *error, double samplePeriod = 0.002,
+                                       int joints = 0) const;
+    /// Offers nodes 1..joints while the node field still holds a default list 1..k.
+    void setJointCount(int joints);
     /// connected: the button offers Disconnect; state: one line such as "simulated paper-2link".
     void setConnected(bool connected, const QString &state);
     void setBusy(bool busy);

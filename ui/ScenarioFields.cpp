@@ -89,6 +89,32 @@ QList<ScenarioFieldGroup> scenarioFieldGroups()
     start.write = [](Scenario &s, const Eigen::VectorXd &v) {
         s.line.start = v.head<2>();
     };
+    start.lineOnly = true;
+    ScenarioField length =
+        number(QStringLiteral("path.length"),
+               QCoreApplication::translate("learnid::ScenarioFields", "Length"),
+               QStringLiteral("m"), [](Scenario &s) -> double & { return s.line.length; });
+    length.lineOnly = true;
+    ScenarioField direction =
+        number(QStringLiteral("path.directionDeg"),
+               QCoreApplication::translate("learnid::ScenarioFields", "Direction"),
+               QStringLiteral("deg"), [](Scenario &s) -> double & { return s.line.directionDeg; });
+    direction.lineOnly = true;
+    ScenarioField limits = vector(
+        QStringLiteral("robot.torqueLimits"),
+        QCoreApplication::translate("learnid::ScenarioFields", "Limit per joint"),
+        QStringLiteral("N m"), [](Scenario &s) -> Eigen::VectorXd & { return s.torqueLimits; });
+    limits.emptyTakesRobot = true;
+    ScenarioField initial =
+        vector(QStringLiteral("robot.initialParameters"),
+               QCoreApplication::translate("learnid::ScenarioFields", "Initial parameters"),
+               QString(), [](Scenario &s) -> Eigen::VectorXd & { return s.initialParameters; });
+    initial.emptyTakesRobot = true;
+    ScenarioField truth =
+        vector(QStringLiteral("simulation.trueParameters"),
+               label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "True parameters")), QString(),
+               [](Scenario &s) -> Eigen::VectorXd & { return s.simulation.trueParameters; });
+    truth.emptyTakesRobot = true;
 
     const ScenarioField trials =
         integer<int>(QStringLiteral("estimator.iterations"),
@@ -96,15 +122,8 @@ QList<ScenarioFieldGroup> scenarioFieldGroups()
                      [](Scenario &s) -> int & { return s.iterations; });
 
     return {
-        {QCoreApplication::translate("learnid::ScenarioFields", "Path (straight line)"),
-         {start,
-          number(QStringLiteral("path.length"),
-                 QCoreApplication::translate("learnid::ScenarioFields", "Length"),
-                 QStringLiteral("m"), [](Scenario &s) -> double & { return s.line.length; }),
-          number(QStringLiteral("path.directionDeg"),
-                 QCoreApplication::translate("learnid::ScenarioFields", "Direction"),
-                 QStringLiteral("deg"),
-                 [](Scenario &s) -> double & { return s.line.directionDeg; }),
+        {label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Path")),
+         {start, length, direction,
           number(QStringLiteral("path.restBefore"),
                  label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Rest before the motion")),
                  QStringLiteral("s"), [](Scenario &s) -> double & { return s.restBefore; }),
@@ -112,10 +131,7 @@ QList<ScenarioFieldGroup> scenarioFieldGroups()
                  label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Rest after the motion")),
                  QStringLiteral("s"), [](Scenario &s) -> double & { return s.restAfter; })}},
         {QCoreApplication::translate("learnid::ScenarioFields", "Torque limits"),
-         {vector(QStringLiteral("robot.torqueLimits"),
-                 QCoreApplication::translate("learnid::ScenarioFields", "Limit per joint"),
-                 QStringLiteral("N m"),
-                 [](Scenario &s) -> Eigen::VectorXd & { return s.torqueLimits; }),
+         {limits,
           number(QStringLiteral("path.planningFraction"),
                  QCoreApplication::translate("learnid::ScenarioFields", "Planning fraction"),
                  QString(), [](Scenario &s) -> double & { return s.planningFraction; })}},
@@ -143,9 +159,7 @@ QList<ScenarioFieldGroup> scenarioFieldGroups()
           integer<int>(QStringLiteral("estimator.repetitions"),
                        label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Repetitions per trial")),
                        [](Scenario &s) -> int & { return s.repetitions; }),
-          vector(QStringLiteral("robot.initialParameters"),
-                 QCoreApplication::translate("learnid::ScenarioFields", "Initial parameters"),
-                 QString(), [](Scenario &s) -> Eigen::VectorXd & { return s.initialParameters; })}},
+          initial}},
         {label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Safety")),
          {number(QStringLiteral("safety.maxTrackingErrorDeg"),
                  label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Abort at tracking error")),
@@ -156,9 +170,11 @@ QList<ScenarioFieldGroup> scenarioFieldGroups()
                  QStringLiteral("1/s"),
                  [](Scenario &s) -> double & { return s.stabilityMargin; })}},
         {label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "Simulated robot")),
-         {vector(QStringLiteral("simulation.trueParameters"),
-                 label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "True parameters")), QString(),
-                 [](Scenario &s) -> Eigen::VectorXd & { return s.simulation.trueParameters; }),
+         {truth,
+          number(
+              QStringLiteral("simulation.inertiaPerturbation"),
+              label(QT_TRANSLATE_NOOP("learnid::ScenarioFields", "CAD perturbation (URDF robots)")),
+              QString(), [](Scenario &s) -> double & { return s.simulation.inertiaPerturbation; }),
           integer<qint64>(QStringLiteral("simulation.encoderCounts"),
                           label(QT_TRANSLATE_NOOP("learnid::ScenarioFields",
                                                   "Encoder counts per revolution (0: ideal)")),

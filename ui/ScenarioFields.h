@@ -25,6 +25,8 @@ struct ScenarioField
     int expectedCount = 1;  ///< values a Number/Integer field takes; vectors: 0 = any
     double minimum = -1e15; ///< Integer: the range of the setting's type (written as is)
     double maximum = 1e15;
+    bool lineOnly = false;        ///< shown for the paper's Cartesian line only
+    bool emptyTakesRobot = false; ///< a URDF robot's vector left empty takes the robot's values
 };
 
 /// The settings of the form, grouped as the form shows them.

@@ -2,13 +2,19 @@
 
 #include "identify/LearningLaw.h"
 #include "io/ScenarioFile.h"
+#include "model/ChainModel.h"
 #include "model/Error.h"
+#include "model/ModelFactory.h"
+#include "session/RobotScenario.h"
+#include "ui/RobotChooser.h"
+#include "ui/WaypointEditor.h"
 
 #include <QComboBox>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QRegularExpression>
 #include <QVBoxLayout>
 #include <cmath>
 
@@ -31,8 +37,15 @@ ScenarioForm::ScenarioForm(QWidget *parent)
     : QWidget(parent)
     , m_law(new QComboBox(this))
     , m_otherError(reasonLabel(this))
+    , m_robot(new RobotChooser(this))
+    , m_waypoints(new WaypointEditor(this))
+    , m_pathFile(new QLabel(this))
 {
     auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_robot);
+    connect(m_robot, &RobotChooser::robotChosen, this, &ScenarioForm::chooseRobot);
+    connect(m_waypoints, &WaypointEditor::edited, this, &ScenarioForm::revalidate);
+    m_pathFile->setWordWrap(true);
     for (const ScenarioFieldGroup &group : scenarioFieldGroups()) {
         auto *box = new QGroupBox(group.title, this);
         auto *grid = new QGridLayout(box);
@@ -46,18 +59,25 @@ ScenarioForm::ScenarioForm(QWidget *parent)
             row.edit->setObjectName(field.key);
             row.edit->setMinimumWidth(90);
             row.edit->setToolTip(tr("Scenario key %1").arg(field.key));
-            if (field.kind == ScenarioField::Kind::Vector)
+            if (field.emptyTakesRobot)
+                row.edit->setPlaceholderText(tr("URDF robots: empty takes the robot's"));
+            else if (field.kind == ScenarioField::Kind::Vector)
                 row.edit->setPlaceholderText(tr("values separated by commas"));
             row.label->setBuddy(row.edit);
             row.reason = reasonLabel(box);
             row.reason->setObjectName(field.key + QStringLiteral(".reason"));
             grid->addWidget(row.label, r, 0);
             grid->addWidget(row.edit, r, 1);
-            grid->addWidget(new QLabel(field.unit, box), r, 2);
+            row.unit = new QLabel(field.unit, box);
+            grid->addWidget(row.unit, r, 2);
             grid->addWidget(row.reason, r + 1, 1, 1, 2);
             r += 2;
             connect(row.edit, &QLineEdit::textEdited, this, &ScenarioForm::revalidate);
             m_rows.append(row);
+        }
+        if (group.fields.constFirst().key == QLatin1String("path.start")) {
+            grid->addWidget(m_waypoints, r++, 0, 1, 3);
+            grid->addWidget(m_pathFile, r++, 0, 1, 3);
         }
         if (group.fields.constLast().key == QLatin1String("robot.initialParameters")) {
             m_law->setObjectName(QStringLiteral("estimator.law"));
@@ -79,6 +99,31 @@ ScenarioForm::ScenarioForm(QWidget *parent)
 void ScenarioForm::setScenario(const Scenario &scenario)
 {
     m_base = scenario;
+    m_model.reset();
+    m_modelError.clear();
+    try {
+        m_model = makeRobotModel(scenario.model, scenario.urdf);
+        if (!m_model)
+            m_modelError = tr("unknown model \"%1\"").arg(scenario.model);
+    } catch (const Error &e) {
+        m_modelError = e.message();
+    }
+    m_robot->showRobot(scenario.model, scenario.urdf, m_model, m_modelError);
+    QStringList joints;
+    QList<bool> prismatic;
+    const auto *chain = dynamic_cast<const ChainModel *>(m_model.get());
+    const int n = m_model ? m_model->dof() : 0;
+    for (int j = 0; j < n; ++j) {
+        joints << (chain ? chain->chain().joints[size_t(j)].name : tr("joint %1").arg(j + 1));
+        prismatic << (chain && chain->chain().joints[size_t(j)].type == JointType::Prismatic);
+    }
+    m_waypoints->setWaypoints(scenario.path.waypoints, joints, prismatic);
+    m_pathFile->setText(scenario.path.kind == PathKind::File
+                            ? tr("Path: %1 (%2 samples, from the scenario file)")
+                                  .arg(scenario.path.file)
+                                  .arg(scenario.path.fileTimes.size())
+                            : QString());
+    updatePathRows();
     for (Row &row : m_rows)
         row.edit->setText(formatNumberList(row.field.read(scenario)));
     const int law = m_law->findData(scenario.law);
@@ -96,9 +141,62 @@ QString ScenarioForm::reasonFor(const QString &key) const
 
 void ScenarioForm::setParameterNames(const QStringList &names)
 {
+    const QString label =
+        names.size() > 4
+            ? tr("Initial parameters (%n base parameter(s))", nullptr, int(names.size()))
+            : tr("Initial parameters (%1)").arg(names.join(QStringLiteral(", ")));
     for (Row &row : m_rows)
         if (row.field.key == QLatin1String("robot.initialParameters"))
-            row.label->setText(tr("Initial parameters (%1)").arg(names.join(QStringLiteral(", "))));
+            row.label->setText(label);
+}
+
+void ScenarioForm::chooseRobot(const QString &modelId, const UrdfRobotSettings &urdf)
+{
+    try {
+        setScenario(scenarioForRobot(modelId, urdf));
+    } catch (const Error &e) {
+        m_model.reset();
+        m_robot->showRobot(modelId, urdf, nullptr, e.message());
+        m_otherError->setText(tr("robot.model: %1").arg(e.message()));
+        m_otherError->show();
+        m_firstError = m_otherError->text();
+        m_valid = false;
+        emit edited(false);
+    }
+}
+
+// The line's fields for the paper's line, the waypoint table for waypoints, the file's name.
+void ScenarioForm::updatePathRows()
+{
+    const PathKind kind = m_base.path.kind;
+    for (Row &row : m_rows) {
+        const bool shown = !row.field.lineOnly || kind == PathKind::Line;
+        row.label->setVisible(shown);
+        row.edit->setVisible(shown);
+        row.unit->setVisible(shown);
+        if (!shown)
+            row.reason->hide();
+    }
+    m_waypoints->setVisible(kind == PathKind::Waypoints);
+    m_pathFile->setVisible(kind == PathKind::File);
+}
+
+// Reads the waypoint table into s and checks it against the robot's joint limits.
+bool ScenarioForm::checkWaypoints(Scenario &s)
+{
+    if (s.path.kind != PathKind::Waypoints)
+        return true;
+    QString error;
+    const auto waypoints = m_waypoints->waypoints(&error);
+    if (!waypoints) {
+        m_waypoints->showReason(error);
+        if (m_firstError.isEmpty())
+            m_firstError = QStringLiteral("path.waypoints: ") + error;
+        return false;
+    }
+    s.path.waypoints = *waypoints;
+    m_waypoints->showReason(QString());
+    return true;
 }
 
 void ScenarioForm::setEditable(bool editable)
@@ -106,6 +204,8 @@ void ScenarioForm::setEditable(bool editable)
     for (Row &row : m_rows)
         row.edit->setReadOnly(!editable);
     m_law->setEnabled(editable);
+    m_robot->setEditable(editable);
+    m_waypoints->setEditable(editable);
 }
 
 void ScenarioForm::showReason(Row &row, const QString &reason)
@@ -126,6 +226,12 @@ void ScenarioForm::revalidate()
     s.law = m_law->currentData().toString();
     bool parsed = true;
     for (Row &row : m_rows) {
+        if (row.field.emptyTakesRobot && row.edit->text().trimmed().isEmpty() &&
+            isUrdfModel(s.model)) {
+            showReason(row, QString());
+            row.field.write(s, Eigen::VectorXd());
+            continue;
+        }
         QString error;
         const auto values = parseNumberList(row.edit->text(), &error);
         const int expected = row.field.expectedCount;
@@ -148,17 +254,42 @@ void ScenarioForm::revalidate()
         else
             row.field.write(s, *values);
     }
+    if (!checkWaypoints(s))
+        parsed = false;
+    if (parsed && !m_model) {
+        m_otherError->setText(tr("robot.model: %1").arg(m_modelError));
+        m_otherError->show();
+        m_firstError = m_otherError->text();
+        parsed = false;
+    }
     if (parsed) {
         try {
             validateScenario(s);
+            const QString limits = waypointLimitError(*m_model, s.path.waypoints);
+            if (s.path.kind == PathKind::Waypoints && !limits.isEmpty()) {
+                // "path.waypoints[i][j]: ..." marks waypoint i, joint j.
+                static const QRegularExpression cell(
+                    QStringLiteral("^path\\.waypoints\\[(\\d+)\\]\\[(\\d+)\\]"));
+                const auto match = cell.match(limits);
+                m_waypoints->showReason(limits, match.hasMatch() ? match.captured(1).toInt() : -1,
+                                        match.hasMatch() ? match.captured(2).toInt() : -1);
+                m_firstError = limits;
+                parsed = false;
+            }
         } catch (const Error &e) {
             // validateScenario() says "<key path>: <problem>"; show the problem at its field.
             const QString message = e.message();
             const int colon = message.indexOf(QStringLiteral(": "));
             const QString key = colon > 0 ? message.left(colon) : QString();
             const QString problem = colon > 0 ? message.mid(colon + 2) : message;
-            bool shown = false;
+            bool shown = keyBelongsTo(key, QStringLiteral("path.waypoints"));
+            if (shown) {
+                m_waypoints->showReason(message);
+                m_firstError = message;
+            }
             for (Row &row : m_rows) {
+                if (shown)
+                    break;
                 if (keyBelongsTo(key, row.field.key)) {
                     showReason(row, key == row.field.key ? problem
                                                          : key + QStringLiteral(": ") + problem);

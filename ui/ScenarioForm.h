@@ -1,9 +1,11 @@
 #pragma once
 
+#include "model/RobotModel.h"
 #include "types/Scenario.h"
 #include "ui/ScenarioFields.h"
 
 #include <QWidget>
+#include <memory>
 #include <optional>
 
 class QComboBox;
@@ -12,10 +14,15 @@ class QLineEdit;
 
 namespace learnid {
 
-/// The scenario as a form: path, torque limits and planning fraction, gains with lambda, rho,
-/// the estimator law, the number of trials and the initial parameters. Every edit is parsed and
-/// validated at once (validateScenario()); the reason a value is refused is shown next to its
-/// field. Settings the form does not show are kept from the last setScenario().
+class RobotChooser;
+class WaypointEditor;
+
+/// The scenario as a form: the robot (RobotChooser; choosing one starts from its default
+/// scenario, scenarioForRobot()), the path (the paper's line, or joint waypoints checked
+/// against the robot's joint limits as they are typed), torque limits and planning fraction, gains
+/// with lambda, rho, the estimator law, the number of trials and the initial parameters. Every edit
+/// is parsed and validated at once (validateScenario()); the reason a value is refused is shown
+/// next to its field. Settings the form does not show are kept from the last setScenario().
 class ScenarioForm : public QWidget
 {
     Q_OBJECT
@@ -37,6 +44,10 @@ public:
     /// Names parameters in the label of the initial parameters, e.g. {"a", "b", "c"}.
     void setParameterNames(const QStringList &names);
     void setEditable(bool editable);
+    RobotChooser *robotChooser() const { return m_robot; }
+    WaypointEditor *waypointEditor() const { return m_waypoints; }
+    /// The robot model of the scenario shown (null when it cannot be made).
+    std::shared_ptr<const RobotModel> model() const { return m_model; }
 
 signals:
     /// After every edit; scenario() holds the result when valid.
@@ -49,13 +60,22 @@ private:
         QLineEdit *edit = nullptr;
         QLabel *label = nullptr;
         QLabel *reason = nullptr;
+        QLabel *unit = nullptr;
     };
 
     void revalidate();
+    void chooseRobot(const QString &modelId, const UrdfRobotSettings &urdf);
+    bool checkWaypoints(Scenario &s);
+    void updatePathRows();
     void showReason(Row &row, const QString &reason);
 
     QList<Row> m_rows;
     QComboBox *m_law;
+    RobotChooser *m_robot;
+    WaypointEditor *m_waypoints;
+    QLabel *m_pathFile;
+    std::shared_ptr<const RobotModel> m_model;
+    QString m_modelError;
     QLabel *m_otherError;
     Scenario m_base;
     Scenario m_current;

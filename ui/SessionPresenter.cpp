@@ -5,6 +5,7 @@
 #include "ui/ConvergenceChart.h"
 #include "ui/ConvergenceTableModel.h"
 #include "ui/MessageBar.h"
+#include "ui/ParameterTableModel.h"
 #include "ui/PreTrialCheckView.h"
 #include "ui/RobotPanel.h"
 #include "ui/RunPanel.h"
@@ -26,7 +27,9 @@ SessionPresenter::SessionPresenter(SessionController *controller, Views views, Q
             names << p.name;
         m_views.form->setParameterNames(names);
         m_views.table->setParameters(info.parameters, info.truth);
+        m_views.parameters->setParameters(info.parameters, info.truth);
         m_views.plot->clear();
+        m_views.plot->setJointNames(info.jointNames);
         m_views.robot->setConnected(true, tr("connected: %1").arg(info.robotDescription));
     });
     connect(c, &SessionController::openFailed, this, [this](const QString &message) {
@@ -89,19 +92,26 @@ void SessionPresenter::refreshTables()
 {
     const SessionController *c = m_controller;
     m_views.table->setHistory(c->history(), c->estimates());
+    m_views.table->setFigures(c->estimateFigures());
     m_views.table->setAccepted(c->acceptedIndex());
     m_views.table->setApplied(c->appliedEstimateIndex());
+    m_views.parameters->setEstimates(c->estimates(), c->history(), c->estimateFigures());
+    m_views.parameters->setAccepted(c->acceptedIndex());
     if (c->info())
-        m_views.chart->setData(c->info()->parameters, c->estimates(), c->info()->truth);
+        m_views.chart->setData(c->info()->parameters, c->estimates(), c->info()->truth,
+                               c->estimateFigures());
     m_views.apply->setEstimateCount(int(c->estimates().size()));
     const Eigen::VectorXd &stored = c->storedParameters();
     QStringList values;
     for (Eigen::Index i = 0; i < stored.size(); ++i)
         values << QString::number(stored[i], 'g', 6);
-    m_views.apply->setStored(stored.size() == 0 ? tr("nothing applied yet")
-                                                : tr("%1 (estimate %2)")
-                                                      .arg(values.join(QStringLiteral(", ")))
-                                                      .arg(c->appliedEstimateIndex()));
+    // An n-joint arm's dozens of values belong in the Parameters table, not here.
+    const QString held = stored.size() > ConvergenceTableModel::maxParameterColumns
+                             ? tr("%n parameter(s)", nullptr, int(stored.size()))
+                             : values.join(QStringLiteral(", "));
+    m_views.apply->setStored(stored.size() == 0
+                                 ? tr("nothing applied yet")
+                                 : tr("%1 (estimate %2)").arg(held).arg(c->appliedEstimateIndex()));
 }
 
 } // namespace learnid

@@ -7,6 +7,7 @@ namespace learnid {
 class ApplyPanel;
 class ConvergenceChart;
 class ConvergenceTableModel;
+class ParameterTableModel;
 class MessageBar;
 class PreTrialCheckView;
 class RobotPanel;
@@ -32,6 +33,7 @@ public:
         ApplyPanel *apply;
         TrackingErrorPlot *plot;
         ConvergenceTableModel *table;
+        ParameterTableModel *parameters;
         ConvergenceChart *chart;
         MessageBar *message;
     };

@@ -1,39 +1,31 @@
 #include "ui/TrackingErrorPlot.h"
+#include "ui/TrackingErrorStyle.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QSet>
 #include <QVBoxLayout>
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
+#include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
+#include <algorithm>
 
 namespace learnid {
 
-namespace {
-
-// The overlay draws at most this many points in all (10 trials of 2 joints at 800 points): with
-// more trials each curve is thinned further by min/max buckets, which keep the peaks, so adding
-// the 100th trial costs about what adding the 10th did.
-constexpr int kOverlayPoints = 16000;
-
-const QColor kJointColors[] = {QColor(0x1f, 0x5f, 0xbf), QColor(0xc0, 0x39, 0x2b),
-                               QColor(0x2e, 0x8b, 0x57), QColor(0x8e, 0x44, 0xad)};
-
-QColor trialColor(int i, int count)
-{
-    // From light to dark blue-violet: later trials are darker, as their errors are smaller.
-    const double f = count > 1 ? double(i) / (count - 1) : 1.0;
-    return QColor::fromHsvF(0.62 - 0.25 * f, 0.55 + 0.4 * f, 0.9 - 0.45 * f);
-}
-
-} // namespace
+// Whatever is shown draws at most this many points in all (10 trials of 2 joints at 800 points):
+// with more curves (trials, joints) each is thinned further by min/max buckets, which keep the
+// peaks, so adding the 100th trial costs what adding the 10th did. A curve keeps at least 4
+// points (2 buckets): the budget holds up to 4000 curves.
+constexpr int kPointBudget = 16000;
 
 TrackingErrorPlot::TrackingErrorPlot(QWidget *parent)
     : QWidget(parent)
     , m_selection(new QComboBox(this))
+    , m_joint(new QComboBox(this))
     , m_autoScale(new QCheckBox(tr("Auto-scale"), this))
     , m_view(new QChartView(this))
     , m_chart(new QChart)
@@ -41,6 +33,8 @@ TrackingErrorPlot::TrackingErrorPlot(QWidget *parent)
     , m_error(new QValueAxis(m_chart))
 {
     m_selection->setObjectName(QStringLiteral("plotTrial"));
+    m_joint->setObjectName(QStringLiteral("plotJoint"));
+    m_joint->setToolTip(tr("The joint whose tracking error is shown"));
     m_autoScale->setObjectName(QStringLiteral("plotAutoScale"));
     m_autoScale->setToolTip(tr("Off: symmetric axis on a 0.02 deg grid, as in the paper"));
     m_chart->legend()->setAlignment(Qt::AlignBottom);
@@ -61,6 +55,7 @@ TrackingErrorPlot::TrackingErrorPlot(QWidget *parent)
     auto *controls = new QHBoxLayout;
     controls->addWidget(new QLabel(tr("Show:"), this));
     controls->addWidget(m_selection, 1);
+    controls->addWidget(m_joint, 1);
     controls->addWidget(m_autoScale);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -71,6 +66,7 @@ TrackingErrorPlot::TrackingErrorPlot(QWidget *parent)
         m_followNewest = m_selection->currentIndex() == m_selection->count() - 1;
         redraw();
     });
+    connect(m_joint, &QComboBox::activated, this, [this] { redraw(); });
     connect(m_autoScale, &QCheckBox::toggled, this, [this](bool on) {
         redraw();
         emit autoScaleChanged(on);
@@ -84,7 +80,43 @@ void TrackingErrorPlot::clear()
     m_followNewest = true;
     m_selection->clear();
     m_selection->addItem(tr("All trials (overlay)"), -1);
+    setJointCount(int(m_jointNames.size()));
     redraw();
+}
+
+void TrackingErrorPlot::setJointNames(const QStringList &names)
+{
+    m_jointNames = names;
+    m_jointCount = -1; // relabel even when the count stays
+    setJointCount(int(names.size()));
+    redraw();
+}
+
+void TrackingErrorPlot::setJointCount(int count)
+{
+    if (count == m_jointCount)
+        return;
+    const int selected = m_joint->count() > 0 ? selectedJoint() : -1;
+    m_jointCount = count;
+    m_joint->clear();
+    m_joint->addItem(tr("All joints"), -1);
+    for (int j = 0; j < count; ++j)
+        m_joint->addItem(jointLabel(j, m_jointNames), j);
+    m_joint->setCurrentIndex(std::max(0, m_joint->findData(selected)));
+}
+
+void TrackingErrorPlot::setSelectedJoint(int joint)
+{
+    const int i = m_joint->findData(joint);
+    if (i < 0)
+        return;
+    m_joint->setCurrentIndex(i);
+    redraw();
+}
+
+int TrackingErrorPlot::selectedJoint() const
+{
+    return m_joint->currentData().toInt();
 }
 
 QString TrackingErrorPlot::trialLabel(int trial) const
@@ -101,6 +133,10 @@ void TrackingErrorPlot::setTrialCurves(int trial, const QList<TrackingErrorCurve
     while (m_trials.size() <= trial)
         m_trials.append(QList<TrackingErrorCurve>());
     m_trials[trial] = curves;
+    int joints = std::max(m_jointCount, int(m_jointNames.size()));
+    for (const TrackingErrorCurve &curve : curves)
+        joints = std::max(joints, curve.joint + 1);
+    setJointCount(joints);
     m_selection->clear();
     m_selection->addItem(tr("All trials (overlay)"), -1);
     for (int i = 0; i < m_trials.size(); ++i)
@@ -180,36 +216,46 @@ QLineSeries *TrackingErrorPlot::seriesAt(int i)
 void TrackingErrorPlot::redraw()
 {
     const int selected = selectedTrial();
-    QList<int> shown;
-    if (selected < 0) {
-        for (int i = 0; i < m_trials.size(); ++i)
-            shown.append(i);
-        m_chart->setTitle(
-            tr("Tracking error, all trials (solid: joint 1, dashed: joint 2; darker: later)"));
-    } else {
-        shown.append(selected);
-        m_chart->setTitle(tr("Tracking error, %1").arg(trialLabel(selected)));
-    }
-    double maxAbs = 0.0, tMax = 0.0, yMin = 0.0, yMax = 0.0;
+    const int joint = selectedJoint();
+    const bool overlay = selected < 0;
+    QList<int> shown; // trial indices, earliest first
+    for (int i = overlay ? 0 : selected; i < (overlay ? int(m_trials.size()) : selected + 1); ++i)
+        shown.append(i);
+    const QString what = joint < 0
+                             ? tr("Tracking error")
+                             : tr("Tracking error of %1").arg(jointLabel(joint, m_jointNames));
+    m_chart->setTitle(overlay ? tr("%1, all trials (darker: later)").arg(what)
+                              : tr("%1, %2").arg(what, trialLabel(selected)));
+    auto drawn = [joint](const TrackingErrorCurve &c) {
+        return joint < 0 || c.joint == joint;
+    };
     int curves = 0;
     for (const int trial : shown)
-        curves += int(m_trials.at(trial).size());
-    const int perCurve = std::max(64, kOverlayPoints / std::max(1, curves));
+        curves += int(std::count_if(m_trials.at(trial).begin(), m_trials.at(trial).end(), drawn));
+    const int perCurve = std::max(4, kPointBudget / std::max(1, curves));
+    double maxAbs = 0.0, tMax = 0.0, yMin = 0.0, yMax = 0.0;
     int used = 0;
+    QSet<QAbstractSeries *> inLegend;
     for (int order = 0; order < shown.size(); ++order) {
         for (const TrackingErrorCurve &curve : m_trials.at(shown.at(order))) {
+            if (!drawn(curve))
+                continue;
             QLineSeries *series = seriesAt(used++);
             series->replace(curve.points.size() > perCurve ? decimateMinMax(curve.points, perCurve)
                                                            : curve.points);
-            QPen pen(selected < 0 ? trialColor(order, int(shown.size()))
-                                  : kJointColors[curve.joint % 4]);
-            pen.setWidthF(1.4);
-            if (selected < 0 && curve.joint > 0)
-                pen.setStyle(Qt::DashLine);
-            series->setPen(pen);
-            series->setName(selected < 0
-                                ? tr("trial %1, joint %2").arg(curve.trial).arg(curve.joint + 1)
-                                : tr("joint %1").arg(curve.joint + 1));
+            const QColor base = jointColor(curve.joint);
+            const QColor color = overlay ? trialShade(base, order, int(shown.size())) : base;
+            series->setPen(QPen(QBrush(color), 1.4, jointPenStyle(curve.joint)));
+            const bool last = order == shown.size() - 1;
+            if (!overlay || joint < 0) {
+                series->setName(jointLabel(curve.joint, m_jointNames));
+                if (!overlay || last)
+                    inLegend.insert(series);
+            } else {
+                series->setName(trialLabel(shown.at(order)));
+                if (order == 0 || last)
+                    inLegend.insert(series);
+            }
             maxAbs = std::max(maxAbs, curve.maxAbsDeg);
             for (const QPointF &p : curve.points) {
                 yMin = std::min(yMin, p.y());
@@ -224,28 +270,10 @@ void TrackingErrorPlot::redraw()
         m_chart->removeSeries(series);
         delete series;
     }
-    // Many overlaid trials make an unreadable legend: name joints by line style instead.
-    m_chart->legend()->setVisible(selected >= 0 || shown.size() <= 4);
-    const double span = tMax > 0 ? tMax : 1.0;
-    m_time->setRange(0.0, span);
-    m_time->setTickType(QValueAxis::TicksDynamic);
-    m_time->setTickAnchor(0.0);
-    m_time->setTickInterval(span > 8 ? 2.0 : span > 3 ? 0.5 : 0.25);
-    m_time->setLabelFormat(span > 3 ? QStringLiteral("%.1f") : QStringLiteral("%.2f"));
-    if (m_autoScale->isChecked()) {
-        m_error->setTickType(QValueAxis::TicksFixed);
-        const double pad = std::max(1e-6, 0.05 * (yMax - yMin));
-        m_error->setRange(yMin - pad, yMax + pad);
-        m_error->applyNiceNumbers();
-        m_error->setLabelFormat(QStringLiteral("%.3g"));
-    } else {
-        const ErrorAxisRange r = errorAxisRange(maxAbs);
-        m_error->setRange(-r.limit, r.limit);
-        m_error->setTickType(QValueAxis::TicksDynamic);
-        m_error->setTickAnchor(0.0);
-        m_error->setTickInterval(r.interval);
-        m_error->setLabelFormat(QStringLiteral("%.2f"));
-    }
+    for (QLegendMarker *marker : m_chart->legend()->markers())
+        marker->setVisible(inLegend.contains(marker->series()));
+    setTimeAxis(m_time, tMax);
+    setErrorAxis(m_error, m_autoScale->isChecked(), maxAbs, yMin, yMax);
 }
 
 } // namespace learnid

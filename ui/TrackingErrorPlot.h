@@ -2,6 +2,7 @@
 
 #include "service/TrackingErrorData.h"
 
+#include <QStringList>
 #include <QWidget>
 
 class QCheckBox;
@@ -13,9 +14,13 @@ class QValueAxis;
 
 namespace learnid {
 
-/// Tracking error in degrees over time like the paper's Fig. 4-6: one curve per joint, one trial
-/// (selectable) or all trials overlaid. The error axis has a 0.02 deg grid by default;
-/// auto-scale fits the data instead. The view only draws what it is given.
+/// Tracking error in degrees over time like the paper's Fig. 4-6, for any number of joints: one
+/// trial (selectable) or all trials overlaid, all joints or one (selectable). Each joint has its
+/// own colour (TrackingErrorStyle.h); in the overlay, later trials are darker shades of it. The
+/// legend names the joints (in the overlay by the latest trial's shade) or, for one joint in the
+/// overlay, its first and latest trial. The error axis has a 0.02 deg grid by default; auto-scale
+/// fits the data instead. Whatever is shown is thinned to a fixed budget of drawn points. The view
+/// only draws what it is given.
 class TrackingErrorPlot : public QWidget
 {
     Q_OBJECT
@@ -30,6 +35,14 @@ public:
     /// -1 shows all trials overlaid.
     void setSelectedTrial(int trial);
     int selectedTrial() const;
+    /// Names for the joint selector and legend ("Joint 3 (panda_joint3)"); kept by clear().
+    /// Joints beyond the names, or with an empty name, are "Joint k".
+    void setJointNames(const QStringList &names);
+    /// 0-based; -1 shows all joints.
+    void setSelectedJoint(int joint);
+    int selectedJoint() const;
+    /// Joints the selector offers: the names given, or more when curves have more joints.
+    int jointCount() const { return m_jointCount; }
     void setAutoScale(bool on);
     bool autoScale() const;
     int trialCount() const { return int(m_trials.size()); }
@@ -50,8 +63,11 @@ private:
     void redraw();
     QLineSeries *seriesAt(int i);
     QString trialLabel(int trial) const;
+    /// Rebuilds the joint selector for `count` joints, keeping the selected joint if it remains.
+    void setJointCount(int count);
 
     QComboBox *m_selection;
+    QComboBox *m_joint;
     QCheckBox *m_autoScale;
     QChartView *m_view;
     QChart *m_chart;
@@ -59,6 +75,8 @@ private:
     QValueAxis *m_error;
     QList<QList<TrackingErrorCurve>> m_trials; ///< by trial index
     QList<QLineSeries *> m_series;             ///< in the chart, in drawing order
+    QStringList m_jointNames;
+    int m_jointCount = 0;
     bool m_followNewest = true;
 };
 

@@ -7,12 +7,14 @@
 #include "ui/MainWindow.h"
 #include "ui/MessageBar.h"
 #include "ui/RecordedDataDialog.h"
+#include "ui/RobotChooser.h"
 #include "ui/RobotPanel.h"
 #include "ui/ScenarioForm.h"
 #include "ui/TrackingErrorPlot.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
 #include <QFileInfo>
 #include <QPushButton>
@@ -24,7 +26,8 @@ namespace learnid {
 namespace {
 
 const QStringList kViewNames = {QStringLiteral("main"), QStringLiteral("apply-dialog"),
-                                QStringLiteral("refused-check"), QStringLiteral("recorded-data")};
+                                QStringLiteral("refused-check"), QStringLiteral("recorded-data"),
+                                QStringLiteral("seven-axis")};
 
 } // namespace
 
@@ -53,6 +56,13 @@ void ScreenshotRun::start()
     SessionController *c = m_window->controller();
     m_window->setApplyConfirmation(
         [this](const ApplyPreview &preview) { return confirmByScreenshot(preview); });
+    if (m_view == View::SevenAxis) {
+        // The built-in 7-axis arm with its default scenario, as chosen in the robot box.
+        QComboBox *box = m_window->form()->robotChooser()->modelBox();
+        const int i = box->findData(QStringLiteral("panda"));
+        box->setCurrentIndex(i);
+        emit box->activated(i);
+    }
     if (m_view == View::RefusedCheck) {
         // The paper's derivative filter: stable for the initial estimate, not for the truth.
         if (auto s = m_window->form()->scenario()) {

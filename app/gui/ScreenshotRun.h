@@ -24,7 +24,7 @@ class ScreenshotRun : public QObject
     Q_OBJECT
 
 public:
-    enum class View { Main, ApplyDialog, RefusedCheck, RecordedData };
+    enum class View { Main, ApplyDialog, RefusedCheck, RecordedData, SevenAxis };
 
     ScreenshotRun(MainWindow *window, QString path, View view = View::Main);
     void start();

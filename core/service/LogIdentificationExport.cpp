@@ -49,23 +49,8 @@ ParameterFileContent logParameterFile(const LogIdentificationResult &result,
 
 QByteArray logIdentifiedUrdf(const LogIdentificationResult &result, const QString &comment)
 {
-    const ChainModel &model = result.model();
-    const LogFit &fit = result.fit;
-    const int n = model.dof();
-    const JointTerms &t = model.jointTerms();
-    std::vector<InertialParameters> bodies(size_t(n), InertialParameters::Zero());
-    std::vector<IdentifiedJoint> friction(static_cast<size_t>(n));
-    for (int j = 0; j < n; ++j) {
-        bodies[size_t(j)] = fit.standard.segment<10>(10 * j);
-        // pi: 10 n inertia entries, then per joint its terms in JointTerms' order.
-        Eigen::Index at = 10 * n + Eigen::Index(j) * t.count() + (t.armature ? 1 : 0);
-        if (t.viscous)
-            friction[size_t(j)].viscous = fit.standard[at++];
-        if (t.coulomb)
-            friction[size_t(j)].coulomb = fit.standard[at];
-    }
-    return identifiedUrdf(result.robot.urdf, result.robot.source, result.robot.chain, bodies,
-                          friction, comment);
+    return urdfWithStandard(result.model(), result.robot.urdf, result.robot.source,
+                            result.fit.standard, comment);
 }
 
 QList<QPair<QString, QByteArray>> logExportFiles(const LogIdentificationResult &result,

@@ -26,6 +26,7 @@ RobotConnection makeRobot(const RobotRequest &request, const Scenario &scenario,
         };
     }
     CanRobotOptions options = request.can;
+    setSyncPeriod(options, scenario.controller.samplePeriod); // the bus load at the real cycle
     if (request.kind == RobotRequest::Kind::Replay) {
         options.plugin = QStringLiteral("candump");
         options.interface = QStringLiteral("replay");

@@ -18,6 +18,7 @@ SessionController::SessionController(QObject *parent)
         m_info = info;
         m_history.clear();
         m_estimates = {info.scenario.initialParameters};
+        m_figures = {};
         m_check.reset();
         m_accepted.reset();
         m_stored = info.storedParameters;
@@ -52,9 +53,10 @@ SessionController::SessionController(QObject *parent)
     connect(m_worker, &SessionWorker::progress, this, &SessionController::progress);
     connect(m_worker, &SessionWorker::trialFinished, this,
             [this](const TrialResult &summary, const QList<TrackingErrorCurve> &curves,
-                   const QVector<Eigen::VectorXd> &estimates) {
+                   const QVector<Eigen::VectorXd> &estimates, const EstimateFigures &figures) {
                 m_history.append(summary);
                 m_estimates = estimates;
+                m_figures = figures;
                 emit trialFinished(summary, curves);
                 emit historyChanged();
             });
@@ -88,6 +90,7 @@ SessionController::SessionController(QObject *parent)
             });
     connect(m_worker, &SessionWorker::parameterFileExported, this,
             &SessionController::parameterFileExported);
+    connect(m_worker, &SessionWorker::exported, this, &SessionController::urdfExported);
     connect(m_worker, &SessionWorker::trialCsvExported, this, &SessionController::trialCsvExported);
     m_thread.start();
 }
@@ -205,6 +208,17 @@ void SessionController::exportTrialCsv(const QString &folder)
 {
     SessionWorker *w = m_worker;
     post([w, folder] { w->exportTrialCsv(folder); });
+}
+
+void SessionController::exportIdentifiedUrdf(const QString &path, int estimateIndex,
+                                             const QString &comment)
+{
+    ExportRequest request;
+    request.urdfPath = path;
+    request.estimateIndex = estimateIndex;
+    request.urdfComment = comment;
+    SessionWorker *w = m_worker;
+    post([w, request] { w->exportOutputs(request); });
 }
 
 void SessionController::exportParameterFile(const QString &jsonPath, int estimateIndex)

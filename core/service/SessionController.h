@@ -5,6 +5,7 @@
 #include "service/SessionInfo.h"
 #include "service/SessionState.h"
 #include "service/TrackingErrorData.h"
+#include "session/ConvergenceFigures.h"
 #include "session/TrialResult.h"
 
 #include <QObject>
@@ -44,6 +45,8 @@ public:
     const QVector<TrialResult> &history() const { return m_history; }
     /// estimates()[0] is phi_0, [k] the estimate after k learning steps.
     const QVector<Eigen::VectorXd> &estimates() const { return m_estimates; }
+    /// Every estimate's path-torque figures on the newest trial's planned path.
+    const EstimateFigures &estimateFigures() const { return m_figures; }
     const std::optional<PreTrialCheck> &lastCheck() const { return m_check; }
     std::optional<int> acceptedIndex() const { return m_accepted; }
     /// What the robot controller holds now (empty before the first apply).
@@ -67,6 +70,8 @@ public slots:
     void apply();
     void revert();
     void exportParameterFile(const QString &jsonPath, int estimateIndex);
+    /// The robot's URDF with estimate k as real bodies (ExportRequest::urdfPath).
+    void exportIdentifiedUrdf(const QString &path, int estimateIndex, const QString &comment);
     /// folder/trial-NNN.csv of every trial that moved; the result comes by trialCsvExported().
     void exportTrialCsv(const QString &folder);
 
@@ -87,6 +92,8 @@ signals:
     void applied(const Eigen::VectorXd &stored);
     void operationFailed(learnid::SessionOperation operation, const QString &message);
     void parameterFileExported(const QStringList &paths, const QString &error);
+    /// exportIdentifiedUrdf() wrote these files, or nothing and error says why.
+    void urdfExported(const QStringList &paths, const QString &error);
     void trialCsvExported(const QString &folder, int files, const QString &error);
 
 private:
@@ -100,6 +107,7 @@ private:
     std::optional<SessionInfo> m_info;
     QVector<TrialResult> m_history;
     QVector<Eigen::VectorXd> m_estimates;
+    EstimateFigures m_figures;
     std::optional<PreTrialCheck> m_check;
     std::optional<int> m_accepted;
     Eigen::VectorXd m_stored;

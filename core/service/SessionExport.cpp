@@ -4,11 +4,16 @@
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
 #include "io/TrialCsv.h"
+#include "io/UrdfExport.h"
+#include "model/CadPrior.h"
+#include "model/ChainModel.h"
 #include "model/Error.h"
+#include "model/ModelFactory.h"
 #include "service/SessionReport.h"
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 
 namespace learnid {
@@ -32,6 +37,59 @@ QString dcfPathFor(const QString &parameterPath)
     const QFileInfo info(parameterPath);
     return info.dir().filePath(info.completeBaseName() + QStringLiteral(".dcf"));
 }
+
+QByteArray urdfWithStandard(const ChainModel &model, const QByteArray &xml, const QString &source,
+                            const Eigen::VectorXd &pi, const QString &comment)
+{
+    const int n = model.dof();
+    const JointTerms &t = model.jointTerms();
+    std::vector<InertialParameters> bodies(size_t(n), InertialParameters::Zero());
+    std::vector<IdentifiedJoint> friction(static_cast<size_t>(n));
+    for (int j = 0; j < n; ++j) {
+        bodies[size_t(j)] = pi.segment<10>(10 * j);
+        // pi: 10 n inertia entries, then per joint its terms in JointTerms' order.
+        Eigen::Index at = 10 * n + Eigen::Index(j) * t.count() + (t.armature ? 1 : 0);
+        if (t.viscous)
+            friction[size_t(j)].viscous = pi[at++];
+        if (t.coulomb)
+            friction[size_t(j)].coulomb = pi[at];
+    }
+    return identifiedUrdf(xml, source, model.chain(), bodies, friction, comment);
+}
+
+namespace {
+
+// The session's robot URDF with estimate k as real bodies.
+QByteArray sessionUrdf(const CommissioningSession &session, int k, const QString &comment)
+{
+    const auto *chain = dynamic_cast<const ChainModel *>(&session.model());
+    if (!chain) {
+        throw Error(
+            QCoreApplication::translate("SessionExport", "only URDF robots have a URDF to export"));
+    }
+    const EstimateConsistency c = session.consistency(k);
+    if (!c.nearestError.isEmpty()) {
+        throw Error(QCoreApplication::translate("SessionExport",
+                                                "no consistent estimate near estimate %1: %2")
+                        .arg(k)
+                        .arg(c.nearestError));
+    }
+    const Eigen::VectorXd pi =
+        c.consistent
+            ? chain->base().standardFromBase(session.estimates().at(k),
+                                             realBodyPrior(chain->cadStandard(), chain->dof()))
+            : c.nearestStandard;
+    const Scenario &s = session.scenario();
+    const QString source = urdfFileOf(s.model, s.urdf);
+    QFile file(source);
+    if (!file.open(QIODevice::ReadOnly)) {
+        throw Error(QCoreApplication::translate("SessionExport", "%1: cannot read the URDF: %2")
+                        .arg(QDir::toNativeSeparators(source), file.errorString()));
+    }
+    return urdfWithStandard(*chain, file.readAll(), source, pi, comment);
+}
+
+} // namespace
 
 QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &session,
                                               const ExportRequest &request)
@@ -65,6 +123,11 @@ QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &sessio
     }
     if (!request.trialCsvDir.isEmpty())
         files += trialCsvFiles(session.history(), request.trialCsvDir);
+    if (!request.urdfPath.isEmpty()) {
+        const int k = request.estimateIndex >= 0 ? request.estimateIndex
+                                                 : int(session.estimates().size()) - 1;
+        files.append({request.urdfPath, sessionUrdf(session, k, request.urdfComment)});
+    }
     return files;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/ChainModel.h"
 #include "session/CommissioningSession.h"
 
 #include <QByteArray>
@@ -19,7 +20,17 @@ struct ExportRequest
     /// robots, CommissioningSession::consistency), without standard deviations.
     bool nearestConsistent = false;
     QString trialCsvDir; ///< trial-NNN.csv of every trial that moved
+    /// The robot's URDF with the estimate's physically consistent standard parameters (the
+    /// estimate completed by the CAD model when it is consistent, else its nearest consistent
+    /// estimate) and friction in <dynamics>: URDF robots only.
+    QString urdfPath;
+    QString urdfComment; ///< who made it and when, for the URDF's leading comment
 };
+
+/// The URDF xml (read from source) with the links and joint friction of standard parameters
+/// pi of model (ChainModel's layout): identifiedUrdf() with pi's bodies and friction.
+QByteArray urdfWithStandard(const ChainModel &model, const QByteArray &xml, const QString &source,
+                            const Eigen::VectorXd &pi, const QString &comment);
 
 /// The files of a request, built in memory (path, content), so that the caller writes all or
 /// none (writeFilesAtomically). The one export path of the window and learnid-cli. Throws

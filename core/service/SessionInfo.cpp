@@ -4,6 +4,7 @@
 #include "service/SessionExport.h"
 #include "service/SessionState.h"
 #include "service/TrackingErrorData.h"
+#include "session/ConvergenceFigures.h"
 #include "session/TrialResult.h"
 
 namespace learnid {
@@ -16,6 +17,7 @@ void registerSessionMetaTypes()
     qRegisterMetaType<QList<learnid::TrackingErrorCurve>>();
     qRegisterMetaType<Eigen::VectorXd>();
     qRegisterMetaType<QVector<Eigen::VectorXd>>();
+    qRegisterMetaType<learnid::EstimateFigures>();
     qRegisterMetaType<learnid::SessionState>();
     qRegisterMetaType<learnid::SessionOperation>();
     qRegisterMetaType<learnid::ExportRequest>();

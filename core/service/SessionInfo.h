@@ -7,6 +7,7 @@
 #include <QList>
 #include <QMetaType>
 #include <QString>
+#include <QStringList>
 #include <QVector>
 #include <optional>
 
@@ -20,6 +21,7 @@ struct SessionInfo
     QString modelId;
     QList<ParameterInfo> parameters; ///< names and units of phi (m)
     int dof = 0;
+    QStringList jointNames;               ///< the URDF's joint names, or "joint 1", ... (dof)
     std::optional<Eigen::VectorXd> truth; ///< simulated robot only
     Eigen::VectorXd storedParameters;     ///< what the robot controller holds (may be empty)
 };

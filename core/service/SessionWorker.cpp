@@ -1,11 +1,13 @@
 #include "service/SessionWorker.h"
 
 #include "io/AtomicFile.h"
+#include "model/ChainModel.h"
 #include "model/Error.h"
 #include "model/ModelFactory.h"
 #include "service/RobotFactory.h"
 #include "service/ServiceLogging.h"
 #include "service/TrialSummary.h"
+#include "session/ConvergenceFigures.h"
 #include "session/ScenarioRobot.h"
 
 #include <QMutexLocker>
@@ -65,6 +67,10 @@ void SessionWorker::open(const Scenario &requested)
     info.modelId = m_session->model().id();
     info.parameters = m_session->model().parameters();
     info.dof = m_session->model().dof();
+    const auto *chain = dynamic_cast<const ChainModel *>(&m_session->model());
+    for (int j = 0; j < info.dof; ++j)
+        info.jointNames << (chain ? chain->chain().joints[size_t(j)].name
+                                  : tr("joint %1").arg(j + 1));
     info.truth = m_session->robot().trueParameters();
     info.storedParameters = m_session->robot().storedParameters();
     emit opened(info);
@@ -107,7 +113,8 @@ void SessionWorker::connectSession()
                 const QList<TrackingErrorCurve> curves = result.status() == TrialStatus::Refused
                                                              ? QList<TrackingErrorCurve>()
                                                              : trackingErrorCurves(result);
-                emit trialFinished(trialSummary(result), curves, m_session->estimates());
+                emit trialFinished(trialSummary(result), curves, m_session->estimates(),
+                                   newestEstimateFigures());
             });
 }
 
@@ -116,6 +123,17 @@ void SessionWorker::setFaults(const SimulatedFaults &faults)
     m_faults = faults;
     if (m_robot)
         m_robot->setFaults(faults);
+}
+
+// On the newest trial's planned path (a refused trial has one too): how far each estimate's
+// torques are from the truth's and from the newest estimate's.
+EstimateFigures SessionWorker::newestEstimateFigures() const
+{
+    const QVector<TrialResult> &history = m_session->history();
+    if (history.isEmpty())
+        return {};
+    return estimateFigures(m_session->model(), history.constLast().plan().desired,
+                           m_session->estimates(), m_session->robot().trueParameters());
 }
 
 void SessionWorker::emitCheck()

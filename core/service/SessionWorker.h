@@ -7,6 +7,7 @@
 #include "service/SessionState.h"
 #include "service/TrackingErrorData.h"
 #include "session/CommissioningSession.h"
+#include "session/ConvergenceFigures.h"
 
 #include <QMutex>
 #include <QObject>
@@ -69,10 +70,12 @@ signals:
     void trialStarted(int index, int samples);
     void progress(int index, int samplesDone, int samplesTotal);
     /// summary: the trial without its samples (trialSummary); curves: its tracking errors as the
-    /// plot draws them (none for a refused trial).
+    /// plot draws them (none for a refused trial); figures: every estimate's path-torque
+    /// figures on the newest planned path.
     void trialFinished(const learnid::TrialResult &summary,
                        const QList<learnid::TrackingErrorCurve> &curves,
-                       const QVector<Eigen::VectorXd> &estimates);
+                       const QVector<Eigen::VectorXd> &estimates,
+                       const learnid::EstimateFigures &figures);
     /// A runTrial()/runTrials() call returned; allCompleted is false when one did not.
     void runFinished(bool allCompleted);
     void accepted(int estimateIndex);
@@ -89,6 +92,7 @@ signals:
 private:
     void connectSession();
     void emitCheck();
+    EstimateFigures newestEstimateFigures() const;
     /// Writes the request's files (writeExport); the error, or empty with *written set.
     QString writeOutputs(const ExportRequest &request, QStringList *written);
 

@@ -4,6 +4,10 @@
 #include "types/JointTrajectory.h"
 
 #include <Eigen/Core>
+#include <QMetaType>
+#include <QStringList>
+#include <QVector>
+#include <optional>
 
 namespace learnid {
 
@@ -20,4 +24,31 @@ double largestRelativeDifferencePercent(const Eigen::VectorXd &x, const Eigen::V
 double pathTorqueErrorPercent(const RobotModel &model, const JointTrajectory &path,
                               const Eigen::VectorXd &phiHat, const Eigen::VectorXd &phi);
 
+/// pathTorqueErrorPercent of every estimate against one reference on one path, with the
+/// regressor along the path evaluated once (the window's convergence chart after every trial).
+QVector<double> pathTorqueErrorsPercent(const RobotModel &model, const JointTrajectory &path,
+                                        const QVector<Eigen::VectorXd> &estimates,
+                                        const Eigen::VectorXd &reference);
+
+/// The convergence figures of an n-joint arm: per estimate, on one planned path (the newest
+/// trial's), the path-torque error against the truth (a simulated robot; empty otherwise) and
+/// the path-torque change to the newest estimate (0 for the newest itself); and whether the
+/// newest estimate describes real bodies (URDF robots, EstimateConsistency.h).
+struct EstimateFigures
+{
+    QVector<double> vsTruth;
+    QVector<double> vsNewest;
+    bool consistencyChecked = false; ///< false: the model has no standard parameters
+    /// The ParameterInfo::group of every link that is no real body and every joint with a
+    /// negative friction or rotor inertia, in the newest estimate.
+    QStringList inconsistentGroups;
+    QStringList consistencyLines; ///< EstimateConsistency::describe() of the newest estimate
+};
+
+EstimateFigures estimateFigures(const RobotModel &model, const JointTrajectory &path,
+                                const QVector<Eigen::VectorXd> &estimates,
+                                const std::optional<Eigen::VectorXd> &truth);
+
 } // namespace learnid
+
+Q_DECLARE_METATYPE(learnid::EstimateFigures)

@@ -182,6 +182,13 @@ SafetyVerdict checkTrial(const RobotModel &model, const Eigen::VectorXd &phiHat,
     v.torqueLimit = plan.torqueLimit;
     v.motionDuration = plan.motionDuration;
     v.peakTorque = plan.feedforward.cwiseAbs().rowwise().maxCoeff();
+    v.peakGravityTorque = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd gravity(n);
+    const Eigen::VectorXd rest = Eigen::VectorXd::Zero(n);
+    for (int k = 0; k < plan.samples(); ++k) {
+        model.biasTorque(plan.desired.q.col(k), rest, phiHat, gravity);
+        v.peakGravityTorque = v.peakGravityTorque.cwiseMax(gravity.cwiseAbs());
+    }
 
     // Fixed-size matrices for the 2-link arm (10 x 10 closed loop): no heap work per point.
     if (n == 2)

@@ -19,8 +19,11 @@ struct SafetyVerdict
     bool withinJointLimits = true; ///< planned positions and speeds within the robot's limits
     Eigen::VectorXd peakTorque;    ///< planned max |tau_f| per joint [N m] (n)
     Eigen::VectorXd torqueLimit;   ///< [N m] (n)
-    double motionDuration = 0;     ///< [s]
-    QString reason;                ///< why the trial is refused, empty when it may run
+    /// Planned max |g_j(q)| over the path with phi_hat: what holding the arm against gravity
+    /// takes of each joint [N m] (n); the rest of the limit is left for moving.
+    Eigen::VectorXd peakGravityTorque;
+    double motionDuration = 0; ///< [s]
+    QString reason;            ///< why the trial is refused, empty when it may run
 
     bool passed() const { return physical && stable && torqueWithinLimits && withinJointLimits; }
 };

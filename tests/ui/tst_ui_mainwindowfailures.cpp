@@ -162,28 +162,6 @@ private slots:
         QCOMPARE(f.window->controller()->storedParameters().size(), 0);
     }
 
-    void urdfScenario_isRefusedNamingTheCommandThatRunsIt()
-    {
-        WindowFixture f;
-        QTemporaryDir dir;
-        const QString path = dir.filePath(QStringLiteral("puma.json"));
-        QFile file(path);
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write(R"({"robot": {"model": "puma560"},
-            "path": {"kind": "waypoints", "waypoints": [[0, 0, 0, 0, 0, 0], [0.2, 0, 0, 0, 0, 0]]},
-            "controller": {"kp": [1, 1, 1, 1, 1, 1], "ki": [0, 0, 0, 0, 0, 0],
-                           "kd": [0, 0, 0, 0, 0, 0]}})");
-        file.close();
-        QSignalSpy loaded(f.window->files(), &FileController::scenarioLoaded);
-        QSignalSpy done(f.window->files(), &FileController::finished);
-        f.window->files()->openScenarioFrom(path);
-        QCOMPARE(done.size(), 1);
-        QCOMPARE(done.constLast().at(1).toBool(), false);
-        QVERIFY2(done.constLast().at(0).toString().contains(QStringLiteral("learnid-cli run")),
-                 qPrintable(done.constLast().at(0).toString()));
-        QCOMPARE(loaded.size(), 0);
-    }
-
     void exportToAnUnwritablePath_saysWhereAndWhy()
     {
         WindowFixture f;

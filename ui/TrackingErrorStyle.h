@@ -1,0 +1,28 @@
+#pragma once
+
+#include <QColor>
+#include <QString>
+#include <QStringList>
+
+class QValueAxis;
+
+namespace learnid {
+
+/// How the tracking-error plot tells joints and trials apart: each joint a colour of a fixed
+/// qualitative palette (ten colours; from joint 11 on they repeat with a dashed, then a dotted
+/// line), each trial of a joint a shade of that colour (later = darker, as later errors are
+/// smaller).
+QColor jointColor(int joint); ///< joint: 0-based
+Qt::PenStyle jointPenStyle(int joint);
+/// The shade of `base` for the order-th of `count` trials drawn (0 = the earliest, lightest).
+QColor trialShade(const QColor &base, int order, int count);
+/// "Joint 3" or, with a name, "Joint 3 (panda_joint3)" (joint: 0-based).
+QString jointLabel(int joint, const QStringList &names);
+
+/// The time axis [s] over [0, tMax] with ticks at round steps.
+void setTimeAxis(QValueAxis *axis, double tMax);
+/// The error axis [deg]: symmetric on the paper's 0.02 deg grid for errors up to maxAbsDeg
+/// (errorAxisRange), or auto-scaled: fitted to [yMin, yMax] with nice numbers.
+void setErrorAxis(QValueAxis *axis, bool autoScale, double maxAbsDeg, double yMin, double yMax);
+
+} // namespace learnid
