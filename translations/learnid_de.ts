@@ -151,7 +151,22 @@
         <translation>unbekanntes Plugin oder unbekannte Schnittstelle</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+38"/>
+        <source>the configuration of %1 nodes at %2 Hz (SYNC every %3 ms) needs %4 of the bus, more than the %5 % the tool allows</source>
+        <translation>die Konfiguration mit %1 Knoten bei %2 Hz (SYNC alle %3 ms) belegt den Bus zu %4, mehr als die %5 %, die das Werkzeug zulässt</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1; no SYNC period up to 255 ms fits: use a faster bus</source>
+        <translation>%1; keine SYNC-Periode bis 255 ms passt: einen schnelleren Bus verwenden</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1; the shortest SYNC period that fits is %2 ms (%3): set the scenario&apos;s controller.samplePeriod to %4 s and the robot side&apos;s SYNC period to match</source>
+        <translation>%1; die kürzeste passende SYNC-Periode ist %2 ms (%3): controller.samplePeriod des Szenarios auf %4 s und die SYNC-Periode auf der Roboterseite passend dazu einstellen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>no CAN node given: one node per joint is needed</source>
         <translation>kein CAN-Knoten angegeben: ein Knoten pro Gelenk ist nötig</translation>
     </message>
@@ -162,22 +177,17 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+39"/>
+        <location line="+54"/>
         <source>node %1 is listed twice</source>
         <translation>Knoten %1 ist zweimal aufgeführt</translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="-47"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN-Zeitoptionen müssen positiv sein (Heartbeat-Periode höchstens 65535 ms)</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>the configuration of %1 nodes at %2 Hz needs %3 of the bus, more than the %4 % the tool allows: use fewer nodes per bus or a longer SYNC period</source>
-        <translation>die Konfiguration mit %1 Knoten bei %2 Hz braucht %3 des Busses, mehr als die %4 %, die das Werkzeug zulässt: weniger Knoten pro Bus oder eine längere SYNC-Periode verwenden</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location line="+42"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; ist keine CANopen-Knoten-ID (1 bis 127)</translation>
     </message>
@@ -340,6 +350,11 @@
     <name>ChainModel</name>
     <message>
         <location filename="../core/model/ChainModel.cpp" line="+35"/>
+        <source>link %1 (%2)</source>
+        <translation>Glied %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>mass of link %1</source>
         <translation>Masse des Glieds %1</translation>
     </message>
@@ -354,7 +369,7 @@
         <translation>Trägheit %1 des Glieds %2 um den Ursprung seines Koordinatensystems</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>rotor inertia at joint %1</source>
         <translation>Rotorträgheit am Gelenk %1</translation>
     </message>
@@ -374,6 +389,11 @@
         <translation>Drehmoment-Offset des Gelenks %1</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>joint %1 (%2)</source>
+        <translation>Gelenk %1 (%2)</translation>
+    </message>
+    <message>
         <location line="+40"/>
         <source>the Coulomb friction&apos;s velocity scale must be positive (it is %1)</source>
         <translation>die Geschwindigkeitsskala der Coulomb-Reibung muss positiv sein (sie ist %1)</translation>
@@ -384,7 +404,7 @@
         <translation>eine Kombination, angeführt von: %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1 has %2 moving joints, the model %3 has %4</source>
         <translation>%1 hat %2 bewegliche Gelenke, das Modell %3 hat %4</translation>
     </message>
@@ -738,7 +758,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+79"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+86"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
     </message>
@@ -1138,7 +1158,7 @@
 <context>
     <name>LogIdentification</name>
     <message>
-        <location filename="../core/service/LogIdentification.cpp" line="+94"/>
+        <location filename="../core/service/LogIdentification.cpp" line="+78"/>
         <source>identification cancelled; nothing was produced</source>
         <translation>Identifikation abgebrochen; nichts wurde erzeugt</translation>
     </message>
@@ -1163,7 +1183,7 @@
         <translation>%1 (%2), identifiziert aus den Logs %3</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+27"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>die Reglerverstärkungen, die die Parameterdatei festhält, gelten für %1 Gelenke, der Roboter hat %2</translation>
     </message>
@@ -1892,6 +1912,49 @@
     </message>
 </context>
 <context>
+    <name>RobotScenario</name>
+    <message>
+        <location filename="../core/session/RobotScenario.cpp" line="+44"/>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 deg</source>
+        <translation>%1 deg</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>robot.model: unknown model &quot;%1&quot;</source>
+        <translation>robot.model: unbekanntes Modell „%1“</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>path.waypoints[%1][%2]: %3 is %4 joint %5 (%6)&apos;s %7 limit %8</source>
+        <translation>path.waypoints[%1][%2]: %3 liegt %4 der %7 Grenze %8 von Gelenk %5 (%6)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>below</source>
+        <translation>unter</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>above</source>
+        <translation>über</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lower</source>
+        <translation>unteren</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>upper</source>
+        <translation>oberen</translation>
+    </message>
+</context>
+<context>
     <name>SafetyCheck</name>
     <message>
         <location filename="../core/session/SafetyCheck.cpp" line="+154"/>
@@ -1904,7 +1967,7 @@
         <translation>Gelenk %1 würde sich bei t = %3 s mit %2 bewegen, über seiner Geschwindigkeitsgrenze %4</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+47"/>
         <source>the estimate is not a physical robot: its mass matrix is not positive definite at t = %1 s</source>
         <translation>die Schätzung ist kein physikalischer Roboter: ihre Massenmatrix ist bei t = %1 s nicht positiv definit</translation>
     </message>
@@ -2210,17 +2273,28 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+49"/>
+        <location filename="../core/service/SessionExport.cpp" line="+68"/>
+        <source>only URDF robots have a URDF to export</source>
+        <translation>nur URDF-Roboter haben ein URDF, das sich exportieren lässt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+35"/>
         <source>no consistent estimate near estimate %1: %2</source>
         <translation>keine konsistente Schätzung nahe Schätzung %1: %2</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-21"/>
+        <source>%1: cannot read the URDF: %2</source>
+        <translation>%1: das URDF kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>only URDF robots have standard parameters to make consistent</source>
         <translation>nur URDF-Roboter haben Standardparameter, die sich konsistent machen lassen</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+25"/>
         <source>cannot create the folder %1</source>
         <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -2691,8 +2765,9 @@
         <location line="+25"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+76"/>
-        <location line="+14"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+107"/>
+        <location line="+7"/>
+        <location line="+12"/>
         <location line="+52"/>
         <location line="+44"/>
         <location filename="../app/cli/main.cpp" line="+52"/>
@@ -2824,7 +2899,7 @@
         <translation>--robot can braucht --can-interface (z. B. can0)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes: %1 in &apos;%2&apos;</translation>
     </message>
@@ -2834,12 +2909,14 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-155"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+2"/>
         <source>--robot %1: %2</source>
         <translation>--robot %1: %2</translation>
     </message>
@@ -2964,7 +3041,7 @@
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+14"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>Neu identifizieren aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
@@ -2978,14 +3055,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+20"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="+35"/>
+        <location line="+101"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-84"/>
         <source>--iterations: must be a whole number from 1 to 100, got &apos;%1&apos;</source>
         <translation>--iterations: muss eine ganze Zahl von 1 bis 100 sein, gefunden: &apos;%1&apos;</translation>
     </message>
@@ -3085,12 +3160,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Versuch %1: %2, T = %3 s, %4 Abtastwerte, max. Folgefehler %5°</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-150"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-33"/>
         <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
         <translation>--estimator: unbekanntes Gesetz &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+21"/>
+        <source>--nodes %1: %2 node ids for a robot of %3 joints: one node per joint is needed</source>
+        <translation>--nodes %1: %2 Knoten-IDs für einen Roboter mit %3 Gelenken: ein Knoten pro Gelenk ist nötig</translation>
+    </message>
+    <message>
+        <location line="+79"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
@@ -3154,7 +3234,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-183"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-163"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms: unbekannter Term &apos;%1&apos;; die Terme sind armature, viscous, coulomb und offset, oder none</translation>
     </message>
@@ -3265,12 +3345,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="-37"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-2"/>
         <source>Folder that relative output paths are taken from.</source>
         <translation>Ordner, ab dem relative Ausgabepfade gelten.</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
         <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
 
 Identify a robot&apos;s inertia and joint friction from its recorded logs,
@@ -3285,7 +3365,7 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
 %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+15"/>
         <source>&apos;identify&apos; needs --robot ROBOT</source>
         <translation>&apos;identify&apos; braucht --robot ROBOT</translation>
     </message>
@@ -3440,7 +3520,7 @@ neue Schätzung.
         <translation>Das Log des Reglers von einem Lauf des Plans (CSV); einmal pro Wiederholung.</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+13"/>
         <source>&apos;plan&apos; needs --out DIR</source>
         <translation>&apos;plan&apos; braucht --out DIR</translation>
     </message>
@@ -3460,7 +3540,7 @@ neue Schätzung.
         <translation>gemessen</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -3549,11 +3629,11 @@ neue Schätzung.
     </message>
     <message>
         <location line="+3"/>
-        <source>Node ids of joint 1, 2, ... (default 1,2).</source>
-        <translation>Knoten-IDs von Gelenk 1, 2, ... (Standard 1,2).</translation>
+        <source>Node ids of joint 1, 2, ..., up to 127 (default: joint j is node j).</source>
+        <translation>Knoten-IDs von Gelenk 1, 2, ..., jeweils bis 127 (Standard: Gelenk j ist Knoten j).</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>ids</source>
         <translation>IDs</translation>
     </message>
@@ -3800,7 +3880,7 @@ neue Schätzung.
         <translation>das Modell hat %1 Gelenke, aber %2 CAN-Knoten sind konfiguriert, oder der Plan ist leer</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <location line="+27"/>
         <source>stopped by the operator before the drives moved</source>
         <translation>vom Bediener gestoppt, bevor sich die Antriebe bewegten</translation>
@@ -3920,12 +4000,12 @@ neue Schätzung.
 <context>
     <name>learnid::ConvergenceChart</name>
     <message>
-        <location filename="../ui/ConvergenceChart.cpp" line="+30"/>
+        <location filename="../ui/ConvergenceChart.cpp" line="+32"/>
         <source>Estimate k</source>
         <translation>Schätzung k</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+48"/>
         <source>|error| [%]</source>
         <translation>|Fehler| [%]</translation>
     </message>
@@ -3933,6 +4013,11 @@ neue Schätzung.
         <location line="+0"/>
         <source>change [%]</source>
         <translation>Änderung [%]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>path torque [%]</source>
+        <translation>Bahnmoment [%]</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3944,13 +4029,41 @@ neue Schätzung.
         <source>Convergence</source>
         <translation>Konvergenz</translation>
     </message>
+    <message>
+        <location line="+62"/>
+        <source>vs truth</source>
+        <translation>ggü. wahrem Wert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>vs newest estimate</source>
+        <translation>ggü. neuester Schätzung</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::ConvergencePanel</name>
+    <message>
+        <location filename="../ui/ConvergencePanel.cpp" line="+41"/>
+        <source>Estimates</source>
+        <translation>Schätzungen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
 </context>
 <context>
     <name>learnid::ConvergenceTableModel</name>
     <message>
-        <location filename="../ui/ConvergenceTableModel.cpp" line="+174"/>
+        <location filename="../ui/ConvergenceTableModel.cpp" line="+195"/>
         <source>all (rank %1)</source>
         <translation>alle (Rang %1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>⚠ kept %1 of %2</source>
+        <translation>⚠ %1 von %2 beibehalten</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3958,7 +4071,7 @@ neue Schätzung.
         <translation>⚠ beibehalten: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -4009,6 +4122,11 @@ neue Schätzung.
     </message>
     <message>
         <location line="+2"/>
+        <source>Path torque vs truth [%]</source>
+        <translation>Bahnmoment ggü. wahrem Wert [%]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Trials run</source>
         <translation>Versuche</translation>
     </message>
@@ -4021,7 +4139,7 @@ neue Schätzung.
 <context>
     <name>learnid::FileController</name>
     <message>
-        <location filename="../ui/FileController.cpp" line="+37"/>
+        <location filename="../ui/FileController.cpp" line="+39"/>
         <source>Parameter file written: %1</source>
         <translation>Parameterdatei geschrieben: %1</translation>
     </message>
@@ -4029,6 +4147,16 @@ neue Schätzung.
         <location line="+4"/>
         <source>Parameter file not written: %1</source>
         <translation>Parameterdatei nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Identified URDF written: %1</source>
+        <translation>Identifiziertes URDF geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>URDF not written: %1</source>
+        <translation>URDF nicht geschrieben: %1</translation>
     </message>
     <message>
         <location line="+25"/>
@@ -4091,12 +4219,7 @@ neue Schätzung.
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location line="+60"/>
-        <source>%1 is a URDF robot (%2): the window runs the paper&apos;s 2-link arm; run this scenario with learnid-cli run --scenario %1</source>
-        <translation>%1 ist ein URDF-Roboter (%2): das Fenster führt den Zweigelenkarm des Artikels aus; dieses Szenario mit learnid-cli run --scenario %1 ausführen</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+84"/>
         <source>Scenario loaded: %1</source>
         <translation>Szenario geladen: %1</translation>
     </message>
@@ -4127,7 +4250,7 @@ neue Schätzung.
         <translation>Keine Versuchs-CSV geschrieben: noch kein Versuch gelaufen</translation>
     </message>
     <message numerus="yes">
-        <location line="-138"/>
+        <location line="-156"/>
         <source>%n trial CSV file(s) written to %1</source>
         <translation>
             <numerusform>%n Versuchs-CSV-Datei nach %1 geschrieben</numerusform>
@@ -4140,7 +4263,27 @@ neue Schätzung.
         <translation>Versuchs-CSV nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location line="+144"/>
+        <location line="+35"/>
+        <source>Export identified URDF</source>
+        <translation>Identifiziertes URDF exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF (*.urdf)</source>
+        <translation>URDF (*.urdf)</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>URDF not written: accept an estimate first</source>
+        <translation>URDF nicht geschrieben: zuerst eine Schätzung akzeptieren</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>identified by learnid %1 (estimate %2 of a commissioning session) on %3</source>
+        <translation>identifiziert von learnid %1 (Schätzung %2 einer Inbetriebnahmesitzung) am %3</translation>
+    </message>
+    <message>
+        <location line="+79"/>
         <source>Plot not written: this build has no SVG support (Qt6::Svg); export as PNG instead</source>
         <translation>Diagramm nicht geschrieben: diese Version kann kein SVG (Qt6::Svg); bitte als PNG exportieren</translation>
     </message>
@@ -4164,13 +4307,34 @@ neue Schätzung.
         <source>Report not written: no session</source>
         <translation>Bericht nicht geschrieben: keine Sitzung</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/ReportContent.cpp" line="+35"/>
+        <source>%n value(s)</source>
+        <translation>
+            <numerusform>%n Wert</numerusform>
+            <numerusform>%n Werte</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+16"/>
+        <location line="+8"/>
         <source>Path: from (%1, %2) m, %3 m at %4 deg</source>
         <translation>Bahn: ab (%1, %2) m, %3 m unter %4°</translation>
     </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>Path: %n joint waypoint(s)</source>
+        <translation>
+            <numerusform>Bahn: %n Gelenk-Wegpunkt</numerusform>
+            <numerusform>Bahn: %n Gelenk-Wegpunkte</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
+        <source>Path: %1</source>
+        <translation>Bahn: %1</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>Torque limits: %1 N m, planning fraction %2</source>
         <translation>Momentengrenzen: %1 N m, Planungsanteil %2</translation>
     </message>
@@ -4185,7 +4349,7 @@ neue Schätzung.
         <translation>kd: %1 N m s/rad; lambda %2 rad/s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Estimator: %1, rho %2 rad/s, %3 trials</source>
         <translation>Schätzer: %1, rho %2 rad/s, %3 Versuche</translation>
     </message>
@@ -4195,7 +4359,7 @@ neue Schätzung.
         <translation>Anfangsparameter: %1</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+10"/>
         <source>none (nothing applied in this session)</source>
         <translation>keine (in dieser Sitzung nichts übertragen)</translation>
     </message>
@@ -4205,7 +4369,7 @@ neue Schätzung.
         <translation>%1 (Schätzung %2)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location filename="../ui/FileController.cpp" line="+8"/>
         <source>Report written: %1</source>
         <translation>Bericht geschrieben: %1</translation>
     </message>
@@ -4396,6 +4560,16 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Export identified &amp;URDF...</source>
+        <translation>Identifiziertes &amp;URDF exportieren...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write the robot&apos;s URDF with the accepted estimate as real bodies and its friction (URDF robots)</source>
+        <translation>Das URDF des Roboters schreiben, mit der akzeptierten Schätzung als realen Körpern samt ihrer Reibung (URDF-Roboter)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Export trial &amp;CSV...</source>
         <translation>Versuchs-&amp;CSV exportieren...</translation>
     </message>
@@ -4603,12 +4777,12 @@ Verhältnis %</translation>
         <translation>learnid – Inbetriebnahme</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+4"/>
         <source>Pre-trial check</source>
         <translation>Prüfung vor dem Versuch</translation>
     </message>
@@ -4643,12 +4817,12 @@ Verhältnis %</translation>
         <translation>Parameterkonvergenz</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>The language changes when learnid is started again.</source>
         <translation>Die Sprache wechselt beim nächsten Start von learnid.</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <source>Dis&amp;connect robot</source>
         <translation>Roboter &amp;trennen</translation>
     </message>
@@ -4658,7 +4832,7 @@ Verhältnis %</translation>
         <translation>Roboter &amp;verbinden</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>Run disabled: %1</source>
         <translation>Start gesperrt: %1</translation>
     </message>
@@ -4688,7 +4862,7 @@ Verhältnis %</translation>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>Cannot connect: %1</source>
         <translation>Verbindung nicht möglich: %1</translation>
     </message>
@@ -4793,6 +4967,74 @@ Verhältnis %</translation>
     </message>
 </context>
 <context>
+    <name>learnid::ParameterTableModel</name>
+    <message>
+        <location filename="../ui/ParameterTableModel.cpp" line="+129"/>
+        <source>kept</source>
+        <translation>beibehalten</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>⚠ kept</source>
+        <translation>⚠ beibehalten</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>✗ no</source>
+        <translation>✗ nein</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>✓</source>
+        <translation>✓</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>Link / joint</source>
+        <translation>Glied / Gelenk</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Estimate %1</source>
+        <translation>Schätzung %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>σ / |φ| [%]</source>
+        <translation>σ / |φ| [%]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Observed</source>
+        <translation>Beobachtet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Real body</source>
+        <translation>Realer Körper</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Truth</source>
+        <translation>Wahrer Wert</translation>
+    </message>
+</context>
+<context>
     <name>learnid::PreTrialCheckView</name>
     <message>
         <location filename="../ui/PreTrialCheckView.cpp" line="+35"/>
@@ -4815,7 +5057,17 @@ Verhältnis %</translation>
         <translation>Auslastung</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+0"/>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The largest torque holding the arm against gravity takes on this path, as a share of the limit</source>
+        <translation>Das größte Moment, das das Halten des Arms gegen die Schwerkraft auf dieser Bahn erfordert, als Anteil der Grenze</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Planned motion:</source>
         <translation>Geplante Bewegung:</translation>
     </message>
@@ -5125,7 +5377,12 @@ Verhältnis %</translation>
 <context>
     <name>learnid::ReportWriter</name>
     <message>
-        <location filename="../ui/ReportWriter.cpp" line="+52"/>
+        <location filename="../ui/ReportWriter.cpp" line="+56"/>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>learnid commissioning report</source>
         <translation>learnid-Inbetriebnahmebericht</translation>
     </message>
@@ -5161,17 +5418,146 @@ Verhältnis %</translation>
     </message>
 </context>
 <context>
+    <name>learnid::RobotChooser</name>
+    <message>
+        <location filename="../ui/RobotChooser.cpp" line="+35"/>
+        <source>Robot model</source>
+        <translation>Robotermodell</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open URDF…</source>
+        <translation>URDF öffnen…</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The paper&apos;s 2-link arm (closed form)</source>
+        <translation>2-Glied-Arm aus dem Artikel (geschlossene Form)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (built-in URDF)</source>
+        <translation>%1 (eingebautes URDF)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF file…</source>
+        <translation>URDF-Datei…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Lower</source>
+        <translation>Untergrenze</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Upper</source>
+        <translation>Obergrenze</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Effort</source>
+        <translation>Max. Moment/Kraft</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Mass [kg]</source>
+        <translation>Masse [kg]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Position limits in deg (revolute) or m (prismatic), effort in N m or N, as the URDF gives them; the mass of the link the joint moves</source>
+        <translation>Positionsgrenzen in deg (Drehgelenk) oder m (Schubgelenk), maximales Moment bzw. maximale Kraft (effort) in N m oder N, wie im URDF angegeben; die Masse des Glieds, das das Gelenk bewegt</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Open the robot&apos;s URDF</source>
+        <translation>URDF des Roboters öffnen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF (*.urdf);;All files (*)</source>
+        <translation>URDF (*.urdf);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Cannot use this robot: %1</source>
+        <translation>Dieser Roboter ist nicht verwendbar: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>2 revolute joints in the horizontal plane, no gravity or friction; %1 parameters (the paper&apos;s a, b, c)</source>
+        <translation>2 Drehgelenke in der horizontalen Ebene, keine Schwerkraft oder Reibung; %1 Parameter (a, b, c des Artikels)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 (prismatic)</source>
+        <translation>%1 (Schubgelenk)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>rotor inertia</source>
+        <translation>Rotorträgheit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>viscous</source>
+        <translation>viskos</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Coulomb</source>
+        <translation>Coulomb</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>offset</source>
+        <translation>Offset</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n revolute joint(s)</source>
+        <translation>
+            <numerusform>%n Drehgelenk</numerusform>
+            <numerusform>%n Drehgelenke</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n joint(s) (%1 prismatic)</source>
+        <translation>
+            <numerusform>%n Gelenk (%1 prismatisch)</numerusform>
+            <numerusform>%n Gelenke (%1 prismatisch)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, %2 kg moving; joint terms: %3; %4 base parameters (of %5 standard)</source>
+        <translation>%1, %2 kg bewegt; Gelenkterme: %3; %4 Basisparameter (von %5 Standardparametern)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+</context>
+<context>
     <name>learnid::RobotPanel</name>
     <message>
         <location filename="../ui/RobotPanel.cpp" line="+22"/>
-        <location line="+81"/>
+        <location line="+100"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-72"/>
-        <source>Simulated (paper 2-link arm)</source>
-        <translation>Simuliert (2-Glied-Arm aus dem Artikel)</translation>
+        <location line="-91"/>
+        <source>Simulated (the scenario&apos;s robot)</source>
+        <translation>Simuliert (der Roboter des Szenarios)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5239,12 +5625,17 @@ Verhältnis %</translation>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+44"/>
         <source>CAN nodes: %1</source>
         <translation>CAN-Knoten: %1</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>CAN nodes: %1 node ids for a robot of %2 joints: one node per joint</source>
+        <translation>CAN-Knoten: %1 Knoten-IDs für einen Roboter mit %2 Gelenken: ein Knoten pro Gelenk</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>CAN interface: enter one, e.g. can0</source>
         <translation>CAN-Schnittstelle: bitte eine eingeben, z. B. can0</translation>
     </message>
@@ -5290,27 +5681,22 @@ Verhältnis %</translation>
         <translation>Start (x, y)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+39"/>
         <source>Number of trials</source>
         <translation>Anzahl Versuche</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Path (straight line)</source>
-        <translation>Bahn (Gerade)</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="-26"/>
         <source>Length</source>
         <translation>Länge</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Direction</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+28"/>
         <source>Rest before the motion</source>
         <translation>Ruhezeit vor der Bewegung</translation>
     </message>
@@ -5325,12 +5711,17 @@ Verhältnis %</translation>
         <translation>Momentengrenzen</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-28"/>
         <source>Limit per joint</source>
         <translation>Grenze je Gelenk</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+20"/>
+        <source>Path</source>
+        <translation>Bahn</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Planning fraction</source>
         <translation>Planungsanteil</translation>
     </message>
@@ -5365,12 +5756,12 @@ Verhältnis %</translation>
         <translation>Wiederholungen pro Versuch</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-50"/>
         <source>Initial parameters</source>
         <translation>Anfangsparameter</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+53"/>
         <source>Safety</source>
         <translation>Sicherheit</translation>
     </message>
@@ -5390,9 +5781,14 @@ Verhältnis %</translation>
         <translation>Simulierter Roboter</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-57"/>
         <source>True parameters</source>
         <translation>Wahre Parameter</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>CAD perturbation (URDF robots)</source>
+        <translation>CAD-Abweichung (URDF-Roboter)</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -5429,8 +5825,38 @@ Verhältnis %</translation>
     <name>learnid::ScenarioForm</name>
     <message>
         <location filename="../ui/ScenarioForm.cpp" line="+48"/>
+        <source>Path CSV…</source>
+        <translation>Bahn-CSV…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Waypoints</source>
+        <translation>Wegpunkte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Run a recorded joint path instead: CSV t, q1..qn [s, rad]</source>
+        <translation>Stattdessen eine aufgezeichnete Gelenkbahn fahren: CSV t, q1..qn [s, rad]</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Open a joint path</source>
+        <translation>Gelenkbahn öffnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV (*.csv);;All files (*)</source>
+        <translation>CSV (*.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>Scenario key %1</source>
         <translation>Szenario-Schlüssel %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF robots: empty takes the robot&apos;s</source>
+        <translation>URDF-Roboter: leer übernimmt die Werte des Roboters</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -5438,7 +5864,7 @@ Verhältnis %</translation>
         <translation>Werte durch Kommas getrennt</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+25"/>
         <source>paper-consistent</source>
         <translation>artikelkonsistent</translation>
     </message>
@@ -5453,12 +5879,46 @@ Verhältnis %</translation>
         <translation>Lerngesetz</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+19"/>
+        <source>unknown model &quot;%1&quot;</source>
+        <translation>unbekanntes Modell „%1“</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>joint %1</source>
+        <translation>Gelenk %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Path: %1 (%2 samples, from the scenario file)</source>
+        <translation>Bahn: %1 (%2 Abtastwerte, aus der Szenariodatei)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+24"/>
+        <source>Initial parameters (%n base parameter(s))</source>
+        <translation>
+            <numerusform>Anfangsparameter (%n Basisparameter)</numerusform>
+            <numerusform>Anfangsparameter (%n Basisparameter)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Initial parameters (%1)</source>
         <translation>Anfangsparameter (%1)</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+13"/>
+        <location line="+132"/>
+        <source>robot.model: %1</source>
+        <translation>robot.model: %1</translation>
+    </message>
+    <message>
+        <location line="-92"/>
+        <source>path.file: %1</source>
+        <translation>path.file: %1</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <source>enter one number</source>
         <translation>eine Zahl eingeben</translation>
     </message>
@@ -5545,7 +6005,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::SessionPresenter</name>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+30"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+33"/>
         <source>connected: %1</source>
         <translation>verbunden: %1</translation>
     </message>
@@ -5595,8 +6055,16 @@ Verhältnis %</translation>
         <source>Parameters written to the robot and read back.</source>
         <translation>Parameter in den Roboter geschrieben und zurückgelesen.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+28"/>
+        <source>%n parameter(s)</source>
+        <translation>
+            <numerusform>%n Parameter</numerusform>
+            <numerusform>%n Parameter</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+22"/>
+        <location line="+3"/>
         <source>nothing applied yet</source>
         <translation>noch nichts übertragen</translation>
     </message>
@@ -5609,12 +6077,17 @@ Verhältnis %</translation>
 <context>
     <name>learnid::SessionWorker</name>
     <message>
-        <location filename="../core/service/SessionWorker.cpp" line="+42"/>
+        <location filename="../core/service/SessionWorker.cpp" line="+44"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>unbekanntes Robotermodell „%1“</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+29"/>
+        <source>joint %1</source>
+        <translation>Gelenk %1</translation>
+    </message>
+    <message>
+        <location line="+85"/>
         <location line="+25"/>
         <source>no robot connected</source>
         <translation>kein Roboter verbunden</translation>
@@ -5671,12 +6144,17 @@ Verhältnis %</translation>
 <context>
     <name>learnid::TrackingErrorPlot</name>
     <message>
-        <location filename="../ui/TrackingErrorPlot.cpp" line="+37"/>
+        <location filename="../ui/TrackingErrorPlot.cpp" line="+30"/>
         <source>Auto-scale</source>
         <translation>Automatisch skalieren</translation>
     </message>
     <message>
         <location line="+8"/>
+        <source>The joint whose tracking error is shown</source>
+        <translation>Das Gelenk, dessen Folgefehler angezeigt wird</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Off: symmetric axis on a 0.02 deg grid, as in the paper</source>
         <translation>Aus: symmetrische Achse mit 0,02°-Raster wie im Artikel</translation>
     </message>
@@ -5696,13 +6174,18 @@ Verhältnis %</translation>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location line="+24"/>
-        <location line="+19"/>
+        <location line="+26"/>
+        <location line="+63"/>
         <source>All trials (overlay)</source>
         <translation>Alle Versuche (überlagert)</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-39"/>
+        <source>All joints</source>
+        <translation>Alle Gelenke</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Trial %1</source>
         <translation>Versuch %1</translation>
     </message>
@@ -5712,24 +6195,34 @@ Verhältnis %</translation>
         <translation>Versuch %1 (%2)</translation>
     </message>
     <message>
-        <location line="+92"/>
-        <source>Tracking error, all trials (solid: joint 1, dashed: joint 2; darker: later)</source>
-        <translation>Folgefehler, alle Versuche (durchgezogen: Gelenk 1, gestrichelt: Gelenk 2; dunkler: später)</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Tracking error, %1</source>
-        <translation>Folgefehler, %1</translation>
-    </message>
-    <message>
-        <location line="+20"/>
-        <source>trial %1, joint %2</source>
-        <translation>Versuch %1, Gelenk %2</translation>
+        <location line="+97"/>
+        <source>Tracking error</source>
+        <translation>Folgefehler</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>joint %1</source>
+        <source>Tracking error of %1</source>
+        <translation>Folgefehler von %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, all trials (darker: later)</source>
+        <translation>%1, alle Versuche (dunkler: später)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="+51"/>
+        <source>Joint %1</source>
         <translation>Gelenk %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Joint %1 (%2)</source>
+        <translation>Gelenk %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -5812,6 +6305,44 @@ Verhältnis %</translation>
     </message>
 </context>
 <context>
+    <name>learnid::WaypointEditor</name>
+    <message>
+        <location filename="../ui/WaypointEditor.cpp" line="+17"/>
+        <source>Add waypoint</source>
+        <translation>Wegpunkt hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove waypoint</source>
+        <translation>Wegpunkt entfernen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Joint positions the path passes through, in order: degrees for revolute joints, metres for prismatic ones</source>
+        <translation>Gelenkstellungen, die die Bahn der Reihe nach durchläuft: Grad für Drehgelenke, Meter für Schubgelenke</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>q%1 [%2]</source>
+        <translation>q%1 [%2]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>deg</source>
+        <translation>deg</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>waypoint %1, %2: &quot;%3&quot; is not a number</source>
+        <translation>Wegpunkt %1, %2: „%3“ ist keine Zahl</translation>
+    </message>
+</context>
+<context>
     <name>learnid::robotsim::SimProcess</name>
     <message>
         <location filename="../app/robot-sim/SimProcess.cpp" line="+43"/>
@@ -5820,7 +6351,7 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+88"/>
+        <location line="+93"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>die CAN-Schnittstelle %1 mit Plugin %2 kann nicht verbunden werden: %3</translation>
     </message>

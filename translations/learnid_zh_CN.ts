@@ -151,7 +151,22 @@
         <translation>未知插件或接口</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+38"/>
+        <source>the configuration of %1 nodes at %2 Hz (SYNC every %3 ms) needs %4 of the bus, more than the %5 % the tool allows</source>
+        <translation>%1 个节点、%2 Hz（每 %3 ms 一个 SYNC）的配置占用总线 %4，超过本工具允许的 %5 %</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1; no SYNC period up to 255 ms fits: use a faster bus</source>
+        <translation>%1；255 ms 以内没有合适的 SYNC 周期：请使用更快的总线</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1; the shortest SYNC period that fits is %2 ms (%3): set the scenario&apos;s controller.samplePeriod to %4 s and the robot side&apos;s SYNC period to match</source>
+        <translation>%1；可行的最短 SYNC 周期为 %2 ms（%3）：请将场景的 controller.samplePeriod 设为 %4 s，并相应设置机器人端的 SYNC 周期</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>no CAN node given: one node per joint is needed</source>
         <translation>未给出 CAN 节点：每个关节需要一个节点</translation>
     </message>
@@ -162,22 +177,17 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+39"/>
+        <location line="+54"/>
         <source>node %1 is listed twice</source>
         <translation>节点 %1 被列出两次</translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="-47"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN 定时选项必须为正（心跳周期最多 65535 ms）</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>the configuration of %1 nodes at %2 Hz needs %3 of the bus, more than the %4 % the tool allows: use fewer nodes per bus or a longer SYNC period</source>
-        <translation>%1 个节点、%2 Hz 的配置需要总线的 %3，超过本工具允许的 %4 %：请减少每条总线的节点数或延长 SYNC 周期</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location line="+42"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; 不是 CANopen 节点 ID（1 到 127）</translation>
     </message>
@@ -340,6 +350,11 @@
     <name>ChainModel</name>
     <message>
         <location filename="../core/model/ChainModel.cpp" line="+35"/>
+        <source>link %1 (%2)</source>
+        <translation>连杆 %1（%2）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>mass of link %1</source>
         <translation>连杆 %1 的质量</translation>
     </message>
@@ -354,7 +369,7 @@
         <translation>连杆 %2 关于其坐标系原点的惯量 %1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>rotor inertia at joint %1</source>
         <translation>关节 %1 处的转子惯量</translation>
     </message>
@@ -374,6 +389,11 @@
         <translation>关节 %1 的力矩偏置</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>joint %1 (%2)</source>
+        <translation>关节 %1（%2）</translation>
+    </message>
+    <message>
         <location line="+40"/>
         <source>the Coulomb friction&apos;s velocity scale must be positive (it is %1)</source>
         <translation>库仑摩擦的速度尺度必须为正（当前为 %1）</translation>
@@ -384,7 +404,7 @@
         <translation>以%1为首的组合</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1 has %2 moving joints, the model %3 has %4</source>
         <translation>%1 有 %2 个可动关节，模型 %3 有 %4 个</translation>
     </message>
@@ -738,7 +758,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+79"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+86"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>连杆 %1（%2）：质量 %3 kg：不是真实刚体</translation>
     </message>
@@ -1138,7 +1158,7 @@
 <context>
     <name>LogIdentification</name>
     <message>
-        <location filename="../core/service/LogIdentification.cpp" line="+94"/>
+        <location filename="../core/service/LogIdentification.cpp" line="+78"/>
         <source>identification cancelled; nothing was produced</source>
         <translation>辨识已取消；未生成任何结果</translation>
     </message>
@@ -1163,7 +1183,7 @@
         <translation>%1（%2），由日志 %3 辨识</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+27"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>参数文件记录的控制器增益适用于 %1 个关节，机器人有 %2 个</translation>
     </message>
@@ -1890,6 +1910,49 @@
     </message>
 </context>
 <context>
+    <name>RobotScenario</name>
+    <message>
+        <location filename="../core/session/RobotScenario.cpp" line="+44"/>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 deg</source>
+        <translation>%1 deg</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>robot.model: unknown model &quot;%1&quot;</source>
+        <translation>robot.model：未知模型“%1”</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>path.waypoints[%1][%2]: %3 is %4 joint %5 (%6)&apos;s %7 limit %8</source>
+        <translation>path.waypoints[%1][%2]：%3 %4关节 %5（%6）的%7 %8</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>below</source>
+        <translation>低于</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>above</source>
+        <translation>高于</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lower</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>upper</source>
+        <translation>上限</translation>
+    </message>
+</context>
+<context>
     <name>SafetyCheck</name>
     <message>
         <location filename="../core/session/SafetyCheck.cpp" line="+154"/>
@@ -1902,7 +1965,7 @@
         <translation>关节 %1 将在 t = %3 s 时以 %2 运动，超过其速度上限 %4</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+47"/>
         <source>the estimate is not a physical robot: its mass matrix is not positive definite at t = %1 s</source>
         <translation>该估计不是物理上可能的机器人：其质量矩阵在 t = %1 s 时不是正定的</translation>
     </message>
@@ -2208,17 +2271,28 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+49"/>
+        <location filename="../core/service/SessionExport.cpp" line="+68"/>
+        <source>only URDF robots have a URDF to export</source>
+        <translation>只有 URDF 机器人才有可导出的 URDF</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+35"/>
         <source>no consistent estimate near estimate %1: %2</source>
         <translation>估计 %1 附近没有一致的估计：%2</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-21"/>
+        <source>%1: cannot read the URDF: %2</source>
+        <translation>%1：无法读取 URDF：%2</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>only URDF robots have standard parameters to make consistent</source>
         <translation>只有 URDF 机器人有可使其一致的标准参数</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+25"/>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
@@ -2689,8 +2763,9 @@
         <location line="+25"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+76"/>
-        <location line="+14"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+107"/>
+        <location line="+7"/>
+        <location line="+12"/>
         <location line="+52"/>
         <location line="+44"/>
         <location filename="../app/cli/main.cpp" line="+52"/>
@@ -2821,7 +2896,7 @@
         <translation>--robot can 需要 --can-interface（例如 can0）</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes：&apos;%2&apos; 中 %1</translation>
     </message>
@@ -2831,12 +2906,14 @@
         <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-155"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1：%2</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+2"/>
         <source>--robot %1: %2</source>
         <translation>--robot %1：%2</translation>
     </message>
@@ -2961,7 +3038,7 @@
         <translation>未知命令 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+14"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>根据记录的试验重新辨识：会话再次运行，
@@ -2975,14 +3052,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）。</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+20"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="+35"/>
+        <location line="+101"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-84"/>
         <source>--iterations: must be a whole number from 1 to 100, got &apos;%1&apos;</source>
         <translation>--iterations：必须是 1 到 100 之间的整数，实际为 &apos;%1&apos;</translation>
     </message>
@@ -3082,12 +3157,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>试验 %1：%2，T = %3 s，%4 个采样点，最大跟踪误差 %5 度</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-150"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-33"/>
         <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
         <translation>--estimator：未知学习律 &apos;%1&apos;（已知：%2）</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+21"/>
+        <source>--nodes %1: %2 node ids for a robot of %3 joints: one node per joint is needed</source>
+        <translation>--nodes %1：%2 个节点 ID，而机器人有 %3 个关节：每个关节需要一个节点</translation>
+    </message>
+    <message>
+        <location line="+79"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
@@ -3151,7 +3231,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-183"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-163"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms：未知项 &apos;%1&apos;；可用的项为 armature、viscous、coulomb 和 offset，或 none</translation>
     </message>
@@ -3262,12 +3342,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="-37"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="-2"/>
         <source>Folder that relative output paths are taken from.</source>
         <translation>相对输出路径的基准文件夹。</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
         <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
 
 Identify a robot&apos;s inertia and joint friction from its recorded logs,
@@ -3282,7 +3362,7 @@ and compare the result with the URDF as given on --validate logs.
 %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+15"/>
         <source>&apos;identify&apos; needs --robot ROBOT</source>
         <translation>&apos;identify&apos; 需要 --robot ROBOT</translation>
     </message>
@@ -3435,7 +3515,7 @@ stdout, and the next plan uses the new estimate.
         <translation>控制器运行该计划一次所记录的日志（CSV）；每次重复一个。</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+13"/>
         <source>&apos;plan&apos; needs --out DIR</source>
         <translation>&apos;plan&apos; 需要 --out DIR</translation>
     </message>
@@ -3455,7 +3535,7 @@ stdout, and the next plan uses the new estimate.
         <translation>测量值</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -3544,11 +3624,11 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+3"/>
-        <source>Node ids of joint 1, 2, ... (default 1,2).</source>
-        <translation>关节 1、2……的节点 ID（默认 1,2）。</translation>
+        <source>Node ids of joint 1, 2, ..., up to 127 (default: joint j is node j).</source>
+        <translation>关节 1、2……的节点 ID，最大 127（默认：关节 j 为节点 j）。</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>ids</source>
         <translation>ID</translation>
     </message>
@@ -3795,7 +3875,7 @@ stdout, and the next plan uses the new estimate.
         <translation>模型有 %1 个关节，但配置了 %2 个 CAN 节点，或计划为空</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <location line="+27"/>
         <source>stopped by the operator before the drives moved</source>
         <translation>在驱动器运动前被操作员停止</translation>
@@ -3915,12 +3995,12 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::ConvergenceChart</name>
     <message>
-        <location filename="../ui/ConvergenceChart.cpp" line="+30"/>
+        <location filename="../ui/ConvergenceChart.cpp" line="+32"/>
         <source>Estimate k</source>
         <translation>估计 k</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+48"/>
         <source>|error| [%]</source>
         <translation>|误差| [%]</translation>
     </message>
@@ -3928,6 +4008,11 @@ stdout, and the next plan uses the new estimate.
         <location line="+0"/>
         <source>change [%]</source>
         <translation>变化 [%]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>path torque [%]</source>
+        <translation>路径力矩 [%]</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3939,13 +4024,41 @@ stdout, and the next plan uses the new estimate.
         <source>Convergence</source>
         <translation>收敛</translation>
     </message>
+    <message>
+        <location line="+62"/>
+        <source>vs truth</source>
+        <translation>相对真值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>vs newest estimate</source>
+        <translation>相对最新估计</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::ConvergencePanel</name>
+    <message>
+        <location filename="../ui/ConvergencePanel.cpp" line="+41"/>
+        <source>Estimates</source>
+        <translation>估计</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameters</source>
+        <translation>参数</translation>
+    </message>
 </context>
 <context>
     <name>learnid::ConvergenceTableModel</name>
     <message>
-        <location filename="../ui/ConvergenceTableModel.cpp" line="+174"/>
+        <location filename="../ui/ConvergenceTableModel.cpp" line="+195"/>
         <source>all (rank %1)</source>
         <translation>全部（秩 %1）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>⚠ kept %1 of %2</source>
+        <translation>⚠ 保留 %2 个中的 %1 个</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3953,7 +4066,7 @@ stdout, and the next plan uses the new estimate.
         <translation>⚠ 保留：%1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
@@ -4004,6 +4117,11 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+2"/>
+        <source>Path torque vs truth [%]</source>
+        <translation>路径力矩相对真值 [%]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Trials run</source>
         <translation>已运行试验</translation>
     </message>
@@ -4016,7 +4134,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::FileController</name>
     <message>
-        <location filename="../ui/FileController.cpp" line="+37"/>
+        <location filename="../ui/FileController.cpp" line="+39"/>
         <source>Parameter file written: %1</source>
         <translation>参数文件已写入：%1</translation>
     </message>
@@ -4024,6 +4142,16 @@ stdout, and the next plan uses the new estimate.
         <location line="+4"/>
         <source>Parameter file not written: %1</source>
         <translation>参数文件未写入：%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Identified URDF written: %1</source>
+        <translation>辨识后的 URDF 已写入：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>URDF not written: %1</source>
+        <translation>URDF 未写入：%1</translation>
     </message>
     <message>
         <location line="+25"/>
@@ -4086,12 +4214,7 @@ stdout, and the next plan uses the new estimate.
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location line="+60"/>
-        <source>%1 is a URDF robot (%2): the window runs the paper&apos;s 2-link arm; run this scenario with learnid-cli run --scenario %1</source>
-        <translation>%1 是 URDF 机器人（%2）：窗口只运行论文中的二连杆臂；请用 learnid-cli run --scenario %1 运行此场景</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+84"/>
         <source>Scenario loaded: %1</source>
         <translation>场景已加载：%1</translation>
     </message>
@@ -4122,7 +4245,7 @@ stdout, and the next plan uses the new estimate.
         <translation>未写入试验 CSV：尚未运行任何试验</translation>
     </message>
     <message numerus="yes">
-        <location line="-138"/>
+        <location line="-156"/>
         <source>%n trial CSV file(s) written to %1</source>
         <translation>
             <numerusform>已将 %n 个试验 CSV 文件写入 %1</numerusform>
@@ -4134,7 +4257,27 @@ stdout, and the next plan uses the new estimate.
         <translation>试验 CSV 未写入：%1</translation>
     </message>
     <message>
-        <location line="+144"/>
+        <location line="+35"/>
+        <source>Export identified URDF</source>
+        <translation>导出辨识后的 URDF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF (*.urdf)</source>
+        <translation>URDF (*.urdf)</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>URDF not written: accept an estimate first</source>
+        <translation>URDF 未写入：请先接受一个估计</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>identified by learnid %1 (estimate %2 of a commissioning session) on %3</source>
+        <translation>由 learnid %1（调试会话的估计 %2）于 %3 辨识</translation>
+    </message>
+    <message>
+        <location line="+79"/>
         <source>Plot not written: this build has no SVG support (Qt6::Svg); export as PNG instead</source>
         <translation>图表未写入：此版本不支持 SVG（Qt6::Svg），请导出为 PNG</translation>
     </message>
@@ -4158,13 +4301,32 @@ stdout, and the next plan uses the new estimate.
         <source>Report not written: no session</source>
         <translation>报告未写入：没有会话</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/ReportContent.cpp" line="+35"/>
+        <source>%n value(s)</source>
+        <translation>
+            <numerusform>%n 个值</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+16"/>
+        <location line="+8"/>
         <source>Path: from (%1, %2) m, %3 m at %4 deg</source>
         <translation>路径：从 (%1, %2) m 起，长 %3 m，方向 %4 度</translation>
     </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>Path: %n joint waypoint(s)</source>
+        <translation>
+            <numerusform>路径：%n 个关节路点</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
+        <source>Path: %1</source>
+        <translation>路径：%1</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>Torque limits: %1 N m, planning fraction %2</source>
         <translation>力矩限值：%1 N m，规划比例 %2</translation>
     </message>
@@ -4179,7 +4341,7 @@ stdout, and the next plan uses the new estimate.
         <translation>kd：%1 N m s/rad；lambda %2 rad/s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Estimator: %1, rho %2 rad/s, %3 trials</source>
         <translation>估计器：%1，rho %2 rad/s，%3 次试验</translation>
     </message>
@@ -4189,7 +4351,7 @@ stdout, and the next plan uses the new estimate.
         <translation>初始参数：%1</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+10"/>
         <source>none (nothing applied in this session)</source>
         <translation>无（本次会话未写入）</translation>
     </message>
@@ -4199,7 +4361,7 @@ stdout, and the next plan uses the new estimate.
         <translation>%1（估计 %2）</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location filename="../ui/FileController.cpp" line="+8"/>
         <source>Report written: %1</source>
         <translation>报告已写入：%1</translation>
     </message>
@@ -4390,6 +4552,16 @@ ratio %</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>Export identified &amp;URDF...</source>
+        <translation>导出辨识后的 URDF(&amp;U)...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write the robot&apos;s URDF with the accepted estimate as real bodies and its friction (URDF robots)</source>
+        <translation>写出机器人的 URDF，以已接受的估计作为真实刚体及其摩擦（URDF 机器人）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Export trial &amp;CSV...</source>
         <translation>导出试验 CSV(&amp;C)...</translation>
     </message>
@@ -4597,12 +4769,12 @@ ratio %</source>
         <translation>learnid – 调试</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Main</source>
         <translation>主工具栏</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+4"/>
         <source>Pre-trial check</source>
         <translation>试验前检查</translation>
     </message>
@@ -4637,12 +4809,12 @@ ratio %</source>
         <translation>参数收敛</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>The language changes when learnid is started again.</source>
         <translation>语言将在下次启动 learnid 时切换。</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <source>Dis&amp;connect robot</source>
         <translation>断开机器人(&amp;C)</translation>
     </message>
@@ -4652,7 +4824,7 @@ ratio %</source>
         <translation>连接机器人(&amp;C)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>Run disabled: %1</source>
         <translation>禁止运行：%1</translation>
     </message>
@@ -4682,7 +4854,7 @@ ratio %</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>Cannot connect: %1</source>
         <translation>无法连接：%1</translation>
     </message>
@@ -4787,6 +4959,74 @@ ratio %</source>
     </message>
 </context>
 <context>
+    <name>learnid::ParameterTableModel</name>
+    <message>
+        <location filename="../ui/ParameterTableModel.cpp" line="+129"/>
+        <source>kept</source>
+        <translation>保留</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>⚠ kept</source>
+        <translation>⚠ 保留</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>✗ no</source>
+        <translation>✗ 否</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>✓</source>
+        <translation>✓</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>Link / joint</source>
+        <translation>连杆 / 关节</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Estimate %1</source>
+        <translation>估计 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>σ / |φ| [%]</source>
+        <translation>σ / |φ| [%]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Observed</source>
+        <translation>已观测</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Real body</source>
+        <translation>真实刚体</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Truth</source>
+        <translation>真值</translation>
+    </message>
+</context>
+<context>
     <name>learnid::PreTrialCheckView</name>
     <message>
         <location filename="../ui/PreTrialCheckView.cpp" line="+35"/>
@@ -4809,7 +5049,17 @@ ratio %</source>
         <translation>占用</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+0"/>
+        <source>Gravity</source>
+        <translation>重力</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The largest torque holding the arm against gravity takes on this path, as a share of the limit</source>
+        <translation>在该路径上克服重力保持机械臂所需的最大力矩，占限值的比例</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Planned motion:</source>
         <translation>规划运动：</translation>
     </message>
@@ -5119,7 +5369,12 @@ ratio %</source>
 <context>
     <name>learnid::ReportWriter</name>
     <message>
-        <location filename="../ui/ReportWriter.cpp" line="+52"/>
+        <location filename="../ui/ReportWriter.cpp" line="+56"/>
+        <source>Parameters</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>learnid commissioning report</source>
         <translation>learnid 调试报告</translation>
     </message>
@@ -5155,17 +5410,144 @@ ratio %</source>
     </message>
 </context>
 <context>
+    <name>learnid::RobotChooser</name>
+    <message>
+        <location filename="../ui/RobotChooser.cpp" line="+35"/>
+        <source>Robot model</source>
+        <translation>机器人模型</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open URDF…</source>
+        <translation>打开 URDF…</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The paper&apos;s 2-link arm (closed form)</source>
+        <translation>论文中的两连杆臂（闭式）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (built-in URDF)</source>
+        <translation>%1（内置 URDF）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF file…</source>
+        <translation>URDF 文件…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Joint</source>
+        <translation>关节</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Lower</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Upper</source>
+        <translation>上限</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Effort</source>
+        <translation>最大力矩/力</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Mass [kg]</source>
+        <translation>质量 [kg]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Position limits in deg (revolute) or m (prismatic), effort in N m or N, as the URDF gives them; the mass of the link the joint moves</source>
+        <translation>位置限值单位为 deg（旋转关节）或 m（移动关节），最大力矩/力（effort）单位为 N m 或 N，均取自 URDF；质量为该关节所驱动连杆的质量</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Open the robot&apos;s URDF</source>
+        <translation>打开机器人的 URDF</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF (*.urdf);;All files (*)</source>
+        <translation>URDF (*.urdf);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Cannot use this robot: %1</source>
+        <translation>无法使用此机器人：%1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>2 revolute joints in the horizontal plane, no gravity or friction; %1 parameters (the paper&apos;s a, b, c)</source>
+        <translation>水平面内 2 个旋转关节，无重力和摩擦；%1 个参数（论文中的 a、b、c）</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 (prismatic)</source>
+        <translation>%1（移动关节）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>rotor inertia</source>
+        <translation>转子惯量</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>viscous</source>
+        <translation>粘性</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Coulomb</source>
+        <translation>库仑</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>offset</source>
+        <translation>偏置</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n revolute joint(s)</source>
+        <translation>
+            <numerusform>%n 个旋转关节</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n joint(s) (%1 prismatic)</source>
+        <translation>
+            <numerusform>%n 个关节（其中 %1 个移动关节）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, %2 kg moving; joint terms: %3; %4 base parameters (of %5 standard)</source>
+        <translation>%1，运动质量 %2 kg；关节项：%3；%4 个基参数（共 %5 个标准参数）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+</context>
+<context>
     <name>learnid::RobotPanel</name>
     <message>
         <location filename="../ui/RobotPanel.cpp" line="+22"/>
-        <location line="+81"/>
+        <location line="+100"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-72"/>
-        <source>Simulated (paper 2-link arm)</source>
-        <translation>仿真（论文中的两连杆臂）</translation>
+        <location line="-91"/>
+        <source>Simulated (the scenario&apos;s robot)</source>
+        <translation>仿真（场景中的机器人）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5233,12 +5615,17 @@ ratio %</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+44"/>
         <source>CAN nodes: %1</source>
         <translation>CAN 节点：%1</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>CAN nodes: %1 node ids for a robot of %2 joints: one node per joint</source>
+        <translation>CAN 节点：%1 个节点 ID，而机器人有 %2 个关节：每个关节一个节点</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>CAN interface: enter one, e.g. can0</source>
         <translation>CAN 接口：请输入一个，例如 can0</translation>
     </message>
@@ -5284,27 +5671,22 @@ ratio %</source>
         <translation>起点 (x, y)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+39"/>
         <source>Number of trials</source>
         <translation>试验次数</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Path (straight line)</source>
-        <translation>路径（直线）</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="-26"/>
         <source>Length</source>
         <translation>长度</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+28"/>
         <source>Rest before the motion</source>
         <translation>运动前静止时间</translation>
     </message>
@@ -5319,12 +5701,17 @@ ratio %</source>
         <translation>力矩限值</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-28"/>
         <source>Limit per joint</source>
         <translation>各关节限值</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+20"/>
+        <source>Path</source>
+        <translation>路径</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Planning fraction</source>
         <translation>规划比例</translation>
     </message>
@@ -5359,12 +5746,12 @@ ratio %</source>
         <translation>每次试验的重复次数</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-50"/>
         <source>Initial parameters</source>
         <translation>初始参数</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+53"/>
         <source>Safety</source>
         <translation>安全</translation>
     </message>
@@ -5384,9 +5771,14 @@ ratio %</source>
         <translation>仿真机器人</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-57"/>
         <source>True parameters</source>
         <translation>真实参数</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>CAD perturbation (URDF robots)</source>
+        <translation>CAD 扰动（URDF 机器人）</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -5423,8 +5815,38 @@ ratio %</source>
     <name>learnid::ScenarioForm</name>
     <message>
         <location filename="../ui/ScenarioForm.cpp" line="+48"/>
+        <source>Path CSV…</source>
+        <translation>路径 CSV…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Waypoints</source>
+        <translation>路点</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Run a recorded joint path instead: CSV t, q1..qn [s, rad]</source>
+        <translation>改为运行记录的关节路径：CSV t, q1..qn [s, rad]</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Open a joint path</source>
+        <translation>打开关节路径</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV (*.csv);;All files (*)</source>
+        <translation>CSV (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>Scenario key %1</source>
         <translation>场景键 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF robots: empty takes the robot&apos;s</source>
+        <translation>URDF 机器人：留空则采用机器人的值</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -5432,7 +5854,7 @@ ratio %</source>
         <translation>用逗号分隔的数值</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+25"/>
         <source>paper-consistent</source>
         <translation>与论文一致</translation>
     </message>
@@ -5447,12 +5869,45 @@ ratio %</source>
         <translation>学习律</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+19"/>
+        <source>unknown model &quot;%1&quot;</source>
+        <translation>未知模型“%1”</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>joint %1</source>
+        <translation>关节 %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Path: %1 (%2 samples, from the scenario file)</source>
+        <translation>路径：%1（%2 个采样点，来自场景文件）</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+24"/>
+        <source>Initial parameters (%n base parameter(s))</source>
+        <translation>
+            <numerusform>初始参数（%n 个基参数）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Initial parameters (%1)</source>
         <translation>初始参数（%1）</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+13"/>
+        <location line="+132"/>
+        <source>robot.model: %1</source>
+        <translation>robot.model：%1</translation>
+    </message>
+    <message>
+        <location line="-92"/>
+        <source>path.file: %1</source>
+        <translation>path.file：%1</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <source>enter one number</source>
         <translation>请输入一个数</translation>
     </message>
@@ -5539,7 +5994,7 @@ ratio %</source>
 <context>
     <name>learnid::SessionPresenter</name>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+30"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+33"/>
         <source>connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
@@ -5589,8 +6044,15 @@ ratio %</source>
         <source>Parameters written to the robot and read back.</source>
         <translation>参数已写入机器人并回读确认。</translation>
     </message>
+    <message numerus="yes">
+        <location line="+28"/>
+        <source>%n parameter(s)</source>
+        <translation>
+            <numerusform>%n 个参数</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+22"/>
+        <location line="+3"/>
         <source>nothing applied yet</source>
         <translation>尚未写入</translation>
     </message>
@@ -5603,12 +6065,17 @@ ratio %</source>
 <context>
     <name>learnid::SessionWorker</name>
     <message>
-        <location filename="../core/service/SessionWorker.cpp" line="+42"/>
+        <location filename="../core/service/SessionWorker.cpp" line="+44"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>未知机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+29"/>
+        <source>joint %1</source>
+        <translation>关节 %1</translation>
+    </message>
+    <message>
+        <location line="+85"/>
         <location line="+25"/>
         <source>no robot connected</source>
         <translation>未连接机器人</translation>
@@ -5665,12 +6132,17 @@ ratio %</source>
 <context>
     <name>learnid::TrackingErrorPlot</name>
     <message>
-        <location filename="../ui/TrackingErrorPlot.cpp" line="+37"/>
+        <location filename="../ui/TrackingErrorPlot.cpp" line="+30"/>
         <source>Auto-scale</source>
         <translation>自动缩放</translation>
     </message>
     <message>
         <location line="+8"/>
+        <source>The joint whose tracking error is shown</source>
+        <translation>显示其跟踪误差的关节</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Off: symmetric axis on a 0.02 deg grid, as in the paper</source>
         <translation>关闭：对称坐标轴，0.02 度网格，与论文相同</translation>
     </message>
@@ -5690,13 +6162,18 @@ ratio %</source>
         <translation>显示：</translation>
     </message>
     <message>
-        <location line="+24"/>
-        <location line="+19"/>
+        <location line="+26"/>
+        <location line="+63"/>
         <source>All trials (overlay)</source>
         <translation>所有试验（叠加）</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-39"/>
+        <source>All joints</source>
+        <translation>所有关节</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Trial %1</source>
         <translation>试验 %1</translation>
     </message>
@@ -5706,24 +6183,34 @@ ratio %</source>
         <translation>试验 %1（%2）</translation>
     </message>
     <message>
-        <location line="+92"/>
-        <source>Tracking error, all trials (solid: joint 1, dashed: joint 2; darker: later)</source>
-        <translation>跟踪误差，所有试验（实线：关节 1，虚线：关节 2；颜色越深越晚）</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Tracking error, %1</source>
-        <translation>跟踪误差，%1</translation>
-    </message>
-    <message>
-        <location line="+20"/>
-        <source>trial %1, joint %2</source>
-        <translation>试验 %1，关节 %2</translation>
+        <location line="+97"/>
+        <source>Tracking error</source>
+        <translation>跟踪误差</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>joint %1</source>
+        <source>Tracking error of %1</source>
+        <translation>%1 的跟踪误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, all trials (darker: later)</source>
+        <translation>%1，所有试验（颜色越深越晚）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, %2</source>
+        <translation>%1，%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="+51"/>
+        <source>Joint %1</source>
         <translation>关节 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Joint %1 (%2)</source>
+        <translation>关节 %1（%2）</translation>
     </message>
 </context>
 <context>
@@ -5806,6 +6293,44 @@ ratio %</source>
     </message>
 </context>
 <context>
+    <name>learnid::WaypointEditor</name>
+    <message>
+        <location filename="../ui/WaypointEditor.cpp" line="+17"/>
+        <source>Add waypoint</source>
+        <translation>添加路点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove waypoint</source>
+        <translation>删除路点</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Joint positions the path passes through, in order: degrees for revolute joints, metres for prismatic ones</source>
+        <translation>路径依次经过的关节位置：旋转关节以度为单位，移动关节以米为单位</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>q%1 [%2]</source>
+        <translation>q%1 [%2]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>deg</source>
+        <translation>deg</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>waypoint %1, %2: &quot;%3&quot; is not a number</source>
+        <translation>路点 %1，%2：“%3”不是数字</translation>
+    </message>
+</context>
+<context>
     <name>learnid::robotsim::SimProcess</name>
     <message>
         <location filename="../app/robot-sim/SimProcess.cpp" line="+43"/>
@@ -5814,7 +6339,7 @@ ratio %</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+88"/>
+        <location line="+93"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>无法用插件 %2 连接 CAN 接口 %1：%3</translation>
     </message>

@@ -18,8 +18,11 @@ QTableView *tableView(QAbstractItemModel *model, const QString &name)
     view->setObjectName(name);
     view->setModel(model);
     view->setAlternatingRowColors(true);
-    view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // Sized to the contents once per reset (a trial), not at every layout: ResizeToContents
+    // measures every cell of a 57-row table each time the window lays out.
+    view->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     view->verticalHeader()->hide();
+    view->horizontalHeader()->setStretchLastSection(true);
     QObject::connect(model, &QAbstractItemModel::modelReset, view,
                      &QTableView::resizeColumnsToContents);
     return view;

@@ -43,9 +43,12 @@ void ConvergenceTableModel::setHistory(const QVector<TrialResult> &history,
 
 void ConvergenceTableModel::setFigures(const EstimateFigures &figures)
 {
-    beginResetModel();
+    // The same rows and columns: a change of cells, not of the table (no second reset after
+    // setHistory's, which would size the view's columns again).
     m_figures = figures;
-    endResetModel();
+    const int column = columnOf(Column::PathTorque);
+    if (column >= 0 && rowCount() > 0)
+        emit dataChanged(index(0, column), index(rowCount() - 1, column));
 }
 
 int ConvergenceTableModel::shownParameters() const

@@ -9,6 +9,7 @@
 #include "ui/ConvergenceChart.h"
 #include "ui/ConvergenceTableModel.h"
 #include "ui/PlotImage.h"
+#include "ui/ReportContent.h"
 #include "ui/ReportWriter.h"
 #include "ui/ScenarioForm.h"
 #include "ui/TrackingErrorPlot.h"
@@ -245,51 +246,8 @@ void FileController::exportReportTo(const QString &path)
         emit finished(tr("Report not written: no session"), false);
         return;
     }
-    const SessionInfo &info = *m_session->info();
-    const Scenario &s = info.scenario;
-    auto list = [](const Eigen::VectorXd &v) {
-        QStringList parts;
-        for (Eigen::Index i = 0; i < v.size(); ++i)
-            parts << QString::number(v[i], 'g', 6);
-        return parts.join(QStringLiteral(", "));
-    };
-    ReportContent c;
-    c.created = QDateTime::currentDateTime();
-    c.toolVersion = QStringLiteral(LEARNID_VERSION);
-    c.robot = info.robotDescription;
-    c.scenario = {
-        tr("Path: from (%1, %2) m, %3 m at %4 deg")
-            .arg(s.line.start.x())
-            .arg(s.line.start.y())
-            .arg(s.line.length)
-            .arg(s.line.directionDeg),
-        tr("Torque limits: %1 N m, planning fraction %2")
-            .arg(list(s.torqueLimits))
-            .arg(s.planningFraction),
-        tr("kp: %1 N m/rad; ki: %2").arg(list(s.controller.kp), list(s.controller.ki)),
-        tr("kd: %1 N m s/rad; lambda %2 rad/s").arg(list(s.controller.kd)).arg(s.controller.lambda),
-        tr("Estimator: %1, rho %2 rad/s, %3 trials")
-            .arg(s.law)
-            .arg(s.estimator.rho)
-            .arg(s.iterations),
-        tr("Initial parameters: %1").arg(list(s.initialParameters)),
-    };
-    const ConvergenceTableModel *table = m_views.table;
-    for (int col = 0; col < table->columnCount(); ++col)
-        c.tableHeader << table->headerData(col, Qt::Horizontal, Qt::DisplayRole).toString();
-    for (int row = 0; row < table->rowCount(); ++row) {
-        QStringList cells;
-        for (int col = 0; col < table->columnCount(); ++col)
-            cells << table->index(row, col).data().toString();
-        c.tableRows << cells;
-    }
-    c.trackingPlot = widgetImage(m_views.plot->chartView(), QSize(900, 560));
-    c.convergencePlot = widgetImage(m_views.chart->chartView(), QSize(600, 560));
-    const int stored = m_session->appliedEstimateIndex();
-    c.appliedSet =
-        m_session->storedParameters().size() == 0
-            ? tr("none (nothing applied in this session)")
-            : tr("%1 (estimate %2)").arg(list(m_session->storedParameters())).arg(stored);
+    const ReportContent c = sessionReportContent(
+        *m_session, {m_views.table, m_views.parameters, m_views.plot, m_views.chart});
     try {
         writeFileAtomically(path, commissioningReportPdf(c));
         remember(path);

@@ -12,6 +12,7 @@ namespace learnid {
 class ApplyPanel;
 class ConvergenceChart;
 class ConvergenceTableModel;
+class ParameterTableModel;
 class ScenarioForm;
 class SessionController;
 class TrackingErrorPlot;
@@ -43,6 +44,7 @@ public:
     {
         ScenarioForm *form = nullptr;
         ConvergenceTableModel *table = nullptr;
+        ParameterTableModel *parameters = nullptr;
         TrackingErrorPlot *plot = nullptr;
         ConvergenceChart *chart = nullptr;
         ApplyPanel *apply = nullptr;

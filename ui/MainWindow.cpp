@@ -78,8 +78,8 @@ MainWindow::MainWindow(QSettings *settings, QWidget *parent)
 {
     setWindowTitle(tr("learnid \u2013 commissioning"));
     setWindowIcon(QIcon(QStringLiteral(":/icons/learnid.svg")));
-    m_files = new FileController(m_controller, {m_form, m_table, m_plot, m_chart, m_apply},
-                                 &m_settings, this);
+    m_files = new FileController(
+        m_controller, {m_form, m_table, m_parameters, m_plot, m_chart, m_apply}, &m_settings, this);
     m_form->setScenario(m_settings.scenario());
     m_plot->setAutoScale(m_settings.plotAutoScale());
     m_actions->setLanguage(m_settings.language());

@@ -37,6 +37,29 @@ int drawTable(QPainter &p, const QRect &rect, const QStringList &header,
     return y;
 }
 
+// The parameters as rows, as many pages as they need, the header repeated on each.
+void drawParameterPages(QPdfWriter &writer, QPainter &p, const ReportContent &c, int titleLine)
+{
+    const QRect page = p.viewport();
+    QFont font = p.font();
+    font.setPointSizeF(6.5);
+    p.setFont(font);
+    const int lineHeight = p.fontMetrics().height() * 13 / 10;
+    const int perPage = std::max(1, (page.height() - 4 * titleLine) / lineHeight - 2);
+    for (qsizetype first = 0; first < c.parameterRows.size(); first += perPage) {
+        writer.newPage();
+        QFont bold = font;
+        bold.setPointSizeF(8.5);
+        bold.setBold(true);
+        p.setFont(bold);
+        p.drawText(QRect(0, 0, page.width(), titleLine),
+                   QCoreApplication::translate("learnid::ReportWriter", "Parameters"));
+        p.setFont(font);
+        drawTable(p, QRect(0, 2 * titleLine, page.width(), page.height() - 2 * titleLine),
+                  c.parameterHeader, c.parameterRows.mid(first, perPage));
+    }
+}
+
 } // namespace
 
 QByteArray commissioningReportPdf(const ReportContent &c)
@@ -117,6 +140,7 @@ QByteArray commissioningReportPdf(const ReportContent &c)
     p.drawText(
         QRect(0, page.height() - line, w, line), Qt::AlignRight,
         QCoreApplication::translate("learnid::ReportWriter", "learnid %1").arg(c.toolVersion));
+    drawParameterPages(writer, p, c, line);
     p.end();
     return bytes;
 }

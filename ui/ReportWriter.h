@@ -21,9 +21,12 @@ struct ReportContent
     QImage trackingPlot;
     QImage convergencePlot;
     QString appliedSet; ///< what the robot holds, in words
+    /// The parameters as rows (an n-joint arm), on pages after the first; empty: none.
+    QStringList parameterHeader;
+    QList<QStringList> parameterRows;
 };
 
-/// The report as PDF file content (A4 portrait, one page; QPdfWriter).
+/// The report as PDF file content (A4 portrait, one page and the parameter pages; QPdfWriter).
 QByteArray commissioningReportPdf(const ReportContent &content);
 
 } // namespace learnid

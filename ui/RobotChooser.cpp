@@ -40,6 +40,8 @@ RobotChooser::RobotChooser(QWidget *parent)
     , m_joints(new QTableWidget(this))
 {
     m_model->setObjectName(QStringLiteral("robot.model"));
+    m_model->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_model->setMinimumContentsLength(16);
     m_openUrdf->setObjectName(QStringLiteral("openUrdfButton"));
     m_summary->setObjectName(QStringLiteral("robotSummary"));
     m_joints->setObjectName(QStringLiteral("robotJoints"));
@@ -59,6 +61,7 @@ RobotChooser::RobotChooser(QWidget *parent)
     m_joints->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_joints->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_joints->setMaximumHeight(190);
+    m_joints->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
 
     auto *grid = new QGridLayout(this);
     grid->addWidget(m_model, 0, 0);

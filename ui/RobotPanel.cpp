@@ -28,7 +28,7 @@ RobotPanel::RobotPanel(QWidget *parent)
     m_nodes->setObjectName(QStringLiteral("canNodes"));
     m_syncTimeout->setObjectName(QStringLiteral("canSyncTimeout"));
     m_connect->setObjectName(QStringLiteral("connectButton"));
-    m_kind->addItem(tr("Simulated (paper 2-link arm)"), int(RobotKind::Simulated));
+    m_kind->addItem(tr("Simulated (the scenario's robot)"), int(RobotKind::Simulated));
     m_kind->addItem(tr("CAN (CANopen / CiA 402)"), int(RobotKind::Can));
     m_plugin->addItems(QCanBus::instance()->plugins());
     m_plugin->setCurrentText(QStringLiteral("socketcan"));

@@ -1,6 +1,7 @@
 #include "ui/ScenarioForm.h"
 
 #include "identify/LearningLaw.h"
+#include "io/PathCsv.h"
 #include "io/ScenarioFile.h"
 #include "model/ChainModel.h"
 #include "model/Error.h"
@@ -10,10 +11,14 @@
 #include "ui/WaypointEditor.h"
 
 #include <QComboBox>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QGridLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QVBoxLayout>
 #include <cmath>
@@ -40,7 +45,19 @@ ScenarioForm::ScenarioForm(QWidget *parent)
     , m_robot(new RobotChooser(this))
     , m_waypoints(new WaypointEditor(this))
     , m_pathFile(new QLabel(this))
+    , m_choosePathFile(new QPushButton(tr("Path CSV\u2026"), this))
+    , m_useWaypoints(new QPushButton(tr("Waypoints"), this))
 {
+    m_choosePathFile->setObjectName(QStringLiteral("choosePathFileButton"));
+    m_choosePathFile->setToolTip(tr("Run a recorded joint path instead: CSV t, q1..qn [s, rad]"));
+    m_useWaypoints->setObjectName(QStringLiteral("useWaypointsButton"));
+    connect(m_choosePathFile, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open a joint path"), QString(),
+                                                          tr("CSV (*.csv);;All files (*)"));
+        if (!path.isEmpty())
+            usePathFile(path);
+    });
+    connect(m_useWaypoints, &QPushButton::clicked, this, &ScenarioForm::useWaypoints);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_robot);
     connect(m_robot, &RobotChooser::robotChosen, this, &ScenarioForm::chooseRobot);
@@ -55,6 +72,7 @@ ScenarioForm::ScenarioForm(QWidget *parent)
             Row row;
             row.field = field;
             row.label = new QLabel(field.label, box);
+            row.label->setWordWrap(true); // "Initial parameters (57 base parameters)"
             row.edit = new QLineEdit(box);
             row.edit->setObjectName(field.key);
             row.edit->setMinimumWidth(90);
@@ -78,6 +96,11 @@ ScenarioForm::ScenarioForm(QWidget *parent)
         if (group.fields.constFirst().key == QLatin1String("path.start")) {
             grid->addWidget(m_waypoints, r++, 0, 1, 3);
             grid->addWidget(m_pathFile, r++, 0, 1, 3);
+            auto *kinds = new QHBoxLayout;
+            kinds->addWidget(m_useWaypoints);
+            kinds->addWidget(m_choosePathFile);
+            kinds->addStretch(1);
+            grid->addLayout(kinds, r++, 0, 1, 3);
         }
         if (group.fields.constLast().key == QLatin1String("robot.initialParameters")) {
             m_law->setObjectName(QStringLiteral("estimator.law"));
@@ -179,6 +202,38 @@ void ScenarioForm::updatePathRows()
     }
     m_waypoints->setVisible(kind == PathKind::Waypoints);
     m_pathFile->setVisible(kind == PathKind::File);
+    const bool urdf = isUrdfModel(m_base.model);
+    m_choosePathFile->setVisible(urdf);
+    m_useWaypoints->setVisible(urdf && kind == PathKind::File);
+}
+
+void ScenarioForm::usePathFile(const QString &path)
+{
+    try {
+        const PathSamples samples = readPathCsvFile(path, m_model ? m_model->dof() : 0);
+        Scenario s = m_base;
+        if (const auto current = scenario())
+            s = *current;
+        s.path.kind = PathKind::File;
+        s.path.file = QFileInfo(path).absoluteFilePath();
+        s.path.fileTimes = samples.t;
+        s.path.fileAngles = samples.q;
+        setScenario(s);
+    } catch (const Error &e) {
+        m_otherError->setText(tr("path.file: %1").arg(e.message()));
+        m_otherError->show();
+    }
+}
+
+void ScenarioForm::useWaypoints()
+{
+    Scenario s = m_base;
+    if (const auto current = scenario())
+        s = *current;
+    s.path.kind = PathKind::Waypoints;
+    if (s.path.waypoints.size() < 2 && m_model) // none kept: the robot's default path
+        s.path.waypoints = scenarioForRobot(s.model, s.urdf).path.waypoints;
+    setScenario(s);
 }
 
 // Reads the waypoint table into s and checks it against the robot's joint limits.

@@ -11,6 +11,7 @@
 class QComboBox;
 class QLabel;
 class QLineEdit;
+class QPushButton;
 
 namespace learnid {
 
@@ -46,6 +47,11 @@ public:
     void setEditable(bool editable);
     RobotChooser *robotChooser() const { return m_robot; }
     WaypointEditor *waypointEditor() const { return m_waypoints; }
+    /// A URDF robot's path from a recorded joint path (PathCsv.h), as the technician chose it
+    /// with "Path CSV..."; a file it cannot use is refused naming line and column.
+    void usePathFile(const QString &path);
+    /// Back from a path file to the waypoint table.
+    void useWaypoints();
     /// The robot model of the scenario shown (null when it cannot be made).
     std::shared_ptr<const RobotModel> model() const { return m_model; }
 
@@ -74,6 +80,8 @@ private:
     RobotChooser *m_robot;
     WaypointEditor *m_waypoints;
     QLabel *m_pathFile;
+    QPushButton *m_choosePathFile;
+    QPushButton *m_useWaypoints;
     std::shared_ptr<const RobotModel> m_model;
     QString m_modelError;
     QLabel *m_otherError;

@@ -91,8 +91,8 @@ SessionPresenter::SessionPresenter(SessionController *controller, Views views, Q
 void SessionPresenter::refreshTables()
 {
     const SessionController *c = m_controller;
-    m_views.table->setHistory(c->history(), c->estimates());
     m_views.table->setFigures(c->estimateFigures());
+    m_views.table->setHistory(c->history(), c->estimates());
     m_views.table->setAccepted(c->acceptedIndex());
     m_views.table->setApplied(c->appliedEstimateIndex());
     m_views.parameters->setEstimates(c->estimates(), c->history(), c->estimateFigures());

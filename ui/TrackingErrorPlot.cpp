@@ -13,6 +13,7 @@
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
 #include <algorithm>
+#include <utility>
 
 namespace learnid {
 
@@ -87,8 +88,12 @@ void TrackingErrorPlot::clear()
 void TrackingErrorPlot::setJointNames(const QStringList &names)
 {
     m_jointNames = names;
+    int joints = int(names.size()); // and the joints of the curves already shown
+    for (const QList<TrackingErrorCurve> &curves : std::as_const(m_trials))
+        for (const TrackingErrorCurve &curve : curves)
+            joints = std::max(joints, curve.joint + 1);
     m_jointCount = -1; // relabel even when the count stays
-    setJointCount(int(names.size()));
+    setJointCount(joints);
     redraw();
 }
 
@@ -273,7 +278,11 @@ void TrackingErrorPlot::redraw()
     for (QLegendMarker *marker : m_chart->legend()->markers())
         marker->setVisible(inLegend.contains(marker->series()));
     setTimeAxis(m_time, tMax);
-    setErrorAxis(m_error, m_autoScale->isChecked(), maxAbs, yMin, yMax);
+    // About one grid label per 30 px of the plot's height (the chart's frame takes ~40 %).
+    // (A plot not on screen has no height yet: the full grid.)
+    const int ticks =
+        m_view->isVisible() ? std::clamp(int(0.6 * m_view->height() / 30.0), 4, 12) : 12;
+    setErrorAxis(m_error, m_autoScale->isChecked(), maxAbs, yMin, yMax, ticks);
 }
 
 } // namespace learnid

@@ -64,7 +64,8 @@ void setTimeAxis(QValueAxis *axis, double tMax)
     axis->setLabelFormat(span > 3 ? QStringLiteral("%.1f") : QStringLiteral("%.2f"));
 }
 
-void setErrorAxis(QValueAxis *axis, bool autoScale, double maxAbsDeg, double yMin, double yMax)
+void setErrorAxis(QValueAxis *axis, bool autoScale, double maxAbsDeg, double yMin, double yMax,
+                  int maxTicks)
 {
     if (autoScale) {
         axis->setTickType(QValueAxis::TicksFixed);
@@ -73,7 +74,7 @@ void setErrorAxis(QValueAxis *axis, bool autoScale, double maxAbsDeg, double yMi
         axis->applyNiceNumbers();
         axis->setLabelFormat(QStringLiteral("%.3g"));
     } else {
-        const ErrorAxisRange r = errorAxisRange(maxAbsDeg);
+        const ErrorAxisRange r = errorAxisRange(maxAbsDeg, 0.02, maxTicks);
         axis->setRange(-r.limit, r.limit);
         axis->setTickType(QValueAxis::TicksDynamic);
         axis->setTickAnchor(0.0);

@@ -23,6 +23,9 @@ QString jointLabel(int joint, const QStringList &names);
 void setTimeAxis(QValueAxis *axis, double tMax);
 /// The error axis [deg]: symmetric on the paper's 0.02 deg grid for errors up to maxAbsDeg
 /// (errorAxisRange), or auto-scaled: fitted to [yMin, yMax] with nice numbers.
-void setErrorAxis(QValueAxis *axis, bool autoScale, double maxAbsDeg, double yMin, double yMax);
+/// maxTicks: at most this many grid intervals (fewer on a low plot, where more labels would not
+/// fit and QtCharts would elide them all).
+void setErrorAxis(QValueAxis *axis, bool autoScale, double maxAbsDeg, double yMin, double yMax,
+                  int maxTicks = 12);
 
 } // namespace learnid

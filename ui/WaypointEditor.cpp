@@ -27,6 +27,8 @@ WaypointEditor::WaypointEditor(QWidget *parent)
     m_reason->hide();
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->setMaximumHeight(160);
+    // As wide as the form, not as its 7 columns: the table scrolls sideways instead.
+    m_table->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_table->setToolTip(tr("Joint positions the path passes through, in order: degrees for "
                            "revolute joints, metres for prismatic ones"));
     auto *buttons = new QHBoxLayout;

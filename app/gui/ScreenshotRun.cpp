@@ -18,6 +18,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QTimer>
 #include <cstdio>
 
@@ -142,6 +143,10 @@ void ScreenshotRun::startRecordedData()
 void ScreenshotRun::grabWindowLater()
 {
     m_window->plot()->setSelectedTrial(-1); // all trials overlaid, like the paper's figures
+    if (m_view == View::SevenAxis) {        // what is new for n joints: the parameters as rows
+        if (auto *tabs = m_window->findChild<QTabWidget *>(QStringLiteral("convergenceTabs")))
+            tabs->setCurrentIndex(1);
+    }
     // Let the views lay out the final data before grabbing.
     QTimer::singleShot(300, this, [this] {
         const bool ok = m_window->grab().save(m_path, "PNG");

@@ -68,9 +68,8 @@ void SessionWorker::open(const Scenario &requested)
     info.parameters = m_session->model().parameters();
     info.dof = m_session->model().dof();
     const auto *chain = dynamic_cast<const ChainModel *>(&m_session->model());
-    for (int j = 0; j < info.dof; ++j)
-        info.jointNames << (chain ? chain->chain().joints[size_t(j)].name
-                                  : tr("joint %1").arg(j + 1));
+    for (int j = 0; chain && j < info.dof; ++j) // the paper's arm: no names beyond "Joint k"
+        info.jointNames << chain->chain().joints[size_t(j)].name;
     info.truth = m_session->robot().trueParameters();
     info.storedParameters = m_session->robot().storedParameters();
     emit opened(info);

@@ -8,6 +8,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
+#include "io/PathCsv.h"
 #include "model/ChainModel.h"
 #include "model/ModelFactory.h"
 #include "model/PhysicalConsistency.h"
@@ -28,6 +29,7 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QtTest>
@@ -126,6 +128,47 @@ private slots:
         QVERIFY(!reason->isVisible());
     }
 
+    void pathCsv_replacesTheWaypoints_andABadOneIsNamed()
+    {
+        WindowFixture f;
+        choosePanda(f);
+        ScenarioForm *form = f.window->form();
+        // A recorded path of the 7 joints: the default path's first waypoint and a slow swing.
+        const Eigen::VectorXd start = scenarioForRobot(kPanda).path.waypoints.front();
+        PathSamples samples;
+        samples.t = Eigen::VectorXd::LinSpaced(201, 0.0, 2.0);
+        samples.q.resize(7, 201);
+        for (int k = 0; k < 201; ++k)
+            samples.q.col(k) = start.array() + 0.2 * (1.0 - std::cos(M_PI * samples.t[k])) / 2.0;
+        QTemporaryDir dir;
+        const QString good = dir.filePath(QStringLiteral("path.csv"));
+        writeFileAtomically(good, pathCsv(samples));
+        form->usePathFile(good);
+        QVERIFY2(form->isValid(), qPrintable(form->firstError()));
+        QCOMPARE(form->scenario()->path.kind, PathKind::File);
+        QCOMPARE(form->scenario()->path.fileAngles, samples.q);
+        QVERIFY(!form->waypointEditor()->isVisible());
+
+        // A file for another robot: refused naming the file and line; the path stays.
+        const QString bad = dir.filePath(QStringLiteral("six.csv"));
+        samples.q.conservativeResize(6, Eigen::NoChange);
+        writeFileAtomically(bad, pathCsv(samples));
+        form->usePathFile(bad);
+        QCOMPARE(form->scenario()->path.file, QFileInfo(good).absoluteFilePath());
+        const QList<QLabel *> other = form->findChildren<QLabel *>();
+        bool named = false;
+        for (const QLabel *label : other)
+            named = named || (label->isVisible() &&
+                              label->text().startsWith(QStringLiteral("path.file: ") + bad +
+                                                       QStringLiteral(": line 1")));
+        QVERIFY(named);
+
+        form->useWaypoints();
+        QVERIFY(form->isValid());
+        QCOMPARE(form->scenario()->path.kind, PathKind::Waypoints);
+        QVERIFY(form->waypointEditor()->isVisible());
+    }
+
     void sevenAxisSession_learnsAcceptsAppliesAndExports()
     {
         WindowFixture f;
@@ -222,7 +265,11 @@ private slots:
 
         f.window->files()->exportReportTo(out.filePath(QStringLiteral("report.pdf")));
         QVERIFY2(done.constLast().at(1).toBool(), qPrintable(done.constLast().at(0).toString()));
-        QVERIFY(readFile(out.filePath(QStringLiteral("report.pdf"))).startsWith("%PDF"));
+        const QByteArray pdf = readFile(out.filePath(QStringLiteral("report.pdf")));
+        QVERIFY(pdf.startsWith("%PDF"));
+        // The summary page, then the 57 parameters on pages of their own.
+        static const QRegularExpression pageObject(QStringLiteral("/Type\\s*/Page[^s]"));
+        QVERIFY(QString::fromLatin1(pdf).count(pageObject) >= 2);
     }
 };
 

@@ -116,6 +116,10 @@ private slots:
         QCOMPARE(selector->itemText(1), QStringLiteral("Joint 1 (base)"));
         QCOMPARE(selector->itemText(2), QStringLiteral("Joint 2"));
         QCOMPARE(selector->itemText(7), QStringLiteral("Joint 7"));
+        unnamed.setJointNames({QStringLiteral("shoulder")}); // fewer names than the curves' joints
+        QCOMPARE(selector->count(), kJoints + 1);
+        QCOMPARE(selector->itemText(1), QStringLiteral("Joint 1 (shoulder)"));
+        QCOMPARE(selector->itemText(2), QStringLiteral("Joint 2"));
     }
 
     void selectingAJoint_showsOnlyItsCurves()
