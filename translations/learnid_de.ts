@@ -6082,12 +6082,7 @@ Verhältnis %</translation>
         <translation>unbekanntes Robotermodell „%1“</translation>
     </message>
     <message>
-        <location line="+29"/>
-        <source>joint %1</source>
-        <translation>Gelenk %1</translation>
-    </message>
-    <message>
-        <location line="+85"/>
+        <location line="+113"/>
         <location line="+25"/>
         <source>no robot connected</source>
         <translation>kein Roboter verbunden</translation>

@@ -6070,12 +6070,7 @@ ratio %</source>
         <translation>未知机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+29"/>
-        <source>joint %1</source>
-        <translation>关节 %1</translation>
-    </message>
-    <message>
-        <location line="+85"/>
+        <location line="+113"/>
         <location line="+25"/>
         <source>no robot connected</source>
         <translation>未连接机器人</translation>
