@@ -5,6 +5,7 @@
 // estimate.
 #include "can/CandumpLog.h"
 
+#include "../support/CanFaultLog.h"
 #include "../support/RobotSimProcess.h"
 #include "../support/ToolRun.h"
 
@@ -137,20 +138,7 @@ void TestCanE2e::recordedTrials_replayToTheSameEstimate()
 
 void TestCanE2e::fault_endsWithClearErrorQuickly_data()
 {
-    QTest::addColumn<QStringList>("faults");
-    QTest::addColumn<QStringList>("cliArgs");
-    QTest::addColumn<QString>("expected");
-    const QStringList one{QStringLiteral("--iterations"), QStringLiteral("1")};
-    QTest::newRow("drop") << QStringList{QStringLiteral("--drop-fraction"), QStringLiteral("0.02")}
-                          << one << QStringLiteral("sample missing");
-    QTest::newRow("silent") << QStringList{QStringLiteral("--silent-after"), QStringLiteral("4000")}
-                            << one << QStringLiteral("no SYNC");
-    QTest::newRow("emcy") << QStringList{QStringLiteral("--emcy-at-sample"), QStringLiteral("600")}
-                          << one << QStringLiteral("0x8611");
-    QTest::newRow("refuse-sdo") << QStringList{QStringLiteral("--refuse-sdo"),
-                                               QStringLiteral("0x2200:1")}
-                                << one + QStringList{QStringLiteral("--apply")}
-                                << QStringLiteral("0x2200:01");
+    test::addCanFaultRows(600);
 }
 
 void TestCanE2e::fault_endsWithClearErrorQuickly()
@@ -185,32 +173,9 @@ void TestCanE2e::fault_endsWithClearErrorQuickly()
     const QList<CandumpEntry> log =
         candump::readFile(m_dir.filePath(logs + QStringLiteral("/trial-000.log")));
     QVERIFY(!log.isEmpty());
-    const auto us = [](const CandumpEntry &e) {
-        return e.frame.timeStamp().seconds() * 1000000 + e.frame.timeStamp().microSeconds();
-    };
-    qint64 fault = -1;
-    for (int i = 0; i < log.size() && fault < 0; ++i) {
-        const quint32 id = log[i].frame.frameId();
-        if (tag == QLatin1String("emcy") && id == 0x81 && log[i].frame.payload().size() >= 2 &&
-            log[i].frame.payload().at(1) != 0)
-            fault = us(log[i]);
-    }
-    if (tag != QLatin1String("emcy")) {
-        // The last frame of the robot side before the master's first quick stop (RPDO
-        // 0x0002; the master repeats it at every SYNC until the drives report no power).
-        for (int i = 0; i < log.size() && fault < 0; ++i) {
-            const QCanBusFrame &f = log[i].frame;
-            if (f.frameId() == 0x201 && f.payload().size() == 8 && f.payload().at(6) == 2) {
-                int j = i - 1;
-                while (j >= 0 && (log[j].frame.frameId() & 0x780) == 0x200)
-                    --j; // skip earlier set-points
-                if (j >= 0)
-                    fault = us(log[j]);
-            }
-        }
-    }
+    const qint64 fault = test::faultMicroseconds(log, tag, 1);
     QVERIFY(fault > 0);
-    const qint64 reactionMs = (us(log.constLast()) - fault) / 1000;
+    const qint64 reactionMs = (test::candumpMicroseconds(log.constLast()) - fault) / 1000;
     qInfo("%s: %s; fault to end of trial %lld ms; CLI %lld ms", qPrintable(tag),
           qPrintable(r.err.section(QLatin1Char('\n'), -3, -3)), reactionMs, r.ms);
     QVERIFY(reactionMs < 1000);

@@ -6,6 +6,7 @@
 // stored parameters unchanged; the robot process killed mid-trial as well.
 #include "can/CandumpLog.h"
 
+#include "../support/CanFaultLog.h"
 #include "../support/RobotSimProcess.h"
 #include "../support/SharedData.h"
 #include "../support/ToolRun.h"
@@ -249,20 +250,7 @@ void TestCanE2e7Axis::recordedTrials_replayToTheSameEstimate()
 
 void TestCanE2e7Axis::fault_endsWithClearErrorQuickly_data()
 {
-    QTest::addColumn<QStringList>("faults");
-    QTest::addColumn<QStringList>("cliArgs");
-    QTest::addColumn<QString>("expected");
-    const QStringList one{QStringLiteral("--iterations"), QStringLiteral("1")};
-    QTest::newRow("drop") << QStringList{QStringLiteral("--drop-fraction"), QStringLiteral("0.02")}
-                          << one << QStringLiteral("sample missing");
-    QTest::newRow("silent") << QStringList{QStringLiteral("--silent-after"), QStringLiteral("4000")}
-                            << one << QStringLiteral("no SYNC");
-    QTest::newRow("emcy") << QStringList{QStringLiteral("--emcy-at-sample"), QStringLiteral("300")}
-                          << one << QStringLiteral("0x8611");
-    QTest::newRow("refuse-sdo") << QStringList{QStringLiteral("--refuse-sdo"),
-                                               QStringLiteral("0x2200:1")}
-                                << one + QStringList{QStringLiteral("--apply")}
-                                << QStringLiteral("0x2200:01");
+    test::addCanFaultRows(300);
 }
 
 void TestCanE2e7Axis::fault_endsWithClearErrorQuickly()
@@ -296,32 +284,9 @@ void TestCanE2e7Axis::fault_endsWithClearErrorQuickly()
     const QList<CandumpEntry> log =
         candump::readFile(m_dir.filePath(logs + QStringLiteral("/trial-000.log")));
     QVERIFY(!log.isEmpty());
-    const auto us = [](const CandumpEntry &e) {
-        return e.frame.timeStamp().seconds() * 1000000 + e.frame.timeStamp().microSeconds();
-    };
-    qint64 fault = -1;
-    for (int i = 0; i < log.size() && fault < 0; ++i) {
-        const QCanBusFrame &f = log[i].frame;
-        if (tag == QLatin1String("emcy") && f.frameId() == 0x80 + kFirstNode &&
-            f.payload().size() >= 2 && f.payload().at(1) != 0)
-            fault = us(log[i]);
-    }
-    if (tag != QLatin1String("emcy")) {
-        // The last frame of the robot side before the master's first quick stop (RPDO 0x0002).
-        for (int i = 0; i < log.size() && fault < 0; ++i) {
-            const QCanBusFrame &f = log[i].frame;
-            if (f.frameId() == 0x200 + kFirstNode && f.payload().size() == 8 &&
-                f.payload().at(6) == 2) {
-                int j = i - 1;
-                while (j >= 0 && (log[j].frame.frameId() & 0x780) == 0x200)
-                    --j; // skip earlier set-points
-                if (j >= 0)
-                    fault = us(log[j]);
-            }
-        }
-    }
+    const qint64 fault = test::faultMicroseconds(log, tag, kFirstNode);
     QVERIFY(fault > 0);
-    const qint64 reactionMs = (us(log.constLast()) - fault) / 1000;
+    const qint64 reactionMs = (test::candumpMicroseconds(log.constLast()) - fault) / 1000;
     qInfo("%s: %s; fault to end of trial %lld ms; CLI %lld ms", qPrintable(tag),
           qPrintable(r.err.section(QLatin1Char('\n'), -3, -3)), reactionMs, r.ms);
     QVERIFY(reactionMs < 1000);
