@@ -11,15 +11,11 @@
 #include "ui/WaypointEditor.h"
 
 #include <QComboBox>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QGroupBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QPushButton>
-#include <QRegularExpression>
 #include <QVBoxLayout>
 #include <cmath>
 
@@ -44,25 +40,13 @@ ScenarioForm::ScenarioForm(QWidget *parent)
     , m_otherError(reasonLabel(this))
     , m_robot(new RobotChooser(this))
     , m_waypoints(new WaypointEditor(this))
-    , m_pathFile(new QLabel(this))
-    , m_choosePathFile(new QPushButton(tr("Path CSV\u2026"), this))
-    , m_useWaypoints(new QPushButton(tr("Waypoints"), this))
 {
-    m_choosePathFile->setObjectName(QStringLiteral("choosePathFileButton"));
-    m_choosePathFile->setToolTip(tr("Run a recorded joint path instead: CSV t, q1..qn [s, rad]"));
-    m_useWaypoints->setObjectName(QStringLiteral("useWaypointsButton"));
-    connect(m_choosePathFile, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open a joint path"), QString(),
-                                                          tr("CSV (*.csv);;All files (*)"));
-        if (!path.isEmpty())
-            usePathFile(path);
-    });
-    connect(m_useWaypoints, &QPushButton::clicked, this, &ScenarioForm::useWaypoints);
+    connect(m_waypoints, &WaypointEditor::pathFileChosen, this, &ScenarioForm::usePathFile);
+    connect(m_waypoints, &WaypointEditor::waypointsChosen, this, &ScenarioForm::useWaypoints);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_robot);
     connect(m_robot, &RobotChooser::robotChosen, this, &ScenarioForm::chooseRobot);
     connect(m_waypoints, &WaypointEditor::edited, this, &ScenarioForm::revalidate);
-    m_pathFile->setWordWrap(true);
     for (const ScenarioFieldGroup &group : scenarioFieldGroups()) {
         auto *box = new QGroupBox(group.title, this);
         auto *grid = new QGridLayout(box);
@@ -93,15 +77,8 @@ ScenarioForm::ScenarioForm(QWidget *parent)
             connect(row.edit, &QLineEdit::textEdited, this, &ScenarioForm::revalidate);
             m_rows.append(row);
         }
-        if (group.fields.constFirst().key == QLatin1String("path.start")) {
+        if (group.fields.constFirst().key == QLatin1String("path.start"))
             grid->addWidget(m_waypoints, r++, 0, 1, 3);
-            grid->addWidget(m_pathFile, r++, 0, 1, 3);
-            auto *kinds = new QHBoxLayout;
-            kinds->addWidget(m_useWaypoints);
-            kinds->addWidget(m_choosePathFile);
-            kinds->addStretch(1);
-            grid->addLayout(kinds, r++, 0, 1, 3);
-        }
         if (group.fields.constLast().key == QLatin1String("robot.initialParameters")) {
             m_law->setObjectName(QStringLiteral("estimator.law"));
             for (const QString &law : knownLearningLaws())
@@ -140,12 +117,7 @@ void ScenarioForm::setScenario(const Scenario &scenario)
         joints << (chain ? chain->chain().joints[size_t(j)].name : tr("joint %1").arg(j + 1));
         prismatic << (chain && chain->chain().joints[size_t(j)].type == JointType::Prismatic);
     }
-    m_waypoints->setWaypoints(scenario.path.waypoints, joints, prismatic);
-    m_pathFile->setText(scenario.path.kind == PathKind::File
-                            ? tr("Path: %1 (%2 samples, from the scenario file)")
-                                  .arg(scenario.path.file)
-                                  .arg(scenario.path.fileTimes.size())
-                            : QString());
+    m_waypoints->setPath(scenario.path, joints, prismatic, isUrdfModel(scenario.model));
     updatePathRows();
     for (Row &row : m_rows)
         row.edit->setText(formatNumberList(row.field.read(scenario)));
@@ -188,7 +160,7 @@ void ScenarioForm::chooseRobot(const QString &modelId, const UrdfRobotSettings &
     }
 }
 
-// The line's fields for the paper's line, the waypoint table for waypoints, the file's name.
+// The line's fields for the paper's line only.
 void ScenarioForm::updatePathRows()
 {
     const PathKind kind = m_base.path.kind;
@@ -200,11 +172,7 @@ void ScenarioForm::updatePathRows()
         if (!shown)
             row.reason->hide();
     }
-    m_waypoints->setVisible(kind == PathKind::Waypoints);
-    m_pathFile->setVisible(kind == PathKind::File);
-    const bool urdf = isUrdfModel(m_base.model);
-    m_choosePathFile->setVisible(urdf);
-    m_useWaypoints->setVisible(urdf && kind == PathKind::File);
+    m_waypoints->setVisible(kind != PathKind::Line || isUrdfModel(m_base.model));
 }
 
 void ScenarioForm::usePathFile(const QString &path)
@@ -234,24 +202,6 @@ void ScenarioForm::useWaypoints()
     if (s.path.waypoints.size() < 2 && m_model) // none kept: the robot's default path
         s.path.waypoints = scenarioForRobot(s.model, s.urdf).path.waypoints;
     setScenario(s);
-}
-
-// Reads the waypoint table into s and checks it against the robot's joint limits.
-bool ScenarioForm::checkWaypoints(Scenario &s)
-{
-    if (s.path.kind != PathKind::Waypoints)
-        return true;
-    QString error;
-    const auto waypoints = m_waypoints->waypoints(&error);
-    if (!waypoints) {
-        m_waypoints->showReason(error);
-        if (m_firstError.isEmpty())
-            m_firstError = QStringLiteral("path.waypoints: ") + error;
-        return false;
-    }
-    s.path.waypoints = *waypoints;
-    m_waypoints->showReason(QString());
-    return true;
 }
 
 void ScenarioForm::setEditable(bool editable)
@@ -309,8 +259,12 @@ void ScenarioForm::revalidate()
         else
             row.field.write(s, *values);
     }
-    if (!checkWaypoints(s))
+    QString pathError;
+    if (!m_waypoints->readInto(s.path, &pathError)) {
+        if (m_firstError.isEmpty())
+            m_firstError = pathError;
         parsed = false;
+    }
     if (parsed && !m_model) {
         m_otherError->setText(tr("robot.model: %1").arg(m_modelError));
         m_otherError->show();
@@ -322,12 +276,7 @@ void ScenarioForm::revalidate()
             validateScenario(s);
             const QString limits = waypointLimitError(*m_model, s.path.waypoints);
             if (s.path.kind == PathKind::Waypoints && !limits.isEmpty()) {
-                // "path.waypoints[i][j]: ..." marks waypoint i, joint j.
-                static const QRegularExpression cell(
-                    QStringLiteral("^path\\.waypoints\\[(\\d+)\\]\\[(\\d+)\\]"));
-                const auto match = cell.match(limits);
-                m_waypoints->showReason(limits, match.hasMatch() ? match.captured(1).toInt() : -1,
-                                        match.hasMatch() ? match.captured(2).toInt() : -1);
+                m_waypoints->showLimitError(limits);
                 m_firstError = limits;
                 parsed = false;
             }

@@ -11,7 +11,6 @@
 class QComboBox;
 class QLabel;
 class QLineEdit;
-class QPushButton;
 
 namespace learnid {
 
@@ -71,7 +70,6 @@ private:
 
     void revalidate();
     void chooseRobot(const QString &modelId, const UrdfRobotSettings &urdf);
-    bool checkWaypoints(Scenario &s);
     void updatePathRows();
     void showReason(Row &row, const QString &reason);
 
@@ -79,9 +77,6 @@ private:
     QComboBox *m_law;
     RobotChooser *m_robot;
     WaypointEditor *m_waypoints;
-    QLabel *m_pathFile;
-    QPushButton *m_choosePathFile;
-    QPushButton *m_useWaypoints;
     std::shared_ptr<const RobotModel> m_model;
     QString m_modelError;
     QLabel *m_otherError;

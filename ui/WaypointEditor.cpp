@@ -1,10 +1,12 @@
 #include "ui/WaypointEditor.h"
 
 #include <QBrush>
+#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
@@ -17,7 +19,21 @@ WaypointEditor::WaypointEditor(QWidget *parent)
     , m_add(new QPushButton(tr("Add waypoint"), this))
     , m_remove(new QPushButton(tr("Remove waypoint"), this))
     , m_reason(new QLabel(this))
+    , m_file(new QLabel(this))
+    , m_choosePathFile(new QPushButton(tr("Path CSV\u2026"), this))
+    , m_useWaypoints(new QPushButton(tr("Waypoints"), this))
 {
+    m_file->setWordWrap(true);
+    m_choosePathFile->setObjectName(QStringLiteral("choosePathFileButton"));
+    m_choosePathFile->setToolTip(tr("Run a recorded joint path instead: CSV t, q1..qn [s, rad]"));
+    m_useWaypoints->setObjectName(QStringLiteral("useWaypointsButton"));
+    connect(m_choosePathFile, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open a joint path"), QString(),
+                                                          tr("CSV (*.csv);;All files (*)"));
+        if (!path.isEmpty())
+            emit pathFileChosen(path);
+    });
+    connect(m_useWaypoints, &QPushButton::clicked, this, &WaypointEditor::waypointsChosen);
     m_table->setObjectName(QStringLiteral("path.waypoints"));
     m_add->setObjectName(QStringLiteral("addWaypointButton"));
     m_remove->setObjectName(QStringLiteral("removeWaypointButton"));
@@ -35,9 +51,12 @@ WaypointEditor::WaypointEditor(QWidget *parent)
     buttons->addWidget(m_add);
     buttons->addWidget(m_remove);
     buttons->addStretch(1);
+    buttons->addWidget(m_useWaypoints);
+    buttons->addWidget(m_choosePathFile);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_table);
+    layout->addWidget(m_file);
     layout->addLayout(buttons);
     layout->addWidget(m_reason);
     connect(m_table, &QTableWidget::itemChanged, this, [this] {
@@ -73,8 +92,8 @@ double WaypointEditor::scale(int joint) const
     return joint < m_prismatic.size() && m_prismatic.at(joint) ? 1.0 : 180.0 / M_PI;
 }
 
-void WaypointEditor::setWaypoints(const std::vector<Eigen::VectorXd> &waypoints,
-                                  const QStringList &jointNames, const QList<bool> &prismatic)
+void WaypointEditor::setPath(const JointPathSettings &path, const QStringList &jointNames,
+                             const QList<bool> &prismatic, bool urdf)
 {
     m_filling = true;
     m_prismatic = prismatic;
@@ -86,6 +105,7 @@ void WaypointEditor::setWaypoints(const std::vector<Eigen::VectorXd> &waypoints,
         title->setToolTip(jointNames.at(j));
         m_table->setHorizontalHeaderItem(j, title);
     }
+    const std::vector<Eigen::VectorXd> &waypoints = path.waypoints;
     m_table->setRowCount(int(waypoints.size()));
     for (int i = 0; i < int(waypoints.size()); ++i)
         for (int j = 0; j < waypoints[size_t(i)].size() && j < jointNames.size(); ++j)
@@ -93,7 +113,40 @@ void WaypointEditor::setWaypoints(const std::vector<Eigen::VectorXd> &waypoints,
                 i, j,
                 new QTableWidgetItem(QString::number(waypoints[size_t(i)][j] * scale(j), 'g', 10)));
     m_filling = false;
+    const bool table = path.kind == PathKind::Waypoints, file = path.kind == PathKind::File;
+    m_table->setVisible(table);
+    m_add->setVisible(table);
+    m_remove->setVisible(table);
+    m_file->setVisible(file);
+    m_file->setText(file ? tr("Path: %1 (%2 samples)").arg(path.file).arg(path.fileTimes.size())
+                         : QString());
+    m_choosePathFile->setVisible(urdf);
+    m_useWaypoints->setVisible(urdf && file);
     showReason(QString());
+}
+
+bool WaypointEditor::readInto(JointPathSettings &path, QString *error)
+{
+    if (path.kind != PathKind::Waypoints)
+        return true;
+    QString why;
+    const auto read = waypoints(&why);
+    showReason(why);
+    if (!read) {
+        *error = QStringLiteral("path.waypoints: ") + why;
+        return false;
+    }
+    path.waypoints = *read;
+    return true;
+}
+
+void WaypointEditor::showLimitError(const QString &error)
+{
+    static const QRegularExpression cell(
+        QStringLiteral("^path\\.waypoints\\[(\\d+)\\]\\[(\\d+)\\]"));
+    const auto match = cell.match(error);
+    showReason(error, match.hasMatch() ? match.captured(1).toInt() : -1,
+               match.hasMatch() ? match.captured(2).toInt() : -1);
 }
 
 std::optional<std::vector<Eigen::VectorXd>> WaypointEditor::waypoints(QString *error) const
@@ -139,6 +192,8 @@ void WaypointEditor::setEditable(bool editable)
                                       : QAbstractItemView::NoEditTriggers);
     m_add->setEnabled(editable);
     m_remove->setEnabled(editable);
+    m_choosePathFile->setEnabled(editable);
+    m_useWaypoints->setEnabled(editable);
 }
 
 } // namespace learnid

@@ -147,7 +147,7 @@ private slots:
         QVERIFY2(form->isValid(), qPrintable(form->firstError()));
         QCOMPARE(form->scenario()->path.kind, PathKind::File);
         QCOMPARE(form->scenario()->path.fileAngles, samples.q);
-        QVERIFY(!form->waypointEditor()->isVisible());
+        QVERIFY(!form->waypointEditor()->table()->isVisible());
 
         // A file for another robot: refused naming the file and line; the path stays.
         const QString bad = dir.filePath(QStringLiteral("six.csv"));
@@ -166,7 +166,7 @@ private slots:
         form->useWaypoints();
         QVERIFY(form->isValid());
         QCOMPARE(form->scenario()->path.kind, PathKind::Waypoints);
-        QVERIFY(form->waypointEditor()->isVisible());
+        QVERIFY(form->waypointEditor()->table()->isVisible());
     }
 
     void sevenAxisSession_learnsAcceptsAppliesAndExports()
