@@ -5824,32 +5824,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::ScenarioForm</name>
     <message>
-        <location filename="../ui/ScenarioForm.cpp" line="+48"/>
-        <source>Path CSV…</source>
-        <translation>Bahn-CSV…</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Waypoints</source>
-        <translation>Wegpunkte</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Run a recorded joint path instead: CSV t, q1..qn [s, rad]</source>
-        <translation>Stattdessen eine aufgezeichnete Gelenkbahn fahren: CSV t, q1..qn [s, rad]</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Open a joint path</source>
-        <translation>Gelenkbahn öffnen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>CSV (*.csv);;All files (*)</source>
-        <translation>CSV (*.csv);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <location line="+23"/>
+        <location filename="../ui/ScenarioForm.cpp" line="+63"/>
         <source>Scenario key %1</source>
         <translation>Szenario-Schlüssel %1</translation>
     </message>
@@ -5864,7 +5839,7 @@ Verhältnis %</translation>
         <translation>Werte durch Kommas getrennt</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+18"/>
         <source>paper-consistent</source>
         <translation>artikelkonsistent</translation>
     </message>
@@ -5888,11 +5863,6 @@ Verhältnis %</translation>
         <source>joint %1</source>
         <translation>Gelenk %1</translation>
     </message>
-    <message>
-        <location line="+5"/>
-        <source>Path: %1 (%2 samples, from the scenario file)</source>
-        <translation>Bahn: %1 (%2 Abtastwerte, aus der Szenariodatei)</translation>
-    </message>
     <message numerus="yes">
         <location line="+24"/>
         <source>Initial parameters (%n base parameter(s))</source>
@@ -5908,17 +5878,17 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+13"/>
-        <location line="+132"/>
+        <location line="+114"/>
         <source>robot.model: %1</source>
         <translation>robot.model: %1</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-78"/>
         <source>path.file: %1</source>
         <translation>path.file: %1</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+54"/>
         <source>enter one number</source>
         <translation>eine Zahl eingeben</translation>
     </message>
@@ -6302,7 +6272,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::WaypointEditor</name>
     <message>
-        <location filename="../ui/WaypointEditor.cpp" line="+17"/>
+        <location filename="../ui/WaypointEditor.cpp" line="+19"/>
         <source>Add waypoint</source>
         <translation>Wegpunkt hinzufügen</translation>
     </message>
@@ -6312,12 +6282,37 @@ Verhältnis %</translation>
         <translation>Wegpunkt entfernen</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+3"/>
+        <source>Path CSV…</source>
+        <translation>Bahn-CSV…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Waypoints</source>
+        <translation>Wegpunkte</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run a recorded joint path instead: CSV t, q1..qn [s, rad]</source>
+        <translation>Stattdessen eine aufgezeichnete Gelenkbahn fahren: CSV t, q1..qn [s, rad]</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Open a joint path</source>
+        <translation>Gelenkbahn öffnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV (*.csv);;All files (*)</source>
+        <translation>CSV (*.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Joint positions the path passes through, in order: degrees for revolute joints, metres for prismatic ones</source>
         <translation>Gelenkstellungen, die die Bahn der Reihe nach durchläuft: Grad für Drehgelenke, Meter für Schubgelenke</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+56"/>
         <source>q%1 [%2]</source>
         <translation>q%1 [%2]</translation>
     </message>
@@ -6332,7 +6327,12 @@ Verhältnis %</translation>
         <translation>deg</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+17"/>
+        <source>Path: %1 (%2 samples)</source>
+        <translation>Bahn: %1 (%2 Abtastwerte)</translation>
+    </message>
+    <message>
+        <location line="+42"/>
         <source>waypoint %1, %2: &quot;%3&quot; is not a number</source>
         <translation>Wegpunkt %1, %2: „%3“ ist keine Zahl</translation>
     </message>

@@ -5814,32 +5814,7 @@ ratio %</source>
 <context>
     <name>learnid::ScenarioForm</name>
     <message>
-        <location filename="../ui/ScenarioForm.cpp" line="+48"/>
-        <source>Path CSV…</source>
-        <translation>路径 CSV…</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Waypoints</source>
-        <translation>路点</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Run a recorded joint path instead: CSV t, q1..qn [s, rad]</source>
-        <translation>改为运行记录的关节路径：CSV t, q1..qn [s, rad]</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Open a joint path</source>
-        <translation>打开关节路径</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>CSV (*.csv);;All files (*)</source>
-        <translation>CSV (*.csv);;所有文件 (*)</translation>
-    </message>
-    <message>
-        <location line="+23"/>
+        <location filename="../ui/ScenarioForm.cpp" line="+63"/>
         <source>Scenario key %1</source>
         <translation>场景键 %1</translation>
     </message>
@@ -5854,7 +5829,7 @@ ratio %</source>
         <translation>用逗号分隔的数值</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+18"/>
         <source>paper-consistent</source>
         <translation>与论文一致</translation>
     </message>
@@ -5878,11 +5853,6 @@ ratio %</source>
         <source>joint %1</source>
         <translation>关节 %1</translation>
     </message>
-    <message>
-        <location line="+5"/>
-        <source>Path: %1 (%2 samples, from the scenario file)</source>
-        <translation>路径：%1（%2 个采样点，来自场景文件）</translation>
-    </message>
     <message numerus="yes">
         <location line="+24"/>
         <source>Initial parameters (%n base parameter(s))</source>
@@ -5897,17 +5867,17 @@ ratio %</source>
     </message>
     <message>
         <location line="+13"/>
-        <location line="+132"/>
+        <location line="+114"/>
         <source>robot.model: %1</source>
         <translation>robot.model：%1</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-78"/>
         <source>path.file: %1</source>
         <translation>path.file：%1</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+54"/>
         <source>enter one number</source>
         <translation>请输入一个数</translation>
     </message>
@@ -6290,7 +6260,7 @@ ratio %</source>
 <context>
     <name>learnid::WaypointEditor</name>
     <message>
-        <location filename="../ui/WaypointEditor.cpp" line="+17"/>
+        <location filename="../ui/WaypointEditor.cpp" line="+19"/>
         <source>Add waypoint</source>
         <translation>添加路点</translation>
     </message>
@@ -6300,12 +6270,37 @@ ratio %</source>
         <translation>删除路点</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+3"/>
+        <source>Path CSV…</source>
+        <translation>路径 CSV…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Waypoints</source>
+        <translation>路点</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run a recorded joint path instead: CSV t, q1..qn [s, rad]</source>
+        <translation>改为运行记录的关节路径：CSV t, q1..qn [s, rad]</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Open a joint path</source>
+        <translation>打开关节路径</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV (*.csv);;All files (*)</source>
+        <translation>CSV (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Joint positions the path passes through, in order: degrees for revolute joints, metres for prismatic ones</source>
         <translation>路径依次经过的关节位置：旋转关节以度为单位，移动关节以米为单位</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+56"/>
         <source>q%1 [%2]</source>
         <translation>q%1 [%2]</translation>
     </message>
@@ -6320,7 +6315,12 @@ ratio %</source>
         <translation>deg</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+17"/>
+        <source>Path: %1 (%2 samples)</source>
+        <translation>路径：%1（%2 个采样点）</translation>
+    </message>
+    <message>
+        <location line="+42"/>
         <source>waypoint %1, %2: &quot;%3&quot; is not a number</source>
         <translation>路点 %1，%2：“%3”不是数字</translation>
     </message>
