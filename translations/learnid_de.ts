@@ -2273,28 +2273,22 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+68"/>
+        <location filename="../core/service/SessionExport.cpp" line="+84"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>nur URDF-Roboter haben ein URDF, das sich exportieren lässt</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <location line="+35"/>
+        <location line="-16"/>
         <source>no consistent estimate near estimate %1: %2</source>
         <translation>keine konsistente Schätzung nahe Schätzung %1: %2</translation>
     </message>
     <message>
-        <location line="-21"/>
-        <source>%1: cannot read the URDF: %2</source>
-        <translation>%1: das URDF kann nicht gelesen werden: %2</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+4"/>
         <source>only URDF robots have standard parameters to make consistent</source>
         <translation>nur URDF-Roboter haben Standardparameter, die sich konsistent machen lassen</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+57"/>
         <source>cannot create the folder %1</source>
         <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -4307,16 +4301,8 @@ neue Schätzung.
         <source>Report not written: no session</source>
         <translation>Bericht nicht geschrieben: keine Sitzung</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/ReportContent.cpp" line="+35"/>
-        <source>%n value(s)</source>
-        <translation>
-            <numerusform>%n Wert</numerusform>
-            <numerusform>%n Werte</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+8"/>
+        <location filename="../ui/ReportContent.cpp" line="+36"/>
         <source>Path: from (%1, %2) m, %3 m at %4 deg</source>
         <translation>Bahn: ab (%1, %2) m, %3 m unter %4°</translation>
     </message>
@@ -4359,7 +4345,7 @@ neue Schätzung.
         <translation>Anfangsparameter: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>none (nothing applied in this session)</source>
         <translation>keine (in dieser Sitzung nichts übertragen)</translation>
     </message>
@@ -5858,13 +5844,8 @@ Verhältnis %</translation>
         <source>unknown model &quot;%1&quot;</source>
         <translation>unbekanntes Modell „%1“</translation>
     </message>
-    <message>
-        <location line="+10"/>
-        <source>joint %1</source>
-        <translation>Gelenk %1</translation>
-    </message>
     <message numerus="yes">
-        <location line="+24"/>
+        <location line="+31"/>
         <source>Initial parameters (%n base parameter(s))</source>
         <translation>
             <numerusform>Anfangsparameter (%n Basisparameter)</numerusform>
@@ -5878,17 +5859,17 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+13"/>
-        <location line="+114"/>
+        <location line="+110"/>
         <source>robot.model: %1</source>
         <translation>robot.model: %1</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-76"/>
         <source>path.file: %1</source>
         <translation>path.file: %1</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+52"/>
         <source>enter one number</source>
         <translation>eine Zahl eingeben</translation>
     </message>
@@ -5975,7 +5956,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::SessionPresenter</name>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+33"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+34"/>
         <source>connected: %1</source>
         <translation>verbunden: %1</translation>
     </message>
@@ -6026,7 +6007,7 @@ Verhältnis %</translation>
         <translation>Parameter in den Roboter geschrieben und zurückgelesen.</translation>
     </message>
     <message numerus="yes">
-        <location line="+28"/>
+        <location filename="../ui/ApplyPreview.cpp" line="+21"/>
         <source>%n parameter(s)</source>
         <translation>
             <numerusform>%n Parameter</numerusform>
@@ -6034,7 +6015,7 @@ Verhältnis %</translation>
         </translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+25"/>
         <source>nothing applied yet</source>
         <translation>noch nichts übertragen</translation>
     </message>
@@ -6052,7 +6033,7 @@ Verhältnis %</translation>
         <translation>unbekanntes Robotermodell „%1“</translation>
     </message>
     <message>
-        <location line="+113"/>
+        <location line="+111"/>
         <location line="+25"/>
         <source>no robot connected</source>
         <translation>kein Roboter verbunden</translation>

@@ -2271,28 +2271,22 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+68"/>
+        <location filename="../core/service/SessionExport.cpp" line="+84"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>只有 URDF 机器人才有可导出的 URDF</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <location line="+35"/>
+        <location line="-16"/>
         <source>no consistent estimate near estimate %1: %2</source>
         <translation>估计 %1 附近没有一致的估计：%2</translation>
     </message>
     <message>
-        <location line="-21"/>
-        <source>%1: cannot read the URDF: %2</source>
-        <translation>%1：无法读取 URDF：%2</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+4"/>
         <source>only URDF robots have standard parameters to make consistent</source>
         <translation>只有 URDF 机器人有可使其一致的标准参数</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+57"/>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
@@ -4301,15 +4295,8 @@ stdout, and the next plan uses the new estimate.
         <source>Report not written: no session</source>
         <translation>报告未写入：没有会话</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/ReportContent.cpp" line="+35"/>
-        <source>%n value(s)</source>
-        <translation>
-            <numerusform>%n 个值</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+8"/>
+        <location filename="../ui/ReportContent.cpp" line="+36"/>
         <source>Path: from (%1, %2) m, %3 m at %4 deg</source>
         <translation>路径：从 (%1, %2) m 起，长 %3 m，方向 %4 度</translation>
     </message>
@@ -4351,7 +4338,7 @@ stdout, and the next plan uses the new estimate.
         <translation>初始参数：%1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>none (nothing applied in this session)</source>
         <translation>无（本次会话未写入）</translation>
     </message>
@@ -5848,13 +5835,8 @@ ratio %</source>
         <source>unknown model &quot;%1&quot;</source>
         <translation>未知模型“%1”</translation>
     </message>
-    <message>
-        <location line="+10"/>
-        <source>joint %1</source>
-        <translation>关节 %1</translation>
-    </message>
     <message numerus="yes">
-        <location line="+24"/>
+        <location line="+31"/>
         <source>Initial parameters (%n base parameter(s))</source>
         <translation>
             <numerusform>初始参数（%n 个基参数）</numerusform>
@@ -5867,17 +5849,17 @@ ratio %</source>
     </message>
     <message>
         <location line="+13"/>
-        <location line="+114"/>
+        <location line="+110"/>
         <source>robot.model: %1</source>
         <translation>robot.model：%1</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-76"/>
         <source>path.file: %1</source>
         <translation>path.file：%1</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+52"/>
         <source>enter one number</source>
         <translation>请输入一个数</translation>
     </message>
@@ -5964,7 +5946,7 @@ ratio %</source>
 <context>
     <name>learnid::SessionPresenter</name>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+33"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+34"/>
         <source>connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
@@ -6015,14 +5997,14 @@ ratio %</source>
         <translation>参数已写入机器人并回读确认。</translation>
     </message>
     <message numerus="yes">
-        <location line="+28"/>
+        <location filename="../ui/ApplyPreview.cpp" line="+21"/>
         <source>%n parameter(s)</source>
         <translation>
             <numerusform>%n 个参数</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+25"/>
         <source>nothing applied yet</source>
         <translation>尚未写入</translation>
     </message>
@@ -6040,7 +6022,7 @@ ratio %</source>
         <translation>未知机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+113"/>
+        <location line="+111"/>
         <location line="+25"/>
         <source>no robot connected</source>
         <translation>未连接机器人</translation>

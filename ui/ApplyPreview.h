@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <QList>
+#include <QString>
 #include <optional>
 
 namespace learnid {
@@ -20,5 +21,10 @@ struct ApplyPreview
     /// (new - old) / |old| of parameter i, or nullopt when there is no old value or it is 0.
     std::optional<double> relativeChange(int i) const;
 };
+
+/// A parameter set in one line, as the window and the report name what the robot holds: the
+/// values, or for an n-joint arm's dozens of them how many there are (the Parameters table
+/// lists them).
+QString parameterSetText(const Eigen::VectorXd &values);
 
 } // namespace learnid

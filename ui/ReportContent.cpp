@@ -1,6 +1,7 @@
 #include "ui/ReportContent.h"
 
 #include "service/SessionController.h"
+#include "ui/ApplyPreview.h"
 #include "ui/ConvergenceChart.h"
 #include "ui/ConvergenceTableModel.h"
 #include "ui/ParameterTableModel.h"
@@ -26,14 +27,6 @@ QString list(const Eigen::VectorXd &v)
     for (Eigen::Index i = 0; i < v.size(); ++i)
         parts << QString::number(v[i], 'g', 6);
     return parts.join(QStringLiteral(", "));
-}
-
-// A vector in words: its values, or for an n-joint arm's parameters how many.
-QString values(const Eigen::VectorXd &v)
-{
-    if (v.size() > ConvergenceTableModel::maxParameterColumns * 2)
-        return Text::tr("%n value(s)", nullptr, int(v.size()));
-    return list(v);
 }
 
 QString pathText(const Scenario &s)
@@ -88,7 +81,7 @@ ReportContent sessionReportContent(const SessionController &session, const Repor
             .arg(s.law)
             .arg(s.estimator.rho)
             .arg(s.iterations),
-        Text::tr("Initial parameters: %1").arg(values(s.initialParameters)),
+        Text::tr("Initial parameters: %1").arg(parameterSetText(s.initialParameters)),
     };
     copyTable(*views.table, c.tableHeader, c.tableRows);
     if (info.parameters.size() > ConvergenceTableModel::maxParameterColumns && views.parameters)
@@ -96,10 +89,11 @@ ReportContent sessionReportContent(const SessionController &session, const Repor
     c.trackingPlot = widgetImage(views.plot->chartView(), QSize(900, 560));
     c.convergencePlot = widgetImage(views.chart->chartView(), QSize(600, 560));
     const int stored = session.appliedEstimateIndex();
-    c.appliedSet =
-        session.storedParameters().size() == 0
-            ? Text::tr("none (nothing applied in this session)")
-            : Text::tr("%1 (estimate %2)").arg(values(session.storedParameters())).arg(stored);
+    c.appliedSet = session.storedParameters().size() == 0
+                       ? Text::tr("none (nothing applied in this session)")
+                       : Text::tr("%1 (estimate %2)")
+                             .arg(parameterSetText(session.storedParameters()))
+                             .arg(stored);
     return c;
 }
 

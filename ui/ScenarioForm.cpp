@@ -109,14 +109,11 @@ void ScenarioForm::setScenario(const Scenario &scenario)
         m_modelError = e.message();
     }
     m_robot->showRobot(scenario.model, scenario.urdf, m_model, m_modelError);
-    QStringList joints;
+    const QStringList joints = m_model ? jointNames(*m_model) : QStringList();
     QList<bool> prismatic;
-    const auto *chain = dynamic_cast<const ChainModel *>(m_model.get());
-    const int n = m_model ? m_model->dof() : 0;
-    for (int j = 0; j < n; ++j) {
-        joints << (chain ? chain->chain().joints[size_t(j)].name : tr("joint %1").arg(j + 1));
-        prismatic << (chain && chain->chain().joints[size_t(j)].type == JointType::Prismatic);
-    }
+    if (const auto *chain = dynamic_cast<const ChainModel *>(m_model.get()))
+        for (const ChainJoint &joint : chain->chain().joints)
+            prismatic << (joint.type == JointType::Prismatic);
     m_waypoints->setPath(scenario.path, joints, prismatic, isUrdfModel(scenario.model));
     updatePathRows();
     for (Row &row : m_rows)
@@ -179,9 +176,7 @@ void ScenarioForm::usePathFile(const QString &path)
 {
     try {
         const PathSamples samples = readPathCsvFile(path, m_model ? m_model->dof() : 0);
-        Scenario s = m_base;
-        if (const auto current = scenario())
-            s = *current;
+        Scenario s = scenario().value_or(m_base); // the edits so far, when they are valid
         s.path.kind = PathKind::File;
         s.path.file = QFileInfo(path).absoluteFilePath();
         s.path.fileTimes = samples.t;
@@ -195,9 +190,7 @@ void ScenarioForm::usePathFile(const QString &path)
 
 void ScenarioForm::useWaypoints()
 {
-    Scenario s = m_base;
-    if (const auto current = scenario())
-        s = *current;
+    Scenario s = scenario().value_or(m_base);
     s.path.kind = PathKind::Waypoints;
     if (s.path.waypoints.size() < 2 && m_model) // none kept: the robot's default path
         s.path.waypoints = scenarioForRobot(s.model, s.urdf).path.waypoints;

@@ -2,6 +2,7 @@
 
 #include "service/SessionController.h"
 #include "ui/ApplyPanel.h"
+#include "ui/ApplyPreview.h"
 #include "ui/ConvergenceChart.h"
 #include "ui/ConvergenceTableModel.h"
 #include "ui/MessageBar.h"
@@ -102,16 +103,10 @@ void SessionPresenter::refreshTables()
                                c->estimateFigures());
     m_views.apply->setEstimateCount(int(c->estimates().size()));
     const Eigen::VectorXd &stored = c->storedParameters();
-    QStringList values;
-    for (Eigen::Index i = 0; i < stored.size(); ++i)
-        values << QString::number(stored[i], 'g', 6);
-    // An n-joint arm's dozens of values belong in the Parameters table, not here.
-    const QString held = stored.size() > ConvergenceTableModel::maxParameterColumns
-                             ? tr("%n parameter(s)", nullptr, int(stored.size()))
-                             : values.join(QStringLiteral(", "));
-    m_views.apply->setStored(stored.size() == 0
-                                 ? tr("nothing applied yet")
-                                 : tr("%1 (estimate %2)").arg(held).arg(c->appliedEstimateIndex()));
+    m_views.apply->setStored(
+        stored.size() == 0
+            ? tr("nothing applied yet")
+            : tr("%1 (estimate %2)").arg(parameterSetText(stored)).arg(c->appliedEstimateIndex()));
 }
 
 } // namespace learnid

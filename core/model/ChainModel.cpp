@@ -308,4 +308,13 @@ void ChainModel::rk4Step(Eigen::Ref<Eigen::VectorXd> q, Eigen::Ref<Eigen::Vector
     qd += (h / 6.0) * (a1 + 2.0 * a2 + 2.0 * a3 + a4);
 }
 
+QStringList jointNames(const RobotModel &model)
+{
+    QStringList names;
+    if (const auto *chain = dynamic_cast<const ChainModel *>(&model))
+        for (const ChainJoint &joint : chain->chain().joints)
+            names << joint.name;
+    return names;
+}
+
 } // namespace learnid

@@ -5,6 +5,8 @@
 #include "model/RobotModel.h"
 #include "types/ChainSettings.h"
 
+#include <QStringList>
+
 namespace learnid {
 
 /// Any serial chain as a RobotModel whose parameters phi are its base parameters
@@ -80,5 +82,9 @@ private:
     QList<ParameterInfo> m_standardInfo;
     QList<ParameterInfo> m_baseInfo;
 };
+
+/// The joint names of a chain model (as its URDF has them), in joint order; empty for a model
+/// without a chain (the paper's arm).
+QStringList jointNames(const RobotModel &model);
 
 } // namespace learnid

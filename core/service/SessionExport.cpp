@@ -13,7 +13,6 @@
 
 #include <QCoreApplication>
 #include <QDir>
-#include <QFile>
 #include <QFileInfo>
 
 namespace learnid {
@@ -60,6 +59,23 @@ QByteArray urdfWithStandard(const ChainModel &model, const QByteArray &xml, cons
 namespace {
 
 // The session's robot URDF with estimate k as real bodies.
+// The verdict on estimate k with its nearest consistent estimate, or Error saying why there is
+// none (the parameter file's --consistent and the URDF export alike).
+EstimateConsistency consistencyWithNearest(const CommissioningSession &session, int k)
+{
+    const EstimateConsistency c = session.consistency(k);
+    if (!c.applicable || !c.nearestError.isEmpty()) {
+        throw Error(QCoreApplication::translate("SessionExport",
+                                                "no consistent estimate near estimate %1: %2")
+                        .arg(k)
+                        .arg(c.applicable ? c.nearestError
+                                          : QCoreApplication::translate(
+                                                "SessionExport", "only URDF robots have standard "
+                                                                 "parameters to make consistent")));
+    }
+    return c;
+}
+
 QByteArray sessionUrdf(const CommissioningSession &session, int k, const QString &comment)
 {
     const auto *chain = dynamic_cast<const ChainModel *>(&session.model());
@@ -67,13 +83,7 @@ QByteArray sessionUrdf(const CommissioningSession &session, int k, const QString
         throw Error(
             QCoreApplication::translate("SessionExport", "only URDF robots have a URDF to export"));
     }
-    const EstimateConsistency c = session.consistency(k);
-    if (!c.nearestError.isEmpty()) {
-        throw Error(QCoreApplication::translate("SessionExport",
-                                                "no consistent estimate near estimate %1: %2")
-                        .arg(k)
-                        .arg(c.nearestError));
-    }
+    const EstimateConsistency c = consistencyWithNearest(session, k);
     const Eigen::VectorXd pi =
         c.consistent
             ? chain->base().standardFromBase(session.estimates().at(k),
@@ -81,12 +91,7 @@ QByteArray sessionUrdf(const CommissioningSession &session, int k, const QString
             : c.nearestStandard;
     const Scenario &s = session.scenario();
     const QString source = urdfFileOf(s.model, s.urdf);
-    QFile file(source);
-    if (!file.open(QIODevice::ReadOnly)) {
-        throw Error(QCoreApplication::translate("SessionExport", "%1: cannot read the URDF: %2")
-                        .arg(QDir::toNativeSeparators(source), file.errorString()));
-    }
-    return urdfWithStandard(*chain, file.readAll(), source, pi, comment);
+    return urdfWithStandard(*chain, readFile(source), source, pi, comment);
 }
 
 } // namespace
@@ -97,23 +102,12 @@ QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &sessio
     QList<QPair<QString, QByteArray>> files;
     if (!request.reportPath.isEmpty())
         files.append({request.reportPath, sessionReportJson(session)});
+    const int k =
+        request.estimateIndex >= 0 ? request.estimateIndex : int(session.estimates().size()) - 1;
     if (!request.parameterPath.isEmpty()) {
-        const int k = request.estimateIndex >= 0 ? request.estimateIndex
-                                                 : int(session.estimates().size()) - 1;
         ParameterFileContent content = parameterFileContent(session, k);
         if (request.nearestConsistent) {
-            const EstimateConsistency c = session.consistency(k);
-            if (!c.applicable || !c.nearestError.isEmpty()) {
-                throw Error(QCoreApplication::translate("SessionExport",
-                                                        "no consistent estimate near estimate "
-                                                        "%1: %2")
-                                .arg(k)
-                                .arg(c.applicable
-                                         ? c.nearestError
-                                         : QCoreApplication::translate(
-                                               "SessionExport", "only URDF robots have standard "
-                                                                "parameters to make consistent")));
-            }
+            const EstimateConsistency c = consistencyWithNearest(session, k);
             content.values = c.nearest;
             content.standardDeviations.resize(0);
             content.canWrites = objects::parameterWriteSequence(content.nodes(), c.nearest);
@@ -123,11 +117,8 @@ QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &sessio
     }
     if (!request.trialCsvDir.isEmpty())
         files += trialCsvFiles(session.history(), request.trialCsvDir);
-    if (!request.urdfPath.isEmpty()) {
-        const int k = request.estimateIndex >= 0 ? request.estimateIndex
-                                                 : int(session.estimates().size()) - 1;
+    if (!request.urdfPath.isEmpty())
         files.append({request.urdfPath, sessionUrdf(session, k, request.urdfComment)});
-    }
     return files;
 }
 

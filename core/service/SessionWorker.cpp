@@ -67,9 +67,7 @@ void SessionWorker::open(const Scenario &requested)
     info.modelId = m_session->model().id();
     info.parameters = m_session->model().parameters();
     info.dof = m_session->model().dof();
-    const auto *chain = dynamic_cast<const ChainModel *>(&m_session->model());
-    for (int j = 0; chain && j < info.dof; ++j) // the paper's arm: no names beyond "Joint k"
-        info.jointNames << chain->chain().joints[size_t(j)].name;
+    info.jointNames = jointNames(m_session->model()); // the paper's arm: "Joint k" only
     info.truth = m_session->robot().trueParameters();
     info.storedParameters = m_session->robot().storedParameters();
     emit opened(info);

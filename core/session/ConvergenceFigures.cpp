@@ -24,11 +24,7 @@ double largestRelativeDifferencePercent(const Eigen::VectorXd &x, const Eigen::V
 double pathTorqueErrorPercent(const RobotModel &model, const JointTrajectory &path,
                               const Eigen::VectorXd &phiHat, const Eigen::VectorXd &phi)
 {
-    const Eigen::MatrixXd truth = feedforwardTorque(model, path, phi);
-    const double scale = truth.norm();
-    if (!(scale > 0.0))
-        return std::numeric_limits<double>::quiet_NaN();
-    return 100.0 * (feedforwardTorque(model, path, phiHat) - truth).norm() / scale;
+    return pathTorqueErrorsPercent(model, path, {phiHat}, phi).front();
 }
 
 QVector<double> pathTorqueErrorsPercent(const RobotModel &model, const JointTrajectory &path,
