@@ -3,7 +3,34 @@
 #include "service/ServiceLogging.h"
 #include "service/SessionWorker.h"
 
+#include <QCoreApplication>
+#include <QEvent>
+
 namespace learnid {
+
+namespace {
+
+/// Posted when a trial of a series has finished: handled after the events the window's update
+/// posted (layout, and paint at Qt::LowEventPriority), since posted events are handled in order
+/// of priority and this one's is lower.
+class NextTrialEvent : public QEvent
+{
+public:
+    explicit NextTrialEvent(int series)
+        : QEvent(type())
+        , series(series)
+    {}
+    static QEvent::Type type()
+    {
+        static const auto t = QEvent::Type(QEvent::registerEventType());
+        return t;
+    }
+    const int series;
+};
+
+constexpr int kAfterTheWindowsUpdate = int(Qt::LowEventPriority) - 1;
+
+} // namespace
 
 SessionController::SessionController(QObject *parent)
     : QObject(parent)
@@ -61,8 +88,15 @@ SessionController::SessionController(QObject *parent)
                 emit historyChanged();
             });
     connect(m_worker, &SessionWorker::runFinished, this, [this](bool all) {
-        setState(SessionState::Idle);
-        emit runFinished(all);
+        --m_seriesLeft;
+        if (all && m_seriesLeft > 0 && m_state == SessionState::RunningTrial) {
+            m_waitingForWindow = true;
+            QCoreApplication::postEvent(this, new NextTrialEvent(m_series), kAfterTheWindowsUpdate);
+            return;
+        }
+        if (all && m_seriesLeft > 0) // stopped between two trials: the worker checked nothing
+            post([w = m_worker] { w->check(); });
+        endSeries(all && m_seriesLeft <= 0);
     });
     connect(m_worker, &SessionWorker::accepted, this, [this](int k) {
         m_accepted = k;
@@ -118,6 +152,31 @@ SessionFacts SessionController::facts() const
     return f;
 }
 
+bool SessionController::event(QEvent *event)
+{
+    if (event->type() != NextTrialEvent::type())
+        return QObject::event(event);
+    if (!m_waitingForWindow || static_cast<NextTrialEvent *>(event)->series != m_series)
+        return true; // the series ended meanwhile (Stop)
+    m_waitingForWindow = false;
+    postTrial();
+    return true;
+}
+
+void SessionController::postTrial()
+{
+    const bool last = m_seriesLeft == 1;
+    SessionWorker *w = m_worker;
+    post([w, last] { w->runTrials(1, last); });
+}
+
+void SessionController::endSeries(bool allCompleted)
+{
+    m_seriesLeft = 0;
+    setState(SessionState::Idle);
+    emit runFinished(allCompleted);
+}
+
 void SessionController::setState(SessionState state)
 {
     if (m_state == state)
@@ -167,8 +226,9 @@ void SessionController::runTrials(int count)
     qCInfo(lcService) << "running" << count << "trial(s)";
     setState(SessionState::RunningTrial);
     m_worker->clearCancel();
-    SessionWorker *w = m_worker;
-    post([w, count] { w->runTrials(count); });
+    ++m_series;
+    m_seriesLeft = count;
+    postTrial();
 }
 
 void SessionController::stop()
@@ -177,6 +237,11 @@ void SessionController::stop()
     m_worker->requestCancel();
     if (m_state == SessionState::RunningTrial)
         setState(SessionState::Stopping);
+    if (m_waitingForWindow) { // between two trials of a series: nothing runs to stop
+        m_waitingForWindow = false;
+        post([w = m_worker] { w->check(); });
+        endSeries(false);
+    }
 }
 
 void SessionController::accept(int estimateIndex)

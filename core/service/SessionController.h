@@ -23,6 +23,11 @@ class SessionWorker;
 /// stay with the session in the worker: exportTrialCsv() writes them there. stop() reaches the
 /// running trial directly: cancelling is thread-safe. It holds the workflow's state
 /// (SessionState); what may be done next is allowedActions(state(), facts()).
+///
+/// runTrials(n) hands the worker one trial at a time: the next starts once this thread has
+/// handled what the previous one's signals set off (the views' update, then their layout and
+/// paint, 20-60 ms for 7 joints), so that work falls between two trials, while the robot
+/// stands, and the window stays responsive while the robot moves.
 class SessionController : public QObject
 {
     Q_OBJECT
@@ -96,8 +101,14 @@ signals:
     void urdfExported(const QStringList &paths, const QString &error);
     void trialCsvExported(const QString &folder, int files, const QString &error);
 
+protected:
+    bool event(QEvent *event) override;
+
 private:
     void setState(SessionState state);
+    /// The series' next trial to the worker; the last one checks the trial after it.
+    void postTrial();
+    void endSeries(bool allCompleted);
     /// Apply or revert in the worker; Applying until it answers.
     void writeParameters(SessionOperation operation);
     template <typename F> void post(F &&call);
@@ -114,6 +125,9 @@ private:
     int m_appliedCount = 0;
     int m_appliedIndex = -1;
     SessionState m_state = SessionState::NotConnected;
+    int m_seriesLeft = 0; ///< trials of the series not finished yet
+    int m_series = 0;     ///< counts the series, so a late "next trial" of an ended one is dropped
+    bool m_waitingForWindow = false;
 };
 
 } // namespace learnid

@@ -149,7 +149,7 @@ void SessionWorker::runTrial()
     runTrials(1);
 }
 
-void SessionWorker::runTrials(int count)
+void SessionWorker::runTrials(int count, bool checkAfter)
 {
     if (!m_session) {
         emit operationFailed(SessionOperation::Run, tr("no robot connected"));
@@ -159,7 +159,8 @@ void SessionWorker::runTrials(int count)
     // The Stop flag was cleared when the run was requested (clearCancel): keep a Stop sent since.
     const bool all = m_session->runTrials(count, true);
     emit runFinished(all);
-    emitCheck();
+    if (checkAfter || !all)
+        emitCheck();
 }
 
 void SessionWorker::accept(int estimateIndex, bool nearestConsistent)

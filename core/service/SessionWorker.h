@@ -47,7 +47,9 @@ public slots:
     void setFaults(const learnid::SimulatedFaults &faults);
     void check();
     void runTrial();
-    void runTrials(int count);
+    /// Runs `count` trials; the next trial's check follows runFinished() unless checkAfter is
+    /// false and all of them learned (the controller runs a series one trial at a time).
+    void runTrials(int count, bool checkAfter = true);
     void accept(int estimateIndex, bool nearestConsistent = false);
     void apply() { writeParameters(SessionOperation::Apply); }
     void revert() { writeParameters(SessionOperation::Revert); }

@@ -4,6 +4,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <functional>
 
 using namespace learnid;
 
@@ -17,6 +18,36 @@ bool openDefaultScenario(SessionController &c)
     c.open(defaults);
     return checked.wait(20000);
 }
+
+// Stands in for the window: notes the events posted to it, by type, in the order handled. Its
+// paint (UpdateRequest) takes 100 ms and then delivers what the worker sent the controller in
+// the meantime: had the next trial started, its trialStarted would be noted before the paint.
+class PostedEventRecorder : public QObject
+{
+public:
+    PostedEventRecorder(QStringList *order, QObject *controller,
+                        std::function<void()> afterPaint = {})
+        : m_order(order)
+        , m_controller(controller)
+        , m_afterPaint(std::move(afterPaint))
+    {}
+    bool event(QEvent *e) override
+    {
+        if (e->type() == QEvent::UpdateRequest) {
+            QThread::msleep(100);
+            QCoreApplication::sendPostedEvents(m_controller, QEvent::MetaCall);
+            if (m_afterPaint)
+                m_afterPaint();
+        }
+        *m_order << QStringLiteral("window %1").arg(int(e->type()));
+        return true;
+    }
+
+private:
+    QStringList *m_order;
+    QObject *m_controller;
+    std::function<void()> m_afterPaint;
+};
 
 } // namespace
 
@@ -166,6 +197,76 @@ private slots:
         c.close();
         QVERIFY(closed.wait(20000));
         QCOMPARE(c.state(), SessionState::NotConnected);
+    }
+
+    void series_startsEachTrialAfterTheWindowsUpdate()
+    {
+        // What the window's update leaves for later (layout, paint) is posted; paint at
+        // Qt::LowEventPriority. The next trial of a series must start after all of it.
+        SessionController c;
+        QVERIFY(openDefaultScenario(c));
+        QStringList order;
+        PostedEventRecorder window(&order, &c);
+        connect(&c, &SessionController::trialFinished, &c, [&](const TrialResult &t) {
+            order << QStringLiteral("finished %1").arg(t.index);
+            QCoreApplication::postEvent(&window, new QEvent(QEvent::User), Qt::NormalEventPriority);
+            QCoreApplication::postEvent(&window, new QEvent(QEvent::UpdateRequest),
+                                        Qt::LowEventPriority);
+        });
+        connect(&c, &SessionController::trialStarted, &c,
+                [&](int index) { order << QStringLiteral("started %1").arg(index); });
+        QSignalSpy finished(&c, &SessionController::runFinished);
+        QSignalSpy checked(&c, &SessionController::checkChanged);
+        c.runTrials(3);
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(finished.constLast().at(0).toBool(), true);
+        QTRY_COMPARE(order.size(), 12); // the last trial's window events come after runFinished
+        QCOMPARE(order, (QStringList{"started 0", "finished 0", "window 1000", "window 77",
+                                     "started 1", "finished 1", "window 1000", "window 77",
+                                     "started 2", "finished 2", "window 1000", "window 77"}));
+        QVERIFY(checked.size() == 1 || checked.wait(20000)); // the trial after the series, once
+        QTest::qWait(50);
+        QCOMPARE(checked.size(), 1);
+        QVERIFY(c.lastCheck()->passed());
+    }
+
+    void stopBetweenTrials_endsTheSeriesAndChecksTheNextTrial_data()
+    {
+        QTest::addColumn<bool>("duringPaint");
+        QTest::newRow("Stop as the trial's figures arrive") << false;
+        QTest::newRow("Stop while the window paints them") << true;
+    }
+
+    void stopBetweenTrials_endsTheSeriesAndChecksTheNextTrial()
+    {
+        QFETCH(bool, duringPaint);
+        SessionController c;
+        QVERIFY(openDefaultScenario(c));
+        QStringList order;
+        PostedEventRecorder window(&order, &c, [&c, duringPaint] {
+            if (duringPaint)
+                c.stop();
+        });
+        connect(&c, &SessionController::trialFinished, &c, [&c, &window, duringPaint] {
+            if (!duringPaint)
+                c.stop();
+            QCoreApplication::postEvent(&window, new QEvent(QEvent::UpdateRequest),
+                                        Qt::LowEventPriority);
+        });
+        QSignalSpy finished(&c, &SessionController::runFinished);
+        QSignalSpy checked(&c, &SessionController::checkChanged);
+        c.runTrials(3);
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(finished.constLast().at(0).toBool(), false);
+        QCOMPARE(c.state(), SessionState::Idle);
+        QCOMPARE(c.history().size(), 1); // the trial under way when Stop came, completed
+        QCOMPARE(c.history().constFirst().status(), TrialStatus::Completed);
+        QCOMPARE(c.estimates().size(), 2);
+        QVERIFY(checked.size() == 1 || checked.wait(20000));
+        QTest::qWait(50);
+        QCOMPARE(checked.size(), 1);
+        QVERIFY(c.lastCheck()->passed());
+        QVERIFY(c.canRun());
     }
 
     void applyWithoutAccept_isRefused()
