@@ -104,6 +104,7 @@ int usage(const char *bad)
                  "  commissioning settings (defaults: the chosen ones, docs/benchmarks.md):\n"
                  "       [--one-way] [--planning-fraction F] [--lambda L] [--rho R]\n"
                  "       [--rank-tolerance T] [--repetitions N] [--substeps N]\n"
+                 "       [--sample-period MS]\n"
                  "       [--cad-residues] [--ideal-measurement]\n");
     return bad ? 2 : 0;
 }
@@ -176,6 +177,8 @@ int main(int argc, char **argv)
             o.repetitions = std::max(1, std::atoi(v));
         else if (a == "--substeps")
             o.substeps = std::max(1, std::atoi(v));
+        else if (a == "--sample-period" && std::atof(v) > 0.0)
+            o.samplePeriod = 1e-3 * std::atof(v);
         else
             return usage(argv[i - 1]);
     }

@@ -27,7 +27,7 @@ struct ChainOptions
     double rho = 120;               ///< estimator bandwidth [rad/s]
     double rankTolerance = 1e-4;
     int repetitions = 16;        ///< runs of each trial averaged before learning
-    int substeps = 5;            ///< RK4 steps per 2 ms sample of the simulated robot
+    int substeps = 5;            ///< RK4 steps per sample of the simulated robot
     double samplePeriod = 0.002; ///< [s]
     bool exactZeros = true;      ///< phi_0: the CAD's rounding residues (< 1e-12) made 0
     bool ideal = false;          ///< measurement without encoder steps and noise (diagnosis)
