@@ -70,6 +70,63 @@ struct LowPassChain
     }
 };
 
+// LowPassChain on the lanes of a SIMD packet: one signal per lane, each lane computing what
+// LowPassChain computes, operation for operation (IEEE arithmetic is the same in every lane).
+struct LowPassLanes
+{
+    using Packet = Eigen::internal::packet_traits<double>::type;
+    static constexpr int size = Eigen::internal::packet_traits<double>::size;
+    Packet u0, y1, y2, y3;
+
+    explicit LowPassLanes(Packet rest)
+        : u0(rest)
+        , y1(rest)
+        , y2(rest)
+        , y3(rest)
+    {}
+
+    static Packet section(Packet y, Packet u, Packet u0, Packet g)
+    {
+        using namespace Eigen::internal;
+        return padd(y, pmul(g, padd(psub(u, y), psub(u0, y))));
+    }
+
+    Packet step(Packet u, Packet g)
+    {
+        const Packet y1New = section(y1, u, u0, g);
+        const Packet y2New = section(y2, y1New, y1, g);
+        y3 = section(y3, y2New, y2, g);
+        u0 = u;
+        y1 = y1New;
+        y2 = y2New;
+        return y3;
+    }
+};
+
+// runLowPass() in place on the 2 LowPassLanes::size columns at x (stride apart), n samples each:
+// two packets, so that one's recursion runs in the other's latency.
+template <bool reversed>
+void runLowPassLanesInPlace(double *x, Eigen::Index stride, int n, double g)
+{
+    using Packet = LowPassLanes::Packet;
+    using Eigen::internal::pgather;
+    using Eigen::internal::pscatter;
+    if (n == 0)
+        return;
+    const int first = reversed ? n - 1 : 0;
+    const int step = reversed ? -1 : 1;
+    double *second = x + LowPassLanes::size * stride;
+    LowPassLanes f(pgather<double, Packet>(x + first, stride));
+    LowPassLanes h(pgather<double, Packet>(second + first, stride));
+    const Packet gain = Eigen::internal::pset1<Packet>(g);
+    for (int i = 0, k = first; i < n; ++i, k += step) {
+        pscatter<double, Packet>(x + k, f.step(pgather<double, Packet>(x + k, stride), gain),
+                                 stride);
+        pscatter<double, Packet>(second + k,
+                                 h.step(pgather<double, Packet>(second + k, stride), gain), stride);
+    }
+}
+
 } // namespace
 
 template <bool reversed>
@@ -210,6 +267,22 @@ void FilteringEstimator::zeroPhaseLowPassInPlace(const std::vector<double *> &se
     }
     if (i < series.size())
         zeroPhaseLowPassInPlace(series[i], n);
+}
+
+void FilteringEstimator::zeroPhaseLowPassColumnsInPlace(Eigen::Ref<Eigen::MatrixXd> x) const
+{
+    const Eigen::Index lanes = 2 * LowPassLanes::size;
+    const Eigen::Index stride = x.outerStride();
+    const int n = int(x.rows());
+    Eigen::Index c = 0;
+    for (; c + lanes <= x.cols(); c += lanes) {
+        runLowPassLanesInPlace<false>(x.col(c).data(), stride, n, m_sectionGain);
+        runLowPassLanesInPlace<true>(x.col(c).data(), stride, n, m_sectionGain);
+    }
+    std::vector<double *> rest;
+    for (; c < x.cols(); ++c)
+        rest.push_back(x.col(c).data());
+    zeroPhaseLowPassInPlace(rest, x.rows());
 }
 
 void FilteringEstimator::filterInto(double *x, Eigen::Index n, bool zeroPhase, double *out) const

@@ -73,6 +73,33 @@ bool GramBlock::allFinite() const
     return true;
 }
 
+void GramBlock::checkColumns(const JointRows &rows) const
+{
+    const int m = parameters();
+    const std::vector<int> &c = rows.columns;
+    bool ascending = rows.a.cols() == Eigen::Index(c.size());
+    for (size_t s = 0; ascending && s < c.size(); ++s)
+        ascending = c[s] >= (s > 0 ? c[s - 1] + 1 : 0) && c[s] < m;
+    if (!ascending)
+        throw sizeError(rows.a.rows(), rows.a.cols(), m_samples, joints(), m);
+}
+
+Eigen::MatrixXd GramBlock::scattered(const Eigen::MatrixXd &gram,
+                                     const std::vector<int> &columns) const
+{
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(parameters(), parameters());
+    out(columns, columns) = gram;
+    return out;
+}
+
+Eigen::VectorXd GramBlock::scattered(const Eigen::VectorXd &v,
+                                     const std::vector<int> &columns) const
+{
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(parameters());
+    out(columns) = v;
+    return out;
+}
+
 GramBlock selfFittedBlock(const std::vector<Eigen::MatrixXd> &a, const Eigen::MatrixXd &b,
                           const Eigen::VectorXd &phiPrev, double tolerance)
 {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "identify/JointRows.h"
 #include "model/Error.h"
 
 #include <Eigen/Core>
@@ -19,6 +20,8 @@ namespace learnid {
 /// which is b^T b - 2 phi^T A^T b + phi^T A^T A phi expanded about phiRef instead of 0: the
 /// terms are then of the size of the residual itself (phiRef is the block's own fit), not of
 /// b^T b, so rounding does not swamp a residual 1e-6 of the torque.
+///
+/// A joint's setters touch only that joint's numbers: different joints may be set concurrently.
 class GramBlock
 {
 public:
@@ -62,6 +65,30 @@ public:
     {
         m_shapedGram[size_t(j)] = gramOf(h);
     }
+    /// The same three from joint j's rows by their nonzero columns (JointRows): rows.a (N x c)
+    /// holds the parameters rows.columns, every other column of the rows is identically 0. The
+    /// products then skip the zero columns; the results are those of the full rows.
+    template <typename B> void setJointNormalEquations(int j, const JointRows &rows, const B &b)
+    {
+        checkColumns(rows);
+        m_gram[size_t(j)] = scattered(gramOf(rows.a), rows.columns);
+        m_gradient[size_t(j)] = scattered(Eigen::VectorXd(rows.a.transpose() * b), rows.columns) -
+                                m_gram[size_t(j)] * m_reference;
+        m_residualSquares[j] = std::numeric_limits<double>::quiet_NaN();
+    }
+    template <typename B> void setJointResidual(int j, const JointRows &rows, const B &b)
+    {
+        checkColumns(rows);
+        const Eigen::VectorXd reference = m_reference(rows.columns);
+        const Eigen::VectorXd r = b - rows.a * reference;
+        m_gradient[size_t(j)] = scattered(Eigen::VectorXd(rows.a.transpose() * r), rows.columns);
+        m_residualSquares[j] = r.squaredNorm();
+    }
+    void setJointShapedRows(int j, const JointRows &shaped)
+    {
+        checkColumns(shaped);
+        m_shapedGram[size_t(j)] = scattered(gramOf(shaped.a), shaped.columns);
+    }
     /// The weight of joint j's rows (default 1).
     void setJointWeight(int j, double weight) { m_weight[j] = weight; }
 
@@ -92,6 +119,13 @@ private:
         g.selfadjointView<Eigen::Lower>().rankUpdate(a.transpose());
         return g.selfadjointView<Eigen::Lower>();
     }
+
+    /// Throws Error unless rows.columns are rows.a.cols() ascending parameter indices.
+    void checkColumns(const JointRows &rows) const;
+    /// The c x c Gram matrix of columns `columns` as the m x m one of all (0 elsewhere).
+    Eigen::MatrixXd scattered(const Eigen::MatrixXd &gram, const std::vector<int> &columns) const;
+    /// The same for a vector of c entries.
+    Eigen::VectorXd scattered(const Eigen::VectorXd &v, const std::vector<int> &columns) const;
 
     Eigen::VectorXd m_reference;
     Eigen::Index m_samples = 0;

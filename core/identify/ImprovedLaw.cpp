@@ -2,11 +2,18 @@
 
 #include "identify/FilteringEstimator.h"
 #include "identify/GramBlock.h"
+#include "identify/JointRows.h"
+#include "identify/ObservableUpdate.h"
+#include "identify/TaskThreads.h"
 #include "model/Error.h"
 #include "model/VectorState.h"
 
 #include <QCoreApplication>
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <functional>
+#include <numeric>
 
 namespace learnid {
 
@@ -22,64 +29,71 @@ struct TrialGram final : LawCache
     GramBlock block;
 };
 
+// task(j) for every joint, on all the threads, the joints with the most columns first (their Gram
+// matrices cost the most): each joint's numbers are its own, whichever thread computes them.
+void forEachJoint(TaskThreads &threads, const std::vector<JointRows> &a,
+                  const std::function<void(int)> &task)
+{
+    std::vector<int> order(a.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
+        return a[size_t(i)].columns.size() > a[size_t(j)].columns.size();
+    });
+    std::atomic<size_t> next{0};
+    threads.run([&](int) {
+        for (size_t i = next++; i < order.size(); i = next++)
+            task(order[i]);
+    });
+}
+
 std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialPlan &plan,
                                      const TrialRecord &record, const EstimatorSettings &settings,
                                      const Eigen::VectorXd &phiPrev)
 {
     validateRecord(model, plan, record);
     const int n = model.dof();
-    const int m = model.parameterCount();
     const int samples = record.samples();
     const FilteringEstimator filter(settings.rho, record.samplePeriod);
 
     // 1. Joint states from the zero-phase filtered tracking error.
     const JointStateEstimate hat = estimateJointStates(filter, plan, record, true);
 
-    // Regressor entries as signals: row i*n + j of w is W(j, i) over the samples.
-    Eigen::MatrixXd w(n * m, samples);
-    model.regressorSeries(hat.q, hat.qd, hat.qdd, w);
+    // The joints' rows are formed, filtered and reduced on two threads where the machine has
+    // them (the numbers do not depend on it); a short record is not worth waking a second one.
+    TaskThreads threads(samples >= 10000 ? TaskThreads::available() : 1);
 
     // 2. Mid-sample pairing, 3. zero-phase filtering of both sides. Joint j's rows A_j: column i
-    // is the filtered signal of W(j, i); entries that are identically zero stay zero.
-    const int rows = samples - 1;
-    std::vector<Eigen::MatrixXd> a(size_t(n), Eigen::MatrixXd(rows, m));
-    std::vector<double *> nonzero;
-    for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < m; ++i) {
-            const int r = i * n + j;
-            auto column = a[size_t(j)].col(i);
-            if (w.row(r).isZero(0.0)) {
-                column.setZero();
-                continue;
-            }
-            column = 0.5 * (w.row(r).head(rows) + w.row(r).tail(rows)).transpose();
-            nonzero.push_back(column.data());
-        }
-    }
-    Eigen::MatrixXd tauf(rows, n);
-    std::vector<double *> series = nonzero; // and the torques: all filtered in pairs
-    for (int j = 0; j < n; ++j) {
-        tauf.col(j) = record.tau.row(j).head(rows).transpose();
-        series.push_back(tauf.col(j).data());
-    }
-    filter.zeroPhaseLowPassInPlace(series, rows);
+    // is the filtered signal of W(j, i); only the columns not identically zero are kept (and
+    // filtered), the others stay exactly zero.
+    std::vector<JointRows> a = midSampleJointRows(model, hat.q, hat.qd, hat.qdd, threads);
+    const Eigen::Index rows = std::max(samples - 1, 0);
+    Eigen::MatrixXd tauf = record.tau.leftCols(rows).transpose();
+    auto out = std::make_shared<TrialGram>();
+    out->rho = settings.rho;
+    GramBlock &block = out->block;
+    block = GramBlock(n, model.parameterCount(), rows, phiPrev);
+    // Per joint: both sides filtered, then the normal equations of the OLS fit of step 4.
+    forEachJoint(threads, a, [&](int j) {
+        filter.zeroPhaseLowPassColumnsInPlace(a[size_t(j)].a);
+        filter.zeroPhaseLowPassInPlace(tauf.col(j).data(), rows);
+        block.setJointNormalEquations(j, a[size_t(j)], tauf.col(j));
+    });
 
     // 4. OLS gives each joint's residual level in this trial; its rows get the inverse weight.
     // The block is then taken about the OLS estimate, so that its residuals are computed from
     // the rows (exactly) and any later fit's residual follows without cancellation.
-    auto out = std::make_shared<TrialGram>();
-    out->rho = settings.rho;
-    out->block = selfFittedBlock(a, tauf, phiPrev, settings.rankTolerance);
+    block.setReference(observableUpdate({&block}, phiPrev, settings.rankTolerance).phi);
+    forEachJoint(threads, a, [&](int j) {
+        block.setJointResidual(j, a[size_t(j)], tauf.col(j));
+        // Torque noise reaches b through F(s)F(-s), a symmetric operator (H^T = H).
+        filter.zeroPhaseLowPassColumnsInPlace(a[size_t(j)].a);
+        block.setJointShapedRows(j, a[size_t(j)]);
+    });
     const double floor = 1e-9 * (tauf.cwiseAbs().maxCoeff() + 1.0);
     for (int j = 0; j < n; ++j) {
-        const double rms = std::sqrt(out->block.residualSquares(j) / double(rows));
-        out->block.setJointWeight(j, 1.0 / std::max(rms, floor));
+        const double rms = std::sqrt(block.residualSquares(j) / double(rows));
+        block.setJointWeight(j, 1.0 / std::max(rms, floor));
     }
-
-    // Torque noise reaches b through F(s)F(-s), a symmetric operator (H^T = H).
-    filter.zeroPhaseLowPassInPlace(nonzero, rows);
-    for (int j = 0; j < n; ++j)
-        out->block.setJointShapedRows(j, a[size_t(j)]);
     return out;
 }
 

@@ -90,6 +90,7 @@ private slots:
     void noiseGains_equalParsevalIntegralOfExactResponse();
     void anticausalLowPass_isAdjointOfLowPass();
     void emptyAndSingleSampleInputs_areHandled();
+    void columnsInPlace_equalOneSignalAtATimeToTheBit();
 };
 
 // Tustin maps z = e^{j w Ts} to s = j w' exactly; each output must be (j w')^i F(j w').
@@ -351,6 +352,37 @@ void TestFilteringEstimator::emptyAndSingleSampleInputs_areHandled()
     const Eigen::RowVectorXd one = Eigen::RowVectorXd::Constant(1, 2.5);
     LEARNID_COMPARE_MATRIX(f.causal(one), Eigen::Vector3d(2.5, 0.0, 0.0), 1e-13);
     LEARNID_COMPARE_MATRIX(f.zeroPhase(one), Eigen::Vector3d(2.5, 0.0, 0.0), 1e-13);
+}
+
+// The columns of a matrix filtered several at a time in SIMD lanes, whatever their count (full
+// groups of lanes and the rest): each column as zeroPhaseLowPass() of it alone, to the bit, on a
+// view with an outer stride too; a column that is identically zero stays exactly zero.
+void TestFilteringEstimator::columnsInPlace_equalOneSignalAtATimeToTheBit()
+{
+    const FilteringEstimator f(rho, ts);
+    std::mt19937 rng(29);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    for (const int count : {1, 2, 3, 4, 5, 7, 8, 9, 13}) {
+        Eigen::MatrixXd x(700, count + 2);
+        for (Eigen::Index k = 0; k < x.rows(); ++k)
+            for (Eigen::Index c = 0; c < x.cols(); ++c)
+                x(k, c) = std::sin(0.003 * double(k * (c + 1))) + 0.2 * normal(rng);
+        x.col(count / 2).setZero();
+        const Eigen::MatrixXd before = x;
+        f.zeroPhaseLowPassColumnsInPlace(x.middleRows(0, 699).middleCols(1, count));
+        for (Eigen::Index c = 0; c < x.cols(); ++c) {
+            if (c < 1 || c > count) {
+                LEARNID_COMPARE_MATRIX(x.col(c), before.col(c), 0.0);
+                continue;
+            }
+            const Eigen::RowVectorXd one = before.col(c).head(699).transpose();
+            LEARNID_COMPARE_MATRIX(x.col(c).head(699).transpose(), f.zeroPhaseLowPass(one), 0.0);
+            QCOMPARE(x(699, c), before(699, c));
+        }
+        QVERIFY(x.col(count / 2).head(699).isZero(0.0));
+    }
+    Eigen::MatrixXd empty(0, 6);
+    f.zeroPhaseLowPassColumnsInPlace(empty);
 }
 
 QTEST_GUILESS_MAIN(TestFilteringEstimator)

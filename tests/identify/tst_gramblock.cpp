@@ -5,6 +5,7 @@
 #include "model/Error.h"
 
 #include <QTest>
+#include <algorithm>
 #include <random>
 
 using namespace learnid;
@@ -72,6 +73,7 @@ private slots:
     void rankDeficientBlocks_keepWhatTheStackedRowsKeep();
     void normalEquationsOnly_solveAndMarkTheResidualUnset();
     void mismatchedBlocks_throw();
+    void nonzeroColumns_giveTheFullRowsBlock();
 };
 
 // ||b_j - A_j phi||^2 from G, g, rr about the reference, against the rows, near and far from it.
@@ -210,6 +212,65 @@ void TestGramBlock::mismatchedBlocks_throw()
     QVERIFY_THROWS_EXCEPTION(Error,
                              stackedGramBlock(r.a, r.b.head(7), joints, Eigen::Vector3d::Zero()));
     QVERIFY_THROWS_EXCEPTION(Error, GramBlock(joints, 3, 10, Eigen::Vector2d::Zero()));
+}
+
+// Rows stored by their nonzero columns (JointRows) give the Gram quantities of the full rows,
+// zero columns included, to rounding; columns that are not ascending parameter indices throw.
+void TestGramBlock::nonzeroColumns_giveTheFullRowsBlock()
+{
+    std::mt19937 rng(31);
+    const int m = 12;
+    const Eigen::VectorXd phiPrev = randomMatrix(rng, m, 1);
+    const std::vector<std::vector<int>> kept = {{0, 1, 2, 3, 5, 6, 7, 8, 9, 10, 11}, {4, 7, 11}};
+    GramBlock full(joints, m, 400, phiPrev), compact(joints, m, 400, phiPrev);
+    std::vector<Eigen::MatrixXd> a(joints);
+    std::vector<JointRows> rows(joints);
+    std::vector<Eigen::VectorXd> b(joints);
+    for (int j = 0; j < joints; ++j) {
+        const std::vector<int> &columns = kept[size_t(j)];
+        rows[size_t(j)].a = randomMatrix(rng, 400, Eigen::Index(columns.size()));
+        rows[size_t(j)].columns = columns;
+        a[size_t(j)] = Eigen::MatrixXd::Zero(400, m);
+        a[size_t(j)](Eigen::all, columns) = rows[size_t(j)].a;
+        b[size_t(j)] = randomMatrix(rng, 400, 1);
+        full.setJointNormalEquations(j, a[size_t(j)], b[size_t(j)]);
+        compact.setJointNormalEquations(j, rows[size_t(j)], b[size_t(j)]);
+    }
+    const Eigen::VectorXd phi = observableUpdate({&full}, phiPrev, tolerance).phi;
+    full.setReference(phi);
+    compact.setReference(phi);
+    for (int j = 0; j < joints; ++j) {
+        full.setJointResidual(j, a[size_t(j)], b[size_t(j)]);
+        compact.setJointResidual(j, rows[size_t(j)], b[size_t(j)]);
+        full.setJointShapedRows(j, a[size_t(j)]);
+        compact.setJointShapedRows(j, rows[size_t(j)]);
+    }
+    QVERIFY(compact.shaped());
+    for (int j = 0; j < joints; ++j) {
+        const double scale = full.gram(j).norm();
+        LEARNID_COMPARE_MATRIX(compact.gram(j), full.gram(j), 1e-12 * scale);
+        LEARNID_COMPARE_MATRIX(compact.shapedGram(j), full.shapedGram(j), 1e-12 * scale);
+        LEARNID_COMPARE_MATRIX(compact.gradient(j), full.gradient(j),
+                               1e-12 * full.gradient(j).norm());
+        LEARNID_COMPARE_NEAR(compact.residualSquares(j), full.residualSquares(j),
+                             1e-12 * full.residualSquares(j));
+        // The columns left out are exactly zero.
+        for (int i = 0; i < m; ++i) {
+            if (std::find(kept[size_t(j)].begin(), kept[size_t(j)].end(), i) ==
+                kept[size_t(j)].end()) {
+                QVERIFY(compact.gram(j).row(i).isZero(0.0));
+                QVERIFY(compact.gram(j).col(i).isZero(0.0));
+                QCOMPARE(compact.gradient(j)[i], 0.0);
+            }
+        }
+    }
+    JointRows unordered = rows[1];
+    unordered.columns = {7, 4, 11};
+    QVERIFY_THROWS_EXCEPTION(Error, compact.setJointShapedRows(1, unordered));
+    unordered.columns = {4, 7, m};
+    QVERIFY_THROWS_EXCEPTION(Error, compact.setJointShapedRows(1, unordered));
+    unordered.columns = {4, 7};
+    QVERIFY_THROWS_EXCEPTION(Error, compact.setJointShapedRows(1, unordered));
 }
 
 QTEST_GUILESS_MAIN(TestGramBlock)
