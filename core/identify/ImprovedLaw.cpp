@@ -13,7 +13,6 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
-#include <numeric>
 
 namespace learnid {
 
@@ -29,16 +28,12 @@ struct TrialGram final : LawCache
     GramBlock block;
 };
 
-// task(j) for every joint, on all the threads, the joints with the most columns first (their Gram
-// matrices cost the most): each joint's numbers are its own, whichever thread computes them.
+// task(j) for every joint, on all the threads, the largest joints first: each joint's numbers
+// are its own, whichever thread computes them.
 void forEachJoint(TaskThreads &threads, const std::vector<JointRows> &a,
                   const std::function<void(int)> &task)
 {
-    std::vector<int> order(a.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
-        return a[size_t(i)].columns.size() > a[size_t(j)].columns.size();
-    });
+    const std::vector<int> order = jointsLargestFirst(a);
     std::atomic<size_t> next{0};
     threads.run([&](int) {
         for (size_t i = next++; i < order.size(); i = next++)

@@ -87,6 +87,16 @@ void spread(const Chunk &chunk, int j, int n, JointRows &joint)
 
 } // namespace
 
+std::vector<int> jointsLargestFirst(const std::vector<JointRows> &rows)
+{
+    std::vector<int> order(rows.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
+        return rows[size_t(i)].columns.size() > rows[size_t(j)].columns.size();
+    });
+    return order;
+}
+
 std::vector<JointRows> midSampleJointRows(const RobotModel &model, const Eigen::MatrixXd &q,
                                           const Eigen::MatrixXd &qd, const Eigen::MatrixXd &qdd,
                                           TaskThreads &threads)
@@ -120,7 +130,6 @@ std::vector<JointRows> midSampleJointRows(const RobotModel &model, const Eigen::
     Eigen::VectorXd previous(entries); // the last sample before the chunk
     std::vector<unsigned char> known(static_cast<size_t>(entries), 0);
     std::vector<std::vector<int>> added(static_cast<size_t>(n));
-    std::vector<int> order(static_cast<size_t>(n));
     for (int r = 0; rounds[r % 2][0].count > 0; ++r) {
         std::vector<Chunk> &now = rounds[r % 2];
         std::vector<Chunk> &later = rounds[(r + 1) % 2];
@@ -147,11 +156,7 @@ std::vector<JointRows> midSampleJointRows(const RobotModel &model, const Eigen::
             added[size_t(j)].clear();
         }
 
-        // The joints with the most columns first, so that the threads finish together.
-        std::iota(order.begin(), order.end(), 0);
-        std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
-            return out[size_t(i)].columns.size() > out[size_t(j)].columns.size();
-        });
+        const std::vector<int> order = jointsLargestFirst(out);
         std::atomic<int> nextJoint{0};
         const Eigen::Index s1 = now[0].s0 + workers * chunkSamples;
         threads.run([&](int t) {

@@ -20,6 +20,10 @@ struct JointRows
     std::vector<int> columns;
 };
 
+/// The joints' indices, the joints with the most columns first (their Gram matrices cost the
+/// most), in index order among equals: the order to hand joints to threads so they end together.
+std::vector<int> jointsLargestFirst(const std::vector<JointRows> &rows);
+
 /// The mid-sample rows of every joint (dof), row k = (W(q_k, qd_k, qdd_k) + W(q_k+1, ...)) / 2
 /// for k < N - 1, from q [rad], qd [rad/s], qdd [rad/s^2] (dof x N, N >= 2). A column is kept
 /// when its signal is nonzero (or not finite) at some sample. The regressor is evaluated a few

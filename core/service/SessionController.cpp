@@ -94,9 +94,8 @@ SessionController::SessionController(QObject *parent)
             QCoreApplication::postEvent(this, new NextTrialEvent(m_series), kAfterTheWindowsUpdate);
             return;
         }
-        if (all && m_seriesLeft > 0) // stopped between two trials: the worker checked nothing
-            post([w = m_worker] { w->check(); });
-        endSeries(all && m_seriesLeft <= 0);
+        // Stopped between two trials (all, trials left): the worker checked nothing.
+        endSeries(all && m_seriesLeft <= 0, all && m_seriesLeft > 0);
     });
     connect(m_worker, &SessionWorker::accepted, this, [this](int k) {
         m_accepted = k;
@@ -170,8 +169,10 @@ void SessionController::postTrial()
     post([w, last] { w->runTrials(1, last); });
 }
 
-void SessionController::endSeries(bool allCompleted)
+void SessionController::endSeries(bool allCompleted, bool checkNext)
 {
+    if (checkNext)
+        post([w = m_worker] { w->check(); });
     m_seriesLeft = 0;
     setState(SessionState::Idle);
     emit runFinished(allCompleted);
@@ -239,8 +240,7 @@ void SessionController::stop()
         setState(SessionState::Stopping);
     if (m_waitingForWindow) { // between two trials of a series: nothing runs to stop
         m_waitingForWindow = false;
-        post([w = m_worker] { w->check(); });
-        endSeries(false);
+        endSeries(false, true);
     }
 }
 

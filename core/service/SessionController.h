@@ -108,7 +108,9 @@ private:
     void setState(SessionState state);
     /// The series' next trial to the worker; the last one checks the trial after it.
     void postTrial();
-    void endSeries(bool allCompleted);
+    /// Idle, runFinished(allCompleted); checkNext: the worker checks the next trial (it does so
+    /// itself after a series' last trial or a failed one).
+    void endSeries(bool allCompleted, bool checkNext);
     /// Apply or revert in the worker; Applying until it answers.
     void writeParameters(SessionOperation operation);
     template <typename F> void post(F &&call);
