@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace learnid {
 
@@ -45,23 +46,37 @@ inline double differenceSection(double y, double u, double u0, double g)
     return y + g * ((u - u0) - 2.0 * y);
 }
 
-// F = S+ S+ S+ on one signal, sample by sample, started at rest at `rest`: every section's
-// input and output equal it (unit DC gain).
-struct LowPassChain
-{
-    double u0, y1, y2, y3;
+using Packet = Eigen::internal::packet_traits<double>::type;
+constexpr int packetSize = Eigen::internal::packet_traits<double>::size;
 
-    explicit LowPassChain(double rest)
+// lowPassSection() on the lanes of a SIMD packet: one signal per lane, each lane computing
+// what lowPassSection() computes, operation for operation (IEEE arithmetic is the same in every
+// lane).
+// (A template, so that a build without SIMD, where Packet is double, has no second overload.)
+template <typename P, std::enable_if_t<!std::is_same_v<P, double>, int> = 0>
+inline P lowPassSection(P y, P u, P u0, P g)
+{
+    using namespace Eigen::internal;
+    return padd(y, pmul(g, padd(psub(u, y), psub(u0, y))));
+}
+
+// F = S+ S+ S+ on one signal (T = double) or on the lanes of a packet, sample by sample,
+// started at rest at `rest`: every section's input and output equal it (unit DC gain).
+template <typename T> struct LowPassChainOf
+{
+    T u0, y1, y2, y3;
+
+    explicit LowPassChainOf(T rest)
         : u0(rest)
         , y1(rest)
         , y2(rest)
         , y3(rest)
     {}
 
-    double step(double u, double g)
+    T step(T u, T g)
     {
-        const double y1New = lowPassSection(y1, u, u0, g);
-        const double y2New = lowPassSection(y2, y1New, y1, g);
+        const T y1New = lowPassSection(y1, u, u0, g);
+        const T y2New = lowPassSection(y2, y1New, y1, g);
         y3 = lowPassSection(y3, y2New, y2, g);
         u0 = u;
         y1 = y1New;
@@ -69,53 +84,21 @@ struct LowPassChain
         return y3;
     }
 };
+using LowPassChain = LowPassChainOf<double>;
+using LowPassLanes = LowPassChainOf<Packet>;
 
-// LowPassChain on the lanes of a SIMD packet: one signal per lane, each lane computing what
-// LowPassChain computes, operation for operation (IEEE arithmetic is the same in every lane).
-struct LowPassLanes
-{
-    using Packet = Eigen::internal::packet_traits<double>::type;
-    static constexpr int size = Eigen::internal::packet_traits<double>::size;
-    Packet u0, y1, y2, y3;
-
-    explicit LowPassLanes(Packet rest)
-        : u0(rest)
-        , y1(rest)
-        , y2(rest)
-        , y3(rest)
-    {}
-
-    static Packet section(Packet y, Packet u, Packet u0, Packet g)
-    {
-        using namespace Eigen::internal;
-        return padd(y, pmul(g, padd(psub(u, y), psub(u0, y))));
-    }
-
-    Packet step(Packet u, Packet g)
-    {
-        const Packet y1New = section(y1, u, u0, g);
-        const Packet y2New = section(y2, y1New, y1, g);
-        y3 = section(y3, y2New, y2, g);
-        u0 = u;
-        y1 = y1New;
-        y2 = y2New;
-        return y3;
-    }
-};
-
-// runLowPass() in place on the 2 LowPassLanes::size columns at x (stride apart), n samples each:
+// runLowPass() in place on the 2 packetSize columns at x (stride apart), n samples each:
 // two packets, so that one's recursion runs in the other's latency.
 template <bool reversed>
 void runLowPassLanesInPlace(double *x, Eigen::Index stride, int n, double g)
 {
-    using Packet = LowPassLanes::Packet;
     using Eigen::internal::pgather;
     using Eigen::internal::pscatter;
     if (n == 0)
         return;
     const int first = reversed ? n - 1 : 0;
     const int step = reversed ? -1 : 1;
-    double *second = x + LowPassLanes::size * stride;
+    double *second = x + packetSize * stride;
     LowPassLanes f(pgather<double, Packet>(x + first, stride));
     LowPassLanes h(pgather<double, Packet>(second + first, stride));
     const Packet gain = Eigen::internal::pset1<Packet>(g);
@@ -271,7 +254,7 @@ void FilteringEstimator::zeroPhaseLowPassInPlace(const std::vector<double *> &se
 
 void FilteringEstimator::zeroPhaseLowPassColumnsInPlace(Eigen::Ref<Eigen::MatrixXd> x) const
 {
-    const Eigen::Index lanes = 2 * LowPassLanes::size;
+    const Eigen::Index lanes = 2 * packetSize;
     const Eigen::Index stride = x.outerStride();
     const int n = int(x.rows());
     Eigen::Index c = 0;
