@@ -49,6 +49,8 @@ Scenario chainScenario(const ChainOptions &o, quint64 seed, bool noisy)
     s.controller.ki = s.controller.kp / 10.0;
     s.controller.kd = (Eigen::VectorXd(7) << 45, 80, 14, 19, 2, 1.9, 1.5).finished();
     s.controller.lambda = o.lambda;
+    s.controller.feedforwardTime =
+        o.midSample ? FeedforwardTime::MidSample : FeedforwardTime::SampleInstant;
     s.estimator.rho = o.rho;
     s.estimator.rankTolerance = o.rankTolerance;
     s.repetitions = o.repetitions;
@@ -83,6 +85,7 @@ ChainOptions testSettings(ChainOptions o)
     o.rankTolerance = 1e-3;
     o.repetitions = 1;
     o.substeps = 10;
+    o.midSample = false;
     o.exactZeros = false;
     return o;
 }
@@ -104,7 +107,7 @@ int usage(const char *bad)
                  "  commissioning settings (defaults: the chosen ones, docs/benchmarks.md):\n"
                  "       [--one-way] [--planning-fraction F] [--lambda L] [--rho R]\n"
                  "       [--rank-tolerance T] [--repetitions N] [--substeps N]\n"
-                 "       [--sample-period MS]\n"
+                 "       [--sample-period MS] [--feedforward-at-sample]\n"
                  "       [--cad-residues] [--ideal-measurement]\n");
     return bad ? 2 : 0;
 }
@@ -146,12 +149,13 @@ int main(int argc, char **argv)
         const std::string a = argv[i];
         if (a == "--help")
             return usage(nullptr);
-        bool *flag = a == "--accuracy-only"       ? &o.speed
-                     : a == "--speed-only"        ? &o.accuracy
-                     : a == "--one-way"           ? &o.thereAndBack
-                     : a == "--cad-residues"      ? &o.exactZeros
-                     : a == "--ideal-measurement" ? &o.ideal
-                                                  : nullptr;
+        bool *flag = a == "--accuracy-only"           ? &o.speed
+                     : a == "--speed-only"            ? &o.accuracy
+                     : a == "--one-way"               ? &o.thereAndBack
+                     : a == "--cad-residues"          ? &o.exactZeros
+                     : a == "--feedforward-at-sample" ? &o.midSample
+                     : a == "--ideal-measurement"     ? &o.ideal
+                                                      : nullptr;
         if (flag) {
             *flag = a == "--ideal-measurement"; // the others turn something off
             continue;
@@ -190,10 +194,11 @@ int main(int argc, char **argv)
     printContext("Started");
     std::printf(
         "Scenario: %s, waypoints %s, planning fraction %g, lambda %g 1/s, rho %g 1/s, "
-        "rank tolerance %g, %d runs per trial, RK4 %d steps per %g ms sample, phi_0 %s.\n\n",
+        "rank tolerance %g, %d runs per trial, RK4 %d steps per %g ms sample, feedforward at %s, "
+        "phi_0 %s.\n\n",
         qPrintable(QFileInfo(o.urdf).fileName()), o.thereAndBack ? "a b c b a" : "a b c",
         o.planningFraction, o.lambda, o.rho, o.rankTolerance, o.repetitions, o.substeps,
-        1e3 * o.samplePeriod,
+        1e3 * o.samplePeriod, o.midSample ? "the middle of each sample" : "each sample's instant",
         o.exactZeros ? "the CAD model, rounding residues < 1e-12 made 0"
                      : "the CAD model as withRobotDefaults() gives it");
     try {

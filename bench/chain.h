@@ -29,6 +29,7 @@ struct ChainOptions
     int repetitions = 16;        ///< runs of each trial averaged before learning
     int substeps = 5;            ///< RK4 steps per sample of the simulated robot
     double samplePeriod = 0.002; ///< [s]
+    bool midSample = true;       ///< feedforward at the middle of each sample's hold
     bool exactZeros = true;      ///< phi_0: the CAD's rounding residues (< 1e-12) made 0
     bool ideal = false;          ///< measurement without encoder steps and noise (diagnosis)
 };
@@ -50,7 +51,8 @@ Scenario resolvedChainScenario(const ChainOptions &o, const RobotModel &model, q
 
 /// o with tst_chainsession's settings (kukaLwr4_learnsThePathTorquesOfSevenAxes): the path
 /// a b c, planning fraction 0.3, lambda 1000, rho 40, rank tolerance 1e-3, 1 run per trial,
-/// RK4 10 steps per sample, phi_0 as withRobotDefaults() gives it.
+/// RK4 10 steps per sample, the feedforward at the sample instant, phi_0 as withRobotDefaults()
+/// gives it.
 ChainOptions testSettings(ChainOptions o);
 
 /// Prints the accuracy tables; returns false when the sessions of the main table failed.

@@ -223,6 +223,20 @@ bool runChainAccuracy(const ChainOptions &o)
                             .arg(1e3 * v.samplePeriod),
                         v});
     v = o;
+    v.midSample = !o.midSample;
+    variants.push_back({o.midSample ? QStringLiteral("feedforward at each sample's instant (the "
+                                                     "paper's) instead of its middle")
+                                    : QStringLiteral("feedforward at the middle of each sample "
+                                                     "instead of its instant"),
+                        v});
+    v.ideal = true;
+    v.repetitions = 1;
+    variants.push_back({v.midSample ? QStringLiteral("ideal measurement, feedforward at the middle "
+                                                     "of each sample")
+                                    : QStringLiteral("ideal measurement, feedforward at each "
+                                                     "sample's instant"),
+                        v});
+    v = o;
     v.repetitions = 1;
     variants.push_back({QStringLiteral("1 run per trial instead of %1").arg(o.repetitions), v});
     v.substeps = 2 * o.substeps;

@@ -328,14 +328,14 @@
 <context>
     <name>CartesianLine</name>
     <message>
-        <location filename="../core/motion/MotionTiming.cpp" line="+15"/>
-        <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
-        <translation>ungültiger Zeitablauf: Abtastzeit und Dauer müssen positiv sein, Ruhezeiten nicht negativ</translation>
-    </message>
-    <message>
         <location filename="../core/motion/CartesianLine.cpp" line="+53"/>
         <source>a planar line needs 2 joints</source>
         <translation>eine ebene Gerade braucht 2 Gelenke</translation>
+    </message>
+    <message>
+        <location filename="../core/motion/MotionTiming.cpp" line="+16"/>
+        <source>invalid timing: sample period and duration must be positive, rests non-negative, the sample offset within the period</source>
+        <translation>ungültiger Zeitablauf: Abtastzeit und Dauer müssen positiv sein, Ruhezeiten nicht negativ, der Abtastversatz innerhalb der Abtastzeit</translation>
     </message>
 </context>
 <context>
@@ -1096,7 +1096,7 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+110"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+119"/>
         <location filename="../core/identify/PaperLaw.cpp" line="+18"/>
         <source>no completed trial to learn from</source>
         <translation>kein abgeschlossener Versuch, aus dem gelernt werden kann</translation>
@@ -1929,7 +1929,7 @@
         <translation>robot.model: unbekanntes Modell „%1“</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+91"/>
         <source>path.waypoints[%1][%2]: %3 is %4 joint %5 (%6)&apos;s %7 limit %8</source>
         <translation>path.waypoints[%1][%2]: %3 liegt %4 der %7 Grenze %8 von Gelenk %5 (%6)</translation>
     </message>
@@ -1990,7 +1990,7 @@
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+227"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+253"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2016,7 +2016,7 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-195"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-219"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -2026,7 +2026,12 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+28"/>
+        <source>must be &quot;sample&quot; or &quot;midSample&quot;, got %1</source>
+        <translation>muss „sample“ oder „midSample“ sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
@@ -4335,7 +4340,17 @@ neue Schätzung.
         <translation>kd: %1 N m s/rad; lambda %2 rad/s</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>Feedforward: model torque at the middle of each %1 ms sample</source>
+        <translation>Vorsteuerung: Modellmoment in der Mitte jedes %1-ms-Abtastschritts</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Feedforward: model torque at each %1 ms sample&apos;s instant</source>
+        <translation>Vorsteuerung: Modellmoment zum Zeitpunkt jedes %1-ms-Abtastschritts</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Estimator: %1, rho %2 rad/s, %3 trials</source>
         <translation>Schätzer: %1, rho %2 rad/s, %3 Versuche</translation>
     </message>
@@ -6034,7 +6049,7 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+111"/>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>no robot connected</source>
         <translation>kein Roboter verbunden</translation>
     </message>

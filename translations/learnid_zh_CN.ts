@@ -328,14 +328,14 @@
 <context>
     <name>CartesianLine</name>
     <message>
-        <location filename="../core/motion/MotionTiming.cpp" line="+15"/>
-        <source>invalid timing: sample period and duration must be positive, rests non-negative</source>
-        <translation>时序无效：采样周期和持续时间必须为正，静止时间不得为负</translation>
-    </message>
-    <message>
         <location filename="../core/motion/CartesianLine.cpp" line="+53"/>
         <source>a planar line needs 2 joints</source>
         <translation>平面直线需要 2 个关节</translation>
+    </message>
+    <message>
+        <location filename="../core/motion/MotionTiming.cpp" line="+16"/>
+        <source>invalid timing: sample period and duration must be positive, rests non-negative, the sample offset within the period</source>
+        <translation>时序无效：采样周期和持续时间必须为正，静止时间不得为负，采样偏移须在采样周期内</translation>
     </message>
 </context>
 <context>
@@ -1096,7 +1096,7 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+110"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+119"/>
         <location filename="../core/identify/PaperLaw.cpp" line="+18"/>
         <source>no completed trial to learn from</source>
         <translation>没有可供学习的已完成试验</translation>
@@ -1927,7 +1927,7 @@
         <translation>robot.model：未知模型“%1”</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+91"/>
         <source>path.waypoints[%1][%2]: %3 is %4 joint %5 (%6)&apos;s %7 limit %8</source>
         <translation>path.waypoints[%1][%2]：%3 %4关节 %5（%6）的%7 %8</translation>
     </message>
@@ -1988,7 +1988,7 @@
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+227"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+253"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2014,7 +2014,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-195"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-219"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -2024,7 +2024,12 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+28"/>
+        <source>must be &quot;sample&quot; or &quot;midSample&quot;, got %1</source>
+        <translation>必须是“sample”或“midSample”，实际为 %1</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
@@ -4328,7 +4333,17 @@ stdout, and the next plan uses the new estimate.
         <translation>kd：%1 N m s/rad；lambda %2 rad/s</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>Feedforward: model torque at the middle of each %1 ms sample</source>
+        <translation>前馈：每个 %1 ms 采样周期中点的模型力矩</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Feedforward: model torque at each %1 ms sample&apos;s instant</source>
+        <translation>前馈：每个 %1 ms 采样时刻的模型力矩</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Estimator: %1, rho %2 rad/s, %3 trials</source>
         <translation>估计器：%1，rho %2 rad/s，%3 次试验</translation>
     </message>
@@ -6023,7 +6038,7 @@ ratio %</source>
     </message>
     <message>
         <location line="+111"/>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>no robot connected</source>
         <translation>未连接机器人</translation>
     </message>

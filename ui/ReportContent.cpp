@@ -77,6 +77,11 @@ ReportContent sessionReportContent(const SessionController &session, const Repor
         Text::tr("kd: %1 N m s/rad; lambda %2 rad/s")
             .arg(list(s.controller.kd))
             .arg(s.controller.lambda),
+        s.controller.feedforwardTime == FeedforwardTime::MidSample
+            ? Text::tr("Feedforward: model torque at the middle of each %1 ms sample")
+                  .arg(s.controller.samplePeriod * 1e3)
+            : Text::tr("Feedforward: model torque at each %1 ms sample's instant")
+                  .arg(s.controller.samplePeriod * 1e3),
         Text::tr("Estimator: %1, rho %2 rad/s, %3 trials")
             .arg(s.law)
             .arg(s.estimator.rho)

@@ -11,10 +11,11 @@ namespace learnid {
 JointTrajectory sampleMotion(int dof, const MotionTiming &timing, const MotionState &state)
 {
     if (!(timing.samplePeriod > 0.0) || !(timing.motionDuration > 0.0) || timing.restBefore < 0.0 ||
-        timing.restAfter < 0.0) {
+        timing.restAfter < 0.0 ||
+        !(timing.sampleOffset >= 0.0 && timing.sampleOffset < timing.samplePeriod)) {
         throw Error(QCoreApplication::translate(
             "CartesianLine", "invalid timing: sample period and duration must be positive, "
-                             "rests non-negative"));
+                             "rests non-negative, the sample offset within the period"));
     }
     const double total = timing.restBefore + timing.motionDuration + timing.restAfter;
     const int n = int(std::floor(total / timing.samplePeriod + 1e-9)) + 1;
@@ -26,7 +27,7 @@ JointTrajectory sampleMotion(int dof, const MotionTiming &timing, const MotionSt
     traj.qdd.resize(dof, n);
     double previousT = -1.0;
     for (int k = 0; k < n; ++k) {
-        const double t = k * timing.samplePeriod - timing.restBefore;
+        const double t = k * timing.samplePeriod + timing.sampleOffset - timing.restBefore;
         const double clamped = std::clamp(t, 0.0, timing.motionDuration);
         if (clamped == previousT) {
             // At rest: the same point as the previous sample (its state, computed again from

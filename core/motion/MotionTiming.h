@@ -14,6 +14,9 @@ struct MotionTiming
     double restBefore = 0.1;     ///< [s]
     double restAfter = 0.5;      ///< [s]
     double samplePeriod = 0.002; ///< Ts [s]
+    /// Sample k is taken at t_k + sampleOffset [s], in [0, Ts): Ts / 2 gives the middle of each
+    /// sample's hold interval (the samples and their count stay those of t_k).
+    double sampleOffset = 0.0;
 };
 
 /// The joint state at motion time t in [0, T] into q, qd, qdd (n each).
@@ -23,10 +26,10 @@ using MotionState =
 
 /// The sampled trajectory of a motion with its rests, every path's one rule: samples at
 /// t_k = k Ts, k = 0 .. floor(total / Ts), total = restBefore + T + restAfter; motion time
-/// t_k - restBefore clamped to [0, T]; at rest (before, after and on the motion's first and last
+/// t_k + sampleOffset - restBefore clamped to [0, T]; at rest (before, after and on the motion's first and last
 /// instant) velocity and acceleration exactly 0 and the position the previous sample's. state
 /// is called once per distinct motion time, in order. Throws Error for a non-positive period
-/// or duration or a negative rest.
+/// or duration, a negative rest or an offset outside [0, Ts).
 JointTrajectory sampleMotion(int dof, const MotionTiming &timing, const MotionState &state);
 
 } // namespace learnid

@@ -114,6 +114,9 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf)
     }
     s.controller.ki = s.controller.kp * 0.1;
     s.controller.lambda = 1000.0;
+    // The paper's arm keeps its feedforward at the sample instant (the paper's figures); a new
+    // robot gets the one without the hold's half-sample lag.
+    s.controller.feedforwardTime = FeedforwardTime::MidSample;
     // The torque rule needs room above gravity: plan at 1.5 times the largest gravity share,
     // at least 30 % and at most 80 % of the limits.
     s.planningFraction = std::clamp(1.5 * gravityShare.maxCoeff(), 0.3, 0.8);

@@ -14,7 +14,8 @@ namespace learnid {
 /// alternating in sign from joint to joint) and PID gains from the CAD model along it: each
 /// joint's lightest inertia m = 1 / (M^-1)_jj, kp = max(m w^2 + max |dg_j/dq_j|, Coulomb
 /// friction / 0.05 rad) with w = 25 rad/s, kd damping it 1.5 times critically together with
-/// the joint's viscous friction, ki = 0.1 kp per second; the planning fraction 1.5 times the
+/// the joint's viscous friction, ki = 0.1 kp per second, the feedforward at the middle of each
+/// sample (FeedforwardTime::MidSample); the planning fraction 1.5 times the
 /// largest gravity share of a limit (30 to 80 %); the torque limits and initial parameters left to
 /// the robot (its URDF, its CAD base parameters) and, for the simulated robot, the CAD robot
 /// perturbed by 30 % with a 20-bit encoder and 1 % torque noise. Throws Error when the model is

@@ -83,10 +83,18 @@ TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ru
     timing.restAfter = m_scenario.restAfter;
     timing.samplePeriod = m_scenario.controller.samplePeriod;
 
+    const auto sampled = [&](const MotionTiming &at) {
+        return m_path ? planJointPath(*m_path, at) : planLine(*m_kinematics, m_scenario.line, at);
+    };
     TrialPlan plan;
-    plan.desired =
-        m_path ? planJointPath(*m_path, timing) : planLine(*m_kinematics, m_scenario.line, timing);
-    plan.feedforward = feedforwardTorque(*m_model, plan.desired, phiHat);
+    plan.desired = sampled(timing);
+    if (m_scenario.controller.feedforwardTime == FeedforwardTime::MidSample) {
+        MotionTiming middle = timing;
+        middle.sampleOffset = 0.5 * timing.samplePeriod;
+        plan.feedforward = feedforwardTorque(*m_model, sampled(middle), phiHat);
+    } else {
+        plan.feedforward = feedforwardTorque(*m_model, plan.desired, phiHat);
+    }
     plan.feedforwardParameters = phiHat;
     plan.controller = m_scenario.controller;
     plan.torqueLimit = m_scenario.torqueLimits;

@@ -13,7 +13,8 @@ namespace learnid {
 
 /// Plans the trials of a scenario: the path (the paper's Cartesian line, or a joint path of
 /// waypoints or from a file), its duration by the torque rule with the current estimate
-/// (re-planned before every trial), the sampled trajectory and the feedforward. A path from a
+/// (re-planned before every trial), the sampled trajectory and the feedforward (at each
+/// sample's instant, or the middle of its hold: controller.feedforwardTime). A path from a
 /// file never runs faster than it was recorded: its duration is the longer of the recording's
 /// and the torque rule's. A joint path of a robot with speed limits (URDF) also takes at least
 /// the duration at which every joint's peak speed is 99 % of its limit.

@@ -15,7 +15,9 @@ namespace learnid {
 struct TrialPlan
 {
     JointTrajectory desired;
-    Eigen::MatrixXd feedforward;           ///< tau_f = W(q_d, qd_d, qdd_d) phi_hat [N m] (n x N)
+    /// tau_f = W(q_d, qd_d, qdd_d) phi_hat [N m] (n x N), the desired state taken at t_k or,
+    /// with FeedforwardTime::MidSample, at t_k + Ts / 2: column k is held over sample k.
+    Eigen::MatrixXd feedforward;
     Eigen::VectorXd feedforwardParameters; ///< phi_hat the feedforward was built with (m)
     ControllerSettings controller;
     Eigen::VectorXd torqueLimit;   ///< [N m] (n); commands saturate here

@@ -63,7 +63,9 @@ void TestScenarioChain::urdfScenario_roundTripsItsKeys()
     s.path.waypoints = {Eigen::VectorXd::Zero(6), Eigen::VectorXd::Constant(6, 0.5)};
     s.controller.kp = s.controller.ki = s.controller.kd = Eigen::VectorXd::Constant(6, 10.0);
     s.simulation.inertiaPerturbation = 0.25;
+    s.controller.feedforwardTime = FeedforwardTime::MidSample;
     const QByteArray json = scenarioToJson(s);
+    QVERIFY(json.contains("\"feedforwardTime\": \"midSample\""));
     QVERIFY(json.contains("\"schema\": \"learnid-scenario/2\""));
     QVERIFY(!json.contains("linkLengths")); // the line's keys are the paper arm's
     const Scenario r = scenarioFromJson(json, source);
@@ -78,7 +80,12 @@ void TestScenarioChain::urdfScenario_roundTripsItsKeys()
     LEARNID_COMPARE_MATRIX(r.path.waypoints[1], s.path.waypoints[1], 0.0);
     LEARNID_COMPARE_MATRIX(r.torqueLimits, s.torqueLimits, 0.0);
     QCOMPARE(r.simulation.inertiaPerturbation, 0.25);
+    QCOMPARE(r.controller.feedforwardTime, FeedforwardTime::MidSample);
     QCOMPARE(scenarioToJson(r), json);
+    // Left out, the feedforward is the paper's, at the sample instant.
+    QCOMPARE(scenarioFromJson(pendulum, source).controller.feedforwardTime,
+             FeedforwardTime::SampleInstant);
+    QVERIFY(scenarioToJson(Scenario()).contains("\"feedforwardTime\": \"sample\""));
 }
 
 void TestScenarioChain::omittedVectors_areLeftToTheRobot()
@@ -165,6 +172,13 @@ void TestScenarioChain::badInput_isNamedByItsKey_data()
     QTest::newRow("path file missing") << QByteArray(R"({"robot": {"model": "double-pendulum"},
              "path": {"kind": "file", "file": "/nonexistent/path.csv"}})")
                                        << QStringLiteral("scenario.json: path.file: ");
+    QTest::newRow("unknown feedforward time")
+        << QByteArray(R"({"controller": {"feedforwardTime": "late"}})")
+        << QStringLiteral("scenario.json: controller.feedforwardTime: must be \"sample\" or "
+                          "\"midSample\", got \"late\"");
+    QTest::newRow("feedforward time not a string")
+        << QByteArray(R"({"controller": {"feedforwardTime": 0.5}})")
+        << QStringLiteral("scenario.json: controller.feedforwardTime: ");
     QTest::newRow("wrong initial parameter count")
         << QByteArray(R"({"robot": {"model": "double-pendulum", "initialParameters": [1, 2]},
              "path": {"kind": "waypoints", "waypoints": [[0, 0], [1, 1]]}})")

@@ -339,27 +339,32 @@ void TestJointPath::planJointPath_samplesFollowPathAndRestAtItsEnds()
 {
     const std::vector<Eigen::VectorXd> w = threeJointWaypoints();
     const WaypointPath path(w);
-    const MotionTiming timing{2.0, 0.1, 0.5, 0.002};
-    const JointTrajectory traj = planJointPath(path, timing);
-    Eigen::Vector3d q, qd, qdd;
-    int before = 0, after = 0;
-    for (int k = 0; k < traj.samples(); ++k) {
-        const double t = k * timing.samplePeriod - timing.restBefore;
-        if (t > 0.0 && t < timing.motionDuration) {
-            jointPathStateInto(path, timing.motionDuration, t, q, qd, qdd);
-            QVERIFY(traj.q.col(k) == q && traj.qd.col(k) == qd && traj.qdd.col(k) == qdd);
-            continue;
+    // At the sample instants, and at the middle of each sample (the mid-sample feedforward's).
+    for (const double offset : {0.0, 0.001}) {
+        const MotionTiming timing{2.0, 0.1, 0.5, 0.002, offset};
+        const JointTrajectory traj = planJointPath(path, timing);
+        QCOMPARE(traj.samples(), 1301);
+        Eigen::Vector3d q, qd, qdd;
+        int before = 0, after = 0;
+        for (int k = 0; k < traj.samples(); ++k) {
+            const double t = k * timing.samplePeriod + offset - timing.restBefore;
+            if (t > 0.0 && t < timing.motionDuration) {
+                jointPathStateInto(path, timing.motionDuration, t, q, qd, qdd);
+                QVERIFY(traj.q.col(k) == q && traj.qd.col(k) == qd && traj.qdd.col(k) == qdd);
+                continue;
+            }
+            if (t <= -1e-9)
+                ++before;
+            else if (t >= timing.motionDuration + 1e-9)
+                ++after;
+            QVERIFY2(traj.q.col(k) == (t <= 0.0 ? w.front() : w.back()),
+                     qPrintable(QString::number(k)));
+            QCOMPARE(traj.qd.col(k).cwiseAbs().maxCoeff() + traj.qdd.col(k).cwiseAbs().maxCoeff(),
+                     0.0);
         }
-        if (t <= -1e-9)
-            ++before;
-        else if (t >= timing.motionDuration + 1e-9)
-            ++after;
-        QVERIFY2(traj.q.col(k) == (t <= 0.0 ? w.front() : w.back()),
-                 qPrintable(QString::number(k)));
-        QCOMPARE(traj.qd.col(k).cwiseAbs().maxCoeff() + traj.qdd.col(k).cwiseAbs().maxCoeff(), 0.0);
+        QCOMPARE(before, 50);
+        QCOMPARE(after, offset == 0.0 ? 250 : 251); // at the offset, the motion's end is a rest
     }
-    QCOMPARE(before, 50);
-    QCOMPARE(after, 250);
 }
 
 void TestJointPath::planJointPath_invalidTiming_throws()
@@ -367,9 +372,18 @@ void TestJointPath::planJointPath_invalidTiming_throws()
     const WaypointPath path(threeJointWaypoints());
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const MotionTiming bad[] = {
-        {1.0, 0.1, 0.5, 0.0},    {1.0, 0.1, 0.5, -0.002}, {0.0, 0.1, 0.5, 0.002},
-        {-1.0, 0.1, 0.5, 0.002}, {1.0, -0.1, 0.5, 0.002}, {1.0, 0.1, -0.5, 0.002},
-        {nan, 0.1, 0.5, 0.002},  {1.0, 0.1, 0.5, nan},
+        {1.0, 0.1, 0.5, 0.0},
+        {1.0, 0.1, 0.5, -0.002},
+        {0.0, 0.1, 0.5, 0.002},
+        {-1.0, 0.1, 0.5, 0.002},
+        {1.0, -0.1, 0.5, 0.002},
+        {1.0, 0.1, -0.5, 0.002},
+        {nan, 0.1, 0.5, 0.002},
+        {1.0, 0.1, 0.5, nan},
+        // the sample offset outside [0, Ts)
+        {1.0, 0.1, 0.5, 0.002, 0.002},
+        {1.0, 0.1, 0.5, 0.002, -1e-4},
+        {1.0, 0.1, 0.5, 0.002, nan},
     };
     for (const MotionTiming &timing : bad)
         QVERIFY_THROWS_EXCEPTION(Error, planJointPath(path, timing));

@@ -47,6 +47,7 @@ void TestRobotScenario::builtInRobot_learnsFromItsDefaultScenario()
     QCOMPARE(waypointLimitError(*robotModel, requested.path.waypoints), QString());
     QVERIFY((requested.controller.kp.array() > 0).all());
     QVERIFY((requested.controller.kd.array() > 0).all());
+    QCOMPARE(requested.controller.feedforwardTime, FeedforwardTime::MidSample);
 
     const Scenario s = withRobotDefaults(requested, *robotModel);
     CommissioningSession session(s, robotModel, makeSimulatedRobot(s, robotModel));
@@ -104,6 +105,7 @@ void TestRobotScenario::paperArm_isThePaperScenario()
     QCOMPARE(s.path.kind, PathKind::Line);
     QCOMPARE(s.controller.kp, paper.controller.kp);
     QCOMPARE(s.initialParameters, paper.initialParameters);
+    QCOMPARE(s.controller.feedforwardTime, FeedforwardTime::SampleInstant);
 }
 
 void TestRobotScenario::waypointBeyondALimit_isNamedWithJointAndLimit()
