@@ -3,29 +3,24 @@
 #include "model/Error.h"
 
 #include <QCoreApplication>
+#include <QtGlobal>
+#include <algorithm>
 #include <cmath>
 
 namespace learnid {
 
 namespace {
 
-Eigen::Matrix3d skew(const Eigen::Vector3d &v)
+// The small helpers below are always inlined: GCC otherwise calls them (and Eigen's fixed-size
+// products inside them) out of line in the recursions, which cost a quarter of their time
+// (learnid-bench-chain, docs/benchmarks.md).
+Q_ALWAYS_INLINE Eigen::Matrix3d skew(const Eigen::Vector3d &v)
 {
     Eigen::Matrix3d s;
     s << 0.0, -v.z(), v.y(), //
         v.z(), 0.0, -v.x(),  //
         -v.y(), v.x(), 0.0;
     return s;
-}
-
-// L(v) with I v = L(v) [Ixx, Ixy, Iyy, Ixz, Iyz, Izz]^T.
-Eigen::Matrix<double, 3, 6> inertiaProduct(const Eigen::Vector3d &v)
-{
-    Eigen::Matrix<double, 3, 6> l;
-    l << v.x(), v.y(), 0.0, v.z(), 0.0, 0.0, //
-        0.0, v.x(), v.y(), 0.0, v.z(), 0.0,  //
-        0.0, 0.0, 0.0, v.x(), v.y(), v.z();
-    return l;
 }
 
 Eigen::Matrix3d inertiaOf(const double *pi)
@@ -35,6 +30,20 @@ Eigen::Matrix3d inertiaOf(const double *pi)
         pi[5], pi[6], pi[8],  //
         pi[7], pi[8], pi[9];
     return i;
+}
+
+// r v and the symmetric inertia [Ixx Ixy Ixz; Ixy Iyy Iyz; Ixz Iyz Izz] (pi[4..9]) times v,
+// written out.
+Q_ALWAYS_INLINE Eigen::Vector3d times(const Eigen::Matrix3d &r, const Eigen::Vector3d &v)
+{
+    return r.col(0) * v.x() + r.col(1) * v.y() + r.col(2) * v.z();
+}
+
+Q_ALWAYS_INLINE Eigen::Vector3d inertiaTimes(const double *pi, const Eigen::Vector3d &v)
+{
+    return {pi[4] * v.x() + pi[5] * v.y() + pi[7] * v.z(),
+            pi[5] * v.x() + pi[6] * v.y() + pi[8] * v.z(),
+            pi[7] * v.x() + pi[8] * v.y() + pi[9] * v.z()};
 }
 
 // Angular velocity w, angular acceleration wd and the linear acceleration a of a link frame's
@@ -131,7 +140,6 @@ void ChainDynamics::regressor(const VectorRef &q, const VectorRef &qd, const Vec
     place(q, pl);
     std::array<LinkMotion, maxJoints> motion;
     propagate(m_dof, pl, m_axis, m_prismatic, qd, qdd, -m_chain.gravity, motion);
-    out.setZero();
     // Joint i's unit motion (linear v at the frame origin, angular w) in frame k, k >= i: the
     // power it draws from link k's wrench [f; n] is v.f + w.n, which is tau_i's share.
     std::array<Eigen::Vector3d, maxJoints> sv, sw;
@@ -140,21 +148,32 @@ void ChainDynamics::regressor(const VectorRef &q, const VectorRef &qd, const Vec
         const Eigen::Matrix3d rt = pl[uk].r.transpose();
         for (int i = 0; i < k; ++i) {
             const size_t ui = size_t(i);
-            sv[ui] = rt * (sv[ui] + sw[ui].cross(pl[uk].p));
-            sw[ui] = rt * sw[ui];
+            sv[ui] = times(rt, sv[ui] + sw[ui].cross(pl[uk].p));
+            sw[ui] = times(rt, sw[ui]);
         }
         sv[uk] = m_prismatic[uk] ? m_axis[uk] : Eigen::Vector3d::Zero();
         sw[uk] = m_prismatic[uk] ? Eigen::Vector3d::Zero() : m_axis[uk];
 
         // Link k's wrench, linear in its parameters:
-        //   f = a m + ([wd]x + [w]x[w]x) h,   n = -[a]x h + (L(wd) + [w]x L(w)) I.
+        //   f = a m + ([wd]x + [w]x[w]x) h,   n = -[a]x h + (L(wd) + [w]x L(w)) I,
+        // with L(v) [Ixx, Ixy, Iyy, Ixz, Iyz, Izz]^T = I v.
         const LinkMotion &lm = motion[uk];
-        const Eigen::Matrix3d sw2 = skew(lm.w);
-        const Eigen::Matrix3d forceFromH = skew(lm.wd) + sw2 * sw2;
+        // Both written out ([w]x[w]x = w w^T - |w|^2 E): as products of Eigen's small matrices
+        // they took a third of the regressor's time.
+        const double wx = lm.w.x(), wy = lm.w.y(), wz = lm.w.z();
+        const double dx = lm.wd.x(), dy = lm.wd.y(), dz = lm.wd.z();
+        Eigen::Matrix3d forceFromH;
+        forceFromH << -(wy * wy + wz * wz), wx * wy - dz, wx * wz + dy, //
+            wx * wy + dz, -(wx * wx + wz * wz), wy * wz - dx,           //
+            wx * wz - dy, wy * wz + dx, -(wx * wx + wy * wy);
         const Eigen::Matrix3d momentFromH = -skew(lm.a);
-        const Eigen::Matrix<double, 3, 6> momentFromI =
-            inertiaProduct(lm.wd) + sw2 * inertiaProduct(lm.w);
+        Eigen::Matrix<double, 3, 6> momentFromI;
+        momentFromI << dx, dy - wz * wx, -wz * wy, dz + wy * wx, wy * wy - wz * wz, wy * wz, //
+            wz * wx, dx + wz * wy, dy, wz * wz - wx * wx, dz - wx * wy, -wx * wz,            //
+            -wy * wx, wx * wx - wy * wy, wx * wy, dx - wy * wz, dy + wx * wz, dz;
         const Eigen::Index col = Eigen::Index(10) * k;
+        for (Eigen::Index c = col; c < col + 10; ++c) // link k does not load the joints after it
+            std::fill_n(out.col(c).data() + k + 1, m_dof - k - 1, 0.0);
         for (int i = 0; i <= k; ++i) {
             const size_t ui = size_t(i);
             out(i, col) = sv[ui].dot(lm.a);
@@ -198,14 +217,14 @@ void ChainDynamics::inverseDynamicsPlaced(const Placements &pl, const VectorRef 
         const size_t uk = size_t(k);
         const double *p = pi.data() + 10 * k;
         const Eigen::Vector3d h(p[1], p[2], p[3]);
-        const Eigen::Matrix3d inertia = inertiaOf(p);
         const LinkMotion &lm = motion[uk];
         Eigen::Vector3d f = p[0] * lm.a + lm.wd.cross(h) + lm.w.cross(lm.w.cross(h));
-        Eigen::Vector3d n = inertia * lm.wd + lm.w.cross(inertia * lm.w) + h.cross(lm.a);
+        Eigen::Vector3d n =
+            inertiaTimes(p, lm.wd) + lm.w.cross(inertiaTimes(p, lm.w)) + h.cross(lm.a);
         if (k + 1 < m_dof) { // the wrench the next link exerts, brought into this frame
-            const Eigen::Vector3d childForce = pl[uk + 1].r * force;
+            const Eigen::Vector3d childForce = times(pl[uk + 1].r, force);
             f += childForce;
-            n += pl[uk + 1].r * moment + pl[uk + 1].p.cross(childForce);
+            n += times(pl[uk + 1].r, moment) + pl[uk + 1].p.cross(childForce);
         }
         force = f;
         moment = n;
