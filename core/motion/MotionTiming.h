@@ -26,10 +26,10 @@ using MotionState =
 
 /// The sampled trajectory of a motion with its rests, every path's one rule: samples at
 /// t_k = k Ts, k = 0 .. floor(total / Ts), total = restBefore + T + restAfter; motion time
-/// t_k + sampleOffset - restBefore clamped to [0, T]; at rest (before, after and on the motion's first and last
-/// instant) velocity and acceleration exactly 0 and the position the previous sample's. state
-/// is called once per distinct motion time, in order. Throws Error for a non-positive period
-/// or duration, a negative rest or an offset outside [0, Ts).
+/// t_k + sampleOffset - restBefore clamped to [0, T]; at rest (before, after and on the motion's
+/// first and last instant) velocity and acceleration exactly 0 and the position the previous
+/// sample's. state is called once per distinct motion time, in order. Throws Error for a
+/// non-positive period or duration, a negative rest or an offset outside [0, Ts).
 JointTrajectory sampleMotion(int dof, const MotionTiming &timing, const MotionState &state);
 
 } // namespace learnid
