@@ -260,7 +260,7 @@ void ChainDynamics::massMatrixPlaced(const Placements &pl, const VectorRef &pi,
     for (size_t k = size_t(m_dof) - 1; k > 0; --k) {
         const Eigen::Matrix3d &r = pl[k].r;
         const Eigen::Vector3d &p = pl[k].p;
-        const Eigen::Vector3d rh = r * first[k];
+        const Eigen::Vector3d rh = times(r, first[k]);
         const double m = mass[k];
         Eigen::Matrix3d moved = r * rotational[k] * r.transpose();
         moved.diagonal().array() += m * p.squaredNorm() + 2.0 * p.dot(rh);
@@ -274,11 +274,11 @@ void ChainDynamics::massMatrixPlaced(const Placements &pl, const VectorRef &pi,
         // frame k: revolute about z, f = z x h, n = I z; prismatic along z, f = m z, n = h x z.
         const Eigen::Vector3d &z = m_axis[k];
         Eigen::Vector3d f = m_prismatic[k] ? Eigen::Vector3d(mass[k] * z) : z.cross(first[k]);
-        Eigen::Vector3d n = m_prismatic[k] ? first[k].cross(z) : Eigen::Vector3d(rotational[k] * z);
+        Eigen::Vector3d n = m_prismatic[k] ? first[k].cross(z) : times(rotational[k], z);
         out(Eigen::Index(k), Eigen::Index(k)) = z.dot(m_prismatic[k] ? f : n);
         for (size_t j = k; j > 0; --j) { // the same force seen from joint j - 1
-            f = pl[j].r * f;
-            n = pl[j].r * n + pl[j].p.cross(f);
+            f = times(pl[j].r, f);
+            n = times(pl[j].r, n) + pl[j].p.cross(f);
             const double mjk = m_axis[j - 1].dot(m_prismatic[j - 1] ? f : n);
             out(Eigen::Index(j - 1), Eigen::Index(k)) = mjk;
             out(Eigen::Index(k), Eigen::Index(j - 1)) = mjk;
