@@ -37,9 +37,9 @@ QLabel *reasonLabel(QWidget *parent)
 ScenarioForm::ScenarioForm(QWidget *parent)
     : QWidget(parent)
     , m_law(new QComboBox(this))
-    , m_otherError(reasonLabel(this))
     , m_robot(new RobotChooser(this))
     , m_waypoints(new WaypointEditor(this))
+    , m_otherError(reasonLabel(this))
 {
     connect(m_waypoints, &WaypointEditor::pathFileChosen, this, &ScenarioForm::usePathFile);
     connect(m_waypoints, &WaypointEditor::waypointsChosen, this, &ScenarioForm::useWaypoints);

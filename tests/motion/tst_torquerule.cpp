@@ -25,8 +25,8 @@ public:
     QList<ParameterInfo> parameters() const override
     {
         QList<ParameterInfo> p = m_arm.parameters();
-        p.append({QStringLiteral("g1"), QStringLiteral("N m"), QString()});
-        p.append({QStringLiteral("g2"), QStringLiteral("N m"), QString()});
+        p.append({QStringLiteral("g1"), QStringLiteral("N m"), QString(), QString()});
+        p.append({QStringLiteral("g2"), QStringLiteral("N m"), QString(), QString()});
         return p;
     }
     void regressor(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd,
