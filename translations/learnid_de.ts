@@ -341,7 +341,7 @@
 <context>
     <name>ChainDynamics</name>
     <message>
-        <location filename="../core/model/ChainDynamics.cpp" line="+54"/>
+        <location filename="../core/model/ChainDynamics.cpp" line="+48"/>
         <source>%1 has %2 moving joints: a chain needs 1 to %3</source>
         <translation>%1 hat %2 bewegliche Gelenke: eine Kette braucht 1 bis %3</translation>
     </message>
@@ -1990,7 +1990,7 @@
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+253"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+254"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2016,7 +2016,7 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-219"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-220"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -2026,7 +2026,7 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>must be &quot;sample&quot; or &quot;midSample&quot;, got %1</source>
         <translation>muss „sample“ oder „midSample“ sein, gefunden: %1</translation>
     </message>
@@ -2784,7 +2784,7 @@
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+17"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+19"/>
         <source>Usage:
   learnid-cli scenario --print
       Print the default scenario (the paper scenario) as JSON.
@@ -2864,7 +2864,7 @@
 </translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -2877,7 +2877,7 @@
 %3</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+24"/>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
         <translation>--robot: muss &apos;sim&apos; oder &apos;can&apos; sein, gefunden: &apos;%1&apos;</translation>
     </message>
@@ -2908,21 +2908,22 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+9"/>
         <location filename="../app/cli/RunCommand.cpp" line="-155"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+2"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+2"/>
         <source>--robot %1: %2</source>
         <translation>--robot %1: %2</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+23"/>
         <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+61"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+13"/>
         <source>Show this command&apos;s options.</source>
         <translation>Die Optionen dieses Befehls anzeigen.</translation>
     </message>
@@ -2932,23 +2933,23 @@
         <translation>Standardszenario ausgeben.</translation>
     </message>
     <message>
-        <location line="+3"/>
         <location filename="../app/cli/LoopOptions.cpp" line="-17"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+3"/>
         <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
         <translation>Szenariodatei (JSON, docs/scenario.md); Standard: das Szenario des Artikels.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+4"/>
         <source>Learning law: paper or improved.</source>
         <translation>Lerngesetz: paper oder improved.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Learning trials, 1 to 100.</source>
         <translation>Lernversuche, 1 bis 100.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Write the session report (JSON) to FILE.</source>
         <translation>Den Sitzungsbericht (JSON) nach FILE schreiben.</translation>
     </message>
@@ -2958,12 +2959,12 @@
         <translation>Die Parameterdatei (JSON und DCF) nach FILE schreiben.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Write each trial&apos;s samples as CSV into DIR.</source>
         <translation>Die Abtastwerte jedes Versuchs als CSV nach DIR schreiben.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Accept and apply the final estimate to the robot.</source>
         <translation>Die letzte Schätzung übernehmen und auf den Roboter übertragen.</translation>
     </message>
@@ -2973,19 +2974,19 @@
         <translation>Die der letzten Schätzung nächste physikalisch konsistente Schätzung exportieren und übernehmen (URDF-Roboter).</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Folder that relative output paths are taken from; default: the current directory.</source>
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
-        <location line="+6"/>
         <location filename="../app/cli/IdentifyOptions.cpp" line="-3"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
         <translation>Keine Fortschrittszeilen auf stderr.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+2"/>
         <source>sim (default) or can.</source>
         <translation>sim (Standard) oder can.</translation>
     </message>
@@ -2995,22 +2996,22 @@
         <translation>QCanBus-Plugin, z. B. socketcan oder virtualcan.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>CAN interface, e.g. can0.</source>
         <translation>CAN-Schnittstelle, z. B. can0.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>CANopen node id of each joint&apos;s drive, e.g. 1,2.</source>
         <translation>CANopen-Knotennummer des Antriebs jedes Gelenks, z. B. 1,2.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Longest SYNC gap in a trial [ms].</source>
         <translation>Längste SYNC-Lücke in einem Versuch [ms].</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Write each trial&apos;s CAN frames as a candump log into DIR.</source>
         <translation>Die CAN-Frames jedes Versuchs als candump-Log nach DIR schreiben.</translation>
     </message>
@@ -3020,7 +3021,7 @@
         <translation>Ein aufgezeichneter Versuch (candump-Log); einmal pro Versuch, der Reihe nach.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+9"/>
         <source>Print the default scenario as JSON.</source>
         <translation>Das Standardszenario als JSON ausgeben.</translation>
     </message>
@@ -3030,7 +3031,7 @@
         <translation>&apos;scenario&apos; braucht --print</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
@@ -3040,7 +3041,7 @@
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+17"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>Neu identifizieren aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
@@ -3054,12 +3055,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+31"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+17"/>
         <source>--iterations: must be a whole number from 1 to 100, got &apos;%1&apos;</source>
         <translation>--iterations: muss eine ganze Zahl von 1 bis 100 sein, gefunden: &apos;%1&apos;</translation>
     </message>

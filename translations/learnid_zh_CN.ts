@@ -341,7 +341,7 @@
 <context>
     <name>ChainDynamics</name>
     <message>
-        <location filename="../core/model/ChainDynamics.cpp" line="+54"/>
+        <location filename="../core/model/ChainDynamics.cpp" line="+48"/>
         <source>%1 has %2 moving joints: a chain needs 1 to %3</source>
         <translation>%1 有 %2 个可动关节：运动链需要 1 到 %3 个</translation>
     </message>
@@ -1988,7 +1988,7 @@
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+253"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+254"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2014,7 +2014,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-219"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-220"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -2024,7 +2024,7 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>must be &quot;sample&quot; or &quot;midSample&quot;, got %1</source>
         <translation>必须是“sample”或“midSample”，实际为 %1</translation>
     </message>
@@ -2782,7 +2782,7 @@
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+17"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+19"/>
         <source>Usage:
   learnid-cli scenario --print
       Print the default scenario (the paper scenario) as JSON.
@@ -2861,7 +2861,7 @@
 </translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -2874,7 +2874,7 @@
 %3</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+24"/>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
         <translation>--robot：必须是 &apos;sim&apos; 或 &apos;can&apos;，实际为 &apos;%1&apos;</translation>
     </message>
@@ -2905,21 +2905,22 @@
         <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+9"/>
         <location filename="../app/cli/RunCommand.cpp" line="-155"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1：%2</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+2"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+2"/>
         <source>--robot %1: %2</source>
         <translation>--robot %1：%2</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+23"/>
         <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+61"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+13"/>
         <source>Show this command&apos;s options.</source>
         <translation>显示此命令的选项。</translation>
     </message>
@@ -2929,23 +2930,23 @@
         <translation>输出默认场景。</translation>
     </message>
     <message>
-        <location line="+3"/>
         <location filename="../app/cli/LoopOptions.cpp" line="-17"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+3"/>
         <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
         <translation>场景文件（JSON，docs/scenario.md）；默认：论文场景。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+4"/>
         <source>Learning law: paper or improved.</source>
         <translation>学习律：paper 或 improved。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Learning trials, 1 to 100.</source>
         <translation>学习试验次数，1 到 100。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Write the session report (JSON) to FILE.</source>
         <translation>将会话报告（JSON）写入 FILE。</translation>
     </message>
@@ -2955,12 +2956,12 @@
         <translation>将参数文件（JSON 和 DCF）写入 FILE。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Write each trial&apos;s samples as CSV into DIR.</source>
         <translation>将每次试验的采样以 CSV 写入 DIR。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Accept and apply the final estimate to the robot.</source>
         <translation>接受最终估计并写入机器人。</translation>
     </message>
@@ -2970,19 +2971,19 @@
         <translation>导出并应用与最终估计最接近的物理一致估计（URDF 机器人）。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Folder that relative output paths are taken from; default: the current directory.</source>
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
-        <location line="+6"/>
         <location filename="../app/cli/IdentifyOptions.cpp" line="-3"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
         <translation>不在 stderr 上输出进度行。</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+2"/>
         <source>sim (default) or can.</source>
         <translation>sim（默认）或 can。</translation>
     </message>
@@ -2992,22 +2993,22 @@
         <translation>QCanBus 插件，例如 socketcan 或 virtualcan。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>CAN interface, e.g. can0.</source>
         <translation>CAN 接口，例如 can0。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>CANopen node id of each joint&apos;s drive, e.g. 1,2.</source>
         <translation>每个关节驱动器的 CANopen 节点号，例如 1,2。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Longest SYNC gap in a trial [ms].</source>
         <translation>试验中最长的 SYNC 间隔 [ms]。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Write each trial&apos;s CAN frames as a candump log into DIR.</source>
         <translation>将每次试验的 CAN 帧以 candump 日志写入 DIR。</translation>
     </message>
@@ -3017,7 +3018,7 @@
         <translation>一次记录的试验（candump 日志）；每次试验一个，按顺序。</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+9"/>
         <source>Print the default scenario as JSON.</source>
         <translation>以 JSON 格式输出默认场景。</translation>
     </message>
@@ -3027,7 +3028,7 @@
         <translation>&apos;scenario&apos; 需要 --print</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>no command given</source>
         <translation>未给出命令</translation>
     </message>
@@ -3037,7 +3038,7 @@
         <translation>未知命令 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+17"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>根据记录的试验重新辨识：会话再次运行，
@@ -3051,12 +3052,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）。</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+31"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+17"/>
         <source>--iterations: must be a whole number from 1 to 100, got &apos;%1&apos;</source>
         <translation>--iterations：必须是 1 到 100 之间的整数，实际为 &apos;%1&apos;</translation>
     </message>

@@ -75,6 +75,10 @@ QCommandLineOption cliOption(const char *name, const char *description,
 /// The "Options:" part of the parser's help text, for a command's --help.
 QString optionsHelp(const QCommandLineParser &parser);
 
+/// A command's --help: "Usage: learnid-cli COMMAND [options]", the summary, optionsHelp().
+QString commandHelp(const QString &command, const QString &summary,
+                    const QCommandLineParser &parser);
+
 /// Parses a command's arguments (args[1] is the command) with parser, whose options include
 /// --help. Returns false when cl is complete: a syntax error or a positional argument (cl->error),
 /// or --help (command Help, cl->usage = usage()). True: the caller reads the options.
