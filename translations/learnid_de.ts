@@ -349,12 +349,12 @@
 <context>
     <name>ChainModel</name>
     <message>
-        <location filename="../core/model/ChainModel.cpp" line="+35"/>
+        <location filename="../core/model/ChainParameterInfo.cpp" line="+32"/>
         <source>link %1 (%2)</source>
         <translation>Glied %1 (%2)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>mass of link %1</source>
         <translation>Masse des Glieds %1</translation>
     </message>
@@ -364,7 +364,7 @@
         <translation>statisches Moment des Glieds %1 entlang seiner %2-Achse</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>inertia %1 of link %2 about its frame origin</source>
         <translation>Trägheit %1 des Glieds %2 um den Ursprung seines Koordinatensystems</translation>
     </message>
@@ -379,22 +379,22 @@
         <translation>viskose Reibung des Gelenks %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Coulomb friction of joint %1</source>
         <translation>Coulomb-Reibung des Gelenks %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>torque offset of joint %1</source>
         <translation>Drehmoment-Offset des Gelenks %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-15"/>
         <source>joint %1 (%2)</source>
         <translation>Gelenk %1 (%2)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location filename="../core/model/ChainModel.cpp" line="+55"/>
         <source>the Coulomb friction&apos;s velocity scale must be positive (it is %1)</source>
         <translation>die Geschwindigkeitsskala der Coulomb-Reibung muss positiv sein (sie ist %1)</translation>
     </message>

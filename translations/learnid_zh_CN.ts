@@ -349,12 +349,12 @@
 <context>
     <name>ChainModel</name>
     <message>
-        <location filename="../core/model/ChainModel.cpp" line="+35"/>
+        <location filename="../core/model/ChainParameterInfo.cpp" line="+32"/>
         <source>link %1 (%2)</source>
         <translation>连杆 %1（%2）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>mass of link %1</source>
         <translation>连杆 %1 的质量</translation>
     </message>
@@ -364,7 +364,7 @@
         <translation>连杆 %1 沿其 %2 轴的质量一阶矩</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>inertia %1 of link %2 about its frame origin</source>
         <translation>连杆 %2 关于其坐标系原点的惯量 %1</translation>
     </message>
@@ -379,22 +379,22 @@
         <translation>关节 %1 的粘性摩擦</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Coulomb friction of joint %1</source>
         <translation>关节 %1 的库仑摩擦</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>torque offset of joint %1</source>
         <translation>关节 %1 的力矩偏置</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-15"/>
         <source>joint %1 (%2)</source>
         <translation>关节 %1（%2）</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location filename="../core/model/ChainModel.cpp" line="+55"/>
         <source>the Coulomb friction&apos;s velocity scale must be positive (it is %1)</source>
         <translation>库仑摩擦的速度尺度必须为正（当前为 %1）</translation>
     </message>

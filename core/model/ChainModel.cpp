@@ -1,5 +1,6 @@
 #include "model/ChainModel.h"
 
+#include "model/ChainParameterInfo.h"
 #include "model/Error.h"
 
 #include <Eigen/Cholesky>
@@ -15,64 +16,6 @@ struct Text
 {
     Q_DECLARE_TR_FUNCTIONS(ChainModel)
 };
-
-QString subscript(int number)
-{
-    QString digits = QString::number(number);
-    for (QChar &c : digits)
-        c = QChar(0x2080 + (c.unicode() - '0'));
-    return digits;
-}
-
-QList<ParameterInfo> standardInfo(const SerialChain &chain, const JointTerms &terms)
-{
-    const QString kg = QStringLiteral("kg"), kgm = QStringLiteral("kg m"),
-                  kgm2 = QStringLiteral("kg m^2");
-    QList<ParameterInfo> info;
-    for (int k = 0; k < chain.dof(); ++k) {
-        const QString s = subscript(k + 1);
-        const QString link = chain.joints[size_t(k)].link;
-        const QString linkGroup = Text::tr("link %1 (%2)").arg(k + 1).arg(link);
-        const qsizetype first = info.size();
-        info.append({QStringLiteral("m") + s, kg, Text::tr("mass of link %1").arg(link)});
-        for (const char *axis : {"x", "y", "z"}) {
-            info.append({QStringLiteral("m·c%1").arg(QLatin1String(axis)) + s, kgm,
-                         Text::tr("first moment of mass of link %1 along its %2 axis")
-                             .arg(link, QLatin1String(axis))});
-        }
-        for (const char *pair : {"xx", "xy", "yy", "xz", "yz", "zz"}) {
-            info.append({QStringLiteral("I%1").arg(QLatin1String(pair)) + s, kgm2,
-                         Text::tr("inertia %1 of link %2 about its frame origin")
-                             .arg(QLatin1String(pair), link)});
-        }
-        for (qsizetype i = first; i < info.size(); ++i)
-            info[i].group = linkGroup;
-    }
-    for (int k = 0; k < chain.dof(); ++k) {
-        const QString s = subscript(k + 1);
-        const QString joint = chain.joints[size_t(k)].name;
-        const bool prismatic = chain.joints[size_t(k)].type == JointType::Prismatic;
-        const qsizetype first = info.size();
-        if (terms.armature)
-            info.append({QStringLiteral("Ia") + s, prismatic ? kg : kgm2,
-                         Text::tr("rotor inertia at joint %1").arg(joint)});
-        if (terms.viscous)
-            info.append({QStringLiteral("fv") + s,
-                         prismatic ? QStringLiteral("N s/m") : QStringLiteral("N m s/rad"),
-                         Text::tr("viscous friction of joint %1").arg(joint)});
-        if (terms.coulomb)
-            info.append({QStringLiteral("fc") + s,
-                         prismatic ? QStringLiteral("N") : QStringLiteral("N m"),
-                         Text::tr("Coulomb friction of joint %1").arg(joint)});
-        if (terms.offset)
-            info.append({QStringLiteral("τo") + s,
-                         prismatic ? QStringLiteral("N") : QStringLiteral("N m"),
-                         Text::tr("torque offset of joint %1").arg(joint)});
-        for (qsizetype i = first; i < info.size(); ++i)
-            info[i].group = Text::tr("joint %1 (%2)").arg(k + 1).arg(joint);
-    }
-    return info;
-}
 
 // Regressor rows at random states for the base parameters: positions within the joint limits
 // (within +-pi, or +-1 m, where there are none), velocities and accelerations of order 1.
@@ -113,7 +56,7 @@ ChainModel::ChainModel(const SerialChain &chain, const JointTerms &terms, const 
                         .arg(terms.coulombVelocity));
     }
     m_cad = standardOf(chain);
-    m_standardInfo = standardInfo(chain, terms);
+    m_standardInfo = standardParameterInfo(chain, terms);
     m_base = BaseParameters::fromRegressor(randomRows(*this));
     // pi_I = phi - beta cad_D, and baseFromStandard(cad) = cad_I + beta cad_D.
     m_priorShift = m_base.baseFromStandard(m_cad);
