@@ -1059,13 +1059,19 @@
     </message>
     <message>
         <location line="+9"/>
+        <location line="+32"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="-15"/>
         <source>must be a string, got %1</source>
         <translation>muss eine Zeichenkette sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 or %2</source>
+        <translation>%1 oder %2</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -1990,7 +1996,7 @@
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+254"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+234"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2016,7 +2022,7 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-220"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-202"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -2026,12 +2032,7 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+29"/>
-        <source>must be &quot;sample&quot; or &quot;midSample&quot;, got %1</source>
-        <translation>muss „sample“ oder „midSample“ sein, gefunden: %1</translation>
-    </message>
-    <message>
-        <location line="+57"/>
+        <location line="+68"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
@@ -2081,14 +2082,9 @@
         <translation>muss 0 (idealer Encoder) oder eine ganze Zahl von %1 bis %2 sein, gefunden: %3</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioChain.cpp" line="+53"/>
+        <location filename="../core/io/ScenarioChain.cpp" line="+50"/>
         <source>must have 3 entries (x, y, z in the base link&apos;s frame), got %1</source>
         <translation>muss 3 Einträge haben (x, y, z im Koordinatensystem des Basisglieds), gefunden: %1</translation>
-    </message>
-    <message>
-        <location line="+31"/>
-        <source>must be &quot;line&quot;, &quot;waypoints&quot; or &quot;file&quot;, got %1</source>
-        <translation>muss „line“, „waypoints“ oder „file“ sein, gefunden: %1</translation>
     </message>
 </context>
 <context>
@@ -2920,21 +2916,18 @@
         <translation>--robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+23"/>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="+61"/>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+13"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+65"/>
         <source>Show this command&apos;s options.</source>
         <translation>Die Optionen dieses Befehls anzeigen.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-41"/>
         <source>Print the default scenario.</source>
         <translation>Standardszenario ausgeben.</translation>
     </message>
     <message>
-        <location filename="../app/cli/LoopOptions.cpp" line="-17"/>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+3"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+44"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+14"/>
         <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
         <translation>Szenariodatei (JSON, docs/scenario.md); Standard: das Szenario des Artikels.</translation>
     </message>
@@ -2979,7 +2972,7 @@
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-3"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+208"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -3055,7 +3048,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+31"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+38"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
@@ -3350,7 +3343,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Ordner, ab dem relative Ausgabepfade gelten.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
         <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
 
 Identify a robot&apos;s inertia and joint friction from its recorded logs,
@@ -3505,7 +3498,7 @@ neue Schätzung.
         <translation>Ordner des Lernverlaufs; Standard: learnid-history neben plan.csv (plan) bzw. neben dem Versuchs-Log (learn).</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+15"/>
         <source>Folder to write plan.csv and check.txt into.</source>
         <translation>Ordner, in den plan.csv und check.txt geschrieben werden.</translation>
     </message>

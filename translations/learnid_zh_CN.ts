@@ -1059,13 +1059,19 @@
     </message>
     <message>
         <location line="+9"/>
+        <location line="+32"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="-15"/>
         <source>must be a string, got %1</source>
         <translation>必须是字符串，实际为 %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 or %2</source>
+        <translation>%1或%2</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -1988,7 +1994,7 @@
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+254"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+234"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2014,7 +2020,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-220"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-202"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -2024,12 +2030,7 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+29"/>
-        <source>must be &quot;sample&quot; or &quot;midSample&quot;, got %1</source>
-        <translation>必须是“sample”或“midSample”，实际为 %1</translation>
-    </message>
-    <message>
-        <location line="+57"/>
+        <location line="+68"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
@@ -2079,14 +2080,9 @@
         <translation>必须是 0（理想编码器）或 %1 到 %2 之间的整数，实际为 %3</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioChain.cpp" line="+53"/>
+        <location filename="../core/io/ScenarioChain.cpp" line="+50"/>
         <source>must have 3 entries (x, y, z in the base link&apos;s frame), got %1</source>
         <translation>必须有 3 个条目（基座连杆坐标系中的 x、y、z），实际为 %1</translation>
-    </message>
-    <message>
-        <location line="+31"/>
-        <source>must be &quot;line&quot;, &quot;waypoints&quot; or &quot;file&quot;, got %1</source>
-        <translation>必须是“line”、“waypoints”或“file”，实际为 %1</translation>
     </message>
 </context>
 <context>
@@ -2917,21 +2913,18 @@
         <translation>--robot %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+23"/>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
-        <location filename="../app/cli/LoopOptions.cpp" line="+61"/>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+13"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+65"/>
         <source>Show this command&apos;s options.</source>
         <translation>显示此命令的选项。</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-41"/>
         <source>Print the default scenario.</source>
         <translation>输出默认场景。</translation>
     </message>
     <message>
-        <location filename="../app/cli/LoopOptions.cpp" line="-17"/>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+3"/>
+        <location filename="../app/cli/LoopOptions.cpp" line="+44"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+14"/>
         <source>Scenario file (JSON, docs/scenario.md); default: the paper scenario.</source>
         <translation>场景文件（JSON，docs/scenario.md）；默认：论文场景。</translation>
     </message>
@@ -2976,7 +2969,7 @@
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-3"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+208"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -3052,7 +3045,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
 在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）。</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+31"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+38"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
@@ -3347,7 +3340,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>相对输出路径的基准文件夹。</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
         <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
 
 Identify a robot&apos;s inertia and joint friction from its recorded logs,
@@ -3500,7 +3493,7 @@ stdout, and the next plan uses the new estimate.
         <translation>学习历史的文件夹；默认：plan.csv 旁（plan）或试验日志旁（learn）的 learnid-history。</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+15"/>
         <source>Folder to write plan.csv and check.txt into.</source>
         <translation>写入 plan.csv 和 check.txt 的文件夹。</translation>
     </message>

@@ -83,9 +83,7 @@ CommandLine parseCommandLine(const QStringList &args)
 
     QCommandLineParser parser;
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
-    const QCommandLineOption help(
-        {QStringLiteral("h"), QStringLiteral("help")},
-        QCoreApplication::translate("learnid-cli", "Show this command's options."));
+    const QCommandLineOption help = helpOption();
     const QCommandLineOption print(
         QStringLiteral("print"),
         QCoreApplication::translate("learnid-cli", "Print the default scenario."));
@@ -123,6 +121,13 @@ CommandLine parseCommandLine(const QStringList &args)
             ? QCoreApplication::translate("learnid-cli", "no command given")
             : QCoreApplication::translate("learnid-cli", "unknown command '%1'").arg(command);
     return cl;
+}
+
+QCommandLineOption helpOption()
+{
+    return QCommandLineOption(
+        {QStringLiteral("h"), QStringLiteral("help")},
+        QCoreApplication::translate("learnid-cli", "Show this command's options."));
 }
 
 QCommandLineOption cliOption(const char *name, const char *description, const char *value)

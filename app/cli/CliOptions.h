@@ -72,6 +72,9 @@ CommandLine parseCommandLine(const QStringList &args);
 QCommandLineOption cliOption(const char *name, const char *description,
                              const char *value = nullptr);
 
+/// -h, --help: every command's.
+QCommandLineOption helpOption();
+
 /// The "Options:" part of the parser's help text, for a command's --help.
 QString optionsHelp(const QCommandLineParser &parser);
 

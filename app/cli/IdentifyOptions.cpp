@@ -206,9 +206,7 @@ void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
             QT_TRANSLATE_NOOP("learnid-cli", "Folder that relative output paths are taken from."),
             "DIR"),
         cliOption("quiet", QT_TRANSLATE_NOOP("learnid-cli", "No progress lines on stderr.")),
-        QCommandLineOption(
-            {QStringLiteral("h"), QStringLiteral("help")},
-            QCoreApplication::translate("learnid-cli", "Show this command's options.")),
+        helpOption(),
     });
     const auto usage = [&] {
         return QCoreApplication::translate(

@@ -56,9 +56,7 @@ void parseLoopCommandLine(const QStringList &args, CommandLine *cl)
             QT_TRANSLATE_NOOP("learnid-cli", "Folder that relative output paths are taken from."),
             "DIR"),
         cliOption("quiet", QT_TRANSLATE_NOOP("learnid-cli", "No progress lines on stderr.")),
-        QCommandLineOption(
-            {QStringLiteral("h"), QStringLiteral("help")},
-            QCoreApplication::translate("learnid-cli", "Show this command's options.")),
+        helpOption(),
     });
     if (plan) {
         parser.addOptions({

@@ -88,9 +88,7 @@ void parseRunCommandLine(const QStringList &args, CommandLine *cl)
 {
     QCommandLineParser parser;
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
-    const QCommandLineOption help(
-        {QStringLiteral("h"), QStringLiteral("help")},
-        QCoreApplication::translate("learnid-cli", "Show this command's options."));
+    const QCommandLineOption help = helpOption();
     const QCommandLineOption scenario = cliOption(
         "scenario",
         QT_TRANSLATE_NOOP("learnid-cli",

@@ -186,6 +186,20 @@ QString jsonString(const QJsonValue &value, const QString &path)
     return value.toString();
 }
 
+int jsonChoice(const QJsonValue &value, const QString &path, const QStringList &names)
+{
+    const int index = int(names.indexOf(jsonString(value, path)));
+    if (index >= 0)
+        return index;
+    QStringList quoted;
+    for (const QString &name : names)
+        quoted << QLatin1Char('"') + name + QLatin1Char('"');
+    const QString last = quoted.takeLast();
+    const QString allowed =
+        quoted.isEmpty() ? last : Text::tr("%1 or %2").arg(quoted.join(QStringLiteral(", ")), last);
+    throwAtKey(path, Text::tr("must be %1, got %2").arg(allowed, describeJsonValue(value)));
+}
+
 bool jsonBool(const QJsonValue &value, const QString &path)
 {
     if (!value.isBool())

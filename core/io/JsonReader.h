@@ -8,6 +8,7 @@
 #include <QString>
 #include <QStringList>
 #include <optional>
+#include <utility>
 
 namespace learnid {
 
@@ -44,6 +45,27 @@ double jsonNumber(const QJsonValue &value, const QString &path);
 qint64 jsonInteger(const QJsonValue &value, const QString &path, qint64 lo, qint64 hi,
                    const QString &allowed = {});
 QString jsonString(const QJsonValue &value, const QString &path);
+/// A string that is one of names: its index. The message names them all: must be "a", "b" or
+/// "c", got "d".
+int jsonChoice(const QJsonValue &value, const QString &path, const QStringList &names);
+/// A setting's enumerator from its name in table ({enumerator, name} pairs), by jsonChoice().
+template <typename E, size_t N>
+E jsonEnum(const QJsonValue &value, const QString &path,
+           const std::pair<E, const char *> (&table)[N])
+{
+    QStringList names;
+    for (const auto &entry : table)
+        names << QLatin1String(entry.second);
+    return table[jsonChoice(value, path, names)].first;
+}
+/// The name of e in table, as jsonEnum() reads it ("" when e is not in the table).
+template <typename E, size_t N> QString enumName(E e, const std::pair<E, const char *> (&table)[N])
+{
+    for (const auto &entry : table)
+        if (entry.first == e)
+            return QString::fromLatin1(entry.second);
+    return {};
+}
 bool jsonBool(const QJsonValue &value, const QString &path);
 QJsonArray jsonArray(const QJsonValue &value, const QString &path);
 /// An array of finite numbers, any length. With nullAs, null entries read as *nullAs (the

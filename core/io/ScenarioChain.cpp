@@ -35,10 +35,7 @@ QString resolved(const QString &path, const QDir &directory)
 
 QString pathKindName(PathKind kind)
 {
-    for (const auto &[k, name] : pathKinds)
-        if (k == kind)
-            return QString::fromLatin1(name);
-    return {};
+    return enumName(kind, pathKinds);
 }
 
 void readUrdfRobot(JsonObjectReader r, UrdfRobotSettings &urdf)
@@ -70,21 +67,8 @@ void readJointTerms(JsonObjectReader r, JointTerms &terms)
 void readJointPath(JsonObjectReader &r, JointPathSettings &path)
 {
     const QJsonValue kind = r.value(key("kind"));
-    if (!kind.isUndefined()) {
-        const QString name = jsonString(kind, r.keyPath(key("kind")));
-        bool known = false;
-        for (const auto &[k, text] : pathKinds) {
-            if (name == QLatin1String(text)) {
-                path.kind = k;
-                known = true;
-            }
-        }
-        if (!known) {
-            throwAtKey(r.keyPath(key("kind")),
-                       Text::tr("must be \"line\", \"waypoints\" or \"file\", got %1")
-                           .arg(describeJsonValue(kind)));
-        }
-    }
+    if (!kind.isUndefined())
+        path.kind = jsonEnum(kind, r.keyPath(key("kind")), pathKinds);
     const QJsonValue waypoints = r.value(key("waypoints"));
     if (!waypoints.isUndefined()) {
         const QString at = r.keyPath(key("waypoints"));

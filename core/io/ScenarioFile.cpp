@@ -10,8 +10,6 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
-#include <algorithm>
-#include <iterator>
 
 namespace learnid {
 
@@ -70,27 +68,9 @@ void readController(JsonObjectReader r, ControllerSettings &c)
     r.read(key("kd"), c.kd);
     r.read(key("lambda"), c.lambda);
     const QJsonValue time = r.value(key("feedforwardTime"));
-    if (!time.isUndefined()) {
-        const QString at = r.keyPath(key("feedforwardTime"));
-        const QString name = jsonString(time, at);
-        const auto *found =
-            std::find_if(std::begin(feedforwardTimes), std::end(feedforwardTimes),
-                         [&](const auto &t) { return name == QLatin1String(t.second); });
-        if (found == std::end(feedforwardTimes)) {
-            throwAtKey(at, Text::tr("must be \"sample\" or \"midSample\", got %1")
-                               .arg(describeJsonValue(time)));
-        }
-        c.feedforwardTime = found->first;
-    }
+    if (!time.isUndefined())
+        c.feedforwardTime = jsonEnum(time, r.keyPath(key("feedforwardTime")), feedforwardTimes);
     r.rejectUnknownKeys();
-}
-
-QString feedforwardTimeName(FeedforwardTime time)
-{
-    for (const auto &[t, name] : feedforwardTimes)
-        if (t == time)
-            return QString::fromLatin1(name);
-    return {};
 }
 
 void readEstimator(JsonObjectReader r, Scenario &s)
@@ -207,7 +187,7 @@ QByteArray scenarioToJson(const Scenario &s)
         .insert(key("ki"), JsonTree::numbers(s.controller.ki))
         .insert(key("kd"), JsonTree::numbers(s.controller.kd))
         .insert(key("lambda"), s.controller.lambda)
-        .insert(key("feedforwardTime"), feedforwardTimeName(s.controller.feedforwardTime));
+        .insert(key("feedforwardTime"), enumName(s.controller.feedforwardTime, feedforwardTimes));
     JsonTree estimator = JsonTree::object();
     estimator.insert(key("law"), s.law)
         .insert(key("rho"), s.estimator.rho)
