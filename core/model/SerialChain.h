@@ -42,6 +42,11 @@ struct ChainJoint
     double damping = 0.0;  ///< the URDF's <dynamics damping> (viscous friction), 0 when absent
     double friction = 0.0; ///< the URDF's <dynamics friction> (Coulomb friction), 0 when absent
     InertialParameters inertial = InertialParameters::Zero(); ///< the body it moves
+    /// The axis-aligned box around the body's URDF geometry (its collision shapes, else its
+    /// visual ones; links fixed to it included) in this joint's frame [m]; empty when it has
+    /// none that could be read. The plausibility rule's bounding volume (Plausibility.h).
+    Eigen::AlignedBox3d geometryBox;
+    QString geometryDescription; ///< what geometryBox was made of, e.g. "2 cylinders, 1 sphere"
 };
 
 /// A serial chain from a base to a tip: the moving joints in order, each joint frame placed in
