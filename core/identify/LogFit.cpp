@@ -185,6 +185,10 @@ LogFit fitLogs(const ChainModel &model, const std::vector<FilteredLog> &logs,
         const double size = row.norm();
         fit.observedShare.push_back(size > 0.0 ? (row * ls.directions).norm() / size : 0.0);
     }
+    // A standard parameter alone is the unit vector e_i in scaled units: its determined share
+    // is the norm of row i of the orthonormal directions.
+    for (Eigen::Index i = 0; i < p; ++i)
+        fit.standardDetermined.push_back(std::min(1.0, ls.directions.row(i).norm()));
 
     fit.standard = fit.leastSquares;
     if (settings.consistent) {

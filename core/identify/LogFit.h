@@ -39,6 +39,11 @@ struct LogFit
     Eigen::Index samples = 0;     ///< samples used, all logs
     /// Per base parameter: the share of its direction the data determine (0 to 1).
     std::vector<double> observedShare;
+    /// Per standard parameter (p): the share of its own direction (the parameter alone, scaled
+    /// by its regressor column) that lies in what the data determine, 0 to 1. At least 0.5: the
+    /// data determined it; below: it was kept from the prior (the CAD model), or is only
+    /// known in combination with others.
+    std::vector<double> standardDetermined;
     bool converged = true; ///< the consistent fit met its stopping rule
 
     /// Base parameters with a share below 0.5, in order.

@@ -30,6 +30,10 @@ struct EstimateConsistency
     Eigen::VectorXd nearestStandard;
     double pathTorqueChangePercent = 0; ///< ||W_path (nearest - phi)|| / ||W_path phi|| * 100
     QString nearestError;               ///< why no nearest estimate could be found, or empty
+    /// Per standard parameter: the share of its own direction the path observes (0 to 1, as
+    /// LogFit::standardDetermined); at least 0.5 counts as determined by the trials, below as
+    /// kept from the CAD model. Empty when not known (no path).
+    std::vector<double> standardDetermined;
 
     /// One line per problem ("link 3 (lwr_3_link): ..."), or that the estimate is consistent.
     QStringList describe(const RobotModel &model) const;
