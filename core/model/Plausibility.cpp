@@ -43,7 +43,7 @@ std::vector<std::optional<BoundingEllipsoid>> linkVolumes(const SerialChain &cha
         throw Error(Text::tr("The CAD vector has %1 entries, too few for %2 links.")
                         .arg(cadPrior.size())
                         .arg(n));
-    std::vector<std::optional<BoundingEllipsoid>> volumes(size_t(n));
+    std::vector<std::optional<BoundingEllipsoid>> volumes(static_cast<size_t>(n));
     for (int l = 0; l < n; ++l) {
         const Eigen::VectorXd cad = cadPrior.segment<10>(10 * l);
         if (!(cad[0] > 0.0))
