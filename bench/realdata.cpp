@@ -11,8 +11,8 @@
 #include "identify/LogFit.h"
 #include "identify/UniformLog.h"
 #include "io/RobotLogCsv.h"
-#include "model/ChainModel.h"
 #include "model/CadPrior.h"
+#include "model/ChainModel.h"
 #include "model/Error.h"
 #include "model/Plausibility.h"
 #include "model/UrdfChain.h"
@@ -104,8 +104,9 @@ void printPlausibility(const ChainModel &model, const std::vector<Model> &models
     for (int l = 0; l < n; ++l) {
         const auto &e = volumes[size_t(l)];
         std::printf("| %d | %s |", l + 1,
-                    !e ? "none"
-                       : e->source == VolumeSource::Geometry ? "geometry" : "CAD inertia x2");
+                    !e                                    ? "none"
+                    : e->source == VolumeSource::Geometry ? "geometry"
+                                                          : "CAD inertia x2");
         for (const auto &v : verdicts) {
             const LinkPlausibility &p = v[size_t(l)];
             std::printf(" %s %.2g, %.3g, %s |", p.plausible ? "ok" : "**no**",
@@ -128,6 +129,8 @@ void printFit(const ChainModel &model, const LogFit &fit)
                 static_cast<long long>(fit.samples), fit.rank, model.standardCount(), fit.condition,
                 fit.undetermined().size(), fit.baseCount,
                 fit.converged ? "converged" : "stopped at its step limit");
+    if (qEnvironmentVariableIsSet("LEARNID_BENCH_SOLVER"))
+        std::printf("Solver: %s\n\n", qPrintable(fit.solverReport));
 }
 
 // FloBaRoID's published model: its URDF's inertia, <dynamics damping> as viscous friction
@@ -251,6 +254,8 @@ int main(int argc, char **argv)
             o.fit.consistent = false;
         else if (a == "--no-volumes")
             o.fit.volumes = false;
+        else if (a == "--no-rule")
+            o.fit.plausible = false;
         else {
             std::fprintf(stderr, "usage: learnid-bench-realdata [--rho R] [--share S] "
                                  "[--stride K] [--velocity-from-q] [--unweighted] "

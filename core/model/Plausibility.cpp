@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <QCoreApplication>
+#include <QStringList>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,7 +29,8 @@ Eigen::Vector3d principalMoments(const Eigen::Ref<const Eigen::VectorXd> &pi10)
     const InertialParameters pi = pi10;
     // I_c = I - m (|c|^2 E - c c^T), the parallel axis theorem backwards.
     const Eigen::Matrix3d atCom =
-        rotationalInertia(pi) - m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+        rotationalInertia(pi) -
+        m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
     return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(atCom, Eigen::EigenvaluesOnly)
         .eigenvalues();
 }
@@ -50,7 +52,8 @@ std::vector<std::optional<BoundingEllipsoid>> linkVolumes(const SerialChain &cha
             continue;
         const ChainJoint &joint = chain.joints[size_t(l)];
         if (!joint.geometryBox.isEmpty()) {
-            BoundingEllipsoid e = ellipsoidAroundBox(joint.geometryBox.min(), joint.geometryBox.max());
+            BoundingEllipsoid e =
+                ellipsoidAroundBox(joint.geometryBox.min(), joint.geometryBox.max());
             e.description = joint.geometryDescription;
             // Geometry that does not hold the CAD body (a visual mesh offset, a collision shape
             // for one end only) would make the CAD prior itself implausible: the CAD body's
@@ -65,9 +68,10 @@ std::vector<std::optional<BoundingEllipsoid>> linkVolumes(const SerialChain &cha
     return volumes;
 }
 
-std::vector<LinkPlausibility> checkPlausibility(
-    const Eigen::VectorXd &standard, const Eigen::VectorXd &cadPrior, int links,
-    const std::vector<std::optional<BoundingEllipsoid>> &volumes, const PlausibilityRule &rule)
+std::vector<LinkPlausibility>
+checkPlausibility(const Eigen::VectorXd &standard, const Eigen::VectorXd &cadPrior, int links,
+                  const std::vector<std::optional<BoundingEllipsoid>> &volumes,
+                  const PlausibilityRule &rule)
 {
     if (links < 0 || standard.size() < 10 * Eigen::Index(links) ||
         cadPrior.size() < 10 * Eigen::Index(links) ||
@@ -104,6 +108,33 @@ std::vector<LinkPlausibility> checkPlausibility(
         out.push_back(v);
     }
     return out;
+}
+
+QString plausibilityProblem(const LinkPlausibility &v, const PlausibilityRule &rule)
+{
+    if (v.plausible)
+        return {};
+    if (!(v.mass > 0.0))
+        return Text::tr("mass %1 kg").arg(v.mass, 0, 'g', 3);
+    QStringList problems;
+    if (!v.momentsOk) {
+        problems << Text::tr("smallest principal moment %1 kg m², below %2 % of the CAD link's "
+                             "smallest (%3 kg m²)")
+                        .arg(v.moments[0], 0, 'g', 2)
+                        .arg(100.0 * rule.minMomentShare, 0, 'g', 3)
+                        .arg(v.cadSmallestMoment, 0, 'g', 2);
+    }
+    if (!v.triangleOk) {
+        problems << Text::tr("(I1 + I2) / I3 = %1, below %2: a needle or a plate")
+                        .arg(v.triangleRatio, 0, 'f', 3)
+                        .arg(1.0 + rule.triangleMargin, 0, 'f', 2);
+    }
+    if (!v.volumeOk) {
+        problems << Text::tr("centre of mass outside the link's bounding volume (%1 times its "
+                             "size)")
+                        .arg(std::sqrt(v.comDistance), 0, 'f', 2);
+    }
+    return problems.join(QStringLiteral("; "));
 }
 
 std::vector<int> tinyJointTerms(const Eigen::VectorXd &standard,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/BoundingVolume.h"
+#include "model/Plausibility.h"
 
 #include <Eigen/Core>
 #include <QString>
@@ -21,6 +22,10 @@ struct PlausibleProblem
     /// Per link (links entries, or empty): the ellipsoid its mass must lie in; the prior's
     /// body must lie strictly inside (fitShare > 0).
     std::vector<std::optional<BoundingEllipsoid>> volumes;
+    /// When set, every link is kept inside the rule (principal moments, shape) where its prior
+    /// is: an estimate that passes checkPlausibility() by construction. A prior link that breaks
+    /// a part of the rule itself is not held to that part.
+    std::optional<PlausibilityRule> rule;
     /// The prior's weight as a share of what the data determine best: in the prior's own metric
     /// (each link's pseudo-inertia relative to the CAD one, each joint term relative to its
     /// regressor column) the prior counts share^2 times the largest information the rows carry
@@ -42,7 +47,8 @@ struct PlausibleEstimate
 };
 
 /// The standard parameters that minimise
-///   ||A pi - b||^2 + gamma sum_l [D(J_l, J0_l) + D_V(t_l, t0_l)] + w^2 sum_i (c_i (pi_i - prior_i))^2
+///   ||A pi - b||^2 + gamma sum_l [D(J_l, J0_l) + D_V(t_l, t0_l)] + w^2 sum_i (c_i (pi_i -
+///   prior_i))^2
 /// over every link's log-Cholesky parameters (consistent by construction) and the joint terms
 /// (nonnegative ones bounded below by 0, so that a term the data want at 0 is exactly 0):
 ///  - D the log-det divergence of each link's pseudo-inertia from the prior's

@@ -63,7 +63,7 @@ namespace {
 // none (the parameter file's --consistent and the URDF export alike).
 EstimateConsistency consistencyWithNearest(const CommissioningSession &session, int k)
 {
-    const EstimateConsistency c = session.consistency(k);
+    const EstimateConsistency c = session.consistency(k, NearestEstimate::Always);
     if (!c.applicable || !c.nearestError.isEmpty()) {
         throw Error(QCoreApplication::translate("SessionExport",
                                                 "no consistent estimate near estimate %1: %2")
@@ -83,12 +83,15 @@ QByteArray sessionUrdf(const CommissioningSession &session, int k, const QString
         throw Error(
             QCoreApplication::translate("SessionExport", "only URDF robots have a URDF to export"));
     }
+    // The nearest plausible estimate always: a consistent estimate's CAD completion can still
+    // hold point masses and needles (docs/robots.md §6).
+    // Without a trial there is no path to weigh by: a consistent estimate's completion then.
     const EstimateConsistency c = consistencyWithNearest(session, k);
     const Eigen::VectorXd pi =
-        c.consistent
-            ? chain->base().standardFromBase(session.estimates().at(k),
-                                             realBodyPrior(chain->cadStandard(), chain->dof()))
-            : c.nearestStandard;
+        c.nearestStandard.size() > 0
+            ? c.nearestStandard
+            : chain->base().standardFromBase(session.estimates().at(k),
+                                             realBodyPrior(chain->cadStandard(), chain->dof()));
     const Scenario &s = session.scenario();
     const QString source = urdfFileOf(s.model, s.urdf);
     return urdfWithStandard(*chain, readFile(source), source, pi, comment);
