@@ -129,8 +129,7 @@ void printFit(const ChainModel &model, const LogFit &fit)
                 static_cast<long long>(fit.samples), fit.rank, model.standardCount(), fit.condition,
                 fit.undetermined().size(), fit.baseCount,
                 fit.converged ? "converged" : "stopped at its step limit");
-    if (qEnvironmentVariableIsSet("LEARNID_BENCH_SOLVER"))
-        std::printf("Solver: %s\n\n", qPrintable(fit.solverReport));
+    std::printf("Plausible fit: %s.\n\n", qPrintable(fit.solverReport));
 }
 
 // FloBaRoID's published model: its URDF's inertia, <dynamics damping> as viscous friction

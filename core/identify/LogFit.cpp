@@ -200,6 +200,10 @@ LogFit fitLogs(const ChainModel &model, const std::vector<FilteredLog> &logs,
         problem.prior = fit.prior;
         problem.links = n;
         problem.nonnegative = model.nonnegativeStandard();
+        // A joint term the data do not determine (a joint that never moves) keeps the CAD value.
+        for (Eigen::Index i = 10 * n; i < p; ++i)
+            if (fit.standardDetermined[size_t(i)] < 0.5)
+                problem.heldAtPrior.push_back(int(i));
         if (settings.volumes)
             problem.volumes = linkVolumes(model.chain(), fit.prior);
         problem.priorShare = settings.geometricShare;

@@ -42,6 +42,9 @@ void checkProblem(const PlausibleProblem &pr)
     if (!pr.volumes.empty() && pr.volumes.size() != size_t(pr.links))
         throw Error(
             Text::tr("%1 bounding volumes for %2 links.").arg(pr.volumes.size()).arg(pr.links));
+    for (const int i : pr.heldAtPrior)
+        if (i < 10 * pr.links || i >= p)
+            throw Error(Text::tr("Index %1 is not a joint term.").arg(i));
     for (const int i : pr.nonnegative) {
         if (i < 10 * pr.links || i >= p)
             throw Error(Text::tr("Index %1 is not a joint term.").arg(i));
@@ -154,6 +157,10 @@ PlausibleEstimate plausibleEstimate(const PlausibleProblem &pr)
     Eigen::VectorXd start = pr.prior;
     for (const int i : pr.nonnegative)
         start[i] = std::max(start[i], 1e-3 * std::abs(pr.prior[i]) + 1e-6);
+    for (const int i : pr.heldAtPrior) {
+        start[i] = pr.prior[i];
+        o.fixed[size_t(i)] = 1;
+    }
     constexpr double gap = 1e-10;
     constexpr int maxSteps = 400;
     detail::NewtonResult r = detail::minimiseWithBarriers(o, start, gap, maxSteps);
@@ -162,7 +169,7 @@ PlausibleEstimate plausibleEstimate(const PlausibleProblem &pr)
     // 1e-9 N m), and the rest re-centred with it held there.
     bool snapped = false;
     for (const int i : pr.nonnegative) {
-        if (r.pi[i] < PlausibilityRule().termFloor) {
+        if (!o.fixed[size_t(i)] && r.pi[i] < PlausibilityRule().termFloor) {
             r.pi[i] = 0.0;
             o.fixed[size_t(i)] = 1;
             snapped = true;

@@ -19,6 +19,9 @@ struct PlausibleProblem
     Eigen::VectorXd prior; ///< p: the CAD model, every link a real body (realBodyPrior())
     int links = 0;         ///< the first 10 links entries of pi are links' inertial parameters
     std::vector<int> nonnegative; ///< joint terms that cannot be negative (friction, armature)
+    /// Joint terms held at the prior's value: what the data do not determine (a joint that never
+    /// moves has no friction to fit).
+    std::vector<int> heldAtPrior;
     /// Per link (links entries, or empty): the ellipsoid its mass must lie in; the prior's
     /// body must lie strictly inside (fitShare > 0).
     std::vector<std::optional<BoundingEllipsoid>> volumes;

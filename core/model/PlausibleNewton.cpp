@@ -96,7 +96,9 @@ double evaluate(const PlausibleObjective &o, const Eigen::VectorXd &pi, double m
         value += t.weight * divergence;
         g *= t.weight;
         h *= t.weight;
-        if (!addLogDetBarrier(j - t.thickness * thicknessMatrix(), mu, value, g, h))
+        // Without a floor the divergence is J's own barrier.
+        if (t.thickness > 0.0 &&
+            !addLogDetBarrier(j - t.thickness * thicknessMatrix(), mu, value, g, h))
             return std::numeric_limits<double>::infinity();
         if (t.hasVolume) {
             Vector10d q;
@@ -148,7 +150,7 @@ int barrierParameter(const PlausibleObjective &o)
 {
     int nu = 0;
     for (const LinkTerms &t : o.links)
-        nu += 4 + (t.hasVolume ? 1 : 0);
+        nu += (t.thickness > 0.0 ? 4 : 0) + (t.hasVolume ? 1 : 0);
     for (size_t i = 0; i < o.nonnegative.size(); ++i)
         nu += o.nonnegative[i] && !o.fixed[i] ? 1 : 0;
     return nu;
@@ -174,8 +176,12 @@ NewtonResult minimiseWithBarriers(const PlausibleObjective &o, Eigen::VectorXd s
     Eigen::LDLT<Eigen::MatrixXd> ldlt;
     double value = evaluate(o, result.pi, mu, &gradient, &hessian);
     while (result.steps < maxSteps && std::isfinite(value)) {
-        ldlt.compute(hessian);
-        step = ldlt.solve(-gradient);
+        // Scaled to a unit diagonal first: a link whose prior is nearly degenerate (a published
+        // massless link made a real body) has curvatures 1e12 times the others'.
+        const Eigen::VectorXd scale =
+            hessian.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+        ldlt.compute(scale.asDiagonal() * hessian * scale.asDiagonal());
+        step = scale.asDiagonal() * ldlt.solve(-scale.cwiseProduct(gradient));
         const double decrement = -gradient.dot(step); // Newton decrement^2 of f + mu phi
         ++result.steps;
         if (!(decrement > 1e-9 * mu + 1e-13 * cost)) { // centred for this mu

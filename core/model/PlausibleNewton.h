@@ -31,9 +31,9 @@ struct PlausibleObjective
 {
     Eigen::MatrixXd a;
     Eigen::VectorXd b;
-    Eigen::VectorXd prior;      ///< p
+    Eigen::VectorXd prior; ///< p
     std::vector<LinkTerms> links;
-    Eigen::VectorXd termWeights; ///< w_i per joint term (p - 10 links)
+    Eigen::VectorXd termWeights;   ///< w_i per joint term (p - 10 links)
     std::vector<char> nonnegative; ///< per index of pi: 1 for a term that must be >= 0
     std::vector<char> fixed;       ///< per index of pi: 1 for a term held at exactly 0
 };
