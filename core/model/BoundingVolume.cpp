@@ -62,8 +62,8 @@ BoundingEllipsoid ellipsoidAroundBox(const Eigen::Vector3d &lower, const Eigen::
     return e;
 }
 
-BoundingEllipsoid ellipsoidFromInertia(const Eigen::Ref<const Eigen::VectorXd> &pi10,
-                                       double margin, double minimumAxis)
+BoundingEllipsoid ellipsoidFromInertia(const Eigen::Ref<const Eigen::VectorXd> &pi10, double margin,
+                                       double minimumAxis)
 {
     if (pi10.size() != 10 || !pi10.allFinite() || !(pi10[0] > 0.0))
         throw Error(Text::tr("A link without positive mass has no inertia ellipsoid."));

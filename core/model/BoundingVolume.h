@@ -49,8 +49,8 @@ BoundingEllipsoid ellipsoidAroundBox(const Eigen::Vector3d &lower, const Eigen::
 /// mass), scaled by `margin` (> 1) about the centre of mass, each semi-axis at least
 /// `minimumAxis` [m] so that a point-mass CAD link still gets a volume. Throws Error when the
 /// mass is not positive or margin <= 1.
-BoundingEllipsoid ellipsoidFromInertia(const Eigen::Ref<const Eigen::VectorXd> &pi10,
-                                       double margin, double minimumAxis);
+BoundingEllipsoid ellipsoidFromInertia(const Eigen::Ref<const Eigen::VectorXd> &pi10, double margin,
+                                       double minimumAxis);
 
 /// The margin ellipsoidFromInertia() is used with by default: 2 (each semi-axis twice the
 /// CAD body's, eight times its volume); the CAD model's masses and centres of mass can be off by

@@ -28,7 +28,8 @@ Eigen::Vector3d principalMoments(const Eigen::Ref<const Eigen::VectorXd> &pi10)
     const InertialParameters pi = pi10;
     // I_c = I - m (|c|^2 E - c c^T), the parallel axis theorem backwards.
     const Eigen::Matrix3d atCom =
-        rotationalInertia(pi) - m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+        rotationalInertia(pi) -
+        m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
     return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(atCom, Eigen::EigenvaluesOnly)
         .eigenvalues();
 }
@@ -43,14 +44,15 @@ std::vector<std::optional<BoundingEllipsoid>> linkVolumes(const SerialChain &cha
         throw Error(Text::tr("The CAD vector has %1 entries, too few for %2 links.")
                         .arg(cadPrior.size())
                         .arg(n));
-    std::vector<std::optional<BoundingEllipsoid>> volumes(size_t(n));
+    std::vector<std::optional<BoundingEllipsoid>> volumes(static_cast<size_t>(n));
     for (int l = 0; l < n; ++l) {
         const Eigen::VectorXd cad = cadPrior.segment<10>(10 * l);
         if (!(cad[0] > 0.0))
             continue;
         const ChainJoint &joint = chain.joints[size_t(l)];
         if (!joint.geometryBox.isEmpty()) {
-            BoundingEllipsoid e = ellipsoidAroundBox(joint.geometryBox.min(), joint.geometryBox.max());
+            BoundingEllipsoid e =
+                ellipsoidAroundBox(joint.geometryBox.min(), joint.geometryBox.max());
             e.description = joint.geometryDescription;
             // Geometry that does not hold the CAD body (a visual mesh offset, a collision shape
             // for one end only) would make the CAD prior itself implausible: the CAD body's
@@ -65,9 +67,10 @@ std::vector<std::optional<BoundingEllipsoid>> linkVolumes(const SerialChain &cha
     return volumes;
 }
 
-std::vector<LinkPlausibility> checkPlausibility(
-    const Eigen::VectorXd &standard, const Eigen::VectorXd &cadPrior, int links,
-    const std::vector<std::optional<BoundingEllipsoid>> &volumes, const PlausibilityRule &rule)
+std::vector<LinkPlausibility>
+checkPlausibility(const Eigen::VectorXd &standard, const Eigen::VectorXd &cadPrior, int links,
+                  const std::vector<std::optional<BoundingEllipsoid>> &volumes,
+                  const PlausibilityRule &rule)
 {
     if (links < 0 || standard.size() < 10 * Eigen::Index(links) ||
         cadPrior.size() < 10 * Eigen::Index(links) ||

@@ -29,16 +29,17 @@ struct PlausibilityRule
 struct LinkPlausibility
 {
     int link = 0;
-    double mass = 0.0;                               ///< [kg]
-    Eigen::Vector3d moments = Eigen::Vector3d::Zero(); ///< principal, about the CoM, ascending [kg m^2]
-    double cadSmallestMoment = 0.0;                  ///< the CAD link's smallest [kg m^2]
-    double triangleRatio = 0.0;                      ///< (I1 + I2) / I3 (infinite when I3 = 0)
+    double mass = 0.0; ///< [kg]
+    Eigen::Vector3d moments =
+        Eigen::Vector3d::Zero();    ///< principal, about the CoM, ascending [kg m^2]
+    double cadSmallestMoment = 0.0; ///< the CAD link's smallest [kg m^2]
+    double triangleRatio = 0.0;     ///< (I1 + I2) / I3 (infinite when I3 = 0)
     bool hasVolume = false;
     double comDistance = 0.0; ///< |A (c - centre)|^2 of the bounding ellipsoid: <= 1 inside
     double fitShare = 0.0;    ///< BoundingEllipsoid::fitShare(): >= 0 when the mass can fit
     bool momentsOk = false;
     bool triangleOk = false;
-    bool volumeOk = true; ///< the centre of mass inside the volume (true without one)
+    bool volumeOk = true;   ///< the centre of mass inside the volume (true without one)
     bool plausible = false; ///< mass > 0 and all three
 };
 
@@ -52,9 +53,10 @@ std::vector<std::optional<BoundingEllipsoid>> linkVolumes(const SerialChain &cha
 /// The verdict per link (links entries) for standard (10 per link first), against cadPrior's
 /// links (same layout) and the volumes (links entries, or empty for none). Throws Error when a
 /// size does not match or an entry is not finite.
-std::vector<LinkPlausibility> checkPlausibility(
-    const Eigen::VectorXd &standard, const Eigen::VectorXd &cadPrior, int links,
-    const std::vector<std::optional<BoundingEllipsoid>> &volumes, const PlausibilityRule &rule = {});
+std::vector<LinkPlausibility>
+checkPlausibility(const Eigen::VectorXd &standard, const Eigen::VectorXd &cadPrior, int links,
+                  const std::vector<std::optional<BoundingEllipsoid>> &volumes,
+                  const PlausibilityRule &rule = {});
 
 /// The indices among nonnegativeIndices whose entry lies strictly between 0 and rule.termFloor.
 std::vector<int> tinyJointTerms(const Eigen::VectorXd &standard,
