@@ -5,11 +5,11 @@
 
 #include "../support/NumericAssert.h"
 #include "../support/SharedData.h"
+#include "model/CadPrior.h"
 #include "model/ChainModel.h"
 #include "model/Error.h"
 #include "model/MeshBounds.h"
 #include "model/Plausibility.h"
-#include "model/CadPrior.h"
 #include "model/UrdfChain.h"
 #include "model/UrdfGeometry.h"
 
@@ -35,27 +35,28 @@ void writeText(const QString &path, const QByteArray &text)
 
 // Vertices span [-0.5, 0, 0] .. [1, 2, 3].
 const QByteArray stlText = "solid part\n"
-    "facet normal 0 0 1\n"
-    " outer loop\n"
-    "  vertex 0 0 0\n"
-    "  vertex 1 0 0\n"
-    "  vertex 0 2 0\n"
-    " endloop\n"
-    "endfacet\n"
-    "facet normal 1 0 0\n"
-    " outer loop\n"
-    "  vertex 0 0 0\n"
-    "  vertex 0 2 0\n"
-    "  vertex -0.5 0 3\n"
-    " endloop\n"
-    "endfacet\n"
-    "endsolid part\n";
+                           "facet normal 0 0 1\n"
+                           " outer loop\n"
+                           "  vertex 0 0 0\n"
+                           "  vertex 1 0 0\n"
+                           "  vertex 0 2 0\n"
+                           " endloop\n"
+                           "endfacet\n"
+                           "facet normal 1 0 0\n"
+                           " outer loop\n"
+                           "  vertex 0 0 0\n"
+                           "  vertex 0 2 0\n"
+                           "  vertex -0.5 0 3\n"
+                           " endloop\n"
+                           "endfacet\n"
+                           "endsolid part\n";
 
 // Vertices span [0, 0, 0] .. [0.2, 0.3, 0.1].
 const QByteArray objText = "v 0 0 0\nv 0.2 0 0\nv 0 0.3 0.1\nf 1 2 3\n";
 
 // In millimetres, Z up: [0, 0, 0] .. [100, 200, 300] mm, i.e. [0 .. 0.1, 0.2, 0.3] m unturned.
-const QByteArray daeText = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+const QByteArray daeText =
+    "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
     "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
     "  <asset><unit name=\"millimeter\" meter=\"0.001\"/><up_axis>Z_UP</up_axis></asset>\n"
     "  <library_geometries>\n"
@@ -63,15 +64,18 @@ const QByteArray daeText = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
     "      <source id=\"g-pos\">\n"
     "        <float_array id=\"g-pos-array\" count=\"9\">0 0 0 100 0 0 0 200 300</float_array>\n"
     "        <technique_common><accessor source=\"#g-pos-array\" count=\"3\" stride=\"3\">\n"
-    "          <param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/><param name=\"Z\" type=\"float\"/>\n"
+    "          <param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/><param "
+    "name=\"Z\" type=\"float\"/>\n"
     "        </accessor></technique_common>\n"
     "      </source>\n"
     "      <vertices id=\"g-vtx\"><input semantic=\"POSITION\" source=\"#g-pos\"/></vertices>\n"
-    "      <triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#g-vtx\" offset=\"0\"/><p>0 1 2</p></triangles>\n"
+    "      <triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#g-vtx\" offset=\"0\"/><p>0 "
+    "1 2</p></triangles>\n"
     "    </mesh></geometry>\n"
     "  </library_geometries>\n"
     "  <library_visual_scenes>\n"
-    "    <visual_scene id=\"s\"><node id=\"n\"><instance_geometry url=\"#g\"/></node></visual_scene>\n"
+    "    <visual_scene id=\"s\"><node id=\"n\"><instance_geometry "
+    "url=\"#g\"/></node></visual_scene>\n"
     "  </library_visual_scenes>\n"
     "  <scene><instance_visual_scene url=\"#s\"/></scene>\n"
     "</COLLADA>\n";
@@ -83,28 +87,43 @@ const char *limit = "<limit effort=\"10\" velocity=\"1\" lower=\"-1\" upper=\"1\
 QByteArray shapesUrdf(const QByteArray &l1Extra = {})
 {
     return QByteArray("<robot name=\"shapes\">\n"
-    "  <link name=\"base\"/>\n"
-    "  <joint name=\"j1\" type=\"revolute\"><parent link=\"base\"/><child link=\"l1\"/><axis xyz=\"0 0 1\"/>") +
-           limit + l1Extra + "</joint>\n"
-    "  <link name=\"l1\">\n"
-    "    <inertial><mass value=\"1\"/><inertia ixx=\"0.01\" iyy=\"0.01\" izz=\"0.01\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial>\n"
-    "    <collision><origin xyz=\"0.1 0 0\" rpy=\"0 0 1.5707963267948966\"/><geometry><box size=\"0.4 0.2 0.1\"/></geometry></collision>\n"
-    "    <collision><origin xyz=\"0 0 0.5\" rpy=\"0 1.5707963267948966 0\"/><geometry><cylinder radius=\"0.05\" length=\"0.6\"/></geometry></collision>\n"
-    "    <visual><geometry><sphere radius=\"5\"/></geometry></visual>\n"
-    "  </link>\n"
-    "  <joint name=\"tool_joint\" type=\"fixed\"><parent link=\"l1\"/><child link=\"tool\"/><origin xyz=\"0 0 1\"/></joint>\n"
-    "  <link name=\"tool\"><visual><origin xyz=\"0 0.1 0\"/><geometry><sphere radius=\"0.02\"/></geometry></visual></link>\n"
-    "  <joint name=\"j2\" type=\"revolute\"><parent link=\"tool\"/><child link=\"l2\"/><origin xyz=\"0 0 0.2\"/><axis xyz=\"0 1 0\"/>" +
-           limit + "</joint>\n"
-    "  <link name=\"l2\">\n"
-    "    <inertial><mass value=\"1\"/><inertia ixx=\"0.01\" iyy=\"0.01\" izz=\"0.01\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial>\n"
-    "    <collision><geometry><mesh filename=\"meshes/part.stl\" scale=\"0.1 0.1 -0.1\"/></geometry></collision>\n"
-    "    <collision><geometry><mesh filename=\"package://mypkg/meshes/part.obj\"/></geometry></collision>\n"
-    "    <collision><geometry><mesh filename=\"meshes/missing.stl\"/></geometry></collision>\n"
-    "    <collision><geometry><mesh filename=\"meshes/broken.stl\"/></geometry></collision>\n"
-    "    <collision><origin xyz=\"0 0 1\"/><geometry><mesh filename=\"meshes/part.dae\"/></geometry></collision>\n"
-    "  </link>\n"
-    "</robot>";
+                      "  <link name=\"base\"/>\n"
+                      "  <joint name=\"j1\" type=\"revolute\"><parent link=\"base\"/><child "
+                      "link=\"l1\"/><axis xyz=\"0 0 1\"/>") +
+           limit + l1Extra +
+           "</joint>\n"
+           "  <link name=\"l1\">\n"
+           "    <inertial><mass value=\"1\"/><inertia ixx=\"0.01\" iyy=\"0.01\" izz=\"0.01\" "
+           "ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial>\n"
+           "    <collision><origin xyz=\"0.1 0 0\" rpy=\"0 0 1.5707963267948966\"/><geometry><box "
+           "size=\"0.4 0.2 0.1\"/></geometry></collision>\n"
+           "    <collision><origin xyz=\"0 0 0.5\" rpy=\"0 1.5707963267948966 "
+           "0\"/><geometry><cylinder radius=\"0.05\" length=\"0.6\"/></geometry></collision>\n"
+           "    <visual><geometry><sphere radius=\"5\"/></geometry></visual>\n"
+           "  </link>\n"
+           "  <joint name=\"tool_joint\" type=\"fixed\"><parent link=\"l1\"/><child "
+           "link=\"tool\"/><origin xyz=\"0 0 1\"/></joint>\n"
+           "  <link name=\"tool\"><visual><origin xyz=\"0 0.1 0\"/><geometry><sphere "
+           "radius=\"0.02\"/></geometry></visual></link>\n"
+           "  <joint name=\"j2\" type=\"revolute\"><parent link=\"tool\"/><child "
+           "link=\"l2\"/><origin xyz=\"0 0 0.2\"/><axis xyz=\"0 1 0\"/>" +
+           limit +
+           "</joint>\n"
+           "  <link name=\"l2\">\n"
+           "    <inertial><mass value=\"1\"/><inertia ixx=\"0.01\" iyy=\"0.01\" izz=\"0.01\" "
+           "ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial>\n"
+           "    <collision><geometry><mesh filename=\"meshes/part.stl\" scale=\"0.1 0.1 "
+           "-0.1\"/></geometry></collision>\n"
+           "    <collision><geometry><mesh "
+           "filename=\"package://mypkg/meshes/part.obj\"/></geometry></collision>\n"
+           "    <collision><geometry><mesh "
+           "filename=\"meshes/missing.stl\"/></geometry></collision>\n"
+           "    <collision><geometry><mesh "
+           "filename=\"meshes/broken.stl\"/></geometry></collision>\n"
+           "    <collision><origin xyz=\"0 0 1\"/><geometry><mesh "
+           "filename=\"meshes/part.dae\"/></geometry></collision>\n"
+           "  </link>\n"
+           "</robot>";
 }
 
 Eigen::AlignedBox3d box(double x0, double y0, double z0, double x1, double y1, double z1)
@@ -143,10 +162,10 @@ void TestUrdfGeometry::placedCylinder_equalsTheBoxOfItsSampledRims()
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (int trial = 0; trial < 5; ++trial) {
         Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-        pose.linear() =
-            Eigen::AngleAxisd(3.0 * unit(random),
-                              Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized())
-                .toRotationMatrix();
+        pose.linear() = Eigen::AngleAxisd(
+                            3.0 * unit(random),
+                            Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized())
+                            .toRotationMatrix();
         pose.translation() = Eigen::Vector3d(unit(random), unit(random), unit(random));
         const double r = 0.05 + 0.1 * std::abs(unit(random)), l = 0.3;
         // The solid's box is the box of its two end circles.
@@ -162,7 +181,8 @@ void TestUrdfGeometry::placedCylinder_equalsTheBoxOfItsSampledRims()
                    Eigen::AlignedBox3d(pose.translation() - Eigen::Vector3d::Constant(r),
                                        pose.translation() + Eigen::Vector3d::Constant(r)),
                    0.0);
-        const Eigen::AlignedBox3d own(Eigen::Vector3d(-0.1, -0.2, 0.0), Eigen::Vector3d(0.3, 0.2, 0.1));
+        const Eigen::AlignedBox3d own(Eigen::Vector3d(-0.1, -0.2, 0.0),
+                                      Eigen::Vector3d(0.3, 0.2, 0.1));
         Eigen::AlignedBox3d corners;
         for (int c = 0; c < 8; ++c)
             corners.extend(pose * own.corner(Eigen::AlignedBox3d::CornerType(c)));
@@ -298,9 +318,9 @@ void TestUrdfGeometry::badShapes_areRefusedNamingLinkAndShape()
 
 void TestUrdfGeometry::extension_armatureAndOffsetReadIntoTheModel()
 {
-    const SerialChain chain = parseUrdfChain(
-        shapesUrdf("<learnid:dynamics armature=\"0.02\" offset=\"-0.35\"/>"),
-        QStringLiteral("shapes.urdf"));
+    const SerialChain chain =
+        parseUrdfChain(shapesUrdf("<learnid:dynamics armature=\"0.02\" offset=\"-0.35\"/>"),
+                       QStringLiteral("shapes.urdf"));
     QCOMPARE(chain.joints[0].armature, 0.02);
     QCOMPARE(chain.joints[0].offset, -0.35);
     QCOMPARE(chain.joints[1].armature, 0.0);
