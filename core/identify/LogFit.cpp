@@ -3,7 +3,8 @@
 #include "model/CadPrior.h"
 #include "model/ChainModel.h"
 #include "model/Error.h"
-#include "model/PhysicalConsistency.h"
+#include "model/Plausibility.h"
+#include "model/PlausibleEstimate.h"
 
 #include <Eigen/QR>
 #include <Eigen/SVD>
@@ -192,10 +193,19 @@ LogFit fitLogs(const ChainModel &model, const std::vector<FilteredLog> &logs,
 
     fit.standard = fit.leastSquares;
     if (settings.consistent) {
-        const ConsistentEstimate c = nearestConsistentEstimate(
-            a, b, fit.prior, d, settings.priorShare * ls.largest, n, model.nonnegativeStandard());
+        PlausibleProblem problem;
+        problem.a = a;
+        problem.b = b;
+        problem.prior = fit.prior;
+        problem.links = n;
+        problem.nonnegative = model.nonnegativeStandard();
+        if (settings.volumes)
+            problem.volumes = linkVolumes(model.chain(), fit.prior);
+        problem.priorShare = settings.priorShare;
+        const PlausibleEstimate c = plausibleEstimate(problem);
         fit.standard = c.standard;
         fit.converged = c.converged;
+        fit.solverReport = c.report;
     }
     fit.base = model.baseFromStandard(fit.standard);
     fit.trainingRms = residualRms(factors, fit.standard, total);

@@ -3,6 +3,7 @@
 #include "identify/LogSignals.h"
 
 #include <Eigen/Core>
+#include <QString>
 #include <vector>
 
 namespace learnid {
@@ -20,8 +21,11 @@ struct LogFitSettings
     /// Weigh each joint's rows by the inverse RMS of its residual after a first, unweighted fit
     /// (weighted least squares: a joint with noisy torque does not drown the others).
     bool weighted = true;
-    /// Physically consistent standard parameters (PhysicalConsistency.h), else the fit as is.
+    /// Plausible standard parameters (plausibleEstimate(): every link a body near the CAD one,
+    /// friction not negative), else the fit as is.
     bool consistent = true;
+    /// Each link's mass kept inside its bounding volume (linkVolumes()).
+    bool volumes = true;
 };
 
 /// The parameters fitted to logs, and what the data could determine.
@@ -45,6 +49,7 @@ struct LogFit
     /// known in combination with others.
     std::vector<double> standardDetermined;
     bool converged = true; ///< the consistent fit met its stopping rule
+    QString solverReport;  ///< the solver's summary of the consistent fit
 
     /// Base parameters with a share below 0.5, in order.
     std::vector<int> undetermined() const;
