@@ -11,8 +11,8 @@
 #include "identify/LogFit.h"
 #include "identify/UniformLog.h"
 #include "io/RobotLogCsv.h"
-#include "model/ChainModel.h"
 #include "model/CadPrior.h"
+#include "model/ChainModel.h"
 #include "model/Error.h"
 #include "model/Plausibility.h"
 #include "model/UrdfChain.h"
@@ -104,8 +104,9 @@ void printPlausibility(const ChainModel &model, const std::vector<Model> &models
     for (int l = 0; l < n; ++l) {
         const auto &e = volumes[size_t(l)];
         std::printf("| %d | %s |", l + 1,
-                    !e ? "none"
-                       : e->source == VolumeSource::Geometry ? "geometry" : "CAD inertia x2");
+                    !e                                    ? "none"
+                    : e->source == VolumeSource::Geometry ? "geometry"
+                                                          : "CAD inertia x2");
         for (const auto &v : verdicts) {
             const LinkPlausibility &p = v[size_t(l)];
             std::printf(" %s %.2g, %.3g, %s |", p.plausible ? "ok" : "**no**",

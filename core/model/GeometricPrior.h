@@ -13,8 +13,7 @@ namespace learnid::detail {
 /// at y = ln x (x - 1 - ln x). Analytic in y (e^y - 1 - y = y^2 q(y), q > 0), so a residual
 /// whose square is that divergence, smooth through its minimum at y = 0. A series below
 /// |y| = 1e-3 avoids the cancellation of e^y - 1 - y.
-template <typename T>
-T bregmanRoot(const T &y)
+template <typename T> T bregmanRoot(const T &y)
 {
     using std::abs;
     using std::expm1;
@@ -28,15 +27,14 @@ T bregmanRoot(const T &y)
 }
 
 /// U of theta (J = U U^T), LogCholesky.h's layout.
-template <typename T>
-Eigen::Matrix<T, 4, 4> logCholeskyFactor(const T *theta)
+template <typename T> Eigen::Matrix<T, 4, 4> logCholeskyFactor(const T *theta)
 {
     using std::exp;
     const T s = exp(theta[0]);
     Eigen::Matrix<T, 4, 4> u;
     u << s * exp(theta[1]), s * theta[4], s * theta[6], s * theta[7], //
-        T(0.0), s * exp(theta[2]), s * theta[5], s * theta[8],       //
-        T(0.0), T(0.0), s * exp(theta[3]), s * theta[9],             //
+        T(0.0), s * exp(theta[2]), s * theta[5], s * theta[8],        //
+        T(0.0), T(0.0), s * exp(theta[3]), s * theta[9],              //
         T(0.0), T(0.0), T(0.0), s;
     return u;
 }
@@ -58,8 +56,7 @@ struct LogDetDivergence
     /// Throws Error unless priorTheta has 10 finite entries and weight >= 0.
     LogDetDivergence(const Eigen::Matrix<double, 10, 1> &priorTheta, double weight);
 
-    template <typename T>
-    bool operator()(const T *theta, T *residual) const
+    template <typename T> bool operator()(const T *theta, T *residual) const
     {
         const Eigen::Matrix<T, 4, 4> v = priorFactorInverse.cast<T>() * logCholeskyFactor(theta);
         const T w(rootWeight);
@@ -85,12 +82,11 @@ struct LogDetDivergence
 /// Infeasible theta (t <= 0) is refused (the solver then takes a shorter step).
 struct VolumeDivergence
 {
-    Eigen::Matrix4d q;  ///< BoundingEllipsoid::constraintMatrix()
-    double priorShare;  ///< t0 > 0
-    double rootWeight;  ///< sqrt(weight)
+    Eigen::Matrix4d q; ///< BoundingEllipsoid::constraintMatrix()
+    double priorShare; ///< t0 > 0
+    double rootWeight; ///< sqrt(weight)
 
-    template <typename T>
-    bool operator()(const T *theta, T *residual) const
+    template <typename T> bool operator()(const T *theta, T *residual) const
     {
         using std::log;
         const Eigen::Matrix<T, 4, 4> u = logCholeskyFactor(theta);

@@ -120,14 +120,17 @@ void checkProblem(const PlausibleProblem &pr)
     if (!pr.a.allFinite() || !pr.b.allFinite() || !pr.prior.allFinite())
         throw Error(Text::tr("The estimation problem has entries that are not finite."));
     if (!(pr.priorShare > 0.0 && pr.priorShare < 1.0))
-        throw Error(Text::tr("The prior share must lie between 0 and 1, not %1.").arg(pr.priorShare));
+        throw Error(
+            Text::tr("The prior share must lie between 0 and 1, not %1.").arg(pr.priorShare));
     if (!pr.volumes.empty() && pr.volumes.size() != size_t(pr.links))
-        throw Error(Text::tr("%1 bounding volumes for %2 links.").arg(pr.volumes.size()).arg(pr.links));
+        throw Error(
+            Text::tr("%1 bounding volumes for %2 links.").arg(pr.volumes.size()).arg(pr.links));
     for (const int i : pr.nonnegative) {
         if (i < 10 * pr.links || i >= p)
             throw Error(Text::tr("Index %1 is not a joint term.").arg(i));
         if (pr.prior[i] < 0.0)
-            throw Error(Text::tr("The prior's joint term %1 is negative (%2).").arg(i).arg(pr.prior[i]));
+            throw Error(
+                Text::tr("The prior's joint term %1 is negative (%2).").arg(i).arg(pr.prior[i]));
     }
     for (int l = 0; l < pr.links; ++l) {
         if (!pr.volumes.empty() && pr.volumes[size_t(l)] &&

@@ -42,7 +42,8 @@ struct PlausibleEstimate
 };
 
 /// The standard parameters that minimise
-///   ||A pi - b||^2 + gamma sum_l [D(J_l, J0_l) + D_V(t_l, t0_l)] + w^2 sum_i (c_i (pi_i - prior_i))^2
+///   ||A pi - b||^2 + gamma sum_l [D(J_l, J0_l) + D_V(t_l, t0_l)] + w^2 sum_i (c_i (pi_i -
+///   prior_i))^2
 /// over every link's log-Cholesky parameters (consistent by construction) and the joint terms
 /// (nonnegative ones bounded below by 0, so that a term the data want at 0 is exactly 0):
 ///  - D the log-det divergence of each link's pseudo-inertia from the prior's
