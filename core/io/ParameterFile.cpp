@@ -10,6 +10,8 @@
 #include <QDir>
 #include <QJsonDocument>
 #include <QRegularExpression>
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace learnid {
@@ -199,6 +201,10 @@ void readStandard(const QJsonValue &value, const QString &path, ParameterFileCon
         }
         r.rejectUnknownKeys();
     }
+    // None known reads back as the writer had it: empty.
+    if (std::all_of(c.standardDetermined.begin(), c.standardDetermined.end(),
+                    [](double share) { return std::isnan(share); }))
+        c.standardDetermined.clear();
 }
 
 SdoWrite readWrite(JsonObjectReader r)

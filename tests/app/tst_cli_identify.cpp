@@ -208,18 +208,20 @@ void TestCliIdentify::kuka_exportedUrdfAndParameterFileAloneReproduceThePrintedF
     const FilteredLog run3 = loadLog(runs[2], exported, LogColumns{});
     const double fromUrdf = 100.0 * torqueFigures(exported, exported.cadStandard(), run3).overall;
     LEARNID_COMPARE_NEAR(fromUrdf, printed, 0.01);
-    double offsets = 0.0;
-    for (const ChainJoint &j : exported.chain().joints)
-        offsets += std::abs(j.offset);
-    QVERIFY2(offsets > 0.0, "the offsets the fit used are in the URDF");
-    // Without them the file would predict worse: they matter.
+    // The offsets enter the prediction as the constants they are: F(s)F(-s) passes a constant
+    // unchanged, so the torque with and without them differs by each joint's offset.
     SerialChain noOffsets = readUrdfChain(written);
     for (ChainJoint &j : noOffsets.joints)
         j.offset = 0.0;
     const ChainModel withoutOffsets(noOffsets, terms, QStringLiteral("urdf"));
-    const double lessModel =
-        100.0 * torqueFigures(withoutOffsets, withoutOffsets.cadStandard(), run3).overall;
-    QVERIFY2(lessModel > printed + 0.05, qPrintable(QString::number(lessModel)));
+    const Eigen::MatrixXd difference =
+        predictedTorque(exported, exported.cadStandard(), run3) -
+        predictedTorque(withoutOffsets, withoutOffsets.cadStandard(), run3);
+    for (int j = 0; j < 7; ++j) {
+        const double offset = exported.chain().joints[size_t(j)].offset;
+        LEARNID_COMPARE_NEAR(difference.row(j).minCoeff(), offset, 1e-9 + 1e-6 * std::abs(offset));
+        LEARNID_COMPARE_NEAR(difference.row(j).maxCoeff(), offset, 1e-9 + 1e-6 * std::abs(offset));
+    }
 
     // The parameter file alone, with the robot's URDF as given: its standard parameters, and
     // its base parameters, predict the same.
@@ -232,6 +234,12 @@ void TestCliIdentify::kuka_exportedUrdfAndParameterFileAloneReproduceThePrintedF
     LEARNID_COMPARE_NEAR(100.0 *
                              torqueFigures(cad, cad.standardFromBase(params.values), run3).overall,
                          printed, 0.01);
+    // Both files carry the same offsets, the fit's.
+    for (int j = 0; j < 7; ++j) {
+        const int at = 70 + 3 * j + 2; // per joint: viscous, Coulomb, offset
+        QCOMPARE(params.standardParameters.at(at).name.left(2), QStringLiteral("τo"));
+        QCOMPARE(params.standardValues[at], exported.chain().joints[size_t(j)].offset);
+    }
     int data = 0;
     for (int i = 0; i < cad.standardCount(); ++i)
         data += params.standardDetermined[size_t(i)] >= 0.5;

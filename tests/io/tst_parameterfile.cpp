@@ -296,6 +296,11 @@ void TestParameterFile::modelAlone_withoutGainsAndWithStandardParameters_roundTr
     QVERIFY(dcf.contains("SupportedObjects=1\n1=0x2200"));
     QVERIFY(!dcf.contains("[2100"));
 
+    // Unknown for all (a session without a path): written as nulls, read back as none known.
+    ParameterFileContent unknown = c;
+    unknown.standardDetermined.clear();
+    QVERIFY(parameterFileFromJson(parameterFileToJson(unknown), source).standardDetermined.empty());
+
     // A source that does not match the share, a share beyond 1, no nodes without gains.
     QJsonObject o = QJsonDocument::fromJson(json).object();
     QJsonArray standard = o.value(QStringLiteral("standardParameters")).toArray();
