@@ -2,7 +2,6 @@
 #include "ParameterFileSample.h"
 #include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
-#include "model/Error.h"
 
 #include <QCryptographicHash>
 #include <QJsonArray>
@@ -10,7 +9,6 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
-#include <cmath>
 #include <limits>
 #include <random>
 
@@ -97,9 +95,6 @@ private slots:
     void reformattedFile_keepsAValidChecksum();
     void changedValue_failsTheChecksum();
     void missingChecksum_isRejected();
-    void schemaMismatch_isRejected();
-    void version1File_isStillRead();
-    void modelAlone_withoutGainsAndWithStandardParameters_roundTrips();
     void missingSchema_isRejected();
     void missingField_isRejectedWithKeyPath_data();
     void missingField_isRejectedWithKeyPath();
@@ -229,96 +224,6 @@ void TestParameterFile::missingChecksum_isRejected()
     o.remove(QStringLiteral("checksum"));
     QVERIFY(readError(QJsonDocument(o).toJson())
                 .startsWith(QStringLiteral("robot.params.json: checksum: is missing")));
-}
-
-void TestParameterFile::schemaMismatch_isRejected()
-{
-    QJsonObject o = sampleObject();
-    o.insert(QStringLiteral("schema"), QStringLiteral("learnid-parameters/3"));
-    QCOMPARE(readError(withChecksum(o)),
-             QStringLiteral("robot.params.json: schema: this version of learnid reads "
-                            "\"learnid-parameters/2\" and \"learnid-parameters/1\", got "
-                            "\"learnid-parameters/3\""));
-}
-
-void TestParameterFile::version1File_isStillRead()
-{
-    // What learnid wrote before version 2: no standard parameters, always a controller.
-    QJsonObject o = sampleObject();
-    o.insert(QStringLiteral("schema"), QStringLiteral("learnid-parameters/1"));
-    o.remove(QStringLiteral("standardParameters"));
-    const ParameterFileContent c = parameterFileFromJson(withChecksum(o), source);
-    compareContent(c, sampleParameterFile());
-    QVERIFY(c.hasController);
-    QVERIFY(c.standardParameters.isEmpty());
-    // Version 1 knows neither key of version 2.
-    o.insert(QStringLiteral("standardParameters"), QJsonArray());
-    QVERIFY(readError(withChecksum(o))
-                .startsWith(QStringLiteral("robot.params.json: standardParameters: unknown key")));
-    o.remove(QStringLiteral("standardParameters"));
-    o.insert(QStringLiteral("controller"), QJsonValue::Null);
-    QVERIFY(
-        readError(withChecksum(o)).startsWith(QStringLiteral("robot.params.json: controller: ")));
-}
-
-void TestParameterFile::modelAlone_withoutGainsAndWithStandardParameters_roundTrips()
-{
-    ParameterFileContent c = sampleParameterFile();
-    c.hasController = false;
-    c.controller = ControllerSettings();
-    c.canWrites.removeFirst(); // the 0x2100 gain write
-    c.jointNodes = {3, 4};
-    c.standardParameters = {{QStringLiteral("m1"), QStringLiteral("kg"), QStringLiteral("mass"),
-                             QStringLiteral("link 1")},
-                            {QStringLiteral("τo1"), QStringLiteral("N m"), QStringLiteral("offset"),
-                             QStringLiteral("joint 1")},
-                            {QStringLiteral("fv1"), QStringLiteral("N m s/rad"),
-                             QStringLiteral("viscous"), QStringLiteral("joint 1")}};
-    c.standardValues = Eigen::Vector3d(2.5, -0.35, 0.1);
-    c.standardDetermined = {0.25, 0.97, std::numeric_limits<double>::quiet_NaN()};
-    const QByteArray json = parameterFileToJson(c);
-    QVERIFY(json.contains("\"controller\": null"));
-    QVERIFY(json.contains("\"determined\": 0.97,\n            \"source\": \"data\""));
-    QVERIFY(json.contains("\"determined\": 0.25,\n            \"source\": \"prior\""));
-    QVERIFY(json.contains("\"determined\": null,\n            \"source\": \"unknown\""));
-    const ParameterFileContent back = parameterFileFromJson(json, source);
-    QVERIFY(!back.hasController);
-    QCOMPARE(back.dof(), 2);
-    QCOMPARE(back.nodes(), (QList<int>{3, 4}));
-    QCOMPARE(back.standardParameters.size(), 3);
-    QCOMPARE(back.standardParameters.at(1).name, QStringLiteral("τo1"));
-    QVERIFY(bitEqual(back.standardValues, c.standardValues));
-    QCOMPARE(back.standardDetermined[0], 0.25);
-    QCOMPARE(back.standardDetermined[1], 0.97);
-    QVERIFY(std::isnan(back.standardDetermined[2]));
-    // Its DCF fragment holds the parameters alone.
-    const QByteArray dcf = parameterDcfFragment(back, 0);
-    QVERIFY(dcf.contains("SupportedObjects=1\n1=0x2200"));
-    QVERIFY(!dcf.contains("[2100"));
-
-    // Unknown for all (a session without a path): written as nulls, read back as none known.
-    ParameterFileContent unknown = c;
-    unknown.standardDetermined.clear();
-    QVERIFY(parameterFileFromJson(parameterFileToJson(unknown), source).standardDetermined.empty());
-
-    // A source that does not match the share, a share beyond 1, no nodes without gains.
-    QJsonObject o = QJsonDocument::fromJson(json).object();
-    QJsonArray standard = o.value(QStringLiteral("standardParameters")).toArray();
-    QJsonObject first = standard.at(0).toObject();
-    first.insert(QStringLiteral("source"), QStringLiteral("data"));
-    standard.replace(0, first);
-    o.insert(QStringLiteral("standardParameters"), standard);
-    QCOMPARE(readError(withChecksum(o)),
-             QStringLiteral("robot.params.json: standardParameters[0].source: must be \"prior\" "
-                            "for determined 0.25, got \"data\""));
-    first.insert(QStringLiteral("determined"), 1.5);
-    standard.replace(0, first);
-    o.insert(QStringLiteral("standardParameters"), standard);
-    QCOMPARE(readError(withChecksum(o)),
-             QStringLiteral("robot.params.json: standardParameters[0].determined: must be a share "
-                            "from 0 to 1 or null, got 1.5"));
-    c.jointNodes.clear();
-    QVERIFY_THROWS_EXCEPTION(Error, parameterFileToJson(c));
 }
 
 void TestParameterFile::missingSchema_isRejected()
