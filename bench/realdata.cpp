@@ -129,6 +129,8 @@ void printFit(const ChainModel &model, const LogFit &fit)
                 static_cast<long long>(fit.samples), fit.rank, model.standardCount(), fit.condition,
                 fit.undetermined().size(), fit.baseCount,
                 fit.converged ? "converged" : "stopped at its step limit");
+    if (qEnvironmentVariableIsSet("LEARNID_BENCH_SOLVER"))
+        std::printf("Solver: %s\n\n", qPrintable(fit.solverReport));
 }
 
 // FloBaRoID's published model: its URDF's inertia, <dynamics damping> as viscous friction
@@ -252,6 +254,8 @@ int main(int argc, char **argv)
             o.fit.consistent = false;
         else if (a == "--no-volumes")
             o.fit.volumes = false;
+        else if (a == "--no-rule")
+            o.fit.plausible = false;
         else {
             std::fprintf(stderr, "usage: learnid-bench-realdata [--rho R] [--share S] "
                                  "[--stride K] [--velocity-from-q] [--unweighted] "

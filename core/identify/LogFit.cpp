@@ -202,6 +202,8 @@ LogFit fitLogs(const ChainModel &model, const std::vector<FilteredLog> &logs,
         if (settings.volumes)
             problem.volumes = linkVolumes(model.chain(), fit.prior);
         problem.priorShare = settings.priorShare;
+        if (settings.plausible)
+            problem.rule = PlausibilityRule();
         const PlausibleEstimate c = plausibleEstimate(problem);
         fit.standard = c.standard;
         fit.converged = c.converged;

@@ -26,6 +26,8 @@ struct LogFitSettings
     bool consistent = true;
     /// Each link's mass kept inside its bounding volume (linkVolumes()).
     bool volumes = true;
+    /// Each link kept inside the plausibility rule (PlausibilityRule) where the CAD link is.
+    bool plausible = true;
 };
 
 /// The parameters fitted to logs, and what the data could determine.

@@ -1,7 +1,6 @@
 #include "model/GeometricPrior.h"
 
 #include "model/Error.h"
-#include "model/LogCholesky.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -9,16 +8,17 @@
 
 namespace learnid::detail {
 
-LogDetDivergence::LogDetDivergence(const Eigen::Matrix<double, 10, 1> &priorTheta, double weight)
+LogDetDivergence::LogDetDivergence(const Eigen::Matrix<double, 10, 1> &priorPi, double weight)
 {
-    if (!priorTheta.allFinite() || !(weight >= 0.0) || !std::isfinite(weight))
+    Eigen::Matrix4d u0;
+    if (!priorPi.allFinite() || !upperFactor(pseudoInertiaOf(priorPi.data()), u0) ||
+        !(weight >= 0.0) || !std::isfinite(weight))
         throw Error(QCoreApplication::translate("PlausibleEstimate",
-                                                "The log-det divergence needs a finite prior and "
-                                                "a weight that is not negative."));
-    const Eigen::Matrix4d u0 = logCholeskyFactor(priorTheta.data());
+                                                "The log-det divergence needs a prior link that "
+                                                "is strictly a real body and a weight that is not "
+                                                "negative."));
     priorFactorInverse = u0.triangularView<Eigen::Upper>().solve(Eigen::Matrix4d::Identity());
-    priorLogDiagonal << priorTheta[0] + priorTheta[1], priorTheta[0] + priorTheta[2],
-        priorTheta[0] + priorTheta[3], priorTheta[0];
+    priorLogDiagonal = u0.diagonal().array().log();
     rootWeight = std::sqrt(weight);
 }
 

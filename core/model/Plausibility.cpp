@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <QCoreApplication>
+#include <QStringList>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -107,6 +108,33 @@ checkPlausibility(const Eigen::VectorXd &standard, const Eigen::VectorXd &cadPri
         out.push_back(v);
     }
     return out;
+}
+
+QString plausibilityProblem(const LinkPlausibility &v, const PlausibilityRule &rule)
+{
+    if (v.plausible)
+        return {};
+    if (!(v.mass > 0.0))
+        return Text::tr("mass %1 kg").arg(v.mass, 0, 'g', 3);
+    QStringList problems;
+    if (!v.momentsOk) {
+        problems << Text::tr("smallest principal moment %1 kg m², below %2 % of the CAD link's "
+                             "smallest (%3 kg m²)")
+                        .arg(v.moments[0], 0, 'g', 2)
+                        .arg(100.0 * rule.minMomentShare, 0, 'g', 3)
+                        .arg(v.cadSmallestMoment, 0, 'g', 2);
+    }
+    if (!v.triangleOk) {
+        problems << Text::tr("(I1 + I2) / I3 = %1, below %2: a needle or a plate")
+                        .arg(v.triangleRatio, 0, 'f', 3)
+                        .arg(1.0 + rule.triangleMargin, 0, 'f', 2);
+    }
+    if (!v.volumeOk) {
+        problems << Text::tr("centre of mass outside the link's bounding volume (%1 times its "
+                             "size)")
+                        .arg(std::sqrt(v.comDistance), 0, 'f', 2);
+    }
+    return problems.join(QStringLiteral("; "));
 }
 
 std::vector<int> tinyJointTerms(const Eigen::VectorXd &standard,

@@ -4,6 +4,7 @@
 #include "model/SerialChain.h"
 
 #include <Eigen/Core>
+#include <QString>
 #include <optional>
 #include <vector>
 
@@ -46,7 +47,8 @@ struct LinkPlausibility
 /// Each link's bounding volume for a chain (links entries): the ellipsoid of its geometry
 /// (ellipsoidAroundBox of ChainJoint::geometryBox) where there is one and the CAD body fits in
 /// it (fitShare > 0), else the CAD body's inertia ellipsoid (ellipsoidFromInertia with
-/// cadVolumeMargin); no volume for a CAD link without mass. cadPrior: the CAD standard vector made real bodies (realBodyPrior).
+/// cadVolumeMargin); no volume for a CAD link without mass. cadPrior: the CAD standard vector made
+/// real bodies (realBodyPrior).
 std::vector<std::optional<BoundingEllipsoid>> linkVolumes(const SerialChain &chain,
                                                           const Eigen::VectorXd &cadPrior);
 
@@ -57,6 +59,11 @@ std::vector<LinkPlausibility>
 checkPlausibility(const Eigen::VectorXd &standard, const Eigen::VectorXd &cadPrior, int links,
                   const std::vector<std::optional<BoundingEllipsoid>> &volumes,
                   const PlausibilityRule &rule = {});
+
+/// What is wrong with a link that is not plausible, in one clause for reports ("smallest
+/// principal moment 5e-14 kg m^2, 1e-11 of the CAD link's 0.004; (I1 + I2) / I3 = 1.000"), or
+/// an empty string for a plausible one.
+QString plausibilityProblem(const LinkPlausibility &verdict, const PlausibilityRule &rule = {});
 
 /// The indices among nonnegativeIndices whose entry lies strictly between 0 and rule.termFloor.
 std::vector<int> tinyJointTerms(const Eigen::VectorXd &standard,

@@ -1,23 +1,16 @@
-// plausibleEstimate() of PlausibleEstimate.h: the problem checked, its weights, and Ceres.
-//
-// Ceres (Debian's libceres-dev) is the solver: a nonlinear least-squares problem in the links'
-// log-Cholesky parameters with bounds on the nonnegative joint terms is exactly its job
-// (Levenberg-Marquardt, dense QR, bound constraints by projection, automatic derivatives of the
-// prior's residuals). docs/identify.md says why it replaced the hand-written solver.
+// plausibleEstimate() of PlausibleEstimate.h: the problem checked, its weights, and the
+// continuation over the prior's weight; the Ceres problem itself is in PlausibleSolver.cpp.
 
 #include "model/PlausibleEstimate.h"
 
 #include "model/Error.h"
 #include "model/GeometricPrior.h"
-#include "model/LogCholesky.h"
-
-#include <ceres/ceres.h>
+#include "model/PlausibleSolver.h"
 
 #include <Eigen/SVD>
 #include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 namespace learnid {
 
@@ -26,83 +19,6 @@ namespace {
 struct Text
 {
     Q_DECLARE_TR_FUNCTIONS(PlausibleEstimate)
-};
-
-using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
-// r = A pi(theta_1..theta_n, terms) - b, with its Jacobian per parameter block:
-// A_l (d pi_l / d theta_l) for link l (LogCholesky.h), A_terms for the joint terms.
-class DataResidual final : public ceres::CostFunction
-{
-public:
-    DataResidual(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int links)
-        : m_a(a)
-        , m_b(b)
-        , m_links(links)
-    {
-        set_num_residuals(int(a.rows()));
-        for (int l = 0; l < links; ++l)
-            mutable_parameter_block_sizes()->push_back(10);
-        if (a.cols() > 10 * links)
-            mutable_parameter_block_sizes()->push_back(int(a.cols()) - 10 * links);
-    }
-
-    bool Evaluate(double const *const *parameters, double *residuals,
-                  double **jacobians) const override
-    {
-        const Eigen::Index p = m_a.cols(), terms = p - 10 * m_links;
-        Eigen::VectorXd pi(p);
-        Matrix10d jacobian;
-        for (int l = 0; l < m_links; ++l) {
-            const Eigen::Map<const Eigen::Matrix<double, 10, 1>> theta(parameters[l]);
-            if (!theta.allFinite())
-                return false;
-            pi.segment<10>(10 * l) = inertialFromLogCholesky(theta, jacobian);
-            if (jacobians && jacobians[l]) {
-                Eigen::Map<RowMajor>(jacobians[l], m_a.rows(), 10) =
-                    m_a.middleCols<10>(10 * l) * jacobian;
-            }
-        }
-        if (terms > 0) {
-            pi.tail(terms) = Eigen::Map<const Eigen::VectorXd>(parameters[m_links], terms);
-            if (jacobians && jacobians[m_links])
-                Eigen::Map<RowMajor>(jacobians[m_links], m_a.rows(), terms) = m_a.rightCols(terms);
-        }
-        Eigen::Map<Eigen::VectorXd>(residuals, m_a.rows()) = m_a * pi - m_b;
-        return true;
-    }
-
-private:
-    const Eigen::MatrixXd &m_a;
-    const Eigen::VectorXd &m_b;
-    int m_links;
-};
-
-// w c_i (pi_i - prior_i) for the joint terms.
-class TermPrior final : public ceres::CostFunction
-{
-public:
-    TermPrior(Eigen::VectorXd scale, Eigen::VectorXd prior)
-        : m_scale(std::move(scale))
-        , m_prior(std::move(prior))
-    {
-        set_num_residuals(int(m_scale.size()));
-        mutable_parameter_block_sizes()->push_back(int(m_scale.size()));
-    }
-
-    bool Evaluate(double const *const *parameters, double *residuals,
-                  double **jacobians) const override
-    {
-        const Eigen::Index n = m_scale.size();
-        Eigen::Map<Eigen::VectorXd>(residuals, n) =
-            m_scale.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(parameters[0], n) - m_prior);
-        if (jacobians && jacobians[0])
-            Eigen::Map<RowMajor>(jacobians[0], n, n) = m_scale.asDiagonal();
-        return true;
-    }
-
-private:
-    Eigen::VectorXd m_scale, m_prior;
 };
 
 void checkProblem(const PlausibleProblem &pr)
@@ -156,6 +72,12 @@ Matrix10d divergenceDirections(const Eigen::Matrix4d &u0)
     return out;
 }
 
+double largestSingularValue(const Eigen::MatrixXd &m)
+{
+    return m.rows() > 0 && m.cols() > 0 ? Eigen::JacobiSVD<Eigen::MatrixXd>(m).singularValues()[0]
+                                        : 0.0;
+}
+
 } // namespace
 
 PlausibleEstimate plausibleEstimate(const PlausibleProblem &pr)
@@ -165,82 +87,53 @@ PlausibleEstimate plausibleEstimate(const PlausibleProblem &pr)
     const Eigen::Index p = pr.prior.size(), terms = p - 10 * n;
 
     // The prior's own metric: per link the divergence's directions, per joint term its column.
-    std::vector<Eigen::Matrix<double, 10, 1>> theta0(static_cast<size_t>(n));
-    Eigen::MatrixXd scaled(pr.a.rows(), p);
+    // Each block's prior counts share^2 of what the data determine best within that block, so a
+    // light wrist link's directions are weighed against what the data say of that link, not
+    // against the heavy links' gravity.
+    std::vector<Vector10d> prior(static_cast<size_t>(n));
+    detail::PlausibleWeights weights;
+    weights.links.assign(static_cast<size_t>(n), 1.0);
     for (int l = 0; l < n; ++l) {
-        try {
-            theta0[size_t(l)] = logCholeskyFromInertial(pr.prior.segment<10>(10 * l));
-        } catch (const Error &e) {
-            throw Error(Text::tr("The prior's link %1: %2").arg(l + 1).arg(e.message()));
-        }
-        const Eigen::Matrix4d u0 = detail::logCholeskyFactor(theta0[size_t(l)].data());
-        scaled.middleCols<10>(10 * l) = pr.a.middleCols<10>(10 * l) * divergenceDirections(u0);
+        prior[size_t(l)] = pr.prior.segment<10>(10 * l);
+        Eigen::Matrix4d u0;
+        if (!detail::upperFactor(pseudoInertia(prior[size_t(l)]), u0))
+            throw Error(Text::tr("The prior's link %1 is not strictly a real body (its "
+                                 "pseudo-inertia is not positive definite).")
+                            .arg(l + 1));
+        const double largest =
+            largestSingularValue(pr.a.middleCols<10>(10 * l) * divergenceDirections(u0));
+        // gamma / 2 per unit of |v|^2 (D ~ |v|^2 / 2); without data the prior alone decides.
+        weights.links[size_t(l)] = largest > 0.0 ? 2.0 * std::pow(pr.priorShare * largest, 2) : 1.0;
     }
-    Eigen::VectorXd columns = pr.a.rightCols(terms).colwise().norm().transpose();
-    if (terms > 0)
-        columns = columns.cwiseMax(1e-3 * columns.maxCoeff() + 1e-300);
-    scaled.rightCols(terms) = pr.a.rightCols(terms) * columns.cwiseInverse().asDiagonal();
-    const double largest =
-        pr.a.rows() > 0 ? Eigen::JacobiSVD<Eigen::MatrixXd>(scaled).singularValues()[0] : 0.0;
-    // The prior counts share^2 of the best-determined direction: w^2 per scaled coordinate, and
-    // gamma / 2 per unit of |v|^2 (D ~ |v|^2 / 2). Without data the prior alone decides.
-    const double w = largest > 0.0 ? pr.priorShare * largest : 1.0;
+    weights.terms = pr.a.rightCols(terms).colwise().norm().transpose();
+    for (Eigen::Index i = 0; i < terms; ++i)
+        weights.terms[i] = weights.terms[i] > 0.0 ? pr.priorShare * weights.terms[i] : 1.0;
 
     PlausibleEstimate result;
-    result.linkWeight = 2.0 * w * w;
-    ceres::Problem::Options options;
-    options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
-    ceres::Problem problem(options);
-    std::vector<double *> blocks;
-    std::vector<Eigen::Matrix<double, 10, 1>> theta = theta0;
+    result.linkWeight = n > 0 ? *std::min_element(weights.links.begin(), weights.links.end()) : 0.0;
+    // Continuation: from a prior 100^2 times stronger (close to the CAD model, an easy problem)
+    // to the asked one in two steps, each stage starting where the last ended. Levenberg-
+    // Marquardt from the CAD model straight to a weak prior creeps along the barriers' curved
+    // valleys (hundreds of steps without converging on the KUKA LWR4+ logs).
+    std::vector<Vector10d> links = prior;
     Eigen::VectorXd termValues = pr.prior.tail(terms);
-    for (int l = 0; l < n; ++l)
-        blocks.push_back(theta[size_t(l)].data());
-    if (terms > 0)
-        blocks.push_back(termValues.data());
-    if (pr.a.rows() > 0)
-        problem.AddResidualBlock(new DataResidual(pr.a, pr.b, n), nullptr, blocks);
-    for (int l = 0; l < n; ++l) {
-        problem.AddResidualBlock(
-            new ceres::AutoDiffCostFunction<detail::LogDetDivergence, 10, 10>(
-                new detail::LogDetDivergence(theta0[size_t(l)], result.linkWeight)),
-            nullptr, blocks[size_t(l)]);
-        if (!pr.volumes.empty() && pr.volumes[size_t(l)]) {
-            const BoundingEllipsoid &e = *pr.volumes[size_t(l)];
-            const double t0 = e.fitShare(pr.prior.segment<10>(10 * l)) * pr.prior[10 * l];
-            problem.AddResidualBlock(
-                new ceres::AutoDiffCostFunction<detail::VolumeDivergence, 1, 10>(
-                    new detail::VolumeDivergence{e.constraintMatrix(), t0,
-                                                 std::sqrt(result.linkWeight)}),
-                nullptr, blocks[size_t(l)]);
-        }
+    detail::PlausibleStage stage;
+    for (const double factor : {1e4, 1e3, 1e2, 1e1, 1.0}) {
+        detail::PlausibleWeights w = weights;
+        for (double &x : w.links)
+            x *= factor;
+        w.terms *= std::sqrt(factor);
+        stage = detail::solvePlausibleStage(pr, prior, w, links, termValues);
+        result.iterations += stage.iterations;
     }
-    if (terms > 0) {
-        problem.AddResidualBlock(new TermPrior(w * columns, pr.prior.tail(terms)), nullptr,
-                                 termValues.data());
-        for (const int i : pr.nonnegative)
-            problem.SetParameterLowerBound(termValues.data(), i - 10 * n, 0.0);
-    }
-
-    ceres::Solver::Options solver;
-    solver.linear_solver_type = ceres::DENSE_QR;
-    solver.logging_type = ceres::SILENT;
-    solver.max_num_iterations = 500;
-    solver.function_tolerance = 1e-12;
-    solver.gradient_tolerance = 1e-14;
-    solver.parameter_tolerance = 1e-12;
-    ceres::Solver::Summary summary;
-    ceres::Solve(solver, &problem, &summary);
-
     result.standard.resize(p);
     for (int l = 0; l < n; ++l)
-        result.standard.segment<10>(10 * l) = inertialFromLogCholesky(theta[size_t(l)]);
+        result.standard.segment<10>(10 * l) = links[size_t(l)];
     result.standard.tail(terms) = termValues;
     result.dataCost = (pr.a * result.standard - pr.b).squaredNorm();
-    result.priorCost = std::max(0.0, 2.0 * summary.final_cost - result.dataCost);
-    result.iterations = int(summary.iterations.size());
-    result.converged = summary.termination_type == ceres::CONVERGENCE;
-    result.report = QString::fromStdString(summary.BriefReport());
+    result.priorCost = std::max(0.0, 2.0 * stage.finalCost - result.dataCost);
+    result.converged = stage.converged;
+    result.report = stage.report;
     return result;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/BoundingVolume.h"
+#include "model/Plausibility.h"
 
 #include <Eigen/Core>
 #include <QString>
@@ -21,6 +22,10 @@ struct PlausibleProblem
     /// Per link (links entries, or empty): the ellipsoid its mass must lie in; the prior's
     /// body must lie strictly inside (fitShare > 0).
     std::vector<std::optional<BoundingEllipsoid>> volumes;
+    /// When set, every link is kept inside the rule (principal moments, shape) where its prior
+    /// is: an estimate that passes checkPlausibility() by construction. A prior link that breaks
+    /// a part of the rule itself is not held to that part.
+    std::optional<PlausibilityRule> rule;
     /// The prior's weight as a share of what the data determine best: in the prior's own metric
     /// (each link's pseudo-inertia relative to the CAD one, each joint term relative to its
     /// regressor column) the prior counts share^2 times the largest information the rows carry

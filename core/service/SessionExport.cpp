@@ -57,7 +57,7 @@ namespace {
 // none (the parameter file's --consistent and the URDF export alike).
 EstimateConsistency consistencyWithNearest(const CommissioningSession &session, int k)
 {
-    const EstimateConsistency c = session.consistency(k);
+    const EstimateConsistency c = session.consistency(k, NearestEstimate::Always);
     if (!c.applicable || !c.nearestError.isEmpty()) {
         throw Error(QCoreApplication::translate("SessionExport",
                                                 "no consistent estimate near estimate %1: %2")
@@ -70,12 +70,14 @@ EstimateConsistency consistencyWithNearest(const CommissioningSession &session, 
     return c;
 }
 
-// Estimate k's standard parameters: completed by the CAD model (made real bodies), or its
-// nearest consistent estimate when asked for a consistent one and it is not consistent.
+// Estimate k's standard parameters: completed by the CAD model (made real bodies), or, when a
+// consistent one is asked for, its nearest plausible estimate where there is one.
 Eigen::VectorXd standardOfEstimate(const CommissioningSession &session, const ChainModel &chain,
                                    int k, const EstimateConsistency &c, bool consistent)
 {
-    if (consistent && !c.consistent)
+    // The nearest plausible estimate whenever there is one: a consistent estimate's CAD
+    // completion can still hold point masses and needles.
+    if (consistent && c.nearestStandard.size() > 0)
         return c.nearestStandard;
     return chain.base().standardFromBase(session.estimates().at(k),
                                          realBodyPrior(chain.cadStandard(), chain.dof()));
@@ -88,6 +90,7 @@ QByteArray sessionUrdf(const CommissioningSession &session, int k, const QString
         throw Error(
             QCoreApplication::translate("SessionExport", "only URDF robots have a URDF to export"));
     }
+    // Without a trial there is no path to weigh by: a consistent estimate's completion then.
     const EstimateConsistency c = consistencyWithNearest(session, k);
     const Eigen::VectorXd pi = standardOfEstimate(session, *chain, k, c, true);
     const Scenario &s = session.scenario();
