@@ -96,10 +96,13 @@ private:
     Eigen::VectorXd m_scale, m_prior;
 };
 
+
+
+
 // The rule's two inequalities per link (GeometricPrior.h, RuleBarrier) where the prior meets them.
 void addRuleBarriers(ceres::Problem &problem, const PlausibilityRule &rule,
-                     const std::vector<Vector10d> &prior0, const std::vector<double> &weights,
-                     const std::vector<double *> &blocks)
+                     const std::vector<Vector10d> &prior0,
+                     const std::vector<double> &weights, const std::vector<double *> &blocks)
 {
     for (size_t l = 0; l < prior0.size(); ++l) {
         const Eigen::Matrix3d sigma = RuleBarrier::matrix(prior0[l].data(), true, 0.0);
@@ -142,17 +145,16 @@ PlausibleStage solvePlausibleStage(const PlausibleProblem &pr, const std::vector
     if (pr.a.rows() > 0)
         problem.AddResidualBlock(new DataResidual(pr.a, pr.b, n), nullptr, blocks);
     for (int l = 0; l < n; ++l) {
-        problem.AddResidualBlock(
-            new ceres::AutoDiffCostFunction<LogDetDivergence, 10, 10>(
-                new LogDetDivergence(prior0[size_t(l)], weights.links[size_t(l)])),
-            nullptr, blocks[size_t(l)]);
+        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LogDetDivergence, 10, 10>(
+                                     new LogDetDivergence(prior0[size_t(l)], weights.links[size_t(l)])),
+                                 nullptr, blocks[size_t(l)]);
         if (!pr.volumes.empty() && pr.volumes[size_t(l)]) {
             const BoundingEllipsoid &e = *pr.volumes[size_t(l)];
             const double t0 = e.fitShare(pr.prior.segment<10>(10 * l)) * pr.prior[10 * l];
-            problem.AddResidualBlock(
-                new ceres::AutoDiffCostFunction<VolumeDivergence, 1, 10>(new VolumeDivergence{
-                    e.constraintMatrix(), t0, std::sqrt(weights.links[size_t(l)])}),
-                nullptr, blocks[size_t(l)]);
+            problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VolumeDivergence, 1, 10>(
+                                         new VolumeDivergence{e.constraintMatrix(), t0,
+                                                              std::sqrt(weights.links[size_t(l)])}),
+                                     nullptr, blocks[size_t(l)]);
         }
     }
     if (pr.rule)
@@ -161,8 +163,7 @@ PlausibleStage solvePlausibleStage(const PlausibleProblem &pr, const std::vector
         problem.AddResidualBlock(new TermPrior(weights.terms, pr.prior.tail(terms)), nullptr,
                                  termValues.data());
         for (const int i : pr.nonnegative)
-            if (!qEnvironmentVariableIsSet("LEARNID_NOBOUNDS"))
-                problem.SetParameterLowerBound(termValues.data(), i - 10 * n, 0.0);
+            if (!qEnvironmentVariableIsSet("LEARNID_NOBOUNDS")) problem.SetParameterLowerBound(termValues.data(), i - 10 * n, 0.0);
     }
 
     ceres::Solver::Options solver;
@@ -192,10 +193,8 @@ PlausibleStage solvePlausibleStage(const PlausibleProblem &pr, const std::vector
             problem.GetParameterBlocksForResidualBlock(id, &ps);
             int which = -1;
             for (size_t l = 0; l < links.size(); ++l)
-                if (ps.size() == 1 && ps[0] == links[l].data())
-                    which = int(l);
-            fprintf(stdout, "block link=%d nres=%d cost=%g\n", which,
-                    problem.GetCostFunctionForResidualBlock(id)->num_residuals(), cost);
+                if (ps.size() == 1 && ps[0] == links[l].data()) which = int(l);
+            fprintf(stdout, "block link=%d nres=%d cost=%g\n", which, problem.GetCostFunctionForResidualBlock(id)->num_residuals(), cost);
         }
     }
     PlausibleStage stage;
