@@ -252,14 +252,17 @@ int main(int argc, char **argv)
             o.fit.weighted = false;
         else if (a == "--inconsistent")
             o.fit.consistent = false;
+        else if (a == "--geometric-share" && value)
+            o.fit.geometricShare = std::atof(argv[++i]);
         else if (a == "--no-volumes")
             o.fit.volumes = false;
         else if (a == "--no-rule")
             o.fit.plausible = false;
         else {
-            std::fprintf(stderr, "usage: learnid-bench-realdata [--rho R] [--share S] "
-                                 "[--stride K] [--velocity-from-q] [--unweighted] "
-                                 "[--inconsistent] [--no-volumes]\n");
+            std::fprintf(
+                stderr, "usage: learnid-bench-realdata [--rho R] [--share S] [--geometric-share S] "
+                        "[--stride K] [--velocity-from-q] [--unweighted] "
+                        "[--inconsistent] [--no-volumes]\n");
             return 2;
         }
     }

@@ -147,7 +147,8 @@ LogFit fitLogs(const ChainModel &model, const std::vector<FilteredLog> &logs,
     }
     if (total == 0)
         throw Error(Text::tr("no samples to fit"));
-    if (!(settings.priorShare > 0.0 && settings.priorShare < 1.0))
+    if (!(settings.priorShare > 0.0 && settings.priorShare < 1.0) ||
+        !(settings.geometricShare > 0.0 && settings.geometricShare < 1.0))
         throw Error(Text::tr("the prior share must lie between 0 and 1"));
 
     LogFit fit;
@@ -201,7 +202,7 @@ LogFit fitLogs(const ChainModel &model, const std::vector<FilteredLog> &logs,
         problem.nonnegative = model.nonnegativeStandard();
         if (settings.volumes)
             problem.volumes = linkVolumes(model.chain(), fit.prior);
-        problem.priorShare = settings.priorShare;
+        problem.priorShare = settings.geometricShare;
         if (settings.plausible)
             problem.rule = PlausibilityRule();
         const PlausibleEstimate c = plausibleEstimate(problem);

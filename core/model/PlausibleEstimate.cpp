@@ -1,12 +1,13 @@
-// plausibleEstimate() of PlausibleEstimate.h: the problem checked, its weights, and the
-// continuation over the prior's weight; the Ceres problem itself is in PlausibleSolver.cpp.
+// plausibleEstimate() of PlausibleEstimate.h: the problem checked, its weights and constraints;
+// the barrier Newton method that solves it is in PlausibleNewton.cpp.
 
 #include "model/PlausibleEstimate.h"
 
 #include "model/Error.h"
-#include "model/GeometricPrior.h"
-#include "model/PlausibleSolver.h"
+#include "model/PlausibleNewton.h"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <QCoreApplication>
 #include <algorithm>
@@ -58,7 +59,7 @@ void checkProblem(const PlausibleProblem &pr)
 
 // Per link the 10 directions of the divergence's own metric: pi of U0 B_k U0^T for an orthonormal
 // basis B_k of symmetric 4 x 4 matrices, so that D(J0 + dJ, J0) ~ |v|^2 / 2 for dJ = sum v_k ...
-Matrix10d divergenceDirections(const Eigen::Matrix4d &u0)
+Matrix10d divergenceDirections(const Eigen::Matrix4d &u0) // any factor J0 = u0 u0^T
 {
     Matrix10d out;
     int k = 0;
@@ -78,6 +79,25 @@ double largestSingularValue(const Eigen::MatrixXd &m)
                                         : 0.0;
 }
 
+// The thickness floor s of a prior link under rule (docs/robots.md §6): Sigma_c >= s E gives
+// every principal moment >= 2 s (I_k = sigma_i + sigma_j) and I1 + I2 - I3 = 2 sigma_min >= 2 s.
+// s = 1.1 max(share I_min / 2, margin I3) of the CAD body keeps the moments' rule with 10 %
+// margin, and the triangle rule while I3 stays below 2.2 times the CAD link's; it is capped at
+// half the CAD body's own sigma_min, so that the prior lies strictly inside.
+double thicknessFloor(const Vector10d &prior, const PlausibilityRule &rule)
+{
+    const double m = prior[0];
+    const Eigen::Vector3d c = prior.segment<3>(1) / m;
+    const Eigen::Matrix3d sigma =
+        pseudoInertia(prior).topLeftCorner<3, 3>() - m * c * c.transpose();
+    const Eigen::Vector3d s =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(sigma, Eigen::EigenvaluesOnly).eigenvalues();
+    const double smallestMoment = s[0] + s[1], largestMoment = s[1] + s[2];
+    return std::min(1.1 * std::max(0.5 * rule.minMomentShare * smallestMoment,
+                                   rule.triangleMargin * largestMoment),
+                    0.5 * s[0]);
+}
+
 } // namespace
 
 PlausibleEstimate plausibleEstimate(const PlausibleProblem &pr)
@@ -86,54 +106,81 @@ PlausibleEstimate plausibleEstimate(const PlausibleProblem &pr)
     const int n = pr.links;
     const Eigen::Index p = pr.prior.size(), terms = p - 10 * n;
 
-    // The prior's own metric: per link the divergence's directions, per joint term its column.
-    // Each block's prior counts share^2 of what the data determine best within that block, so a
-    // light wrist link's directions are weighed against what the data say of that link, not
-    // against the heavy links' gravity.
-    std::vector<Vector10d> prior(static_cast<size_t>(n));
-    detail::PlausibleWeights weights;
-    weights.links.assign(static_cast<size_t>(n), 1.0);
+    detail::PlausibleObjective o;
+    o.a = pr.a;
+    o.b = pr.b;
+    o.prior = pr.prior;
+    o.nonnegative.assign(size_t(p), 0);
+    o.fixed.assign(size_t(p), 0);
+    for (const int i : pr.nonnegative)
+        o.nonnegative[size_t(i)] = 1;
+    // The links' prior counts share^2 of what the data determine best of the links, in the
+    // divergence's own metric: directions the data determine much better than that follow the
+    // data, those they hardly see stay at the prior. Without data the prior alone decides.
+    Eigen::MatrixXd scaled(pr.a.rows(), 10 * n);
     for (int l = 0; l < n; ++l) {
-        prior[size_t(l)] = pr.prior.segment<10>(10 * l);
-        Eigen::Matrix4d u0;
-        if (!detail::upperFactor(pseudoInertia(prior[size_t(l)]), u0))
+        const Vector10d prior = pr.prior.segment<10>(10 * l);
+        const Eigen::Matrix4d j0 = pseudoInertia(prior);
+        const Eigen::LLT<Eigen::Matrix4d> llt(j0);
+        if (llt.info() != Eigen::Success)
             throw Error(Text::tr("The prior's link %1 is not strictly a real body (its "
                                  "pseudo-inertia is not positive definite).")
                             .arg(l + 1));
-        const double largest =
-            largestSingularValue(pr.a.middleCols<10>(10 * l) * divergenceDirections(u0));
-        // gamma / 2 per unit of |v|^2 (D ~ |v|^2 / 2); without data the prior alone decides.
-        weights.links[size_t(l)] = largest > 0.0 ? 2.0 * std::pow(pr.priorShare * largest, 2) : 1.0;
+        detail::LinkTerms t;
+        t.priorInverse = llt.solve(Eigen::Matrix4d::Identity());
+        t.priorLogDet = 2.0 * Eigen::Matrix4d(llt.matrixL()).diagonal().array().log().sum();
+        scaled.middleCols<10>(10 * l) =
+            pr.a.middleCols<10>(10 * l) * divergenceDirections(llt.matrixL());
+        if (pr.rule)
+            t.thickness = thicknessFloor(prior, *pr.rule);
+        if (!pr.volumes.empty() && pr.volumes[size_t(l)]) {
+            t.hasVolume = true;
+            t.volume = pr.volumes[size_t(l)]->constraintMatrix();
+        }
+        o.links.push_back(t);
     }
-    weights.terms = pr.a.rightCols(terms).colwise().norm().transpose();
+    // D ~ |v|^2 / 2 in the divergence's directions: gamma / 2 = share^2 largest^2. A joint term
+    // is weighed against its own column (a friction or offset is determined alone, or not at
+    // all): w_i = share |A_i|, 1 where the data do not see it.
+    const double largest = largestSingularValue(scaled.leftCols(10 * n));
+    const double w = largest > 0.0 ? pr.priorShare * largest : 1.0;
+    for (detail::LinkTerms &t : o.links)
+        t.weight = 2.0 * w * w;
+    o.termWeights = pr.a.rightCols(terms).colwise().norm().transpose();
     for (Eigen::Index i = 0; i < terms; ++i)
-        weights.terms[i] = weights.terms[i] > 0.0 ? pr.priorShare * weights.terms[i] : 1.0;
+        o.termWeights[i] = o.termWeights[i] > 0.0 ? pr.priorShare * o.termWeights[i] : 1.0;
+
+    // The prior is strictly feasible but for nonnegative terms at 0, which start just inside.
+    Eigen::VectorXd start = pr.prior;
+    for (const int i : pr.nonnegative)
+        start[i] = std::max(start[i], 1e-3 * std::abs(pr.prior[i]) + 1e-6);
+    constexpr double gap = 1e-10;
+    constexpr int maxSteps = 400;
+    detail::NewtonResult r = detail::minimiseWithBarriers(o, start, gap, maxSteps);
+    int steps = r.steps;
+    // A term the barrier left within termFloor of 0 is at its bound: exactly 0 (no denormal or
+    // 1e-9 N m), and the rest re-centred with it held there.
+    bool snapped = false;
+    for (const int i : pr.nonnegative) {
+        if (r.pi[i] < PlausibilityRule().termFloor) {
+            r.pi[i] = 0.0;
+            o.fixed[size_t(i)] = 1;
+            snapped = true;
+        }
+    }
+    if (snapped) {
+        r = detail::minimiseWithBarriers(o, r.pi, gap, maxSteps);
+        steps += r.steps;
+    }
 
     PlausibleEstimate result;
-    result.linkWeight = n > 0 ? *std::min_element(weights.links.begin(), weights.links.end()) : 0.0;
-    // Continuation: from a prior 100^2 times stronger (close to the CAD model, an easy problem)
-    // to the asked one in two steps, each stage starting where the last ended. Levenberg-
-    // Marquardt from the CAD model straight to a weak prior creeps along the barriers' curved
-    // valleys (hundreds of steps without converging on the KUKA LWR4+ logs).
-    std::vector<Vector10d> links = prior;
-    Eigen::VectorXd termValues = pr.prior.tail(terms);
-    detail::PlausibleStage stage;
-    for (const double factor : {1e4, 1e3, 1e2, 1e1, 1.0}) {
-        detail::PlausibleWeights w = weights;
-        for (double &x : w.links)
-            x *= factor;
-        w.terms *= std::sqrt(factor);
-        stage = detail::solvePlausibleStage(pr, prior, w, links, termValues);
-        result.iterations += stage.iterations;
-    }
-    result.standard.resize(p);
-    for (int l = 0; l < n; ++l)
-        result.standard.segment<10>(10 * l) = links[size_t(l)];
-    result.standard.tail(terms) = termValues;
-    result.dataCost = (pr.a * result.standard - pr.b).squaredNorm();
-    result.priorCost = std::max(0.0, 2.0 * stage.finalCost - result.dataCost);
-    result.converged = stage.converged;
-    result.report = stage.report;
+    result.standard = r.pi;
+    result.dataCost = (pr.a * r.pi - pr.b).squaredNorm();
+    result.priorCost = r.cost - result.dataCost;
+    result.linkWeight = 2.0 * w * w;
+    result.iterations = steps;
+    result.converged = r.converged;
+    result.report = Text::tr("%n Newton step(s)", nullptr, steps);
     return result;
 }
 

@@ -41,25 +41,29 @@ struct PlausibleEstimate
     double dataCost = 0.0;    ///< ||A pi - b||^2
     double priorCost = 0.0;   ///< the prior's terms (weighted divergences and squares)
     double linkWeight = 0.0;  ///< the weight of each link's divergence (from priorShare)
-    int iterations = 0;       ///< the solver's iterations
-    bool converged = false;   ///< the solver met a convergence tolerance
-    QString report;           ///< the solver's one-line summary
+    int iterations = 0;       ///< Newton steps
+    bool converged = false;   ///< the duality gap closed to its tolerance
+    QString report;           ///< what the solver did, in one line
 };
 
 /// The standard parameters that minimise
-///   ||A pi - b||^2 + gamma sum_l [D(J_l, J0_l) + D_V(t_l, t0_l)] + w^2 sum_i (c_i (pi_i -
-///   prior_i))^2
-/// over every link's log-Cholesky parameters (consistent by construction) and the joint terms
-/// (nonnegative ones bounded below by 0, so that a term the data want at 0 is exactly 0):
-///  - D the log-det divergence of each link's pseudo-inertia from the prior's
-///    (GeometricPrior.h): it keeps each link a body near the CAD one in the geometry of rigid
-///    bodies, growing without bound towards point masses, needles and plates;
-///  - D_V the same divergence of the link's bounding-ellipsoid inequality, where it has one;
-///  - c_i the norm of joint term i's column of A (floored at 1e-3 of the largest), so that
-///    the joint terms' prior is the ridge in the data's own scaling.
-/// gamma and w follow from priorShare (PlausibleProblem). Solved by Ceres' Levenberg-Marquardt
-/// (dense QR) from the prior: the problem is convex in pi and the log-Cholesky map is a
-/// diffeomorphism onto the consistent interior, so its stationary point is the minimum.
+///   ||A pi - b||^2 + gamma sum_l D(J_l, J0_l) + sum_i (w_i (pi_i - prior_i))^2
+/// subject to, per link, J_l - s_l diag(1, 1, 1, 0) >= 0 (a thickness floor: Sigma_c >= s_l E,
+/// when a rule is given) and tr(Q_l J_l) >= 0 (its bounding ellipsoid, when it has one), and
+/// pi_i >= 0 for the nonnegative joint terms:
+///  - D the log-det (Bregman) divergence of each link's pseudo-inertia from the prior's,
+///    tr(J0^-1 J) - ln det(J0^-1 J) - 4 (Lee, Wensing and Park, IEEE T-RO 2020): it keeps each link
+///    near its CAD body in the geometry of rigid bodies, and grows without bound towards point
+///    masses, needles and plates;
+///  - s_l from the rule and the CAD body (thicknessFloor in PlausibleEstimate.cpp): every
+///    principal moment at least the rule's share of the CAD link's smallest, with 10 % margin;
+///  - gamma = 2 w^2, w = priorShare times the largest singular value of A's link columns in the
+///    divergence's own metric (PlausibleProblem::priorShare);
+///  - w_i = priorShare times the norm of joint term i's column of A (1 where it is 0).
+/// The problem is convex in pi; a primal barrier Newton method with exact Hessians solves it
+/// (PlausibleNewton.h) to within 1e-10 of the optimal cost. A nonnegative term the optimum puts
+/// at its bound comes out exactly 0 (below PlausibilityRule::termFloor it is set to 0 and the
+/// rest solved again with it held there).
 ///
 /// Throws Error naming the argument when a size does not match, an entry is not finite, the
 /// share is outside (0, 1), an index is not a nonnegative joint term, a prior link is not
