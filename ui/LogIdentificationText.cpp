@@ -71,7 +71,13 @@ QString logIdentificationSummaryHtml(const LogIdentificationResult &r)
                        r.undetermined.join(QStringLiteral(", ")).toHtmlEscaped());
     const QString training = Text::tr("<p><b>Training residual</b>, RMS per joint [N m]: %1</p>")
                                  .arg(residual.join(QStringLiteral(", ")));
-    return robot + fitText + consistency + undetermined + training;
+    // The URDF's own values as a real robot's (docs/robots.md §7): used as the prior all the same.
+    QString warnings;
+    for (const QString &w : r.robot.warnings)
+        warnings += Text::tr("<p style=\"color:#8a5300\"><b>Warning:</b> the URDF as a real "
+                             "robot: %1</p>")
+                        .arg(w.toHtmlEscaped());
+    return robot + warnings + fitText + consistency + undetermined + training;
 }
 
 QString logIdentificationMessage(const LogIdentificationResult &r)

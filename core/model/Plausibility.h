@@ -45,9 +45,10 @@ struct LinkPlausibility
 };
 
 /// Each link's bounding volume for a chain (links entries): the ellipsoid of its geometry
-/// (ChainJoint::volume) where there is one and the CAD body fits in it (fitShare > 0), else the
-/// CAD body's inertia ellipsoid (ellipsoidFromInertia with cadVolumeMargin); no volume for a
-/// CAD link without mass. cadPrior: the CAD standard vector made real bodies (realBodyPrior).
+/// (ellipsoidAroundBox of ChainJoint::geometryBox) where there is one and the CAD body fits in
+/// it (fitShare > 0), else the CAD body's inertia ellipsoid (ellipsoidFromInertia with
+/// cadVolumeMargin); no volume for a CAD link without mass. cadPrior: the CAD standard vector made
+/// real bodies (realBodyPrior).
 std::vector<std::optional<BoundingEllipsoid>> linkVolumes(const SerialChain &chain,
                                                           const Eigen::VectorXd &cadPrior);
 
