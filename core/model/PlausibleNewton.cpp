@@ -96,9 +96,11 @@ double evaluate(const PlausibleObjective &o, const Eigen::VectorXd &pi, double m
         value += t.weight * divergence;
         g *= t.weight;
         h *= t.weight;
-        // Without a floor the divergence is J's own barrier.
-        if (t.thickness > 0.0 &&
-            !addLogDetBarrier(j - t.thickness * thicknessMatrix(), mu, value, g, h))
+        // The barrier of J - s D, also where s = 0: with a weight gamma far below the data's the
+        // divergence alone is a barrier Newton's method creeps along (not self-concordant:
+        // gamma (-ln det J) / mu has a constant of 2 / sqrt(gamma / mu)); with the barrier's own
+        // mu (-ln det J) the scaled objective is self-concordant and converges in tens of steps.
+        if (!addLogDetBarrier(j - t.thickness * thicknessMatrix(), mu, value, g, h))
             return std::numeric_limits<double>::infinity();
         if (t.hasVolume) {
             Vector10d q;
@@ -150,7 +152,7 @@ int barrierParameter(const PlausibleObjective &o)
 {
     int nu = 0;
     for (const LinkTerms &t : o.links)
-        nu += (t.thickness > 0.0 ? 4 : 0) + (t.hasVolume ? 1 : 0);
+        nu += 4 + (t.hasVolume ? 1 : 0);
     for (size_t i = 0; i < o.nonnegative.size(); ++i)
         nu += o.nonnegative[i] && !o.fixed[i] ? 1 : 0;
     return nu;

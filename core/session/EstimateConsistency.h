@@ -58,7 +58,7 @@ enum class NearestEstimate {
 /// Checks phi (base parameters of model) and, as `when` asks and a path is given, finds the
 /// nearest plausible estimate: standard parameters whose torques on path (the desired
 /// trajectory of a trial) are closest to phi's, each link kept near the CAD body by the
-/// geometric prior of plausibleEstimate() (share 1e-3: what the path sees follows phi).
+/// geometric prior of plausibleEstimate() (docs/robots.md §6: what the path sees follows phi).
 /// Never throws: a failure is in nearestError.
 EstimateConsistency
 checkEstimateConsistency(const RobotModel &model, const Eigen::VectorXd &phi,

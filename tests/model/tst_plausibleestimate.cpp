@@ -50,9 +50,9 @@ double divergence(const Vector10d &pi, const Vector10d &prior)
 {
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> p0(pseudoInertia(prior));
     const Eigen::Matrix4d root = p0.operatorInverseSqrt();
-    const Eigen::Vector4d l = Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d>(
-                                  root * pseudoInertia(pi) * root)
-                                  .eigenvalues();
+    const Eigen::Vector4d l =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d>(root * pseudoInertia(pi) * root)
+            .eigenvalues();
     if (!(l.minCoeff() > 0.0))
         return INFINITY;
     return (l.array() - l.array().log() - 1.0).sum();
@@ -118,7 +118,7 @@ void TestPlausibleEstimate::fullRankRows_plausibleTarget_isFollowed()
 }
 
 // Random rows of rank 12 that see link 0 and the joint terms only. Link 1 stays at the prior
-// exactly (its divergence is 0 there and nothing else acts on it), and no feasible point on the
+// (its divergence is 0 there and nothing else acts on it), and no feasible point on the
 // way to other feasible points is cheaper (the problem is convex in pi: that is optimality).
 void TestPlausibleEstimate::rankDeficientRows_isOptimalAndKeepsUnseenLinkAtPrior()
 {
@@ -140,8 +140,9 @@ void TestPlausibleEstimate::rankDeficientRows_isOptimalAndKeepsUnseenLinkAtPrior
         const PlausibleEstimate fit = plausibleEstimate(p);
         QVERIFY(fit.converged);
         QVERIFY(feasible(p, fit.standard));
+        // (to the barrier's last weight: 1e-10 of the cost over the divergence's weight)
         LEARNID_COMPARE_MATRIX(fit.standard.segment<10>(10), prior.segment<10>(10),
-                               1e-9 * prior.cwiseAbs().maxCoeff());
+                               1e-6 * prior.cwiseAbs().maxCoeff());
         const double best = costOf(p, fit, fit.standard);
         LEARNID_COMPARE_NEAR(best, fit.dataCost + fit.priorCost, 1e-8 * best);
         const double slack = 1e-8 * best + 1e-12;
