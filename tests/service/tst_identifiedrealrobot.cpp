@@ -61,9 +61,9 @@ void TestIdentifiedRealRobot::identifiedKuka_runsThreeTrialsAndTracksBetterEachT
     for (const LinkPlausibility &l :
          checkPlausibility(model.standardOf(real), identified.fit.prior, model.dof(),
                            linkVolumes(model.chain(), identified.fit.prior)))
-        QVERIFY2(l.plausible, qPrintable(QStringLiteral("link %1: %2")
-                                             .arg(l.link + 1)
-                                             .arg(plausibilityProblem(l))));
+        QVERIFY2(
+            l.plausible,
+            qPrintable(QStringLiteral("link %1: %2").arg(l.link + 1).arg(plausibilityProblem(l))));
 
     // docs/scenario.md's KUKA scenario, the offsets learned too (the identified robot has them).
     const QByteArray json = QStringLiteral(R"({
@@ -95,7 +95,8 @@ void TestIdentifiedRealRobot::identifiedKuka_runsThreeTrialsAndTracksBetterEachT
     std::vector<double> errors;
     for (int k = 0; k < 3; ++k) {
         const TrialResult &t = session.runTrial();
-        QVERIFY2(t.record.completed(), qPrintable(QStringLiteral("trial %1: %2").arg(k).arg(t.message)));
+        QVERIFY2(t.record.completed(),
+                 qPrintable(QStringLiteral("trial %1: %2").arg(k).arg(t.message)));
         errors.push_back(maxErrorDeg(t));
     }
     qInfo("max tracking error per trial: %.3f, %.3f, %.3f deg", errors[0], errors[1], errors[2]);

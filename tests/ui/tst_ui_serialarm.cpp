@@ -222,6 +222,19 @@ private slots:
                     c->estimates()[k][i]);
         }
         QVERIFY(figures.consistencyChecked);
+        // The Real body column: a link that is no real body, one that is not plausible, or one
+        // that is both, as the newest estimate's verdict says.
+        const int body = params->columnOf(ParameterTableModel::Column::Consistent);
+        for (int i = 0; i < m; ++i) {
+            const QString group = info[i].group, mark = params->index(i, body).data().toString();
+            if (group.isEmpty())
+                continue;
+            const QString expected =
+                figures.inconsistentGroups.contains(group)  ? QStringLiteral("\u2717 no")
+                : figures.implausibleGroups.contains(group) ? QStringLiteral("\u26a0 not plausible")
+                                                            : QStringLiteral("\u2713");
+            QCOMPARE(mark, expected);
+        }
 
         // The tracking plot: a joint each, selectable.
         TrackingErrorPlot *plot = f.window->plot();
