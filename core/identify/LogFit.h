@@ -14,9 +14,9 @@ class ChainModel;
 struct LogFitSettings
 {
     /// Directions of the parameters (each scaled by its regressor column's norm) whose singular
-    /// value is below priorShare times the largest are held at the CAD prior: the data do not
-    /// determine them. The same figure weighs the prior in the physically consistent fit.
-    /// 0.03: on the KUKA LWR4+ logs 0.01 to 0.05 predict the held-out run alike (docs/identify.md).
+    /// value is below priorShare times the largest are not determined by the data: the plain
+    /// fit holds them at the CAD prior, the plausible fit holds the joint terms among them there,
+    /// and the reports say which standard parameters they are (standardDetermined).
     double priorShare = 0.03;
     /// The geometric prior's weight in the plausible fit (PlausibleProblem::priorShare): it
     /// counts 0.003^2 (1e-5) of the best-determined direction's information. On the KUKA LWR4+
