@@ -25,9 +25,9 @@ QString directionsText(int standard, int base, int rank, double condition)
     }
     return Text::tr("Of the %1 standard parameters, any data could determine at most %2 "
                     "combinations (the base parameters); these logs determine %3 of those %2 "
-                    "directions (condition %4), the other %5 stay near the URDF's values.")
-        .arg(QString::number(standard), QString::number(base), QString::number(rank), cond,
-             QString::number(base - rank));
+                    "directions (condition %4), the other %n stay near the URDF's values.",
+                    nullptr, base - rank)
+        .arg(QString::number(standard), QString::number(base), QString::number(rank), cond);
 }
 
 QString undeterminedText(const LogIdentificationResult &r)

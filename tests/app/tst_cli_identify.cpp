@@ -3,6 +3,7 @@
 // the files it writes, and the bad inputs it refuses without writing anything.
 #include "../support/NumericAssert.h"
 #include "../support/SharedData.h"
+#include "../support/SyntheticRobotLog.h"
 #include "../support/ToolRun.h"
 #include "identify/LogFit.h"
 #include "identify/UniformLog.h"
@@ -13,6 +14,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -81,6 +83,7 @@ private slots:
     void doublePendulum_printsTheLibrarysFiguresAndWritesItsFit();
     void kuka_identifiedModelPredictsTheHeldOutRunBetterThanItsUrdf();
     void plotsAndReport_drawEveryJointOfEveryValidationLog();
+    void pandaLog1kHz_gapsAndStaleRows_summaryAndReportNameTheRobotFile();
     void badInput_exitsWithMessageAndWritesNothing_data();
     void badInput_exitsWithMessageAndWritesNothing();
     void help_listsTheCommandAndItsOptions();
@@ -220,6 +223,67 @@ void TestCliIdentify::plotsAndReport_drawEveryJointOfEveryValidationLog()
     QCOMPARE(bytes.count("/Type /Page\n"), 3);
 }
 
+void TestCliIdentify::pandaLog1kHz_gapsAndStaleRows_summaryAndReportNameTheRobotFile()
+{
+    // A Panda's 1 kHz controller log as issue 22 met it: 8.5 ms gaps every 5 s and 1131 stale
+    // rows; the robot given as a URDF file of another name than the URDF's robot.
+    QTemporaryDir dir;
+    const ChainModel model = test::pandaLogModel();
+    const Eigen::VectorXd truth = test::pandaLogTruth(model);
+    test::SyntheticLogOptions options;
+    const test::SyntheticLog training = test::syntheticPandaLog(model, truth, options);
+    options.seconds = 11.0;
+    options.seed = 2;
+    const test::SyntheticLog validation = test::syntheticPandaLog(model, truth, options);
+    const QList<QPair<QString, QByteArray>> files = {
+        {QStringLiteral("run1.csv"),
+         test::syntheticLogCsv(training, true, test::pickStaleRows(training, 1131, 7))},
+        {QStringLiteral("run2.csv"), test::syntheticLogCsv(validation, true)}};
+    for (const auto &[name, csv] : files) {
+        QFile file(dir.filePath(name));
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(csv) == csv.size());
+    }
+    QVERIFY(QFile::copy(QStringLiteral(":/robots/panda.urdf"),
+                        dir.filePath(QStringLiteral("fr3_lab.urdf"))));
+    const test::ToolRun r =
+        cli({QStringLiteral("identify"), QStringLiteral("--robot"), QStringLiteral("fr3_lab.urdf"),
+             QStringLiteral("--log"), QStringLiteral("run1.csv"), QStringLiteral("--validate"),
+             QStringLiteral("run2.csv"), QStringLiteral("--report"), QStringLiteral("report.pdf")},
+            dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QString out = r.out;
+    out.replace(QStringLiteral("\n  "), QStringLiteral(" ")); // sentences are wrapped at 100
+    const QStringList expected = {
+        QStringLiteral("fr3_lab.urdf (URDF robot \"panda\") in %1, 7 moving joints.")
+            .arg(QDir::toNativeSeparators(QFileInfo(dir.path()).canonicalFilePath())),
+        QStringLiteral("Fitted to 1 log, "), // a proper plural
+        QStringLiteral("run1.csv: 1131 stale rows (values repeated under a new time stamp) "
+                       "treated as missing."),
+        QStringLiteral("Of the 91 standard parameters, any data could determine at most "),
+        QStringLiteral("combinations (the base parameters); these logs determine "),
+        QStringLiteral(" base parameters")};
+    for (const QString &part : expected)
+        QVERIFY2(out.contains(part), qPrintable(part + QStringLiteral("\n") + r.out));
+    for (const QString &line : r.out.split(QLatin1Char('\n')))
+        QVERIFY2(line.size() <= 100 || line.startsWith(QLatin1String("joint")), qPrintable(line));
+    QVERIFY2(r.err.contains(QStringLiteral("fitting 91 standard parameters to 1 log\n")),
+             qPrintable(r.err));
+    QCOMPARE(readValidationTable(r.out).jointRows, 7);
+
+    // The report's title names the robot as the user gave it (PDF strings are UTF-16BE).
+    QFile pdf(dir.filePath(QStringLiteral("report.pdf")));
+    QVERIFY(pdf.open(QIODevice::ReadOnly));
+    const QByteArray bytes = pdf.readAll();
+    const auto utf16 = [](const QString &text) {
+        QByteArray b;
+        for (const QChar c : text)
+            b += char(c.unicode() >> 8), b += char(c.unicode() & 0xff);
+        return b;
+    };
+    QVERIFY(bytes.contains(utf16(QStringLiteral("learnid: fr3_lab.urdf "))));
+    QVERIFY(!bytes.contains(utf16(QStringLiteral("learnid: panda "))));
+}
+
 void TestCliIdentify::badInput_exitsWithMessageAndWritesNothing_data()
 {
     QTest::addColumn<QByteArray>("log");
@@ -251,6 +315,34 @@ void TestCliIdentify::badInput_exitsWithMessageAndWritesNothing_data()
     QTest::newRow("unknown robot")
         << good << QStringList{QStringLiteral("--robot"), QStringLiteral("no-such-robot")} << 2
         << QStringList{QStringLiteral("--robot: 'no-such-robot' is neither a URDF file")};
+    // A 1 kHz log with a 30 ms gap: three times what the fit's filter tolerates by default.
+    const auto oneKilohertz = [](int from, int to, int staleFrom, int staleTo) {
+        QByteArray csv = "t,q1,q2,dq1,dq2,tau1,tau2\n";
+        for (int k = 0; k < 60; ++k) {
+            if (k >= from && k < to)
+                continue;
+            const int v = k >= staleFrom && k < staleTo ? staleFrom - 1 : k;
+            csv += QByteArray::number(k * 0.001) + ',' + QByteArray::number(0.001 * v) + ",0.2," +
+                   QByteArray::number(v) + ",1," + QByteArray::number(0.5 * v) + ",2\n";
+        }
+        return csv;
+    };
+    QTest::newRow("gap beyond the filter's bound")
+        << oneKilohertz(20, 49, -1, -1) << QStringList() << 2
+        << QStringList{QStringLiteral("log.csv: line 22: a gap of 30 ms after the sample at t = "
+                                      "0.019 s, more than the 10 ms allowed (--max-gap; by "
+                                      "default half the time constant 1/rho of the fit's filter, "
+                                      "rho = 50 rad/s")};
+    QTest::newRow("stale rows leaving a gap")
+        << oneKilohertz(-1, -1, 20, 35) << QStringList() << 2
+        << QStringList{QStringLiteral("log.csv: line 37: a gap of 16 ms after the sample at t = "
+                                      "0.019 s (lines 22 to 36 are stale: 15 rows that repeated "
+                                      "the values of line 21 under new time stamps and count as "
+                                      "missing), more than the 10 ms allowed")};
+    QTest::newRow("--max-gap of the user")
+        << oneKilohertz(20, 49, -1, -1)
+        << QStringList{QStringLiteral("--max-gap"), QStringLiteral("25")} << 2
+        << QStringList{QStringLiteral("more than the 25 ms allowed (--max-gap)")};
     // The parameter file records controller gains; the defaults are the paper arm's two.
     QTest::newRow("gains for another robot")
         << good << QStringList{QStringLiteral("--robot"), QStringLiteral("puma560")} << 2

@@ -50,14 +50,14 @@ inline Eigen::VectorXd pandaLogTruth(const ChainModel &model, quint64 seed = 3)
 
 struct SyntheticLogOptions
 {
-    double seconds = 21.0;      ///< [s] length
-    double period = 0.001;      ///< [s] the logger's tick
-    double jitter = 0.05e-3;    ///< [s] stamps uniform within +-jitter of the tick
-    double gapEvery = 5.0;      ///< [s] where the gaps are (t = 5, 10, ... s); 0: none
-    double gapLength = 8.5e-3;  ///< [s] from the stamp before a gap to the one after
-    double torqueNoise = 0.05;  ///< [N m] RMS of the white noise on every torque
+    double seconds = 21.0;       ///< [s] length
+    double period = 0.001;       ///< [s] the logger's tick
+    double jitter = 0.05e-3;     ///< [s] stamps uniform within +-jitter of the tick
+    double gapEvery = 5.0;       ///< [s] where the gaps are (t = 5, 10, ... s); 0: none
+    double gapLength = 8.5e-3;   ///< [s] from the stamp before a gap to the one after
+    double torqueNoise = 0.05;   ///< [N m] RMS of the white noise on every torque
     double velocityNoise = 2e-3; ///< [rad/s] RMS of the white noise on every velocity
-    unsigned seed = 1;          ///< the motion, jitter and noise
+    unsigned seed = 1;           ///< the motion, jitter and noise
 };
 
 /// A clean recording and where its logger's faults would fall.
@@ -172,7 +172,9 @@ inline QByteArray syntheticLogCsv(const SyntheticLog &log, bool withGaps,
         for (int j = 1; j <= n; ++j)
             csv += ',' + QByteArray(name) + QByteArray::number(j);
     csv += '\n';
-    const auto number = [](double v) { return QByteArray::number(v, 'g', 17); };
+    const auto number = [](double v) {
+        return QByteArray::number(v, 'g', 17);
+    };
     Eigen::Index values = 0; // the row whose values the next row writes
     size_t nextStale = 0;
     for (Eigen::Index k = 0; k < log.samples(); ++k) {
