@@ -107,8 +107,8 @@ void TestTorqueFitPlot::pandaDialog_everyJointsAxesReadable_summaryAsTheCliWords
     const QString trainingPath = dir.filePath(QStringLiteral("run1.csv"));
     const QString validationPath = dir.filePath(QStringLiteral("run2.csv"));
     for (const auto &[path, csv] :
-         {std::pair{trainingPath, test::syntheticLogCsv(training, true,
-                                                        test::pickStaleRows(training, 300, 5))},
+         {std::pair{trainingPath,
+                    test::syntheticLogCsv(training, true, test::pickStaleRows(training, 300, 5))},
           std::pair{validationPath, test::syntheticLogCsv(validation, true)}}) {
         QFile file(path);
         QVERIFY(file.open(QIODevice::WriteOnly) && file.write(csv) == csv.size());
@@ -117,9 +117,9 @@ void TestTorqueFitPlot::pandaDialog_everyJointsAxesReadable_summaryAsTheCliWords
     QSettings settings(dir.filePath(QStringLiteral("learnid.ini")), QSettings::IniFormat);
     UiSettings uiSettings(&settings);
     RecordedDataDialog dialog(&uiSettings);
-    QHash<RecordedDataPath, QStringList> paths{{RecordedDataPath::TrainingLogs, {trainingPath}},
-                                               {RecordedDataPath::ValidationLogs,
-                                                {validationPath}}};
+    QHash<RecordedDataPath, QStringList> paths{
+        {RecordedDataPath::TrainingLogs, {trainingPath}},
+        {RecordedDataPath::ValidationLogs, {validationPath}}};
     dialog.setPathChooser(
         [&paths](RecordedDataPath purpose, const QString &) { return paths.value(purpose); });
     dialog.resize(1440, 940);
@@ -128,8 +128,7 @@ void TestTorqueFitPlot::pandaDialog_everyJointsAxesReadable_summaryAsTheCliWords
     QVERIFY(robot);
     robot->setCurrentIndex(robot->findData(QStringLiteral("panda")));
     for (const char *name : {"addTrainingLogsButton", "addValidationLogsButton", "identifyButton"})
-        QTest::mouseClick(dialog.findChild<QAbstractButton *>(QLatin1String(name)),
-                          Qt::LeftButton);
+        QTest::mouseClick(dialog.findChild<QAbstractButton *>(QLatin1String(name)), Qt::LeftButton);
     QSignalSpy finished(&dialog, &RecordedDataDialog::identificationFinished);
     QVERIFY(finished.wait(60000));
     QVERIFY2(finished.constFirst().at(0).toBool(), qPrintable(dialog.messageBar()->text()));
@@ -159,8 +158,8 @@ void TestTorqueFitPlot::pandaDialog_everyJointsAxesReadable_summaryAsTheCliWords
     // The summary holds the sentences learnid-cli prints (LogIdentificationSummary), escaped.
     const LogIdentificationSummary s = summarizeLogIdentification(*dialog.result());
     const QString summary = dialog.findChild<QLabel *>(QStringLiteral("identifySummary"))->text();
-    for (const QString &sentence : QStringList{s.robot, s.logs, s.directions, s.undetermined} +
-                                       s.readings)
+    for (const QString &sentence :
+         QStringList{s.robot, s.logs, s.directions, s.undetermined} + s.readings)
         QVERIFY2(summary.contains(sentence.toHtmlEscaped()), qPrintable(sentence));
     QVERIFY(s.readings.constFirst().startsWith(QStringLiteral("run1.csv: 300 stale row")));
     QCOMPARE(s.robot, QStringLiteral("panda (built-in), 7 moving joint(s)."));
@@ -201,11 +200,11 @@ void TestTorqueFitPlot::smallAndOffsetTorques_getTicksOfTheirOwn()
         plot.setData(names, time, measured, identified, given);
         QTest::qWait(20);
         if (!snapshots.isEmpty())
-            plot.grab().save(QDir(snapshots).filePath(
-                QStringLiteral("torque-plot-%1-%2.png")
-                    .arg(QString::fromLatin1(QTest::currentDataTag()))
-                    .arg(size.height())
-                    .replace(QLatin1Char(' '), QLatin1Char('-'))));
+            plot.grab().save(
+                QDir(snapshots).filePath(QStringLiteral("torque-plot-%1-%2.png")
+                                             .arg(QString::fromLatin1(QTest::currentDataTag()))
+                                             .arg(size.height())
+                                             .replace(QLatin1Char(' '), QLatin1Char('-'))));
         for (int j = 0; j < n; ++j) {
             const QString problem = unreadable(plot.chartView(j));
             QVERIFY2(problem.isEmpty(), qPrintable(QStringLiteral("%1 px high, joint %2: %3")
@@ -219,8 +218,7 @@ void TestTorqueFitPlot::smallAndOffsetTorques_getTicksOfTheirOwn()
         QVERIFY(axis);
         const double low = std::min({given.row(n - 1).minCoeff(), measured.row(n - 1).minCoeff(),
                                      identified.row(n - 1).minCoeff()});
-        const double high = std::max({given.row(n - 1).maxCoeff(),
-                                      measured.row(n - 1).maxCoeff(),
+        const double high = std::max({given.row(n - 1).maxCoeff(), measured.row(n - 1).maxCoeff(),
                                       identified.row(n - 1).maxCoeff()});
         QVERIFY(axis->min() <= low && axis->max() >= high);
         QVERIFY2(high - low >= 0.3 * (axis->max() - axis->min()),
