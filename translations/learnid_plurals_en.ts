@@ -4,7 +4,15 @@
 <context>
     <name>LogIdentificationSummary</name>
     <message numerus="yes">
-        <location filename="../core/service/LogIdentificationSummary.cpp" line="+38"/>
+        <location filename="../core/service/LogIdentificationSummary.cpp" line="+26"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n stay near the URDF&apos;s values.</source>
+        <translation>
+            <numerusform>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n direction stays near the URDF&apos;s values.</numerusform>
+            <numerusform>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n stay near the URDF&apos;s values.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12"/>
         <source>%n of the %1 base parameters are mostly undetermined by these logs (less than half determined) and kept near the URDF&apos;s values: %2.</source>
         <translation>
             <numerusform>%n of the %1 base parameters is mostly undetermined by these logs (less than half determined) and kept near the URDF&apos;s values: %2.</numerusform>

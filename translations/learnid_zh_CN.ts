@@ -1164,7 +1164,7 @@
 <context>
     <name>LogIdentification</name>
     <message>
-        <location filename="../core/service/LogIdentification.cpp" line="+78"/>
+        <location filename="../core/service/LogIdentification.cpp" line="+80"/>
         <source>identification cancelled; nothing was produced</source>
         <translation>辨识已取消；未生成任何结果</translation>
     </message>
@@ -1195,9 +1195,98 @@
     </message>
 </context>
 <context>
+    <name>LogIdentificationSummary</name>
+    <message>
+        <location filename="../core/service/LogIdentificationSummary.cpp" line="+21"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine all %2 (condition %3).</source>
+        <translation>在 %1 个标准参数中，任何数据至多能确定 %2 个组合（即基参数）；这些日志确定了全部 %2 个（条件数 %3）。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n stay near the URDF&apos;s values.</source>
+        <translation>
+            <numerusform>在 %1 个标准参数中，任何数据至多能确定 %2 个组合（即基参数）；这些日志确定了这 %2 个方向中的 %3 个（条件数 %4），其余 %n 个保持在 URDF 值附近。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12"/>
+        <source>%n of the %1 base parameters are mostly undetermined by these logs (less than half determined) and kept near the URDF&apos;s values: %2.</source>
+        <translation>
+            <numerusform>%1 个基参数中有 %n 个基本未被这些日志确定（确定的部分不到一半），保持在 URDF 值附近：%2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs.</source>
+        <translation>%1 个基参数中没有一个基本未被这些日志确定。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs: the %n direction(s) they miss are shared among several.</source>
+        <translation>
+            <numerusform>%1 个基参数中没有一个基本未被这些日志确定：日志未确定的 %n 个方向分散在多个基参数上。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n stale row(s) (values repeated under a new time stamp) treated as missing</source>
+        <translation>
+            <numerusform>%n 行过时数据（在新时间戳下重复了之前的值）按缺失处理</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n row(s) written twice (the same time stamp and values) dropped</source>
+        <translation>
+            <numerusform>%n 行重复写入的数据（时间戳和值都相同）已丢弃</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2.</source>
+        <translation>%1：%2。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 (URDF robot &quot;%2&quot;)</source>
+        <translation>%1（URDF 机器人“%2”）</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>%1 in %2, %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1，位于 %2，%n 个可动关节。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 (built-in), %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1（内置），%n 个可动关节。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Fitted to %n log(s), %1 samples; %2.</source>
+        <translation>
+            <numerusform>用 %n 个日志、%1 个采样点拟合；%2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the consistent fit converged</source>
+        <translation>一致拟合已收敛</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the consistent fit stopped at its step limit</source>
+        <translation>一致拟合在步数上限处停止</translation>
+    </message>
+</context>
+<context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+28"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
         <source>Reading the robot %1…</source>
         <translation>正在读取机器人 %1…</translation>
     </message>
@@ -1224,49 +1313,17 @@
         <translation>正在预测验证日志 %1/%2：%3…</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; (%2), %3 moving joints.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt;（%2），%3 个可动关节。&lt;/p&gt;</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+4"/>
-        <source>&lt;p&gt;Fitted to %n log(s), %1 samples: %2 of %3 standard-parameter directions determined (condition %4); %5.&lt;/p&gt;</source>
-        <translation>
-            <numerusform>&lt;p&gt;用 %n 个日志、%1 个采样点拟合：%3 个标准参数方向中确定了 %2 个（条件数 %4）；%5。&lt;/p&gt;</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the consistent fit converged</source>
-        <translation>一致拟合已收敛</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the consistent fit stopped at its step limit</source>
-        <translation>一致拟合在步数上限处停止</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+16"/>
         <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;一致性：&lt;/b&gt;&lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters:&lt;/b&gt; none of %1.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;未确定的基参数：&lt;/b&gt;无（共 %1 个）。&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters&lt;/b&gt; (kept near the URDF&apos;s values), %1 of %2: %3&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;未确定的基参数&lt;/b&gt;（保持在 URDF 值附近），%2 个中有 %1 个：%3&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;训练残差&lt;/b&gt;，各关节 RMS [N m]：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+12"/>
         <source>Identified; no validation log. Accept the result to export it.</source>
         <translation>已辨识；没有验证日志。接受结果后即可导出。</translation>
     </message>
@@ -1870,7 +1927,7 @@
         <translation>%1：为有 %3 个关节的机器人给出了 %2 个关节类型</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>expected %1 fields (%2), got %3</source>
         <translation>应有 %1 个字段（%2），实际为 %3</translation>
     </message>
@@ -1905,14 +1962,21 @@
         <translation>时间 %1 与第 %2 行的相同，但数值不同（%3：那里为 %4，这里为 %5）；只有完全重复的行才会被丢弃</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>the file holds no header line; expected one naming the columns %1</source>
         <translation>文件中没有表头行；应有一行表头列出各列 %1</translation>
     </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source> (and %n stale row(s): values repeated under a new time stamp, treated as missing)</source>
+        <translation>
+            <numerusform>（另有 %n 行过时数据：在新时间戳下重复了之前的值，按缺失处理）</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+7"/>
-        <source>%1 samples after the header on line %2; a log needs at least %3</source>
-        <translation>第 %2 行的表头之后有 %1 个采样点；日志至少需要 %3 个</translation>
+        <location line="+4"/>
+        <source>%1 samples after the header on line %2%3; a log needs at least %4</source>
+        <translation>第 %2 行的表头之后有 %1 个采样点%3；日志至少需要 %4 个</translation>
     </message>
 </context>
 <context>
@@ -2356,7 +2420,7 @@
         <translation>simulation.realUrdf：关节 %1（%2）的位置与机器人 URDF 中的不同：真实机器人只能在惯量和摩擦上有所不同</translation>
     </message>
     <message>
-        <location filename="../core/identify/UniformLog.cpp" line="+123"/>
+        <location filename="../core/identify/UniformLog.cpp" line="+145"/>
         <source>%1: the time stamps are off the nominal times t0 + k T (T = %2 ms) by %3 ms at %4 (t = %5 s) and by %6 ms at %7 (t = %8 s), more than half a step apart: the samples are not equidistant (one lost or added?), so the nominal times do not apply</source>
         <translation>%1：时间戳偏离名义时刻 t0 + k T（T = %2 ms），在%4（t = %5 s）处偏离 %3 ms，在%7（t = %8 s）处偏离 %6 ms，两者相差超过半个步长：采样点不等距（丢失或多出了一个？），因此名义时刻不适用</translation>
     </message>
@@ -2502,7 +2566,7 @@
 <context>
     <name>UniformLog</name>
     <message>
-        <location filename="../core/identify/UniformLog.cpp" line="-78"/>
+        <location filename="../core/identify/UniformLog.cpp" line="-99"/>
         <source>sample %1</source>
         <translation>采样点 %1</translation>
     </message>
@@ -2512,7 +2576,17 @@
         <translation>第 %1 行</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
+        <source> (line %1 is stale: it repeated the values of line %2 under a new time stamp and counts as missing)</source>
+        <translation>（第 %1 行是过时数据：它在新时间戳下重复了第 %2 行的值，按缺失计）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> (lines %1 to %2 are stale: %3 rows that repeated the values of line %4 under new time stamps and count as missing)</source>
+        <translation>（第 %1 至 %2 行是过时数据：%3 行在新时间戳下重复了第 %4 行的值，按缺失计）</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1: a log of %2 times, %3 x %4 positions, %5 x %6 velocities, %7 x %8 torques and %9 line numbers; expected n x N for all</source>
         <translation>%1：日志有 %2 个时间、%3 x %4 个位置、%5 x %6 个速度、%7 x %8 个力矩和 %9 个行号；全部应为 n x N</translation>
     </message>
@@ -2537,14 +2611,29 @@
         <translation>%1：日志跨度为 %2 到 %3 s，太长，无法重采样</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+74"/>
         <source>%1: the period (%2 s) and the largest gap (%3 s) must be zero (the default) or positive</source>
         <translation>%1：周期（%2 s）和最大间隔（%3 s）必须为零（默认）或正数</translation>
     </message>
     <message>
-        <location line="+18"/>
-        <source>%1: a gap of %2 ms after the sample at t = %3 s, more than the %4 ms allowed (--max-gap)</source>
-        <translation>%1：t = %3 s 处的采样点之后有 %2 ms 的间隔，超过允许的 %4 ms（--max-gap）</translation>
+        <location line="+5"/>
+        <source>%1: the fit&apos;s filter bandwidth rho (%2 rad/s) must be positive</source>
+        <translation>%1：拟合滤波器的带宽 rho（%2 rad/s）必须为正</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 ms allowed (--max-gap)</source>
+        <translation>允许的 %1 ms（--max-gap）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 ms allowed (--max-gap; by default half the time constant 1/rho of the fit&apos;s filter, rho = %2 rad/s, and at least %3 of the log&apos;s steps)</source>
+        <translation>允许的 %1 ms（--max-gap；默认为拟合滤波器时间常数 1/rho 的一半，rho = %2 rad/s，且至少为日志步长的 %3 倍）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: a gap of %2 ms after the sample at t = %3 s%4, more than the %5</source>
+        <translation>%1：t = %3 s 处的采样点之后有 %2 ms 的间隔%4，超过%5</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -2710,7 +2799,7 @@
 <context>
     <name>learnid-cli</name>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+41"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+42"/>
         <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
         <translation>--robot：&apos;%1&apos; 既不是 URDF 文件，也不是内置机器人（%2）</translation>
     </message>
@@ -2720,22 +2809,29 @@
         <translation>--export：参数文件会记录控制器的增益，而默认增益适用于 %1 个关节，机器人有 %2 个：请用 --scenario FILE 给出增益（在其 controller 部分）</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+62"/>
+        <source>robot %1: %2, %3 moving joints</source>
+        <translation>机器人 %1：%2，%3 个可动关节</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>learnid-cli: reading %1</source>
         <translation>learnid-cli：正在读取 %1</translation>
     </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>fitting %1 standard parameters to %n log(s)</source>
+        <translation>
+            <numerusform>正在用 %n 个日志拟合 %1 个标准参数</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+35"/>
+        <location line="+23"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>由 learnid-cli %1 identify 于 %2 辨识</translation>
     </message>
     <message>
-        <location line="-44"/>
-        <source>robot %1 (%2): %3 moving joints</source>
-        <translation>机器人 %1（%2）：%3 个可动关节</translation>
-    </message>
-    <message>
-        <location line="-38"/>
+        <location line="-75"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1：预测力矩与测量力矩</translation>
     </message>
@@ -2745,17 +2841,7 @@
         <translation>learnid：根据日志辨识 %1</translation>
     </message>
     <message>
-        <location line="+41"/>
-        <source>fitting %1 standard parameters to %2 logs</source>
-        <translation>正在用 %2 个日志拟合 %1 个标准参数</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>base parameters the logs leave undetermined (kept near the URDF&apos;s values): %1</source>
-        <translation>日志未能确定的基参数（保持在 URDF 值附近）：%1</translation>
-    </message>
-    <message>
-        <location line="+25"/>
+        <location line="+71"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
         <location filename="../app/cli/RunCommand.cpp" line="+107"/>
@@ -2969,7 +3055,7 @@
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+208"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+210"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -3165,7 +3251,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-79"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-72"/>
         <location filename="../app/cli/RunCommand.cpp" line="+7"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
@@ -3224,7 +3310,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-163"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-165"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms：未知项 &apos;%1&apos;；可用的项为 armature、viscous、coulomb 和 offset，或 none</translation>
     </message>
@@ -3295,11 +3381,11 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+5"/>
-        <source>Longest time step allowed in a log [ms]; default 5 sample periods.</source>
-        <translation>日志中允许的最长时间步长 [ms]；默认 5 个采样周期。</translation>
+        <source>Longest time step allowed in a log [ms]; default half the time constant 1/rho of the fit&apos;s filter (10 ms at rho 50), at least 2.5 sample periods.</source>
+        <translation>日志中允许的最长时间步长 [ms]；默认为拟合滤波器时间常数 1/rho 的一半（rho 为 50 时为 10 ms），至少 2.5 个采样周期。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
         <translation>运动链的基座连杆；默认：URDF 的根连杆。</translation>
     </message>
@@ -3365,7 +3451,7 @@ and compare the result with the URDF as given on --validate logs.
         <translation>&apos;identify&apos; 至少需要一个 --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+23"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
         <location line="+16"/>
         <source>name</source>
         <translation>名称</translation>
@@ -3376,33 +3462,12 @@ and compare the result with the URDF as given on --validate logs.
         <translation>关节</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>fit: %1 logs, %2 samples; %3 of %4 standard-parameter directions determined (condition %5)
-fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %8
-</source>
-        <translation>拟合：%1 个日志，%2 个采样点；%4 个标准参数方向中确定了 %3 个（条件数 %5）
-拟合：%7 个基参数中有 %6 个未确定（保持在 URDF 值附近）；%8
-</translation>
+        <location line="+33"/>
+        <source>Identified parameters: %1.</source>
+        <translation>辨识出的参数：%1。</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>consistent fit converged</source>
-        <translation>一致拟合已收敛</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>consistent fit stopped at its step limit</source>
-        <translation>一致拟合在步数上限处停止</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>identified parameters: %1
-</source>
-        <translation>辨识出的参数：%1
-</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>training logs: residual of the fit</source>
         <translation>训练日志：拟合残差</translation>
     </message>
@@ -3428,7 +3493,7 @@ fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../app/cli/TorquePlotPng.cpp" line="+124"/>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="+154"/>
         <source>URDF as given</source>
         <translation>给定的 URDF</translation>
     </message>
@@ -6045,7 +6110,7 @@ ratio %</source>
 <context>
     <name>learnid::TorqueFitPlot</name>
     <message>
-        <location filename="../ui/TorqueFitPlot.cpp" line="+79"/>
+        <location filename="../ui/TorqueFitPlot.cpp" line="+93"/>
         <source>Identify to see the predicted against the measured torque.</source>
         <translation>辨识后即可查看预测力矩与测量力矩的对比。</translation>
     </message>
@@ -6070,7 +6135,7 @@ ratio %</source>
         <translation>给定的 URDF</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+83"/>
         <source>All joints</source>
         <translation>所有关节</translation>
     </message>
