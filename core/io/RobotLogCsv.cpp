@@ -207,7 +207,7 @@ LogColumns parseLogColumns(const QString &spec)
 }
 
 RobotLog readRobotLog(const QByteArray &csv, const QString &source, int joints,
-                      const LogColumns &columns, const QList<bool> &angular)
+                      const LogColumns &columns, const QList<bool> &angular, StaleRows stale)
 {
     if (joints < 1)
         throw Error(Text::tr("%1: a log is read for 1 joint or more, not %2")
@@ -310,7 +310,7 @@ RobotLog readRobotLog(const QByteArray &csv, const QString &source, int joints,
                                       describeNumber(*differs.second),
                                       describeNumber(*differs.first)));
             }
-            if (differs.first == row.end()) {
+            if (differs.first == row.end() && stale == StaleRows::Drop) {
                 log.staleRows.push_back(lineNumber); // old values under a new time stamp
                 lastRead.front() = row.front();
                 lastLine = lineNumber;

@@ -60,8 +60,14 @@ constexpr double maxLoggedAngularVelocity = 100.0;
 /// "<source>: line <L>, column <C>
 /// (<name>): ..." for a wrong number of fields, a field that is not a finite number, a time that
 /// does not increase, a repeated time with other values, and degrees where radians are expected.
+/// What readRobotLog() does with stale rows: Drop them (a logger's log, the default), or Keep
+/// them as samples (a log that must hold every sample of a known grid, written by the controller
+/// itself: a noise-free simulation at rest repeats its values exactly, io/ControllerLogCsv.h).
+enum class StaleRows { Drop, Keep };
+
 RobotLog readRobotLog(const QByteArray &csv, const QString &source, int joints,
-                      const LogColumns &columns = {}, const QList<bool> &angular = {});
+                      const LogColumns &columns = {}, const QList<bool> &angular = {},
+                      StaleRows stale = StaleRows::Drop);
 
 /// readFile() then readRobotLog() with the path as the source; a missing or unreadable file
 /// throws Error naming the path and the reason.

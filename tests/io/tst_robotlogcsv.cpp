@@ -153,6 +153,12 @@ void TestRobotLogCsv::staleRows_areDroppedAndListed_apartFromRepeats()
     QCOMPARE(positions.rows, std::vector<int>({2, 3, 7, 9}));
     QCOMPARE(positions.repeatedSamples, 1);
 
+    // Kept on request (a controller's own log of a plan): every row a sample, the repeat too.
+    const RobotLog kept = readRobotLog(csv, source, 1, {}, {}, StaleRows::Keep);
+    QCOMPARE(kept.rows, std::vector<int>({2, 3, 4, 5, 7, 8, 9}));
+    QVERIFY(kept.staleRows.empty());
+    QCOMPARE(kept.repeatedSamples, 1);
+
     // A joint whose values stay is not enough: every joint's must repeat.
     const QByteArray twoJoints = "t,q1,q2,tau1,tau2\n0,1,2,3,4\n0.01,1,2,3,4.5\n"
                                  "0.02,1,2.5,3,4.5\n0.03,1,2.5,3,4.5\n0.04,1,2.6,3,4.5\n";
