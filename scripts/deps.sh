@@ -15,6 +15,7 @@ LEARNID_PACKAGES=(
     clang libclang-rt-14-dev  # scripts/fuzz: libFuzzer and the sanitizer runtimes of clang
     clang-format  # scripts/format --check (CI)
     liburdfdom-dev  # URDF robots (core/model/UrdfChain)
+    libassimp-dev  # URDF mesh files' bounding boxes (core/model/MeshBounds)
     liborocos-kdl-dev  # tests only: Orocos KDL, the dynamics oracle of tst_chaindynamics
 )
 

@@ -44,6 +44,24 @@
     </message>
 </context>
 <context>
+    <name>BoundingVolume</name>
+    <message>
+        <location filename="../core/model/BoundingVolume.cpp" line="+55"/>
+        <source>A bounding box needs its upper corner above its lower one.</source>
+        <translation>Ein Hüllquader braucht seine obere Ecke über der unteren.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>A link without positive mass has no inertia ellipsoid.</source>
+        <translation>Ein Glied ohne positive Masse hat kein Trägheitsellipsoid.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The inertia ellipsoid&apos;s margin must be above 1.</source>
+        <translation>Der Zuschlag des Trägheitsellipsoids muss über 1 liegen.</translation>
+    </message>
+</context>
+<context>
     <name>BusLoad</name>
     <message>
         <location filename="../core/can/BusLoad.cpp" line="+41"/>
@@ -470,7 +488,7 @@
         <translation>%1: das Log gehört zu Plan %2, nicht zu Plan %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>sample %1 (t = %2 s) is beyond the plan&apos;s %3 samples, the last at t = %4 s</source>
         <translation>Abtastwert %1 (t = %2 s) liegt hinter den %3 Abtastwerten des Plans, deren letzter bei t = %4 s liegt</translation>
     </message>
@@ -758,7 +776,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+86"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+128"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
     </message>
@@ -776,6 +794,11 @@
         <location line="+4"/>
         <source>physically consistent: every link a real body</source>
         <translation>physikalisch konsistent: jedes Glied ein realer Körper</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>link %1 (%2): not a plausible body: %3</source>
+        <translation>Glied %1 (%2): kein plausibler Körper: %3</translation>
     </message>
 </context>
 <context>
@@ -1136,7 +1159,7 @@
 <context>
     <name>LogFit</name>
     <message>
-        <location filename="../core/identify/LogFit.cpp" line="+140"/>
+        <location filename="../core/identify/LogFit.cpp" line="+141"/>
         <source>%1 has %2 joints, the robot %3</source>
         <translation>%1 hat %2 Gelenke, der Roboter %3</translation>
     </message>
@@ -1151,12 +1174,12 @@
         <translation>keine Abtastwerte für die Anpassung</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>the prior share must lie between 0 and 1</source>
         <translation>der Prior-Anteil muss zwischen 0 und 1 liegen</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+98"/>
         <source>%1 does not fit the robot&apos;s joints or parameters</source>
         <translation>%1 passt nicht zu den Gelenken oder Parametern des Roboters</translation>
     </message>
@@ -1164,7 +1187,7 @@
 <context>
     <name>LogIdentification</name>
     <message>
-        <location filename="../core/service/LogIdentification.cpp" line="+80"/>
+        <location filename="../core/service/LogIdentification.cpp" line="+81"/>
         <source>identification cancelled; nothing was produced</source>
         <translation>Identifikation abgebrochen; nichts wurde erzeugt</translation>
     </message>
@@ -1179,17 +1202,17 @@
         <translation>eingebauter Roboter %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>no log to identify from: add a training log</source>
         <translation>kein Log zum Identifizieren: ein Trainings-Log hinzufügen</translation>
     </message>
     <message>
-        <location filename="../core/service/LogIdentificationExport.cpp" line="+35"/>
+        <location filename="../core/service/LogIdentificationExport.cpp" line="+29"/>
         <source>%1 (%2), identified from the logs %3</source>
         <translation>%1 (%2), identifiziert aus den Logs %3</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+32"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>die Reglerverstärkungen, die die Parameterdatei festhält, gelten für %1 Gelenke, der Roboter hat %2</translation>
     </message>
@@ -1332,7 +1355,12 @@
         <translation>&lt;p&gt;&lt;b&gt;Trainingsresiduum&lt;/b&gt;, RMS pro Gelenk [N m]: %1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+8"/>
+        <source>&lt;p style=&quot;color:#8a5300&quot;&gt;&lt;b&gt;Warning:&lt;/b&gt; the URDF as a real robot: %1&lt;/p&gt;</source>
+        <translation>&lt;p style=&quot;color:#8a5300&quot;&gt;&lt;b&gt;Warnung:&lt;/b&gt; das URDF als realer Roboter: %1&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Identified; no validation log. Accept the result to export it.</source>
         <translation>Identifiziert; kein Validierungs-Log. Das Ergebnis akzeptieren, um es zu exportieren.</translation>
     </message>
@@ -1438,9 +1466,106 @@
     </message>
 </context>
 <context>
+    <name>MeshBounds</name>
+    <message>
+        <location filename="../core/model/MeshBounds.cpp" line="+67"/>
+        <source>not readable as a mesh (%1)</source>
+        <translation>nicht als Netz lesbar (%1)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>has no vertices</source>
+        <translation>hat keine Eckpunkte</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>names no package</source>
+        <translation>nennt kein Paket</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>package &quot;%1&quot; not found (ROS_PACKAGE_PATH, the URDF&apos;s folder)</source>
+        <translation>Paket „%1“ nicht gefunden (ROS_PACKAGE_PATH, Ordner des URDF)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>a relative name without the URDF&apos;s folder</source>
+        <translation>ein relativer Name ohne den Ordner des URDF</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+11"/>
+        <source>no such file</source>
+        <translation>keine solche Datei</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>empty</source>
+        <translation>leer</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>larger than 256 MB, not read</source>
+        <translation>größer als 256 MB, nicht gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>ModelCheck</name>
+    <message>
+        <location filename="../core/model/ModelCheck.cpp" line="+25"/>
+        <source>link %1 (%2)</source>
+        <translation>Glied %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>joint %1 (%2)</source>
+        <translation>Gelenk %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: its smallest principal moment of inertia about the centre of mass, %2 kg m^2, is below %3 % of the CAD link&apos;s smallest (%4 kg m^2): a point mass or a needle, not a link</source>
+        <translation>%1: sein kleinstes Hauptträgheitsmoment um den Schwerpunkt, %2 kg m^2, liegt unter %3 % des kleinsten des CAD-Glieds (%4 kg m^2): eine Punktmasse oder Nadel, kein Glied</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: its principal moments %2, %3 and %4 kg m^2 give I1 + I2 = %5 I3, below %6 I3 (a flat plate at best)</source>
+        <translation>%1: seine Hauptträgheitsmomente %2, %3 und %4 kg m^2 ergeben I1 + I2 = %5 I3, unter %6 I3 (bestenfalls eine flache Platte)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: its centre of mass lies outside its bounding volume (%2)</source>
+        <translation>%1: sein Schwerpunkt liegt außerhalb seines Hüllvolumens (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the URDF&apos;s geometry: %1</source>
+        <translation>die Geometrie des URDF: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
+        <translation>das Trägheitsellipsoid des CAD-Körpers, %1-fach vergrößert</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1: its mass is %2 kg: not a real body</source>
+        <translation>%1: seine Masse ist %2 kg: kein realer Körper</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: no mass distribution has its inertia (its pseudo-inertia has the negative eigenvalue %2): not a real body</source>
+        <translation>%1: keine Massenverteilung hat seine Trägheit (seine Pseudo-Trägheit hat den negativen Eigenwert %2): kein realer Körper</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: %2 is %3, negative: friction and rotor inertia take energy, they do not give it</source>
+        <translation>%1: %2 ist %3, negativ: Reibung und Rotorträgheit nehmen Energie auf, sie geben keine ab</translation>
+    </message>
+</context>
+<context>
     <name>ModelFactory</name>
     <message>
-        <location filename="../core/model/ModelFactory.cpp" line="+70"/>
+        <location filename="../core/model/ModelFactory.cpp" line="+71"/>
         <source>robot.urdf.file: the &quot;urdf&quot; model needs a URDF file</source>
         <translation>robot.urdf.file: das Modell „urdf“ braucht eine URDF-Datei</translation>
     </message>
@@ -1512,12 +1637,17 @@
         <translation>DCF-Fragment: Gelenk %1 existiert nicht; der Roboter hat %2 Gelenke</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+131"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+166"/>
         <source>must be given for every parameter or for none</source>
         <translation>muss für jeden Parameter oder für keinen angegeben sein</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+33"/>
+        <source>must be &quot;%1&quot; for determined %2, got &quot;%3&quot;</source>
+        <translation>muss für determined %2 „%1“ sein, gefunden: „%3“</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>must be an object index written as &quot;0x&quot; and four hex digits, got &quot;%1&quot;</source>
         <translation>muss ein Objektindex aus „0x“ und vier Hexadezimalziffern sein, gefunden: „%1“</translation>
     </message>
@@ -1532,17 +1662,17 @@
         <translation>muss Datum und Uhrzeit wie 2024-05-01T12:00:00.000Z sein, gefunden: „%1“</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+57"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>fehlt; dies ist keine learnid-Parameterdatei</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>this version of learnid reads &quot;%1&quot;, got %2</source>
-        <translation>diese Version von learnid liest „%1“, gefunden: %2</translation>
+        <location line="+5"/>
+        <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
+        <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>is missing; this key is required</source>
         <translation>fehlt; dieser Schlüssel ist erforderlich</translation>
     </message>
@@ -1552,17 +1682,17 @@
         <translation>passt nicht zum Inhalt: die Datei wurde nach dem Schreiben durch learnid geändert oder ist beschädigt</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFileValidation.cpp" line="+48"/>
+        <location filename="../core/io/ParameterFileValidation.cpp" line="+78"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>one per joint of %1</source>
         <translation>einer pro Gelenk von %1</translation>
     </message>
@@ -1572,19 +1702,40 @@
         <translation>Knoten %1 ist zwei Gelenken zugeordnet</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>must be a valid date and time</source>
         <translation>muss ein gültiges Datum mit Uhrzeit sein</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-71"/>
+        <location line="+73"/>
         <location line="+15"/>
         <location line="+5"/>
         <source>must not be empty</source>
         <translation>darf nicht leer sein</translation>
     </message>
     <message>
-        <location line="-17"/>
+        <location line="-103"/>
+        <source>one per standard parameter</source>
+        <translation>einer pro Standardparameter</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>determined shares, %1</source>
+        <translation>bestimmte Anteile, %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>must be a share from 0 to 1 or null, got %1</source>
+        <translation>muss ein Anteil von 0 bis 1 oder null sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>must give each joint&apos;s node when the file records no controller</source>
+        <translation>muss den Knoten jedes Gelenks angeben, wenn die Datei keinen Regler festhält</translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
@@ -1604,7 +1755,8 @@
         <translation>muss „%1“ sein (Parameter %2 von %3), gefunden: „%4“</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-103"/>
+        <location line="+109"/>
         <source>values, %1</source>
         <translation>Werte, %1</translation>
     </message>
@@ -1614,7 +1766,7 @@
         <translation>Standardabweichungen, %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>must name the CANopen data type</source>
         <translation>muss den CANopen-Datentyp nennen</translation>
     </message>
@@ -1724,24 +1876,6 @@
     </message>
 </context>
 <context>
-    <name>PhysicalConsistency</name>
-    <message>
-        <location filename="../core/model/LogCholesky.cpp" line="+17"/>
-        <source>%1 has %2 entries; a link has 10.</source>
-        <translation>%1 hat %2 Einträge; ein Glied hat 10.</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1[%2] is not finite.</source>
-        <translation>%1[%2] ist nicht endlich.</translation>
-    </message>
-    <message>
-        <location line="+91"/>
-        <source>The link is not strictly physically consistent (mass %1 kg, smallest pseudo-inertia eigenvalue %2); it has no log-Cholesky parameters.</source>
-        <translation>Das Glied ist nicht streng physikalisch konsistent (Masse %1 kg, kleinster Eigenwert der Pseudoträgheitsmatrix %2); es hat keine Log-Cholesky-Parameter.</translation>
-    </message>
-</context>
-<context>
     <name>PlanCsv</name>
     <message>
         <location filename="../core/io/PlanCsv.cpp" line="+109"/>
@@ -1833,6 +1967,101 @@
         <location line="+29"/>
         <source>a second plan-id, %1, other than %2 on line %3; a log is of one plan</source>
         <translation>eine zweite plan-id, %1, anders als %2 in Zeile %3; ein Log gehört zu einem Plan</translation>
+    </message>
+</context>
+<context>
+    <name>Plausibility</name>
+    <message>
+        <location filename="../core/model/Plausibility.cpp" line="+45"/>
+        <source>The CAD vector has %1 entries, too few for %2 links.</source>
+        <translation>Der CAD-Vektor hat %1 Einträge, zu wenige für %2 Glieder.</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>The plausibility check needs 10 parameters and a volume per link (%1 links, %2 and %3 parameters, %4 volumes).</source>
+        <translation>Die Plausibilitätsprüfung braucht 10 Parameter und ein Volumen pro Glied (%1 Glieder, %2 und %3 Parameter, %4 Volumina).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The parameters to check are not finite.</source>
+        <translation>Die zu prüfenden Parameter sind nicht endlich.</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>mass %1 kg</source>
+        <translation>Masse %1 kg</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
+        <translation>kleinstes Hauptträgheitsmoment %1 kg m², unter %2 % des kleinsten des CAD-Glieds (%3 kg m²)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
+        <translation>(I1 + I2) / I3 = %1, unter %2: eine Nadel oder eine Platte</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
+        <translation>Schwerpunkt außerhalb des Hüllvolumens des Glieds (das %1-Fache seiner Größe)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Index %1 is outside the %2 standard parameters.</source>
+        <translation>Index %1 liegt außerhalb der %2 Standardparameter.</translation>
+    </message>
+</context>
+<context>
+    <name>PlausibleEstimate</name>
+    <message>
+        <location filename="../core/model/PlausibleEstimate.cpp" line="+30"/>
+        <source>The estimation problem&apos;s sizes do not match: A is %1 x %2, b has %3 entries, the prior %4 for %5 links.</source>
+        <translation>Die Größen des Schätzproblems passen nicht zusammen: A ist %1 x %2, b hat %3 Einträge, der Prior %4, für %5 Glieder.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The estimation problem has entries that are not finite.</source>
+        <translation>Das Schätzproblem hat Einträge, die keine endlichen Zahlen sind.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The prior share must lie between 0 and 1, not %1.</source>
+        <translation>Der Anteil des Priors muss zwischen 0 und 1 liegen, nicht %1.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 bounding volumes for %2 links.</source>
+        <translation>%1 Hüllvolumina für %2 Glieder.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+3"/>
+        <source>Index %1 is not a joint term.</source>
+        <translation>Index %1 ist kein Gelenkterm.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The prior&apos;s joint term %1 is negative (%2).</source>
+        <translation>Der Gelenkterm %1 des Priors ist negativ (%2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The prior&apos;s link %1 does not lie inside its bounding volume.</source>
+        <translation>Das Glied %1 des Priors liegt nicht in seinem Hüllvolumen.</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>The prior&apos;s link %1 is not strictly a real body (its pseudo-inertia is not positive definite).</source>
+        <translation>Das Glied %1 des Priors ist nicht streng ein realer Körper (seine Pseudoträgheit ist nicht positiv definit).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+61"/>
+        <source>%n Newton step(s)</source>
+        <translation>
+            <numerusform>%n Newton-Schritt</numerusform>
+            <numerusform>%n Newton-Schritte</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2162,7 +2391,7 @@
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+60"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+70"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits: Gelenk %1 (%2) hat im URDF keine Momentengrenze (effort): die Momentengrenzen im Szenario angeben</translation>
     </message>
@@ -2346,12 +2575,12 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+84"/>
+        <location filename="../core/service/SessionExport.cpp" line="+91"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>nur URDF-Roboter haben ein URDF, das sich exportieren lässt</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-29"/>
         <source>no consistent estimate near estimate %1: %2</source>
         <translation>keine konsistente Schätzung nahe Schätzung %1: %2</translation>
     </message>
@@ -2361,7 +2590,7 @@
         <translation>nur URDF-Roboter haben Standardparameter, die sich konsistent machen lassen</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+74"/>
         <source>cannot create the folder %1</source>
         <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -2369,7 +2598,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+82"/>
+        <location filename="../core/service/SessionReport.cpp" line="+115"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>Schätzung %1 existiert in dieser Sitzung nicht</translation>
     </message>
@@ -2408,9 +2637,27 @@
     </message>
 </context>
 <context>
+    <name>StandardExport</name>
+    <message>
+        <location filename="../core/service/StandardExport.cpp" line="+37"/>
+        <source>data</source>
+        <translation>Daten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>prior</source>
+        <translation>Prior</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 standard parameters given, the model has %2</source>
+        <translation>%1 Standardparameter angegeben, das Modell hat %2</translation>
+    </message>
+</context>
+<context>
     <name>Text</name>
     <message>
-        <location filename="../core/model/UrdfChain.cpp" line="+49"/>
+        <location filename="../core/model/UrdfChain.cpp" line="+53"/>
         <source>%1: not a valid URDF: %2</source>
         <translation>%1: kein gültiges URDF: %2</translation>
     </message>
@@ -2420,7 +2667,7 @@
         <translation>der Parser nannte keinen Grund</translation>
     </message>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="-33"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="-41"/>
         <source>simulation.realUrdf: %1 has %2 moving joints, the robot %3</source>
         <translation>simulation.realUrdf: %1 hat %2 bewegliche Gelenke, der Roboter %3</translation>
     </message>
@@ -2428,6 +2675,11 @@
         <location line="+10"/>
         <source>simulation.realUrdf: joint %1 (%2) is placed differently from the robot&apos;s URDF: the real robot may differ in inertia and friction only</source>
         <translation>simulation.realUrdf: Gelenk %1 (%2) sitzt anders als im URDF des Roboters: der reale Roboter darf nur in Trägheit und Reibung abweichen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>simulation.realUrdf: %1 is not a robot that could be built: %2</source>
+        <translation>simulation.realUrdf: %1 ist kein Roboter, der sich bauen ließe: %2</translation>
     </message>
     <message>
         <location filename="../core/identify/UniformLog.cpp" line="+145"/>
@@ -2664,7 +2916,7 @@
         <translation>%1: Glied „%2“ hat eine negative Masse (%3 kg)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>%1: the robot branches at link &quot;%2&quot; (children %3): name the tip link of the chain</source>
         <translation>%1: der Roboter verzweigt sich am Glied „%2“ (Kindglieder %3): das Endglied der Kette angeben</translation>
     </message>
@@ -2674,7 +2926,7 @@
         <translation>%1: Gelenk „%2“ hat keine Achse (Nullvektor)</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <location line="+4"/>
         <source>%1: no link &quot;%2&quot;</source>
         <translation>%1: kein Glied „%2“</translation>
@@ -2685,17 +2937,17 @@
         <translation>%1: Glied „%2“ liegt nicht unterhalb von Glied „%3“</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>%1: joint &quot;%2&quot; mimics another joint: mimic joints are not supported</source>
         <translation>%1: Gelenk „%2“ ahmt ein anderes Gelenk nach (mimic): Mimic-Gelenke werden nicht unterstützt</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+27"/>
         <source>%1: joint &quot;%2&quot; is floating or planar: only revolute, continuous, prismatic and fixed joints form a serial arm</source>
         <translation>%1: Gelenk „%2“ ist frei (floating) oder eben (planar): nur Drehgelenke (revolute, continuous), Schubgelenke (prismatic) und feste Gelenke (fixed) bilden einen seriellen Arm</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
         <source>%1: no moving joint between link &quot;%2&quot; and link &quot;%3&quot;</source>
         <translation>%1: kein bewegliches Gelenk zwischen Glied „%2“ und Glied „%3“</translation>
     </message>
@@ -2708,7 +2960,7 @@
 <context>
     <name>UrdfExport</name>
     <message>
-        <location filename="../core/io/UrdfExport.cpp" line="+120"/>
+        <location filename="../core/io/UrdfExport.cpp" line="+122"/>
         <source>%1: link &quot;%2&quot;: the identified body has an entry that is not a finite number</source>
         <translation>%1: Glied „%2“: der identifizierte Körper hat einen Eintrag, der keine endliche Zahl ist</translation>
     </message>
@@ -2728,12 +2980,17 @@
         <translation>%1: Gelenk „%2“: die Reibung muss endlich und nicht negativ sein, gefunden: viskos %3 und Coulomb %4</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+5"/>
+        <source>%1: joint &quot;%2&quot;: the armature must be finite and not negative and the offset finite, got armature %3 and offset %4</source>
+        <translation>%1: Gelenk „%2“: die Rotorträgheit muss endlich und nicht negativ und der Offset endlich sein, gefunden: Rotorträgheit %3 und Offset %4</translation>
+    </message>
+    <message>
+        <location line="+158"/>
         <source>%1: the identified URDF reads back with another body or friction at link &quot;%2&quot; than was written</source>
         <translation>%1: das identifizierte URDF ergibt beim Zurücklesen am Glied „%2“ einen anderen Körper oder eine andere Reibung, als geschrieben wurde</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1: bodies for %2 and friction for %3 joints given, the chain has %4 moving joints</source>
         <translation>%1: Körper für %2 und Reibung für %3 Gelenke angegeben, die Kette hat %4 bewegliche Gelenke</translation>
     </message>
@@ -2746,6 +3003,107 @@
         <location line="+13"/>
         <source>%1: line %2, column %3: not XML: %4</source>
         <translation>%1: Zeile %2, Spalte %3: kein XML: %4</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfExtension</name>
+    <message>
+        <location filename="../core/model/UrdfExtension.cpp" line="+20"/>
+        <source>%1: line %2, column %3: &lt;%4&gt;: %5</source>
+        <translation>%1: Zeile %2, Spalte %3: &lt;%4&gt;: %5</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>unknown attribute &quot;%1&quot; (the attributes are armature and offset)</source>
+        <translation>unbekanntes Attribut „%1“ (die Attribute sind armature und offset)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 must be a finite number, got &quot;%2&quot;</source>
+        <translation>%1 muss eine endliche Zahl sein, gefunden: „%2“</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>given twice in joint &quot;%1&quot;</source>
+        <translation>zweimal in Gelenk „%1“ angegeben</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfGeometry</name>
+    <message>
+        <location filename="../core/model/UrdfGeometry.cpp" line="+85"/>
+        <source>%1: link &quot;%2&quot;, &lt;%3&gt; %4: %5</source>
+        <translation>%1: Glied „%2“, &lt;%3&gt; %4: %5</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the box&apos;s size is negative or not a number</source>
+        <translation>die Größe des Quaders ist negativ oder keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the cylinder&apos;s radius or length is negative or not a number</source>
+        <translation>Radius oder Länge des Zylinders ist negativ oder keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the sphere&apos;s radius is negative or not a number</source>
+        <translation>der Radius der Kugel ist negativ oder keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the mesh&apos;s scale is not a number</source>
+        <translation>der Maßstab des Netzes ist keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>mesh &quot;%1&quot; of link &quot;%2&quot; skipped: %3</source>
+        <translation>Netz „%1“ von Glied „%2“ übersprungen: %3</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>1 box</source>
+        <translation>1 Quader</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 boxes</source>
+        <translation>%1 Quader</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 cylinder</source>
+        <translation>1 Zylinder</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 cylinders</source>
+        <translation>%1 Zylinder</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 sphere</source>
+        <translation>1 Kugel</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 spheres</source>
+        <translation>%1 Kugeln</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 mesh</source>
+        <translation>1 Netz</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 meshes</source>
+        <translation>%1 Netze</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>visual shapes of %1 (no collision shape)</source>
+        <translation>Sichtformen von %1 (keine Kollisionsform)</translation>
     </message>
 </context>
 <context>
@@ -2809,17 +3167,12 @@
 <context>
     <name>learnid-cli</name>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+42"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+43"/>
         <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
         <translation>--robot: &apos;%1&apos; ist weder eine URDF-Datei noch ein eingebauter Roboter (%2)</translation>
     </message>
     <message>
-        <location line="+20"/>
-        <source>--export: a parameter file records the controller&apos;s gains, and the default gains are for %1 joints, the robot has %2: give them with --scenario FILE (its controller section)</source>
-        <translation>--export: eine Parameterdatei hält die Verstärkungen des Reglers fest, und die Standardverstärkungen gelten für %1 Gelenke, der Roboter hat %2: sie mit --scenario FILE angeben (in dessen Abschnitt controller)</translation>
-    </message>
-    <message>
-        <location line="+62"/>
+        <location line="+73"/>
         <source>robot %1: %2, %3 moving joints</source>
         <translation>Roboter %1: %2, %3 bewegliche Gelenke</translation>
     </message>
@@ -2837,12 +3190,12 @@
         </translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>identifiziert von learnid-cli %1 identify am %2</translation>
     </message>
     <message>
-        <location line="-75"/>
+        <location line="-76"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1: vorhergesagtes und gemessenes Moment</translation>
     </message>
@@ -2852,13 +3205,13 @@
         <translation>learnid: %1 aus Logs identifiziert</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+72"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+107"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+109"/>
         <location line="+7"/>
         <location line="+12"/>
-        <location line="+52"/>
+        <location line="+61"/>
         <location line="+44"/>
         <location filename="../app/cli/main.cpp" line="+52"/>
         <source>learnid-cli: error: %1</source>
@@ -2999,7 +3352,7 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-155"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-164"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
@@ -3067,7 +3420,7 @@
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+210"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -3263,8 +3616,13 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-72"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+7"/>
+        <location line="+8"/>
+        <source>learnid-cli: warning: the URDF as a real robot: %1</source>
+        <translation>learnid-cli: Warnung: das URDF als realer Roboter: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+8"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
     </message>
@@ -3322,7 +3680,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-165"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-166"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms: unbekannter Term &apos;%1&apos;; die Terme sind armature, viscous, coulomb und offset, oder none</translation>
     </message>
@@ -3408,11 +3766,11 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+4"/>
-        <source>Write the identified base parameters as a parameter file (and DCF).</source>
-        <translation>Die identifizierten Basisparameter als Parameterdatei (und DCF) schreiben.</translation>
+        <source>Write the identified model as a parameter file (and DCF); it records controller gains only with --scenario.</source>
+        <translation>Das identifizierte Modell als Parameterdatei (und DCF) schreiben; Reglerverstärkungen hält sie nur mit --scenario fest.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Write the URDF with the identified inertia and friction.</source>
         <translation>Das URDF mit der identifizierten Trägheit und Reibung schreiben.</translation>
     </message>
@@ -3510,13 +3868,51 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>URDF wie gegeben</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../app/cli/IdentifyParameters.cpp" line="+32"/>
+        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: data, below: kept from the prior)</source>
+        <translation>Standardparameter: die des URDF, die identifizierten und was die Daten bestimmt haben (Anteil der Richtung des Parameters; ab 0,5: Daten, darunter: vom Prior übernommen)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>link or joint</source>
+        <translation>Glied oder Gelenk</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF</source>
+        <translation>URDF</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+1"/>
         <location filename="../app/cli/TorquePlotPng.cpp" line="+2"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>determined</source>
+        <translation>bestimmt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>from</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>warning: the URDF as a real robot: %1
+</source>
+        <translation>Warnung: das URDF als realer Roboter: %1
+</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+2"/>
         <source>RMS measured [N m]</source>
         <translation>RMS gemessen [N m]</translation>
     </message>
@@ -4451,12 +4847,7 @@ neue Schätzung.
 <context>
     <name>learnid::LogExportController</name>
     <message>
-        <location filename="../ui/LogExportController.cpp" line="+59"/>
-        <source>a parameter file records the controller&apos;s gains, and the default gains are for %1 joints, the robot has %2: choose a scenario of this robot under &quot;Gains from&quot;</source>
-        <translation>eine Parameterdatei hält die Verstärkungen des Reglers fest, und die Standardverstärkungen gelten für %1 Gelenke, der Roboter hat %2: unter „Verstärkungen aus“ ein Szenario dieses Roboters wählen</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location filename="../ui/LogExportController.cpp" line="+75"/>
         <source>identify and accept a result first</source>
         <translation>zuerst ein Ergebnis identifizieren und akzeptieren</translation>
     </message>
@@ -5364,8 +5755,8 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>default gains (robots with 2 joints)</source>
-        <translation>Standardverstärkungen (Roboter mit 2 Gelenken)</translation>
+        <source>none: the parameter file holds the model alone</source>
+        <translation>keine: die Parameterdatei enthält nur das Modell</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5489,7 +5880,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RobotChooser</name>
     <message>
-        <location filename="../ui/RobotChooser.cpp" line="+35"/>
+        <location filename="../ui/RobotChooser.cpp" line="+36"/>
         <source>Robot model</source>
         <translation>Robotermodell</translation>
     </message>
@@ -5610,9 +6001,14 @@ Verhältnis %</translation>
         <translation>%1, %2 kg bewegt; Gelenkterme: %3; %4 Basisparameter (von %5 Standardparametern)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>none</source>
         <translation>keine</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Warning: %1</source>
+        <translation>Warnung: %1</translation>
     </message>
 </context>
 <context>

@@ -80,6 +80,17 @@
     </message>
 </context>
 <context>
+    <name>PlausibleEstimate</name>
+    <message numerus="yes">
+        <location filename="../core/model/PlausibleEstimate.cpp" line="+190"/>
+        <source>%n Newton step(s)</source>
+        <translation>
+            <numerusform>%n Newton step</numerusform>
+            <numerusform>%n Newton steps</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>RobotLogCsv</name>
     <message numerus="yes">
         <location filename="../core/io/RobotLogCsv.cpp" line="+342"/>
@@ -93,7 +104,7 @@
 <context>
     <name>learnid-cli</name>
     <message numerus="yes">
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+138"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+130"/>
         <source>fitting %1 standard parameters to %n log(s)</source>
         <translation>
             <numerusform>fitting %1 standard parameters to %n log</numerusform>
@@ -123,7 +134,7 @@
 <context>
     <name>learnid::RobotChooser</name>
     <message numerus="yes">
-        <location filename="../ui/RobotChooser.cpp" line="+173"/>
+        <location filename="../ui/RobotChooser.cpp" line="+174"/>
         <source>%n revolute joint(s)</source>
         <translation>
             <numerusform>%n revolute joint</numerusform>

@@ -59,7 +59,13 @@ QString logIdentificationSummaryHtml(const LogIdentificationResult &r)
     QString readings;
     for (const QString &reading : s.readings)
         readings += paragraph(reading);
-    return paragraph(s.robot) + paragraph(s.logs) + readings + paragraph(s.directions) +
+    // The URDF's own values as a real robot's (docs/robots.md §7): used as the prior all the same.
+    QString warnings;
+    for (const QString &w : r.robot.warnings)
+        warnings += Text::tr("<p style=\"color:#8a5300\"><b>Warning:</b> the URDF as a real "
+                             "robot: %1</p>")
+                        .arg(w.toHtmlEscaped());
+    return paragraph(s.robot) + warnings + paragraph(s.logs) + readings + paragraph(s.directions) +
            paragraph(s.undetermined) + consistency + training;
 }
 

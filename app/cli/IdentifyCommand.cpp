@@ -3,6 +3,7 @@
 #include "cli/IdentifyReportPdf.h"
 #include "cli/TorquePlotPng.h"
 
+#include "cli/IdentifyParameters.h"
 #include "cli/IdentifyTable.h"
 #include "io/AtomicFile.h"
 #include "io/ScenarioFile.h"
@@ -46,26 +47,17 @@ LogRobot loadRobot(const LogIdentificationRequest &request)
     return loadLogRobot(request);
 }
 
-// The parameter file records the gains the data were recorded with; logs do not say, so they
-// come from --scenario, else the scenario's defaults (for two joints only).
-ControllerSettings exportController(const IdentifyOptions &o, int joints)
+// The parameter file records the gains the data were recorded with when --scenario names them;
+// logs do not say, so without it the file holds the model alone.
+std::optional<ControllerSettings> exportController(const IdentifyOptions &o, int joints)
 {
-    if (!o.scenarioPath.isEmpty()) {
-        const Scenario scenario = readScenarioFile(o.scenarioPath);
-        validateControllerSettings(
-            scenario.controller, joints,
-            QStringLiteral("%1: controller").arg(QDir::toNativeSeparators(o.scenarioPath)));
-        return scenario.controller;
-    }
-    if (const auto defaults = defaultExportController(joints))
-        return *defaults;
-    throw Error(QCoreApplication::translate(
-                    "learnid-cli",
-                    "--export: a parameter file records the controller's gains, and the "
-                    "default gains are for %1 joints, the robot has %2: give them with "
-                    "--scenario FILE (its controller section)")
-                    .arg(ControllerSettings().dof())
-                    .arg(joints));
+    if (o.scenarioPath.isEmpty())
+        return std::nullopt;
+    const Scenario scenario = readScenarioFile(o.scenarioPath);
+    validateControllerSettings(
+        scenario.controller, joints,
+        QStringLiteral("%1: controller").arg(QDir::toNativeSeparators(o.scenarioPath)));
+    return scenario.controller;
 }
 
 // --plots DIR: DIR/<log name>-torque.png per validation log; --report FILE: the text and the
@@ -146,8 +138,9 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
             }
         };
         const LogIdentificationResult result = identifyFromLogs(robot, request, stage);
-        QString text =
-            identifySummary(result) + QLatin1Char('\n') + trainingTable(model, result.fit);
+        QString text = identifySummary(result) + modelWarningText(result.robot.warnings) +
+                       QLatin1Char('\n') + trainingTable(model, result.fit) + QLatin1Char('\n') +
+                       parameterTable(model, result.fit);
         for (const LogValidation &v : result.validation) {
             text += QLatin1Char('\n') + validationTable(model, v.source,
                                                         static_cast<long long>(v.samples()),

@@ -183,7 +183,8 @@ void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
         cliOption("export",
                   QT_TRANSLATE_NOOP(
                       "learnid-cli",
-                      "Write the identified base parameters as a parameter file (and DCF)."),
+                      "Write the identified model as a parameter file (and DCF); it records "
+                      "controller gains only with --scenario."),
                   "FILE"),
         cliOption("urdf-out",
                   QT_TRANSLATE_NOOP("learnid-cli",

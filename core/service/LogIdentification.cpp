@@ -1,6 +1,7 @@
 #include "service/LogIdentification.h"
 
 #include "io/AtomicFile.h"
+#include "model/ModelCheck.h"
 #include "model/ModelFactory.h"
 #include "model/UrdfChain.h"
 #include "session/EstimateConsistency.h"
@@ -107,8 +108,10 @@ LogRobot loadLogRobot(const LogIdentificationRequest &request)
         builtIn ? QCoreApplication::translate("LogIdentification", "built-in %1").arg(request.robot)
                 : QDir::toNativeSeparators(path);
     r.urdf = readFile(path);
-    r.chain = parseUrdfChain(r.urdf, r.source, request.baseLink, request.tipLink);
+    r.chain = parseUrdfChain(r.urdf, r.source, request.baseLink, request.tipLink,
+                             QFileInfo(path).absolutePath());
     r.model = std::make_shared<const ChainModel>(r.chain, request.terms, r.modelId);
+    r.warnings = modelWarnings(*r.model);
     return r;
 }
 

@@ -3,7 +3,6 @@
 // the files it writes, and the bad inputs it refuses without writing anything.
 #include "../support/NumericAssert.h"
 #include "../support/SharedData.h"
-#include "../support/SyntheticRobotLog.h"
 #include "../support/ToolRun.h"
 #include "identify/LogFit.h"
 #include "identify/UniformLog.h"
@@ -14,11 +13,11 @@
 
 #include <QDir>
 #include <QFile>
-#include <QFileInfo>
 #include <QImage>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+#include <cmath>
 
 using namespace learnid;
 
@@ -82,8 +81,8 @@ class TestCliIdentify : public QObject
 private slots:
     void doublePendulum_printsTheLibrarysFiguresAndWritesItsFit();
     void kuka_identifiedModelPredictsTheHeldOutRunBetterThanItsUrdf();
+    void kuka_exportedUrdfAndParameterFileAloneReproduceThePrintedFigures();
     void plotsAndReport_drawEveryJointOfEveryValidationLog();
-    void pandaLog1kHz_gapsAndStaleRows_summaryAndReportNameTheRobotFile();
     void badInput_exitsWithMessageAndWritesNothing_data();
     void badInput_exitsWithMessageAndWritesNothing();
     void help_listsTheCommandAndItsOptions();
@@ -178,6 +177,75 @@ void TestCliIdentify::kuka_identifiedModelPredictsTheHeldOutRunBetterThanItsUrdf
     QVERIFY2(table.identifiedOverall.toDouble() < table.givenOverall.toDouble(), qPrintable(r.out));
 }
 
+void TestCliIdentify::kuka_exportedUrdfAndParameterFileAloneReproduceThePrintedFigures()
+{
+    const QString urdf = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
+    QStringList runs;
+    for (const char *name : {"measurements_1.csv", "measurements_2.csv", "measurements_3.csv"})
+        runs << test::sharedDataFile(QStringLiteral("kuka-lwr4/") + QLatin1String(name));
+    if (urdf.isEmpty() || runs.contains(QString()))
+        QSKIP(qPrintable(test::sharedDataMissing()));
+    // A 7-joint arm exports without --scenario: the parameter file holds the model alone.
+    QTemporaryDir dir;
+    const test::ToolRun r =
+        cli({QStringLiteral("identify"), QStringLiteral("--robot"), urdf, QStringLiteral("--log"),
+             runs[0], QStringLiteral("--log"), runs[1], QStringLiteral("--validate"), runs[2],
+             QStringLiteral("--export"), QStringLiteral("lwr.json"), QStringLiteral("--urdf-out"),
+             QStringLiteral("lwr.urdf"), QStringLiteral("--quiet")},
+            dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const ValidationTable table = readValidationTable(r.out);
+    QCOMPARE(table.jointRows, 7);
+    const double printed = table.identifiedOverall.toDouble();
+    QVERIFY2(printed > 0.0, qPrintable(r.out));
+    QVERIFY(r.out.contains(QLatin1String("standard parameters: the URDF's, the identified")));
+
+    // The exported URDF alone, read as a robot: its own values are the identified model,
+    // offsets included (learnid's extension element).
+    const JointTerms terms{false, true, true, true};
+    const QString written = dir.filePath(QStringLiteral("lwr.urdf"));
+    const ChainModel exported(readUrdfChain(written), terms, QStringLiteral("urdf"));
+    const FilteredLog run3 = loadLog(runs[2], exported, LogColumns{});
+    const double fromUrdf = 100.0 * torqueFigures(exported, exported.cadStandard(), run3).overall;
+    LEARNID_COMPARE_NEAR(fromUrdf, printed, 0.01);
+    // The offsets enter the prediction as the constants they are: F(s)F(-s) passes a constant
+    // unchanged, so the torque with and without them differs by each joint's offset.
+    SerialChain noOffsets = readUrdfChain(written);
+    for (ChainJoint &j : noOffsets.joints)
+        j.offset = 0.0;
+    const ChainModel withoutOffsets(noOffsets, terms, QStringLiteral("urdf"));
+    const Eigen::MatrixXd difference =
+        predictedTorque(exported, exported.cadStandard(), run3) -
+        predictedTorque(withoutOffsets, withoutOffsets.cadStandard(), run3);
+    for (int j = 0; j < 7; ++j) {
+        const double offset = exported.chain().joints[size_t(j)].offset;
+        LEARNID_COMPARE_NEAR(difference.row(j).minCoeff(), offset, 1e-9 + 1e-6 * std::abs(offset));
+        LEARNID_COMPARE_NEAR(difference.row(j).maxCoeff(), offset, 1e-9 + 1e-6 * std::abs(offset));
+    }
+
+    // The parameter file alone, with the robot's URDF as given: its standard parameters, and
+    // its base parameters, predict the same.
+    const ParameterFileContent params = readParameterFile(dir.filePath(QStringLiteral("lwr.json")));
+    QVERIFY(!params.hasController);
+    const ChainModel cad(readUrdfChain(urdf), terms, QStringLiteral("urdf"));
+    QCOMPARE(params.standardValues.size(), cad.standardCount());
+    LEARNID_COMPARE_NEAR(100.0 * torqueFigures(cad, params.standardValues, run3).overall, printed,
+                         0.01);
+    LEARNID_COMPARE_NEAR(100.0 *
+                             torqueFigures(cad, cad.standardFromBase(params.values), run3).overall,
+                         printed, 0.01);
+    // Both files carry the same offsets, the fit's.
+    for (int j = 0; j < 7; ++j) {
+        const int at = 70 + 3 * j + 2; // per joint: viscous, Coulomb, offset
+        QCOMPARE(params.standardParameters.at(at).name.left(2), QStringLiteral("τo"));
+        QCOMPARE(params.standardValues[at], exported.chain().joints[size_t(j)].offset);
+    }
+    int data = 0;
+    for (int i = 0; i < cad.standardCount(); ++i)
+        data += params.standardDetermined[size_t(i)] >= 0.5;
+    QVERIFY2(data > 0 && data < cad.standardCount(), qPrintable(QString::number(data)));
+}
+
 void TestCliIdentify::plotsAndReport_drawEveryJointOfEveryValidationLog()
 {
     QStringList files;
@@ -223,67 +291,6 @@ void TestCliIdentify::plotsAndReport_drawEveryJointOfEveryValidationLog()
     QCOMPARE(bytes.count("/Type /Page\n"), 3);
 }
 
-void TestCliIdentify::pandaLog1kHz_gapsAndStaleRows_summaryAndReportNameTheRobotFile()
-{
-    // A Panda's 1 kHz controller log as issue 22 met it: 8.5 ms gaps every 5 s and 1131 stale
-    // rows; the robot given as a URDF file of another name than the URDF's robot.
-    QTemporaryDir dir;
-    const ChainModel model = test::pandaLogModel();
-    const Eigen::VectorXd truth = test::pandaLogTruth(model);
-    test::SyntheticLogOptions options;
-    const test::SyntheticLog training = test::syntheticPandaLog(model, truth, options);
-    options.seconds = 11.0;
-    options.seed = 2;
-    const test::SyntheticLog validation = test::syntheticPandaLog(model, truth, options);
-    const QList<QPair<QString, QByteArray>> files = {
-        {QStringLiteral("run1.csv"),
-         test::syntheticLogCsv(training, true, test::pickStaleRows(training, 1131, 7))},
-        {QStringLiteral("run2.csv"), test::syntheticLogCsv(validation, true)}};
-    for (const auto &[name, csv] : files) {
-        QFile file(dir.filePath(name));
-        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(csv) == csv.size());
-    }
-    QVERIFY(QFile::copy(QStringLiteral(":/robots/panda.urdf"),
-                        dir.filePath(QStringLiteral("fr3_lab.urdf"))));
-    const test::ToolRun r =
-        cli({QStringLiteral("identify"), QStringLiteral("--robot"), QStringLiteral("fr3_lab.urdf"),
-             QStringLiteral("--log"), QStringLiteral("run1.csv"), QStringLiteral("--validate"),
-             QStringLiteral("run2.csv"), QStringLiteral("--report"), QStringLiteral("report.pdf")},
-            dir.path());
-    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-    QString out = r.out;
-    out.replace(QStringLiteral("\n  "), QStringLiteral(" ")); // sentences are wrapped at 100
-    const QStringList expected = {
-        QStringLiteral("fr3_lab.urdf (URDF robot \"panda\") in %1, 7 moving joints.")
-            .arg(QDir::toNativeSeparators(QFileInfo(dir.path()).canonicalFilePath())),
-        QStringLiteral("Fitted to 1 log, "), // a proper plural
-        QStringLiteral("run1.csv: 1131 stale rows (values repeated under a new time stamp) "
-                       "treated as missing."),
-        QStringLiteral("Of the 91 standard parameters, any data could determine at most "),
-        QStringLiteral("combinations (the base parameters); these logs determine "),
-        QStringLiteral(" base parameters")};
-    for (const QString &part : expected)
-        QVERIFY2(out.contains(part), qPrintable(part + QStringLiteral("\n") + r.out));
-    for (const QString &line : r.out.split(QLatin1Char('\n')))
-        QVERIFY2(line.size() <= 100 || line.startsWith(QLatin1String("joint")), qPrintable(line));
-    QVERIFY2(r.err.contains(QStringLiteral("fitting 91 standard parameters to 1 log\n")),
-             qPrintable(r.err));
-    QCOMPARE(readValidationTable(r.out).jointRows, 7);
-
-    // The report's title names the robot as the user gave it (PDF strings are UTF-16BE).
-    QFile pdf(dir.filePath(QStringLiteral("report.pdf")));
-    QVERIFY(pdf.open(QIODevice::ReadOnly));
-    const QByteArray bytes = pdf.readAll();
-    const auto utf16 = [](const QString &text) {
-        QByteArray b;
-        for (const QChar c : text)
-            b += char(c.unicode() >> 8), b += char(c.unicode() & 0xff);
-        return b;
-    };
-    QVERIFY(bytes.contains(utf16(QStringLiteral("learnid: fr3_lab.urdf "))));
-    QVERIFY(!bytes.contains(utf16(QStringLiteral("learnid: panda "))));
-}
-
 void TestCliIdentify::badInput_exitsWithMessageAndWritesNothing_data()
 {
     QTest::addColumn<QByteArray>("log");
@@ -315,38 +322,10 @@ void TestCliIdentify::badInput_exitsWithMessageAndWritesNothing_data()
     QTest::newRow("unknown robot")
         << good << QStringList{QStringLiteral("--robot"), QStringLiteral("no-such-robot")} << 2
         << QStringList{QStringLiteral("--robot: 'no-such-robot' is neither a URDF file")};
-    // A 1 kHz log with a 30 ms gap: three times what the fit's filter tolerates by default.
-    const auto oneKilohertz = [](int from, int to, int staleFrom, int staleTo) {
-        QByteArray csv = "t,q1,q2,dq1,dq2,tau1,tau2\n";
-        for (int k = 0; k < 60; ++k) {
-            if (k >= from && k < to)
-                continue;
-            const int v = k >= staleFrom && k < staleTo ? staleFrom - 1 : k;
-            csv += QByteArray::number(k * 0.001) + ',' + QByteArray::number(0.001 * v) + ",0.2," +
-                   QByteArray::number(v) + ",1," + QByteArray::number(0.5 * v) + ",2\n";
-        }
-        return csv;
-    };
-    QTest::newRow("gap beyond the filter's bound")
-        << oneKilohertz(20, 49, -1, -1) << QStringList() << 2
-        << QStringList{QStringLiteral("log.csv: line 22: a gap of 30 ms after the sample at t = "
-                                      "0.019 s, more than the 10 ms allowed (--max-gap; by "
-                                      "default half the time constant 1/rho of the fit's filter, "
-                                      "rho = 50 rad/s")};
-    QTest::newRow("stale rows leaving a gap")
-        << oneKilohertz(-1, -1, 20, 35) << QStringList() << 2
-        << QStringList{QStringLiteral("log.csv: line 37: a gap of 16 ms after the sample at t = "
-                                      "0.019 s (lines 22 to 36 are stale: 15 rows that repeated "
-                                      "the values of line 21 under new time stamps and count as "
-                                      "missing), more than the 10 ms allowed")};
-    QTest::newRow("--max-gap of the user")
-        << oneKilohertz(20, 49, -1, -1)
-        << QStringList{QStringLiteral("--max-gap"), QStringLiteral("25")} << 2
-        << QStringList{QStringLiteral("more than the 25 ms allowed (--max-gap)")};
-    // The parameter file records controller gains; the defaults are the paper arm's two.
-    QTest::newRow("gains for another robot")
-        << good << QStringList{QStringLiteral("--robot"), QStringLiteral("puma560")} << 2
-        << QStringList{QStringLiteral("--scenario FILE")};
+    // The parameter file records controller gains only from a scenario, which must be read.
+    QTest::newRow("missing gains scenario")
+        << good << QStringList{QStringLiteral("--scenario"), QStringLiteral("gains.json")} << 2
+        << QStringList{QStringLiteral("gains.json")};
 }
 
 void TestCliIdentify::badInput_exitsWithMessageAndWritesNothing()
