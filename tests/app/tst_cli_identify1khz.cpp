@@ -157,7 +157,8 @@ void TestCliIdentify1kHz::badGaps_exitWithFileAndLineAndWriteNothing()
                 extraArgs,
             dir.path());
     QCOMPARE(r.exitCode, 2);
-    QVERIFY2(r.err.contains(QStringLiteral("learnid-cli: error: log.csv: line ")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QStringLiteral("learnid-cli: error: log.csv: line ")),
+             qPrintable(r.err));
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{QStringLiteral("log.csv")});
 }
