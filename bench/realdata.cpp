@@ -45,8 +45,9 @@ QString data(const char *file)
 
 FilteredLog loadLog(const QString &path, int joints, const LogColumns &columns, const Options &o)
 {
-    return filterLog(resampleUniform(readRobotLogFile(path, joints, columns), o.resample),
-                     o.filter);
+    ResampleOptions resample = o.resample;
+    resample.fitBandwidth = o.filter.rho; // the default gap follows the filter, as identify's
+    return filterLog(resampleUniform(readRobotLogFile(path, joints, columns), resample), o.filter);
 }
 
 struct Model

@@ -488,7 +488,7 @@
         <translation>%1: das Log gehört zu Plan %2, nicht zu Plan %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>sample %1 (t = %2 s) is beyond the plan&apos;s %3 samples, the last at t = %4 s</source>
         <translation>Abtastwert %1 (t = %2 s) liegt hinter den %3 Abtastwerten des Plans, deren letzter bei t = %4 s liegt</translation>
     </message>
@@ -776,7 +776,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+86"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+128"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
     </message>
@@ -794,6 +794,11 @@
         <location line="+4"/>
         <source>physically consistent: every link a real body</source>
         <translation>physikalisch konsistent: jedes Glied ein realer Körper</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>link %1 (%2): not a plausible body: %3</source>
+        <translation>Glied %1 (%2): kein plausibler Körper: %3</translation>
     </message>
 </context>
 <context>
@@ -1154,7 +1159,7 @@
 <context>
     <name>LogFit</name>
     <message>
-        <location filename="../core/identify/LogFit.cpp" line="+140"/>
+        <location filename="../core/identify/LogFit.cpp" line="+141"/>
         <source>%1 has %2 joints, the robot %3</source>
         <translation>%1 hat %2 Gelenke, der Roboter %3</translation>
     </message>
@@ -1169,12 +1174,12 @@
         <translation>keine Abtastwerte für die Anpassung</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>the prior share must lie between 0 and 1</source>
         <translation>der Prior-Anteil muss zwischen 0 und 1 liegen</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+98"/>
         <source>%1 does not fit the robot&apos;s joints or parameters</source>
         <translation>%1 passt nicht zu den Gelenken oder Parametern des Roboters</translation>
     </message>
@@ -1182,7 +1187,7 @@
 <context>
     <name>LogIdentification</name>
     <message>
-        <location filename="../core/service/LogIdentification.cpp" line="+79"/>
+        <location filename="../core/service/LogIdentification.cpp" line="+81"/>
         <source>identification cancelled; nothing was produced</source>
         <translation>Identifikation abgebrochen; nichts wurde erzeugt</translation>
     </message>
@@ -1213,9 +1218,106 @@
     </message>
 </context>
 <context>
+    <name>LogIdentificationSummary</name>
+    <message>
+        <location filename="../core/service/LogIdentificationSummary.cpp" line="+21"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine all %2 (condition %3).</source>
+        <translation>Von den %1 Standardparametern könnten beliebige Daten höchstens %2 Kombinationen bestimmen (die Basisparameter); diese Logs bestimmen alle %2 (Kondition %3).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n stay near the URDF&apos;s values.</source>
+        <translation>
+            <numerusform>Von den %1 Standardparametern könnten beliebige Daten höchstens %2 Kombinationen bestimmen (die Basisparameter); diese Logs bestimmen %3 dieser %2 Richtungen (Kondition %4), die übrige %n Richtung bleibt nahe den Werten des URDF.</numerusform>
+            <numerusform>Von den %1 Standardparametern könnten beliebige Daten höchstens %2 Kombinationen bestimmen (die Basisparameter); diese Logs bestimmen %3 dieser %2 Richtungen (Kondition %4), die übrigen %n bleiben nahe den Werten des URDF.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12"/>
+        <source>%n of the %1 base parameters are mostly undetermined by these logs (less than half determined) and kept near the URDF&apos;s values: %2.</source>
+        <translation>
+            <numerusform>%n der %1 Basisparameter ist durch diese Logs überwiegend unbestimmt (weniger als zur Hälfte bestimmt) und bleibt nahe den Werten des URDF: %2.</numerusform>
+            <numerusform>%n der %1 Basisparameter sind durch diese Logs überwiegend unbestimmt (weniger als zur Hälfte bestimmt) und bleiben nahe den Werten des URDF: %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs.</source>
+        <translation>Keiner der %1 Basisparameter ist durch diese Logs überwiegend unbestimmt.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs: the %n direction(s) they miss are shared among several.</source>
+        <translation>
+            <numerusform>Keiner der %1 Basisparameter ist durch diese Logs überwiegend unbestimmt: die %n Richtung, die sie nicht bestimmen, verteilt sich auf mehrere.</numerusform>
+            <numerusform>Keiner der %1 Basisparameter ist durch diese Logs überwiegend unbestimmt: die %n Richtungen, die sie nicht bestimmen, verteilen sich auf mehrere.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n stale row(s) (values repeated under a new time stamp) treated as missing</source>
+        <translation>
+            <numerusform>%n veraltete Zeile (Werte unter neuem Zeitstempel wiederholt) als fehlend behandelt</numerusform>
+            <numerusform>%n veraltete Zeilen (Werte unter neuem Zeitstempel wiederholt) als fehlend behandelt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n row(s) written twice (the same time stamp and values) dropped</source>
+        <translation>
+            <numerusform>%n doppelt geschriebene Zeile (gleicher Zeitstempel, gleiche Werte) verworfen</numerusform>
+            <numerusform>%n doppelt geschriebene Zeilen (gleicher Zeitstempel, gleiche Werte) verworfen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2.</source>
+        <translation>%1: %2.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 (URDF robot &quot;%2&quot;)</source>
+        <translation>%1 (URDF-Roboter „%2“)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>%1 in %2, %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1 in %2, %n bewegliches Gelenk.</numerusform>
+            <numerusform>%1 in %2, %n bewegliche Gelenke.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 (built-in), %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1 (eingebaut), %n bewegliches Gelenk.</numerusform>
+            <numerusform>%1 (eingebaut), %n bewegliche Gelenke.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Fitted to %n log(s), %1 samples; %2.</source>
+        <translation>
+            <numerusform>An %n Log angepasst, %1 Abtastwerte; %2.</numerusform>
+            <numerusform>An %n Logs angepasst, %1 Abtastwerte; %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the consistent fit converged</source>
+        <translation>die konsistente Anpassung ist konvergiert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the consistent fit stopped at its step limit</source>
+        <translation>die konsistente Anpassung hielt an ihrer Schrittgrenze an</translation>
+    </message>
+</context>
+<context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+28"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
         <source>Reading the robot %1…</source>
         <translation>Roboter %1 wird gelesen…</translation>
     </message>
@@ -1243,55 +1345,22 @@
         <translation>Validierungs-Log %1 von %2 wird vorhergesagt: %3…</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; (%2), %3 moving joints.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; (%2), %3 bewegliche Gelenke.&lt;/p&gt;</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+4"/>
-        <source>&lt;p&gt;Fitted to %n log(s), %1 samples: %2 of %3 standard-parameter directions determined (condition %4); %5.&lt;/p&gt;</source>
-        <translation>
-            <numerusform>&lt;p&gt;An %n Log angepasst, %1 Abtastwerte: %2 von %3 Standardparameter-Richtungen bestimmt (Kondition %4); %5.&lt;/p&gt;</numerusform>
-            <numerusform>&lt;p&gt;An %n Logs angepasst, %1 Abtastwerte: %2 von %3 Standardparameter-Richtungen bestimmt (Kondition %4); %5.&lt;/p&gt;</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the consistent fit converged</source>
-        <translation>die konsistente Anpassung ist konvergiert</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the consistent fit stopped at its step limit</source>
-        <translation>die konsistente Anpassung hielt an ihrer Schrittgrenze an</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+16"/>
         <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Konsistenz:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters:&lt;/b&gt; none of %1.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Unbestimmte Basisparameter:&lt;/b&gt; keiner von %1.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters&lt;/b&gt; (kept near the URDF&apos;s values), %1 of %2: %3&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Unbestimmte Basisparameter&lt;/b&gt; (nahe den Werten des URDF gehalten), %1 von %2: %3&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Trainingsresiduum&lt;/b&gt;, RMS pro Gelenk [N m]: %1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>&lt;p style=&quot;color:#8a5300&quot;&gt;&lt;b&gt;Warning:&lt;/b&gt; the URDF as a real robot: %1&lt;/p&gt;</source>
         <translation>&lt;p style=&quot;color:#8a5300&quot;&gt;&lt;b&gt;Warnung:&lt;/b&gt; das URDF als realer Roboter: %1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Identified; no validation log. Accept the result to export it.</source>
         <translation>Identifiziert; kein Validierungs-Log. Das Ergebnis akzeptieren, um es zu exportieren.</translation>
     </message>
@@ -1568,7 +1637,7 @@
         <translation>DCF-Fragment: Gelenk %1 existiert nicht; der Roboter hat %2 Gelenke</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+164"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+166"/>
         <source>must be given for every parameter or for none</source>
         <translation>muss für jeden Parameter oder für keinen angegeben sein</translation>
     </message>
@@ -1578,7 +1647,7 @@
         <translation>muss für determined %2 „%1“ sein, gefunden: „%3“</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>must be an object index written as &quot;0x&quot; and four hex digits, got &quot;%1&quot;</source>
         <translation>muss ein Objektindex aus „0x“ und vier Hexadezimalziffern sein, gefunden: „%1“</translation>
     </message>
@@ -1807,24 +1876,6 @@
     </message>
 </context>
 <context>
-    <name>PhysicalConsistency</name>
-    <message>
-        <location filename="../core/model/LogCholesky.cpp" line="+17"/>
-        <source>%1 has %2 entries; a link has 10.</source>
-        <translation>%1 hat %2 Einträge; ein Glied hat 10.</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1[%2] is not finite.</source>
-        <translation>%1[%2] ist nicht endlich.</translation>
-    </message>
-    <message>
-        <location line="+91"/>
-        <source>The link is not strictly physically consistent (mass %1 kg, smallest pseudo-inertia eigenvalue %2); it has no log-Cholesky parameters.</source>
-        <translation>Das Glied ist nicht streng physikalisch konsistent (Masse %1 kg, kleinster Eigenwert der Pseudoträgheitsmatrix %2); es hat keine Log-Cholesky-Parameter.</translation>
-    </message>
-</context>
-<context>
     <name>PlanCsv</name>
     <message>
         <location filename="../core/io/PlanCsv.cpp" line="+109"/>
@@ -1921,7 +1972,7 @@
 <context>
     <name>Plausibility</name>
     <message>
-        <location filename="../core/model/Plausibility.cpp" line="+44"/>
+        <location filename="../core/model/Plausibility.cpp" line="+45"/>
         <source>The CAD vector has %1 entries, too few for %2 links.</source>
         <translation>Der CAD-Vektor hat %1 Einträge, zu wenige für %2 Glieder.</translation>
     </message>
@@ -1936,9 +1987,81 @@
         <translation>Die zu prüfenden Parameter sind nicht endlich.</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+32"/>
+        <source>mass %1 kg</source>
+        <translation>Masse %1 kg</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
+        <translation>kleinstes Hauptträgheitsmoment %1 kg m², unter %2 % des kleinsten des CAD-Glieds (%3 kg m²)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
+        <translation>(I1 + I2) / I3 = %1, unter %2: eine Nadel oder eine Platte</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
+        <translation>Schwerpunkt außerhalb des Hüllvolumens des Glieds (das %1-Fache seiner Größe)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Index %1 is outside the %2 standard parameters.</source>
         <translation>Index %1 liegt außerhalb der %2 Standardparameter.</translation>
+    </message>
+</context>
+<context>
+    <name>PlausibleEstimate</name>
+    <message>
+        <location filename="../core/model/PlausibleEstimate.cpp" line="+30"/>
+        <source>The estimation problem&apos;s sizes do not match: A is %1 x %2, b has %3 entries, the prior %4 for %5 links.</source>
+        <translation>Die Größen des Schätzproblems passen nicht zusammen: A ist %1 x %2, b hat %3 Einträge, der Prior %4, für %5 Glieder.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The estimation problem has entries that are not finite.</source>
+        <translation>Das Schätzproblem hat Einträge, die keine endlichen Zahlen sind.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The prior share must lie between 0 and 1, not %1.</source>
+        <translation>Der Anteil des Priors muss zwischen 0 und 1 liegen, nicht %1.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 bounding volumes for %2 links.</source>
+        <translation>%1 Hüllvolumina für %2 Glieder.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+3"/>
+        <source>Index %1 is not a joint term.</source>
+        <translation>Index %1 ist kein Gelenkterm.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The prior&apos;s joint term %1 is negative (%2).</source>
+        <translation>Der Gelenkterm %1 des Priors ist negativ (%2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The prior&apos;s link %1 does not lie inside its bounding volume.</source>
+        <translation>Das Glied %1 des Priors liegt nicht in seinem Hüllvolumen.</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>The prior&apos;s link %1 is not strictly a real body (its pseudo-inertia is not positive definite).</source>
+        <translation>Das Glied %1 des Priors ist nicht streng ein realer Körper (seine Pseudoträgheit ist nicht positiv definit).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+61"/>
+        <source>%n Newton step(s)</source>
+        <translation>
+            <numerusform>%n Newton-Schritt</numerusform>
+            <numerusform>%n Newton-Schritte</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2042,7 +2165,7 @@
         <translation>%1: %2 Gelenkarten für einen Roboter mit %3 Gelenken angegeben</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>expected %1 fields (%2), got %3</source>
         <translation>%1 Felder erwartet (%2), gefunden: %3</translation>
     </message>
@@ -2077,14 +2200,22 @@
         <translation>die Zeit %1 wiederholt die der Zeile %2 mit anderen Werten (%3: dort %4, hier %5); nur eine exakte Wiederholung einer Zeile wird verworfen</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>the file holds no header line; expected one naming the columns %1</source>
         <translation>die Datei enthält keine Kopfzeile; erwartet wird eine, die die Spalten %1 nennt</translation>
     </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source> (and %n stale row(s): values repeated under a new time stamp, treated as missing)</source>
+        <translation>
+            <numerusform> (und %n veraltete Zeile: Werte unter neuem Zeitstempel wiederholt, als fehlend behandelt)</numerusform>
+            <numerusform> (und %n veraltete Zeilen: Werte unter neuem Zeitstempel wiederholt, als fehlend behandelt)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+7"/>
-        <source>%1 samples after the header on line %2; a log needs at least %3</source>
-        <translation>%1 Abtastwerte nach der Kopfzeile in Zeile %2; ein Log braucht mindestens %3</translation>
+        <location line="+4"/>
+        <source>%1 samples after the header on line %2%3; a log needs at least %4</source>
+        <translation>%1 Abtastwerte nach der Kopfzeile in Zeile %2%3; ein Log braucht mindestens %4</translation>
     </message>
 </context>
 <context>
@@ -2444,12 +2575,12 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+89"/>
+        <location filename="../core/service/SessionExport.cpp" line="+91"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>nur URDF-Roboter haben ein URDF, das sich exportieren lässt</translation>
     </message>
     <message>
-        <location line="-27"/>
+        <location line="-29"/>
         <source>no consistent estimate near estimate %1: %2</source>
         <translation>keine konsistente Schätzung nahe Schätzung %1: %2</translation>
     </message>
@@ -2459,7 +2590,7 @@
         <translation>nur URDF-Roboter haben Standardparameter, die sich konsistent machen lassen</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+74"/>
         <source>cannot create the folder %1</source>
         <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -2551,7 +2682,7 @@
         <translation>simulation.realUrdf: %1 ist kein Roboter, der sich bauen ließe: %2</translation>
     </message>
     <message>
-        <location filename="../core/identify/UniformLog.cpp" line="+123"/>
+        <location filename="../core/identify/UniformLog.cpp" line="+145"/>
         <source>%1: the time stamps are off the nominal times t0 + k T (T = %2 ms) by %3 ms at %4 (t = %5 s) and by %6 ms at %7 (t = %8 s), more than half a step apart: the samples are not equidistant (one lost or added?), so the nominal times do not apply</source>
         <translation>%1: die Zeitstempel weichen von den Sollzeiten t0 + k T (T = %2 ms) um %3 ms bei %4 (t = %5 s) und um %6 ms bei %7 (t = %8 s) ab, mehr als einen halben Schritt auseinander: die Abtastwerte sind nicht äquidistant (einer verloren oder hinzugekommen?), also gelten die Sollzeiten nicht</translation>
     </message>
@@ -2697,7 +2828,7 @@
 <context>
     <name>UniformLog</name>
     <message>
-        <location filename="../core/identify/UniformLog.cpp" line="-78"/>
+        <location filename="../core/identify/UniformLog.cpp" line="-99"/>
         <source>sample %1</source>
         <translation>Abtastwert %1</translation>
     </message>
@@ -2707,7 +2838,17 @@
         <translation>Zeile %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
+        <source> (line %1 is stale: it repeated the values of line %2 under a new time stamp and counts as missing)</source>
+        <translation> (Zeile %1 ist veraltet: sie wiederholte die Werte von Zeile %2 unter einem neuen Zeitstempel und zählt als fehlend)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> (lines %1 to %2 are stale: %3 rows that repeated the values of line %4 under new time stamps and count as missing)</source>
+        <translation> (Zeilen %1 bis %2 sind veraltet: %3 Zeilen, die die Werte von Zeile %4 unter neuen Zeitstempeln wiederholten und als fehlend zählen)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1: a log of %2 times, %3 x %4 positions, %5 x %6 velocities, %7 x %8 torques and %9 line numbers; expected n x N for all</source>
         <translation>%1: ein Log mit %2 Zeiten, %3 x %4 Positionen, %5 x %6 Geschwindigkeiten, %7 x %8 Momenten und %9 Zeilennummern; erwartet wird n x N für alle</translation>
     </message>
@@ -2732,14 +2873,29 @@
         <translation>%1: das Log reicht von %2 bis %3 s, zu lang zum Neuabtasten</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+74"/>
         <source>%1: the period (%2 s) and the largest gap (%3 s) must be zero (the default) or positive</source>
         <translation>%1: die Periode (%2 s) und die größte Lücke (%3 s) müssen null (der Standard) oder positiv sein</translation>
     </message>
     <message>
-        <location line="+18"/>
-        <source>%1: a gap of %2 ms after the sample at t = %3 s, more than the %4 ms allowed (--max-gap)</source>
-        <translation>%1: eine Lücke von %2 ms nach dem Abtastwert bei t = %3 s, mehr als die erlaubten %4 ms (--max-gap)</translation>
+        <location line="+5"/>
+        <source>%1: the fit&apos;s filter bandwidth rho (%2 rad/s) must be positive</source>
+        <translation>%1: die Bandbreite rho des Filters der Anpassung (%2 rad/s) muss positiv sein</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 ms allowed (--max-gap)</source>
+        <translation>erlaubten %1 ms (--max-gap)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 ms allowed (--max-gap; by default half the time constant 1/rho of the fit&apos;s filter, rho = %2 rad/s, and at least %3 of the log&apos;s steps)</source>
+        <translation>erlaubten %1 ms (--max-gap; standardmäßig die halbe Zeitkonstante 1/rho des Filters der Anpassung, rho = %2 rad/s, und mindestens %3 Schritte des Logs)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: a gap of %2 ms after the sample at t = %3 s%4, more than the %5</source>
+        <translation>%1: eine Lücke von %2 ms nach dem Abtastwert bei t = %3 s%4, mehr als die %5</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -3011,27 +3167,35 @@
 <context>
     <name>learnid-cli</name>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+42"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+43"/>
         <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
         <translation>--robot: &apos;%1&apos; ist weder eine URDF-Datei noch ein eingebauter Roboter (%2)</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+73"/>
+        <source>robot %1: %2, %3 moving joints</source>
+        <translation>Roboter %1: %2, %3 bewegliche Gelenke</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>learnid-cli: reading %1</source>
         <translation>learnid-cli: %1 wird gelesen</translation>
     </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>fitting %1 standard parameters to %n log(s)</source>
+        <translation>
+            <numerusform>%1 Standardparameter werden an %n Log angepasst</numerusform>
+            <numerusform>%1 Standardparameter werden an %n Logs angepasst</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+37"/>
+        <location line="+24"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>identifiziert von learnid-cli %1 identify am %2</translation>
     </message>
     <message>
-        <location line="-46"/>
-        <source>robot %1 (%2): %3 moving joints</source>
-        <translation>Roboter %1 (%2): %3 bewegliche Gelenke</translation>
-    </message>
-    <message>
-        <location line="-38"/>
+        <location line="-76"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1: vorhergesagtes und gemessenes Moment</translation>
     </message>
@@ -3041,17 +3205,7 @@
         <translation>learnid: %1 aus Logs identifiziert</translation>
     </message>
     <message>
-        <location line="+41"/>
-        <source>fitting %1 standard parameters to %2 logs</source>
-        <translation>%1 Standardparameter werden an %2 Logs angepasst</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>base parameters the logs leave undetermined (kept near the URDF&apos;s values): %1</source>
-        <translation>Basisparameter, die die Logs unbestimmt lassen (nahe den Werten des URDF gehalten): %1</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+72"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
         <location filename="../app/cli/RunCommand.cpp" line="+109"/>
@@ -3266,7 +3420,7 @@
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+209"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -3467,7 +3621,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: Warnung: das URDF als realer Roboter: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-81"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
         <location filename="../app/cli/RunCommand.cpp" line="+8"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
@@ -3526,7 +3680,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-164"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-166"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms: unbekannter Term &apos;%1&apos;; die Terme sind armature, viscous, coulomb und offset, oder none</translation>
     </message>
@@ -3597,11 +3751,11 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+5"/>
-        <source>Longest time step allowed in a log [ms]; default 5 sample periods.</source>
-        <translation>Längster erlaubter Zeitschritt in einem Log [ms]; Standard 5 Abtastperioden.</translation>
+        <source>Longest time step allowed in a log [ms]; default half the time constant 1/rho of the fit&apos;s filter (10 ms at rho 50), at least 2.5 sample periods.</source>
+        <translation>Längster erlaubter Zeitschritt in einem Log [ms]; Standard: die halbe Zeitkonstante 1/rho des Filters der Anpassung (10 ms bei rho 50), mindestens 2,5 Abtastperioden.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
         <translation>Basisglied der Kette; Standard: die Wurzel des URDF.</translation>
     </message>
@@ -3667,7 +3821,7 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>&apos;identify&apos; braucht mindestens ein --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+23"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
         <location line="+16"/>
         <source>name</source>
         <translation>Name</translation>
@@ -3678,33 +3832,12 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>Gel.</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>fit: %1 logs, %2 samples; %3 of %4 standard-parameter directions determined (condition %5)
-fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %8
-</source>
-        <translation>Anpassung: %1 Logs, %2 Abtastwerte; %3 von %4 Standardparameter-Richtungen bestimmt (Kondition %5)
-Anpassung: %6 von %7 Basisparametern unbestimmt (nahe den Werten des URDF gehalten); %8
-</translation>
+        <location line="+33"/>
+        <source>Identified parameters: %1.</source>
+        <translation>Identifizierte Parameter: %1.</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>consistent fit converged</source>
-        <translation>konsistente Anpassung konvergiert</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>consistent fit stopped at its step limit</source>
-        <translation>konsistente Anpassung an ihrer Schrittgrenze angehalten</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>identified parameters: %1
-</source>
-        <translation>identifizierte Parameter: %1
-</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>training logs: residual of the fit</source>
         <translation>Trainings-Logs: Residuum der Anpassung</translation>
     </message>
@@ -3730,7 +3863,7 @@ Anpassung: %6 von %7 Basisparametern unbestimmt (nahe den Werten des URDF gehalt
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../app/cli/TorquePlotPng.cpp" line="+124"/>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="+154"/>
         <source>URDF as given</source>
         <translation>URDF wie gegeben</translation>
     </message>
@@ -6393,7 +6526,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::TorqueFitPlot</name>
     <message>
-        <location filename="../ui/TorqueFitPlot.cpp" line="+79"/>
+        <location filename="../ui/TorqueFitPlot.cpp" line="+93"/>
         <source>Identify to see the predicted against the measured torque.</source>
         <translation>Identifizieren, um das vorhergesagte gegenüber dem gemessenen Moment zu sehen.</translation>
     </message>
@@ -6418,7 +6551,7 @@ Verhältnis %</translation>
         <translation>URDF wie gegeben</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+83"/>
         <source>All joints</source>
         <translation>Alle Gelenke</translation>
     </message>

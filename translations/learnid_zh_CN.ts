@@ -488,7 +488,7 @@
         <translation>%1：该日志属于计划 %2，而不是计划 %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>sample %1 (t = %2 s) is beyond the plan&apos;s %3 samples, the last at t = %4 s</source>
         <translation>采样点 %1（t = %2 s）超出了计划的 %3 个采样点，最后一个位于 t = %4 s</translation>
     </message>
@@ -776,7 +776,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+86"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+128"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>连杆 %1（%2）：质量 %3 kg：不是真实刚体</translation>
     </message>
@@ -794,6 +794,11 @@
         <location line="+4"/>
         <source>physically consistent: every link a real body</source>
         <translation>物理一致：每个连杆都是真实刚体</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>link %1 (%2): not a plausible body: %3</source>
+        <translation>连杆 %1（%2）：不是合理的刚体：%3</translation>
     </message>
 </context>
 <context>
@@ -1154,7 +1159,7 @@
 <context>
     <name>LogFit</name>
     <message>
-        <location filename="../core/identify/LogFit.cpp" line="+140"/>
+        <location filename="../core/identify/LogFit.cpp" line="+141"/>
         <source>%1 has %2 joints, the robot %3</source>
         <translation>%1 有 %2 个关节，机器人有 %3 个</translation>
     </message>
@@ -1169,12 +1174,12 @@
         <translation>没有可用于拟合的采样点</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>the prior share must lie between 0 and 1</source>
         <translation>先验比例必须在 0 到 1 之间</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+98"/>
         <source>%1 does not fit the robot&apos;s joints or parameters</source>
         <translation>%1 与机器人的关节或参数不符</translation>
     </message>
@@ -1182,7 +1187,7 @@
 <context>
     <name>LogIdentification</name>
     <message>
-        <location filename="../core/service/LogIdentification.cpp" line="+79"/>
+        <location filename="../core/service/LogIdentification.cpp" line="+81"/>
         <source>identification cancelled; nothing was produced</source>
         <translation>辨识已取消；未生成任何结果</translation>
     </message>
@@ -1213,9 +1218,98 @@
     </message>
 </context>
 <context>
+    <name>LogIdentificationSummary</name>
+    <message>
+        <location filename="../core/service/LogIdentificationSummary.cpp" line="+21"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine all %2 (condition %3).</source>
+        <translation>在 %1 个标准参数中，任何数据至多能确定 %2 个组合（即基参数）；这些日志确定了全部 %2 个（条件数 %3）。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n stay near the URDF&apos;s values.</source>
+        <translation>
+            <numerusform>在 %1 个标准参数中，任何数据至多能确定 %2 个组合（即基参数）；这些日志确定了这 %2 个方向中的 %3 个（条件数 %4），其余 %n 个保持在 URDF 值附近。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12"/>
+        <source>%n of the %1 base parameters are mostly undetermined by these logs (less than half determined) and kept near the URDF&apos;s values: %2.</source>
+        <translation>
+            <numerusform>%1 个基参数中有 %n 个基本未被这些日志确定（确定的部分不到一半），保持在 URDF 值附近：%2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs.</source>
+        <translation>%1 个基参数中没有一个基本未被这些日志确定。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs: the %n direction(s) they miss are shared among several.</source>
+        <translation>
+            <numerusform>%1 个基参数中没有一个基本未被这些日志确定：日志未确定的 %n 个方向分散在多个基参数上。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n stale row(s) (values repeated under a new time stamp) treated as missing</source>
+        <translation>
+            <numerusform>%n 行过时数据（在新时间戳下重复了之前的值）按缺失处理</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n row(s) written twice (the same time stamp and values) dropped</source>
+        <translation>
+            <numerusform>%n 行重复写入的数据（时间戳和值都相同）已丢弃</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2.</source>
+        <translation>%1：%2。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 (URDF robot &quot;%2&quot;)</source>
+        <translation>%1（URDF 机器人“%2”）</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>%1 in %2, %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1，位于 %2，%n 个可动关节。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 (built-in), %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1（内置），%n 个可动关节。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Fitted to %n log(s), %1 samples; %2.</source>
+        <translation>
+            <numerusform>用 %n 个日志、%1 个采样点拟合；%2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the consistent fit converged</source>
+        <translation>一致拟合已收敛</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the consistent fit stopped at its step limit</source>
+        <translation>一致拟合在步数上限处停止</translation>
+    </message>
+</context>
+<context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+28"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
         <source>Reading the robot %1…</source>
         <translation>正在读取机器人 %1…</translation>
     </message>
@@ -1242,54 +1336,22 @@
         <translation>正在预测验证日志 %1/%2：%3…</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; (%2), %3 moving joints.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt;（%2），%3 个可动关节。&lt;/p&gt;</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+4"/>
-        <source>&lt;p&gt;Fitted to %n log(s), %1 samples: %2 of %3 standard-parameter directions determined (condition %4); %5.&lt;/p&gt;</source>
-        <translation>
-            <numerusform>&lt;p&gt;用 %n 个日志、%1 个采样点拟合：%3 个标准参数方向中确定了 %2 个（条件数 %4）；%5。&lt;/p&gt;</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the consistent fit converged</source>
-        <translation>一致拟合已收敛</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the consistent fit stopped at its step limit</source>
-        <translation>一致拟合在步数上限处停止</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+16"/>
         <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;一致性：&lt;/b&gt;&lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters:&lt;/b&gt; none of %1.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;未确定的基参数：&lt;/b&gt;无（共 %1 个）。&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters&lt;/b&gt; (kept near the URDF&apos;s values), %1 of %2: %3&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;未确定的基参数&lt;/b&gt;（保持在 URDF 值附近），%2 个中有 %1 个：%3&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;训练残差&lt;/b&gt;，各关节 RMS [N m]：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>&lt;p style=&quot;color:#8a5300&quot;&gt;&lt;b&gt;Warning:&lt;/b&gt; the URDF as a real robot: %1&lt;/p&gt;</source>
         <translation>&lt;p style=&quot;color:#8a5300&quot;&gt;&lt;b&gt;警告：&lt;/b&gt;该 URDF 作为真实机器人：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Identified; no validation log. Accept the result to export it.</source>
         <translation>已辨识；没有验证日志。接受结果后即可导出。</translation>
     </message>
@@ -1566,7 +1628,7 @@
         <translation>DCF 片段：关节 %1 不存在；机器人有 %2 个关节</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+164"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+166"/>
         <source>must be given for every parameter or for none</source>
         <translation>必须为每个参数都给出，或都不给出</translation>
     </message>
@@ -1576,7 +1638,7 @@
         <translation>determined 为 %2 时必须是“%1”，实际为“%3”</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>must be an object index written as &quot;0x&quot; and four hex digits, got &quot;%1&quot;</source>
         <translation>必须是以“0x”加四位十六进制数字写成的对象索引，实际为“%1”</translation>
     </message>
@@ -1805,24 +1867,6 @@
     </message>
 </context>
 <context>
-    <name>PhysicalConsistency</name>
-    <message>
-        <location filename="../core/model/LogCholesky.cpp" line="+17"/>
-        <source>%1 has %2 entries; a link has 10.</source>
-        <translation>%1 有 %2 个条目；一个连杆有 10 个。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1[%2] is not finite.</source>
-        <translation>%1[%2] 不是有限值。</translation>
-    </message>
-    <message>
-        <location line="+91"/>
-        <source>The link is not strictly physically consistent (mass %1 kg, smallest pseudo-inertia eigenvalue %2); it has no log-Cholesky parameters.</source>
-        <translation>该连杆不满足严格的物理一致性（质量 %1 kg，伪惯量矩阵的最小特征值 %2）；它没有对数 Cholesky 参数。</translation>
-    </message>
-</context>
-<context>
     <name>PlanCsv</name>
     <message>
         <location filename="../core/io/PlanCsv.cpp" line="+109"/>
@@ -1919,7 +1963,7 @@
 <context>
     <name>Plausibility</name>
     <message>
-        <location filename="../core/model/Plausibility.cpp" line="+44"/>
+        <location filename="../core/model/Plausibility.cpp" line="+45"/>
         <source>The CAD vector has %1 entries, too few for %2 links.</source>
         <translation>CAD 向量有 %1 个元素，不足以描述 %2 个连杆。</translation>
     </message>
@@ -1934,9 +1978,80 @@
         <translation>待检查的参数不是有限值。</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+32"/>
+        <source>mass %1 kg</source>
+        <translation>质量 %1 kg</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
+        <translation>最小主惯量 %1 kg m²，低于 CAD 连杆最小主惯量（%3 kg m²）的 %2 %</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
+        <translation>(I1 + I2) / I3 = %1，低于 %2：像针或薄板</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
+        <translation>质心位于连杆包围体之外（其尺寸的 %1 倍）</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Index %1 is outside the %2 standard parameters.</source>
         <translation>索引 %1 超出了 %2 个标准参数的范围。</translation>
+    </message>
+</context>
+<context>
+    <name>PlausibleEstimate</name>
+    <message>
+        <location filename="../core/model/PlausibleEstimate.cpp" line="+30"/>
+        <source>The estimation problem&apos;s sizes do not match: A is %1 x %2, b has %3 entries, the prior %4 for %5 links.</source>
+        <translation>估计问题的维度不匹配：A 为 %1 x %2，b 有 %3 个元素，先验有 %4 个，连杆 %5 个。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The estimation problem has entries that are not finite.</source>
+        <translation>估计问题中有非有限的元素。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The prior share must lie between 0 and 1, not %1.</source>
+        <translation>先验权重必须在 0 和 1 之间，而不是 %1。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 bounding volumes for %2 links.</source>
+        <translation>%1 个包围体对应 %2 个连杆。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+3"/>
+        <source>Index %1 is not a joint term.</source>
+        <translation>索引 %1 不是关节项。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The prior&apos;s joint term %1 is negative (%2).</source>
+        <translation>先验的关节项 %1 为负（%2）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The prior&apos;s link %1 does not lie inside its bounding volume.</source>
+        <translation>先验的连杆 %1 不在其包围体内。</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>The prior&apos;s link %1 is not strictly a real body (its pseudo-inertia is not positive definite).</source>
+        <translation>先验的连杆 %1 不是严格意义上的真实刚体（其伪惯量不是正定的）。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+61"/>
+        <source>%n Newton step(s)</source>
+        <translation>
+            <numerusform>%n 个牛顿步</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2040,7 +2155,7 @@
         <translation>%1：为有 %3 个关节的机器人给出了 %2 个关节类型</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>expected %1 fields (%2), got %3</source>
         <translation>应有 %1 个字段（%2），实际为 %3</translation>
     </message>
@@ -2075,14 +2190,21 @@
         <translation>时间 %1 与第 %2 行的相同，但数值不同（%3：那里为 %4，这里为 %5）；只有完全重复的行才会被丢弃</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>the file holds no header line; expected one naming the columns %1</source>
         <translation>文件中没有表头行；应有一行表头列出各列 %1</translation>
     </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source> (and %n stale row(s): values repeated under a new time stamp, treated as missing)</source>
+        <translation>
+            <numerusform>（另有 %n 行过时数据：在新时间戳下重复了之前的值，按缺失处理）</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+7"/>
-        <source>%1 samples after the header on line %2; a log needs at least %3</source>
-        <translation>第 %2 行的表头之后有 %1 个采样点；日志至少需要 %3 个</translation>
+        <location line="+4"/>
+        <source>%1 samples after the header on line %2%3; a log needs at least %4</source>
+        <translation>第 %2 行的表头之后有 %1 个采样点%3；日志至少需要 %4 个</translation>
     </message>
 </context>
 <context>
@@ -2442,12 +2564,12 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+89"/>
+        <location filename="../core/service/SessionExport.cpp" line="+91"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>只有 URDF 机器人才有可导出的 URDF</translation>
     </message>
     <message>
-        <location line="-27"/>
+        <location line="-29"/>
         <source>no consistent estimate near estimate %1: %2</source>
         <translation>估计 %1 附近没有一致的估计：%2</translation>
     </message>
@@ -2457,7 +2579,7 @@
         <translation>只有 URDF 机器人有可使其一致的标准参数</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+74"/>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
@@ -2549,7 +2671,7 @@
         <translation>simulation.realUrdf：%1 不是可以制造出来的机器人：%2</translation>
     </message>
     <message>
-        <location filename="../core/identify/UniformLog.cpp" line="+123"/>
+        <location filename="../core/identify/UniformLog.cpp" line="+145"/>
         <source>%1: the time stamps are off the nominal times t0 + k T (T = %2 ms) by %3 ms at %4 (t = %5 s) and by %6 ms at %7 (t = %8 s), more than half a step apart: the samples are not equidistant (one lost or added?), so the nominal times do not apply</source>
         <translation>%1：时间戳偏离名义时刻 t0 + k T（T = %2 ms），在%4（t = %5 s）处偏离 %3 ms，在%7（t = %8 s）处偏离 %6 ms，两者相差超过半个步长：采样点不等距（丢失或多出了一个？），因此名义时刻不适用</translation>
     </message>
@@ -2695,7 +2817,7 @@
 <context>
     <name>UniformLog</name>
     <message>
-        <location filename="../core/identify/UniformLog.cpp" line="-78"/>
+        <location filename="../core/identify/UniformLog.cpp" line="-99"/>
         <source>sample %1</source>
         <translation>采样点 %1</translation>
     </message>
@@ -2705,7 +2827,17 @@
         <translation>第 %1 行</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
+        <source> (line %1 is stale: it repeated the values of line %2 under a new time stamp and counts as missing)</source>
+        <translation>（第 %1 行是过时数据：它在新时间戳下重复了第 %2 行的值，按缺失计）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> (lines %1 to %2 are stale: %3 rows that repeated the values of line %4 under new time stamps and count as missing)</source>
+        <translation>（第 %1 至 %2 行是过时数据：%3 行在新时间戳下重复了第 %4 行的值，按缺失计）</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1: a log of %2 times, %3 x %4 positions, %5 x %6 velocities, %7 x %8 torques and %9 line numbers; expected n x N for all</source>
         <translation>%1：日志有 %2 个时间、%3 x %4 个位置、%5 x %6 个速度、%7 x %8 个力矩和 %9 个行号；全部应为 n x N</translation>
     </message>
@@ -2730,14 +2862,29 @@
         <translation>%1：日志跨度为 %2 到 %3 s，太长，无法重采样</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+74"/>
         <source>%1: the period (%2 s) and the largest gap (%3 s) must be zero (the default) or positive</source>
         <translation>%1：周期（%2 s）和最大间隔（%3 s）必须为零（默认）或正数</translation>
     </message>
     <message>
-        <location line="+18"/>
-        <source>%1: a gap of %2 ms after the sample at t = %3 s, more than the %4 ms allowed (--max-gap)</source>
-        <translation>%1：t = %3 s 处的采样点之后有 %2 ms 的间隔，超过允许的 %4 ms（--max-gap）</translation>
+        <location line="+5"/>
+        <source>%1: the fit&apos;s filter bandwidth rho (%2 rad/s) must be positive</source>
+        <translation>%1：拟合滤波器的带宽 rho（%2 rad/s）必须为正</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 ms allowed (--max-gap)</source>
+        <translation>允许的 %1 ms（--max-gap）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 ms allowed (--max-gap; by default half the time constant 1/rho of the fit&apos;s filter, rho = %2 rad/s, and at least %3 of the log&apos;s steps)</source>
+        <translation>允许的 %1 ms（--max-gap；默认为拟合滤波器时间常数 1/rho 的一半，rho = %2 rad/s，且至少为日志步长的 %3 倍）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: a gap of %2 ms after the sample at t = %3 s%4, more than the %5</source>
+        <translation>%1：t = %3 s 处的采样点之后有 %2 ms 的间隔%4，超过%5</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -3009,27 +3156,34 @@
 <context>
     <name>learnid-cli</name>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+42"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+43"/>
         <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
         <translation>--robot：&apos;%1&apos; 既不是 URDF 文件，也不是内置机器人（%2）</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+73"/>
+        <source>robot %1: %2, %3 moving joints</source>
+        <translation>机器人 %1：%2，%3 个可动关节</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>learnid-cli: reading %1</source>
         <translation>learnid-cli：正在读取 %1</translation>
     </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>fitting %1 standard parameters to %n log(s)</source>
+        <translation>
+            <numerusform>正在用 %n 个日志拟合 %1 个标准参数</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+37"/>
+        <location line="+24"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>由 learnid-cli %1 identify 于 %2 辨识</translation>
     </message>
     <message>
-        <location line="-46"/>
-        <source>robot %1 (%2): %3 moving joints</source>
-        <translation>机器人 %1（%2）：%3 个可动关节</translation>
-    </message>
-    <message>
-        <location line="-38"/>
+        <location line="-76"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1：预测力矩与测量力矩</translation>
     </message>
@@ -3039,17 +3193,7 @@
         <translation>learnid：根据日志辨识 %1</translation>
     </message>
     <message>
-        <location line="+41"/>
-        <source>fitting %1 standard parameters to %2 logs</source>
-        <translation>正在用 %2 个日志拟合 %1 个标准参数</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>base parameters the logs leave undetermined (kept near the URDF&apos;s values): %1</source>
-        <translation>日志未能确定的基参数（保持在 URDF 值附近）：%1</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+72"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
         <location filename="../app/cli/RunCommand.cpp" line="+109"/>
@@ -3263,7 +3407,7 @@
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+209"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -3464,7 +3608,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：警告：该 URDF 作为真实机器人：%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-81"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
         <location filename="../app/cli/RunCommand.cpp" line="+8"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
@@ -3523,7 +3667,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-164"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-166"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms：未知项 &apos;%1&apos;；可用的项为 armature、viscous、coulomb 和 offset，或 none</translation>
     </message>
@@ -3594,11 +3738,11 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+5"/>
-        <source>Longest time step allowed in a log [ms]; default 5 sample periods.</source>
-        <translation>日志中允许的最长时间步长 [ms]；默认 5 个采样周期。</translation>
+        <source>Longest time step allowed in a log [ms]; default half the time constant 1/rho of the fit&apos;s filter (10 ms at rho 50), at least 2.5 sample periods.</source>
+        <translation>日志中允许的最长时间步长 [ms]；默认为拟合滤波器时间常数 1/rho 的一半（rho 为 50 时为 10 ms），至少 2.5 个采样周期。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
         <translation>运动链的基座连杆；默认：URDF 的根连杆。</translation>
     </message>
@@ -3664,7 +3808,7 @@ and compare the result with the URDF as given on --validate logs.
         <translation>&apos;identify&apos; 至少需要一个 --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+23"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
         <location line="+16"/>
         <source>name</source>
         <translation>名称</translation>
@@ -3675,33 +3819,12 @@ and compare the result with the URDF as given on --validate logs.
         <translation>关节</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>fit: %1 logs, %2 samples; %3 of %4 standard-parameter directions determined (condition %5)
-fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %8
-</source>
-        <translation>拟合：%1 个日志，%2 个采样点；%4 个标准参数方向中确定了 %3 个（条件数 %5）
-拟合：%7 个基参数中有 %6 个未确定（保持在 URDF 值附近）；%8
-</translation>
+        <location line="+33"/>
+        <source>Identified parameters: %1.</source>
+        <translation>辨识出的参数：%1。</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>consistent fit converged</source>
-        <translation>一致拟合已收敛</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>consistent fit stopped at its step limit</source>
-        <translation>一致拟合在步数上限处停止</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>identified parameters: %1
-</source>
-        <translation>辨识出的参数：%1
-</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>training logs: residual of the fit</source>
         <translation>训练日志：拟合残差</translation>
     </message>
@@ -3727,7 +3850,7 @@ fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../app/cli/TorquePlotPng.cpp" line="+124"/>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="+154"/>
         <source>URDF as given</source>
         <translation>给定的 URDF</translation>
     </message>
@@ -6382,7 +6505,7 @@ ratio %</source>
 <context>
     <name>learnid::TorqueFitPlot</name>
     <message>
-        <location filename="../ui/TorqueFitPlot.cpp" line="+79"/>
+        <location filename="../ui/TorqueFitPlot.cpp" line="+93"/>
         <source>Identify to see the predicted against the measured torque.</source>
         <translation>辨识后即可查看预测力矩与测量力矩的对比。</translation>
     </message>
@@ -6407,7 +6530,7 @@ ratio %</source>
         <translation>给定的 URDF</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+83"/>
         <source>All joints</source>
         <translation>所有关节</translation>
     </message>

@@ -9,6 +9,7 @@
 #include "io/ScenarioFile.h"
 #include "model/Error.h"
 #include "service/LogIdentification.h"
+#include "service/LogIdentificationSummary.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -87,7 +88,7 @@ plotFiles(const IdentifyOptions &o, const LogIdentificationResult &result, const
         files.append(
             {o.reportPath, identifyReportPdf(QCoreApplication::translate(
                                                  "learnid-cli", "learnid: %1 identified from logs")
-                                                 .arg(result.robot.chain.name),
+                                                 .arg(logRobotName(result.robot)),
                                              text, pngs)});
     }
     return files;
@@ -112,8 +113,8 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
             exports.parameterPath = o.exportPath;
             exports.controller = exportController(o, model.dof());
         }
-        progress(QCoreApplication::translate("learnid-cli", "robot %1 (%2): %3 moving joints")
-                     .arg(robot.chain.name, robot.source)
+        progress(QCoreApplication::translate("learnid-cli", "robot %1: %2, %3 moving joints")
+                     .arg(logRobotName(robot), robot.source)
                      .arg(model.dof()));
 
         const auto stage = [&](const LogIdentificationProgress &p) {
@@ -127,9 +128,9 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
                 break;
             case LogIdentificationStage::Fit:
                 progress(QCoreApplication::translate("learnid-cli",
-                                                     "fitting %1 standard parameters to %2 logs")
-                             .arg(model.standardCount())
-                             .arg(p.count));
+                                                     "fitting %1 standard parameters to %n log(s)",
+                                                     nullptr, p.count)
+                             .arg(model.standardCount()));
                 break;
             case LogIdentificationStage::Robot:
             case LogIdentificationStage::Validate:
@@ -137,16 +138,8 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
             }
         };
         const LogIdentificationResult result = identifyFromLogs(robot, request, stage);
-        if (!result.undetermined.isEmpty())
-            progress(QCoreApplication::translate("learnid-cli",
-                                                 "base parameters the logs leave undetermined "
-                                                 "(kept near the URDF's values): %1")
-                         .arg(result.undetermined.join(QStringLiteral(", "))));
-
-        QString text = identifySummary(model, result.fit, int(result.trainingLogs.size()),
-                                       result.consistency) +
-                       modelWarningText(result.robot.warnings) + QLatin1Char('\n') +
-                       trainingTable(model, result.fit) + QLatin1Char('\n') +
+        QString text = identifySummary(result) + modelWarningText(result.robot.warnings) +
+                       QLatin1Char('\n') + trainingTable(model, result.fit) + QLatin1Char('\n') +
                        parameterTable(model, result.fit);
         for (const LogValidation &v : result.validation) {
             text += QLatin1Char('\n') + validationTable(model, v.source,

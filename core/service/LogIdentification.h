@@ -68,6 +68,15 @@ struct LogValidation
     Eigen::Index samples() const { return time.size(); }
 };
 
+/// How one log was read: the rows the reader dropped (io/RobotLogCsv.h).
+struct LogReading
+{
+    QString source;           ///< the log's path
+    Eigen::Index samples = 0; ///< the samples kept
+    int repeated = 0;         ///< rows written twice (the same time, the same values), dropped
+    int stale = 0; ///< stale rows (the values before under a new time stamp), treated as missing
+};
+
 /// What an identification from logs produced. Nothing of it is written anywhere until
 /// logExportFiles()/writeLogExport() is asked to.
 struct LogIdentificationResult
@@ -81,6 +90,7 @@ struct LogIdentificationResult
     bool consistent = false;
     QStringList undetermined; ///< names of the base parameters the logs leave undetermined
     std::vector<LogValidation> validation; ///< one per validation log, in order
+    std::vector<LogReading> readings;      ///< the training logs, then the validation logs
 
     const ChainModel &model() const { return *robot.model; }
 };
@@ -122,8 +132,9 @@ QStringList builtInUrdfRobots();
 LogRobot loadLogRobot(const LogIdentificationRequest &request);
 
 /// The pipeline of `learnid-cli identify` (bench/realdata.cpp): every log read
-/// (readRobotLogFile: revolute angles beyond 1.05 turns refused as degrees), resampled
-/// (resampleUniform) and filtered (filterLog), the training logs fitted together (fitLogs),
+/// (readRobotLogFile: revolute angles beyond 1.05 turns refused as degrees, stale rows dropped),
+/// resampled (resampleUniform; the default gap allowed follows request.filter.rho,
+/// defaultMaxGap()) and filtered (filterLog), the training logs fitted together (fitLogs),
 /// the validation logs predicted with the URDF as given and the fit (torqueFigures). observer
 /// hears of each stage as it begins; cancel (may be null) is read before each stage and once
 /// more at the end: when set, LogIdentificationCancelled is thrown. Throws Error for no
