@@ -776,7 +776,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+128"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+129"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
     </message>
@@ -5444,12 +5444,17 @@ Verhältnis %</translation>
         <translation>⚠ beibehalten</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>✗ no</source>
         <translation>✗ nein</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <source>⚠ not plausible</source>
+        <translation>⚠ nicht plausibel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>✓</source>
         <translation>✓</translation>
     </message>

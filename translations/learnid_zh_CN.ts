@@ -776,7 +776,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+128"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+129"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>连杆 %1（%2）：质量 %3 kg：不是真实刚体</translation>
     </message>
@@ -5427,12 +5427,17 @@ ratio %</source>
         <translation>⚠ 保留</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>✗ no</source>
         <translation>✗ 否</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <source>⚠ not plausible</source>
+        <translation>⚠ 不合理</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>✓</source>
         <translation>✓</translation>
     </message>
