@@ -90,7 +90,8 @@ void TestPlausibleSession::needleEstimate_isReportedAndTheAcceptedEstimateIsPlau
     const EstimateFigures figures = estimateFigures(chain, p.path, {phi}, std::nullopt);
     QVERIFY(figures.consistencyChecked);
     const QString link3 = chain.standardParameters()[20].group;
-    QVERIFY(figures.inconsistentGroups.contains(link3) || figures.implausibleGroups.contains(link3));
+    QVERIFY(figures.inconsistentGroups.contains(link3) ||
+            figures.implausibleGroups.contains(link3));
     QVERIFY(!figures.inconsistentGroups.contains(chain.standardParameters()[10].group));
     QVERIFY(figures.consistencyLines.join(QLatin1Char(' ')).contains(QLatin1String("link 3")));
 
@@ -104,21 +105,23 @@ void TestPlausibleSession::needleEstimate_isReportedAndTheAcceptedEstimateIsPlau
     const auto cadVerdict = checkPlausibility(prior, prior, 6, volumes);
     for (const LinkPlausibility &l : checkPlausibility(c.nearestStandard, prior, 6, volumes)) {
         if (cadVerdict[size_t(l.link)].plausible)
-            QVERIFY2(l.plausible, qPrintable(QStringLiteral("link %1: %2")
-                                                 .arg(l.link + 1)
-                                                 .arg(plausibilityProblem(l))));
+            QVERIFY2(
+                l.plausible,
+                qPrintable(
+                    QStringLiteral("link %1: %2").arg(l.link + 1).arg(plausibilityProblem(l))));
     }
     // Link 3 is no needle any more: thicker than the estimate, as thick as the floor allows.
     const auto nearest3 = checkPlausibility(c.nearestStandard, prior, 6, volumes)[2];
-    QVERIFY2(nearest3.triangleRatio > verdict[2].triangleRatio,
-             qPrintable(QStringLiteral("%1 vs %2")
-                            .arg(nearest3.triangleRatio)
-                            .arg(verdict[2].triangleRatio)));
+    QVERIFY2(
+        nearest3.triangleRatio > verdict[2].triangleRatio,
+        qPrintable(
+            QStringLiteral("%1 vs %2").arg(nearest3.triangleRatio).arg(verdict[2].triangleRatio)));
     QVERIFY(tinyJointTerms(c.nearestStandard, chain.nonnegativeStandard()).empty());
     LEARNID_COMPARE_MATRIX(chain.baseFromStandard(c.nearestStandard), c.nearest, 1e-12);
-    QVERIFY2(c.pathTorqueChangePercent < 1.0, qPrintable(QString::number(c.pathTorqueChangePercent)));
-    LEARNID_COMPARE_NEAR(c.pathTorqueChangePercent, pathTorqueErrorPercent(chain, p.path, c.nearest, phi),
-                         1e-6);
+    QVERIFY2(c.pathTorqueChangePercent < 1.0,
+             qPrintable(QString::number(c.pathTorqueChangePercent)));
+    LEARNID_COMPARE_NEAR(c.pathTorqueChangePercent,
+                         pathTorqueErrorPercent(chain, p.path, c.nearest, phi), 1e-6);
     // Which standard parameters the path determines: a share each; link 1's mass is never seen
     // (the first axis is vertical).
     QCOMPARE(c.standardDetermined.size(), size_t(chain.standardCount()));
