@@ -37,13 +37,10 @@ LinkVerdictTable linkVerdictTable(const ChainModel &model, const EstimateConsist
                        "%2, the centre of mass inside the link's bounding volume).")
                   .arg(QString::number(100.0 * rule.minMomentShare, 'g', 3),
                        QString::number(1.0 + rule.triangleMargin, 'f', 2));
-    t.header = QStringList{Text::tr("link"),
-                           Text::tr("I1 [kg m^2]"),
-                           Text::tr("CAD I1 [kg m^2]"),
-                           Text::tr("(I1 + I2) / I3"),
-                           Text::tr("CoM in volume"),
-                           Text::tr("consistent"),
-                           Text::tr("plausible")};
+    t.header = QStringList{
+        Text::tr("link"),           Text::tr("I1 [kg m^2]"),   Text::tr("CAD I1 [kg m^2]"),
+        Text::tr("(I1 + I2) / I3"), Text::tr("CoM in volume"), Text::tr("consistent"),
+        Text::tr("plausible")};
     if (!verdict.applicable || verdict.plausibility.size() != verdict.links.size())
         return t;
     for (const LinkPlausibility &p : verdict.plausibility) {
@@ -74,7 +71,8 @@ QString linkVerdictText(const LinkVerdictTable &table)
     const auto line = [&](const QStringList &cells) {
         QStringList out;
         for (int c = 0; c < cells.size() && c < widths.size(); ++c)
-            out << (c == 0 ? cells[c].leftJustified(widths[c]) : cells[c].rightJustified(widths[c]));
+            out << (c == 0 ? cells[c].leftJustified(widths[c])
+                           : cells[c].rightJustified(widths[c]));
         return out.join(QStringLiteral("  ")) + QLatin1Char('\n');
     };
     QString text = line(table.header);

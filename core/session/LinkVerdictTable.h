@@ -18,8 +18,8 @@ class ChainModel;
 /// plausible (a body a robot's link could be; docs/robots.md §6).
 struct LinkVerdictTable
 {
-    QString title; ///< a sentence saying what the columns mean (long: wrap it to show it)
-    QStringList header;     ///< the column titles
+    QString title;           ///< a sentence saying what the columns mean (long: wrap it to show it)
+    QStringList header;      ///< the column titles
     QList<QStringList> rows; ///< per link, its cells (as many as header)
     QList<bool> plausible;   ///< per row: the link consistent and plausible
 };

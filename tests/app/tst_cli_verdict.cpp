@@ -72,11 +72,10 @@ void TestCliVerdict::kuka_verdictRowsAreTheLibrarysOfTheExportedParameters()
     if (urdf.isEmpty() || run1.isEmpty() || run3.isEmpty())
         QSKIP(qPrintable(test::sharedDataMissing()));
     QTemporaryDir dir;
-    const test::ToolRun r =
-        identify({QStringLiteral("--robot"), urdf, QStringLiteral("--log"), run3,
-                  QStringLiteral("--validate"), run1, QStringLiteral("--export"),
-                  QStringLiteral("lwr.json")},
-                 dir.path());
+    const test::ToolRun r = identify({QStringLiteral("--robot"), urdf, QStringLiteral("--log"),
+                                      run3, QStringLiteral("--validate"), run1,
+                                      QStringLiteral("--export"), QStringLiteral("lwr.json")},
+                                     dir.path());
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
 
     // The verdict of the library on what the tool exported (the fit's standard parameters,
@@ -148,10 +147,10 @@ void TestCliVerdict::implausiblePrior_warningsWrappedAndEveryLinkJudged()
     QVERIFY(out.open(QIODevice::WriteOnly) && out.write(text) == text.size());
     out.close();
 
-    const test::ToolRun r = identify({QStringLiteral("--robot"), out.fileName(),
-                                      QStringLiteral("--log"), run3, QStringLiteral("--report"),
-                                      QStringLiteral("report.pdf")},
-                                     dir.path());
+    const test::ToolRun r =
+        identify({QStringLiteral("--robot"), out.fileName(), QStringLiteral("--log"), run3,
+                  QStringLiteral("--report"), QStringLiteral("report.pdf")},
+                 dir.path());
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     // Each problem a warning, its sentence wrapped at 100 characters with the continuation
     // indented (the PDF report prints the same lines), nothing of it lost.

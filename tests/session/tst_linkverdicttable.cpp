@@ -42,8 +42,7 @@ const QByteArray urdf = R"(<robot name="boxes">
 // Box moments about its centre, ascending: m (b^2 + c^2) / 12 and so on.
 Eigen::Vector3d boxMoments(double m, double a, double b, double c)
 {
-    Eigen::Vector3d i(m * (b * b + c * c) / 12, m * (a * a + c * c) / 12,
-                      m * (a * a + b * b) / 12);
+    Eigen::Vector3d i(m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12);
     std::sort(i.data(), i.data() + 3);
     return i;
 }
@@ -129,13 +128,13 @@ void TestLinkVerdictTable::noMassAndUnderflow_areNotConsistentOrNotPlausible()
     QCOMPARE(verdict.tinyTerms, std::vector<int>{fc2});
 
     const LinkVerdictTable table = linkVerdictTable(model, verdict);
-    QCOMPARE(table.rows[0].mid(1),
-             (QStringList{QStringLiteral("-"),
-                          QString::number(boxMoments(2, 0.1, 0.1, 0.4)[0], 'g', 3),
-                          QStringLiteral("-"), QStringLiteral("-"), QStringLiteral("no"),
-                          QStringLiteral("no")}));
-    QCOMPARE(table.rows[1].mid(4), (QStringList{QStringLiteral("yes"), QStringLiteral("yes"),
-                                                QStringLiteral("yes")}));
+    QCOMPARE(
+        table.rows[0].mid(1),
+        (QStringList{QStringLiteral("-"), QString::number(boxMoments(2, 0.1, 0.1, 0.4)[0], 'g', 3),
+                     QStringLiteral("-"), QStringLiteral("-"), QStringLiteral("no"),
+                     QStringLiteral("no")}));
+    QCOMPARE(table.rows[1].mid(4),
+             (QStringList{QStringLiteral("yes"), QStringLiteral("yes"), QStringLiteral("yes")}));
 
     const QStringList described = verdict.describe(model);
     QCOMPARE(described,
