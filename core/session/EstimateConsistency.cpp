@@ -83,7 +83,8 @@ EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eige
     if (!chain || phi.size() != model.parameterCount() || !phi.allFinite())
         return {};
     const int n = chain->dof();
-    const Eigen::VectorXd prior = realBodyPrior(chain->cadStandard(), n);
+    const Eigen::VectorXd prior =
+        realBodyPrior(chain->cadStandard(), n, chain->nonnegativeStandard());
     EstimateConsistency out =
         checkStandardConsistency(*chain, chain->base().standardFromBase(phi, prior));
     out.nearest = phi;

@@ -62,6 +62,7 @@ class TestCliVerdict : public QObject
 private slots:
     void kuka_verdictRowsAreTheLibrarysOfTheExportedParameters();
     void implausiblePrior_warningsWrappedAndEveryLinkJudged();
+    void negativeFrictionPrior_warnedNotRefused_exportHasNone();
 };
 
 void TestCliVerdict::kuka_verdictRowsAreTheLibrarysOfTheExportedParameters()
@@ -174,6 +175,43 @@ void TestCliVerdict::implausiblePrior_warningsWrappedAndEveryLinkJudged()
                                          "plate at best)"));
     QCOMPARE(verdictRows(r.out).size(), 7);
     QVERIFY(QFile::exists(dir.filePath(QStringLiteral("report.pdf"))));
+}
+
+// FloBaRoID's identified URDF as the prior: links that are no real bodies and four negative
+// <dynamics friction> values. A prior is warned about, not refused (issue 22, part 5); the fit
+// starts from its nearest real bodies and frictions (realBodyPrior: a negative friction at 0)
+// and writes no negative friction.
+void TestCliVerdict::negativeFrictionPrior_warnedNotRefused_exportHasNone()
+{
+    const QString urdf =
+        test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4_identified.urdf"));
+    const QString run3 = test::sharedDataFile(QStringLiteral("kuka-lwr4/measurements_3.csv"));
+    if (urdf.isEmpty() || run3.isEmpty())
+        QSKIP(qPrintable(test::sharedDataMissing()));
+    QTemporaryDir dir;
+    const test::ToolRun r = identify({QStringLiteral("--robot"), urdf, QStringLiteral("--log"),
+                                      run3, QStringLiteral("--export"), QStringLiteral("flo.json")},
+                                     dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const SerialChain chain = readUrdfChain(urdf);
+    int negative = 0;
+    for (const ChainJoint &j : chain.joints) {
+        if (j.friction < 0.0) {
+            ++negative;
+            QVERIFY2(r.out.contains(QStringLiteral("(%1): <dynamics friction> is").arg(j.name)),
+                     qPrintable(r.out));
+        }
+    }
+    QVERIFY(negative > 0);
+    const ParameterFileContent params = readParameterFile(dir.filePath(QStringLiteral("flo.json")));
+    const ChainModel model(chain, JointTerms{false, true, true, true}, QStringLiteral("urdf"));
+    QCOMPARE(params.standardValues.size(), Eigen::Index(model.standardCount()));
+    for (const int i : model.nonnegativeStandard())
+        QVERIFY2(params.standardValues[i] >= 0.0,
+                 qPrintable(QStringLiteral("%1 = %2")
+                                .arg(model.standardParameters()[i].name)
+                                .arg(params.standardValues[i])));
+    QCOMPARE(verdictRows(r.out).size(), 7);
 }
 
 QTEST_GUILESS_MAIN(TestCliVerdict)
