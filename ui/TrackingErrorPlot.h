@@ -2,6 +2,7 @@
 
 #include "service/TrackingErrorData.h"
 
+#include <QPair>
 #include <QStringList>
 #include <QWidget>
 

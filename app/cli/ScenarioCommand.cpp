@@ -13,8 +13,7 @@ ExitCode printScenarioCommand(const QString &robot, QTextStream &out, QTextStrea
     QByteArray json;
     try {
         // The window's starter for the robot: the same gains, path and limits it opens with.
-        const Scenario scenario =
-            robot.isEmpty() ? Scenario{} : scenarioForRobotName(robot);
+        const Scenario scenario = robot.isEmpty() ? Scenario{} : scenarioForRobotName(robot);
         validateScenario(scenario);
         json = scenarioToJson(scenario);
     } catch (const Error &e) {

@@ -27,7 +27,7 @@ QString languageOf(const QStringList &arguments)
     const QCommandLineOption screenshot(QStringLiteral("screenshot"), QString(),
                                         QStringLiteral("f"));
     first.addOptions({language, screenshot});
-    first.parse(arguments); // unknown options are the real parse's to report
+    (void)first.parse(arguments); // unknown options are the real parse's to report
     if (first.isSet(language))
         return first.value(language);
     if (first.isSet(screenshot))
@@ -64,35 +64,44 @@ int parseStartOptions(int argc, char **argv, StartOptions *options)
 
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        QCoreApplication::translate("main", "Commissioning tool: learning identification of robot dynamics.") + QLatin1Char('\n') +
-        QCoreApplication::translate("main", "The window needs a display; learnid-cli works without one."));
+        QCoreApplication::translate(
+            "main", "Commissioning tool: learning identification of robot dynamics.") +
+        QLatin1Char('\n') +
+        QCoreApplication::translate("main",
+                                    "The window needs a display; learnid-cli works without one."));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
-        QCoreApplication::translate("main", "Run a simulated session, save the window as PNG to <file> and exit."),
+        QCoreApplication::translate(
+            "main", "Run a simulated session, save the window as PNG to <file> and exit."),
         QStringLiteral("file"));
-    const QCommandLineOption language(QStringLiteral("language"),
-                                      QCoreApplication::translate("main", "User interface language, e.g. de or zh_CN (default: as "
-                                         "chosen in the app, else the system's)."),
-                                      QStringLiteral("locale"));
+    const QCommandLineOption language(
+        QStringLiteral("language"),
+        QCoreApplication::translate("main",
+                                    "User interface language, e.g. de or zh_CN (default: as "
+                                    "chosen in the app, else the system's)."),
+        QStringLiteral("locale"));
     const QCommandLineOption screenshotView(
         QStringLiteral("screenshot-view"),
         QCoreApplication::translate("main", "What --screenshot shows: %1 (default: main).")
             .arg(ScreenshotRun::viewNames().join(QStringLiteral(", "))),
         QStringLiteral("view"), QStringLiteral("main"));
-    const QCommandLineOption scenario(QStringLiteral("scenario"),
-                                      QCoreApplication::translate("main", "Open the scenario <file> at start."),
-                                      QStringLiteral("file"));
+    const QCommandLineOption scenario(
+        QStringLiteral("scenario"),
+        QCoreApplication::translate("main", "Open the scenario <file> at start."),
+        QStringLiteral("file"));
     parser.addOptions({screenshot, screenshotView, language, scenario});
-    parser.addPositionalArgument(QStringLiteral("scenario"),
-                                 QCoreApplication::translate("main", "A scenario file to open at start (as --scenario)."),
-                                 QStringLiteral("[SCENARIO.json]"));
+    parser.addPositionalArgument(
+        QStringLiteral("scenario"),
+        QCoreApplication::translate("main", "A scenario file to open at start (as --scenario)."),
+        QStringLiteral("[SCENARIO.json]"));
     parser.process(app); // --help, --version and syntax errors end here
 
     const auto view = ScreenshotRun::viewNamed(parser.value(screenshotView));
     if (!view) {
-        printError(QCoreApplication::translate("main", "learnid: unknown --screenshot-view '%1'; known: %2")
+        printError(QCoreApplication::translate("main",
+                                               "learnid: unknown --screenshot-view '%1'; known: %2")
                        .arg(parser.value(screenshotView),
                             ScreenshotRun::viewNames().join(QStringLiteral(", "))));
         return 1;
@@ -101,15 +110,17 @@ int parseStartOptions(int argc, char **argv, StartOptions *options)
     if (parser.isSet(scenario))
         scenarios.prepend(parser.value(scenario));
     if (scenarios.size() > 1) {
-        printError(QCoreApplication::translate("main", "learnid: one scenario at a time, got %1: %2")
-                       .arg(scenarios.size())
-                       .arg(scenarios.join(QStringLiteral(", "))));
+        printError(
+            QCoreApplication::translate("main", "learnid: one scenario at a time, got %1: %2")
+                .arg(scenarios.size())
+                .arg(scenarios.join(QStringLiteral(", "))));
         return 1;
     }
     if (!hasDisplay()) {
-        printError(QCoreApplication::translate("main", "learnid: the window needs a display, and none is set (DISPLAY, "
-                      "WAYLAND_DISPLAY); learnid --help lists the options, learnid-cli works "
-                      "without a display."));
+        printError(QCoreApplication::translate(
+            "main", "learnid: the window needs a display, and none is set (DISPLAY, "
+                    "WAYLAND_DISPLAY); learnid --help lists the options, learnid-cli works "
+                    "without a display."));
         return 1;
     }
     options->screenshot = parser.value(screenshot);

@@ -4,14 +4,16 @@
 
 #include <QString>
 
+class QCoreApplication;
+
 namespace learnid {
 
 /// What `learnid` was started with: `--screenshot FILE [--screenshot-view VIEW]`, `--language L`,
 /// and the scenario to open (`learnid SCENARIO.json` or `--scenario FILE`).
 struct StartOptions
 {
-    QString screenshot;                                    ///< "": none
-    ScreenshotRun::View view = ScreenshotRun::View::Main;  ///< --screenshot-view
+    QString screenshot;                                   ///< "": none
+    ScreenshotRun::View view = ScreenshotRun::View::Main; ///< --screenshot-view
     QString language; ///< --language, else the remembered one (not for --screenshot); "": system
     QString scenario; ///< "": none
 };

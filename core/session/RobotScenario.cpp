@@ -144,8 +144,9 @@ Scenario scenarioForRobotName(const QString &robot)
     const QFileInfo file(robot);
     if (!robot.endsWith(QLatin1String(".urdf"), Qt::CaseInsensitive) && !file.isFile()) {
         QStringList known{QStringLiteral("paper")};
-        for (const QString &id : builtInUrdfRobots())
-            known << id;
+        for (const QString &id : knownRobotModels())
+            if (isUrdfModel(id) && id != QLatin1String("urdf"))
+                known << id;
         throw Error(Text::tr("unknown robot \"%1\"; known: %2, or a URDF file (FILE.urdf)")
                         .arg(robot, known.join(QStringLiteral(", "))));
     }

@@ -11,6 +11,7 @@
 #include "session/RobotScenario.h"
 #include "session/ScenarioRobot.h"
 
+#include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
@@ -48,10 +49,14 @@ void TestCliScenario::printedScenario_runsItsFirstTrial_data()
 {
     QTest::addColumn<QString>("robot");
     QTest::addColumn<QString>("model");
-    QTest::newRow("paper") << "paper" << "paper-2link";
-    QTest::newRow("panda") << "panda" << "panda";
-    QTest::newRow("puma560") << "puma560" << "puma560";
-    QTest::newRow("double-pendulum") << "double-pendulum" << "double-pendulum";
+    QTest::newRow("paper") << "paper"
+                           << "paper-2link";
+    QTest::newRow("panda") << "panda"
+                           << "panda";
+    QTest::newRow("puma560") << "puma560"
+                             << "puma560";
+    QTest::newRow("double-pendulum") << "double-pendulum"
+                                     << "double-pendulum";
     QTest::newRow("URDF file") << urdfCopy() << "urdf";
     const QString kuka = learnid::test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
     if (!kuka.isEmpty())
@@ -62,8 +67,8 @@ void TestCliScenario::printedScenario_runsItsFirstTrial()
 {
     QFETCH(QString, robot);
     QFETCH(QString, model);
-    const Result printed = cli({QStringLiteral("scenario"), QStringLiteral("--print"),
-                                QStringLiteral("--robot"), robot});
+    const Result printed = cli(
+        {QStringLiteral("scenario"), QStringLiteral("--print"), QStringLiteral("--robot"), robot});
     QVERIFY2(printed.exitCode == 0, qPrintable(printed.err));
     QVERIFY(printed.err.isEmpty());
     const QByteArray json = printed.out.toUtf8();
@@ -72,9 +77,8 @@ void TestCliScenario::printedScenario_runsItsFirstTrial()
     QCOMPARE(read.model, model);
     QCOMPARE(QString::fromUtf8(scenarioToJson(read)), printed.out);
     // The window's starter for that robot: its gains and path.
-    const Scenario window = model == QLatin1String("urdf")
-                                ? scenarioForRobot(model, read.urdf)
-                                : scenarioForRobot(model);
+    const Scenario window = model == QLatin1String("urdf") ? scenarioForRobot(model, read.urdf)
+                                                           : scenarioForRobot(model);
     QCOMPARE(read.controller.kp, window.controller.kp);
     QCOMPARE(read.controller.ki, window.controller.ki);
     QCOMPARE(read.controller.kd, window.controller.kd);
@@ -126,8 +130,8 @@ void TestCliScenario::badRobot_isNamed()
 {
     QFETCH(QString, robot);
     QFETCH(QString, expected);
-    const Result r = cli({QStringLiteral("scenario"), QStringLiteral("--print"),
-                          QStringLiteral("--robot"), robot});
+    const Result r = cli(
+        {QStringLiteral("scenario"), QStringLiteral("--print"), QStringLiteral("--robot"), robot});
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.startsWith(expected), qPrintable(r.err));
     QCOMPARE(r.out, QString()); // nothing half-printed
