@@ -1164,17 +1164,17 @@
         <translation>Je Glied: physikalisch konsistent (ein realer Körper) und plausibel (ein Körper, der das Glied eines Roboters sein könnte: sein kleinstes Hauptträgheitsmoment um den Schwerpunkt I1 mindestens %1 % des kleinsten des CAD-Glieds, (I1 + I2) / I3 mindestens %2, der Schwerpunkt innerhalb des Hüllvolumens des Glieds).</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>link</source>
         <translation>Glied</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>I1 [kg m^2]</source>
         <translation>I1 [kg m^2]</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>CAD I1 [kg m^2]</source>
         <translation>CAD-I1 [kg m^2]</translation>
     </message>
@@ -1184,12 +1184,12 @@
         <translation>(I1 + I2) / I3</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>CoM in volume</source>
         <translation>Schwerpunkt im Volumen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>consistent</source>
         <translation>konsistent</translation>
     </message>

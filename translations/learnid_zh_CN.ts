@@ -1164,17 +1164,17 @@
         <translation>每个连杆：物理一致（真实刚体）且合理（可以作为机器人连杆的刚体：其绕质心的最小主惯性矩 I1 至少为 CAD 连杆的 %1 %，(I1 + I2) / I3 至少为 %2，质心位于连杆包围体之内）。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>link</source>
         <translation>连杆</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>I1 [kg m^2]</source>
         <translation>I1 [kg m^2]</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>CAD I1 [kg m^2]</source>
         <translation>CAD I1 [kg m^2]</translation>
     </message>
@@ -1184,12 +1184,12 @@
         <translation>(I1 + I2) / I3</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>CoM in volume</source>
         <translation>质心在包围体内</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
