@@ -919,7 +919,7 @@
         <translation>%1 ist nicht die Schätzung %2, die die Versuche des Verlaufs mit diesem Szenario ergeben: ist sein Schätzer der des Verlaufs?</translation>
     </message>
     <message>
-        <location filename="../core/service/FileLoopPlan.cpp" line="+32"/>
+        <location filename="../core/service/FileLoopPlan.cpp" line="+33"/>
         <source>initial estimate of a learning loop through files</source>
         <translation>Anfangsschätzung einer Lernschleife über Dateien</translation>
     </message>
@@ -1164,17 +1164,17 @@
         <translation>Je Glied: physikalisch konsistent (ein realer Körper) und plausibel (ein Körper, der das Glied eines Roboters sein könnte: sein kleinstes Hauptträgheitsmoment um den Schwerpunkt I1 mindestens %1 % des kleinsten des CAD-Glieds, (I1 + I2) / I3 mindestens %2, der Schwerpunkt innerhalb des Hüllvolumens des Glieds).</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>link</source>
         <translation>Glied</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>I1 [kg m^2]</source>
         <translation>I1 [kg m^2]</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>CAD I1 [kg m^2]</source>
         <translation>CAD-I1 [kg m^2]</translation>
     </message>
@@ -1184,12 +1184,12 @@
         <translation>(I1 + I2) / I3</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>CoM in volume</source>
         <translation>Schwerpunkt im Volumen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>consistent</source>
         <translation>konsistent</translation>
     </message>
@@ -2259,7 +2259,7 @@
 <context>
     <name>RobotScenario</name>
     <message>
-        <location filename="../core/session/RobotScenario.cpp" line="+44"/>
+        <location filename="../core/session/RobotScenario.cpp" line="+45"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -2274,7 +2274,12 @@
         <translation>robot.model: unbekanntes Modell „%1“</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+94"/>
+        <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
+        <translation>unbekannter Roboter „%1“; bekannt: %2 oder eine URDF-Datei (DATEI.urdf)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>path.waypoints[%1][%2]: %3 is %4 joint %5 (%6)&apos;s %7 limit %8</source>
         <translation>path.waypoints[%1][%2]: %3 liegt %4 der %7 Grenze %8 von Gelenk %5 (%6)</translation>
     </message>
@@ -2330,17 +2335,17 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+162"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+164"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+234"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+238"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-94"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-96"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
@@ -2351,17 +2356,17 @@
         <translation>einer pro Gelenk von %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-24"/>
         <source>one per parameter of %1</source>
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-202"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-206"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -2371,7 +2376,7 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+70"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
@@ -2416,7 +2421,7 @@
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>muss 0 (idealer Encoder) oder eine ganze Zahl von %1 bis %2 sein, gefunden: %3</translation>
     </message>
@@ -3246,12 +3251,12 @@
         <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+109"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+103"/>
         <location line="+7"/>
         <location line="+12"/>
         <location line="+61"/>
         <location line="+44"/>
-        <location filename="../app/cli/main.cpp" line="+52"/>
+        <location filename="../app/cli/main.cpp" line="+53"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli: Fehler: %1</translation>
     </message>
@@ -3266,87 +3271,7 @@
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+19"/>
-        <source>Usage:
-  learnid-cli scenario --print
-      Print the default scenario (the paper scenario) as JSON.
-  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
-                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--consistent] [--workspace DIR] [--quiet]
-      Run a commissioning session on the simulated robot. The table goes to
-      stdout, progress to stderr. Relative output paths are taken from
-      --workspace (default: the current directory). Files are written only
-      when every trial completed.
-      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
-      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
-      --can-log writes every trial&apos;s frames as a candump log into DIR;
-      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
-  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
-                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
-                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
-      Re-identify from recorded trials: the session runs again with each log
-      (one per trial, in order) answering in place of the robot.
-  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
-                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
-                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
-      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
-      and compare the result with its URDF on the --validate logs.
-  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
-                   [--workspace DIR] [--quiet]
-      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
-      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
-  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
-                    [--workspace DIR] [--quiet]
-      Learn from the controller&apos;s log of a plan; the next plan uses the new
-      estimate.
-  learnid-cli COMMAND --help
-      The options of one command.
-</source>
-        <translation>Aufruf:
-  learnid-cli scenario --print
-      Gibt das Standardszenario (das Szenario des Artikels) als JSON aus.
-  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
-                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--consistent] [--workspace DIR] [--quiet]
-      Führt eine Inbetriebnahmesitzung am simulierten Roboter aus. Tabelle nach
-      stdout, Fortschritt nach stderr. Relative Ausgabepfade gelten ab
-      --workspace (Standard: aktuelles Verzeichnis). Dateien werden nur
-      geschrieben, wenn jeder Versuch abgeschlossen wurde.
-      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
-      führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);
-      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR;
-      --can-sync-timeout MS beendet einen Versuch, wenn MS lang kein SYNC kommt (Standard 20).
-  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
-                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
-                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
-      Identifiziert neu aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
-      und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.
-  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
-                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
-                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
-      Identifiziert Trägheit und Reibung eines realen Roboters aus seinen
-      aufgezeichneten Logs (CSV) und vergleicht das Ergebnis an den --validate-Logs
-      mit seinem URDF.
-  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
-                   [--workspace DIR] [--quiet]
-      Plant den nächsten Versuch für den eigenen Regler des Roboters: q_d(t) und
-      tau_f(t) (DIR/plan.csv) und die Prüfung vor dem Versuch (DIR/check.txt).
-  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
-                    [--workspace DIR] [--quiet]
-      Lernt aus dem Log des Reglers zu einem Plan; der nächste Plan verwendet
-      die neue Schätzung.
-  learnid-cli COMMAND --help
-      Die Optionen eines Befehls.
-</translation>
-    </message>
-    <message>
-        <location line="+46"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+68"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -3390,7 +3315,7 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-164"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-158"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
@@ -3402,12 +3327,12 @@
         <translation>--robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+65"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+73"/>
         <source>Show this command&apos;s options.</source>
         <translation>Die Optionen dieses Befehls anzeigen.</translation>
     </message>
     <message>
-        <location line="-41"/>
+        <location line="-49"/>
         <source>Print the default scenario.</source>
         <translation>Standardszenario ausgeben.</translation>
     </message>
@@ -3500,17 +3425,108 @@
         <translation>Ein aufgezeichneter Versuch (candump-Log); einmal pro Versuch, der Reihe nach.</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+9"/>
-        <source>Print the default scenario as JSON.</source>
-        <translation>Das Standardszenario als JSON ausgeben.</translation>
+        <location filename="../app/cli/CliOptions.cpp" line="-73"/>
+        <source>Usage:
+  learnid-cli scenario --print [--robot ROBOT]
+      Print a complete scenario as JSON. ROBOT: paper (the default: the paper
+      scenario), panda, puma560, double-pendulum or a URDF file; for a robot
+      other than paper, the gains the window designs for it and a path of
+      joint waypoints inside its limits.
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--consistent] [--workspace DIR] [--quiet]
+      Run a commissioning session on the simulated robot. The table goes to
+      stdout, progress to stderr. Relative output paths are taken from
+      --workspace (default: the current directory). Files are written only
+      when every trial completed.
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
+      --can-log writes every trial&apos;s frames as a candump log into DIR;
+      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      Re-identify from recorded trials: the session runs again with each log
+      (one per trial, in order) answering in place of the robot.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
+      and compare the result with its URDF on the --validate logs.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
+      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Learn from the controller&apos;s log of a plan; the next plan uses the new
+      estimate.
+  learnid-cli COMMAND --help
+      The options of one command.
+</source>
+        <translation>Aufruf:
+  learnid-cli scenario --print [--robot ROBOT]
+      Gibt ein vollständiges Szenario als JSON aus. ROBOT: paper (Standard: das
+      Szenario des Artikels), panda, puma560, double-pendulum oder eine URDF-Datei;
+      für einen anderen Roboter als paper die Verstärkungen, die das Fenster für ihn
+      auslegt, und eine Bahn aus Gelenk-Stützpunkten innerhalb seiner Grenzen.
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--consistent] [--workspace DIR] [--quiet]
+      Führt eine Inbetriebnahmesitzung am simulierten Roboter aus. Tabelle nach
+      stdout, Fortschritt nach stderr. Relative Ausgabepfade gelten ab
+      --workspace (Standard: aktuelles Verzeichnis). Dateien werden nur
+      geschrieben, wenn jeder Versuch abgeschlossen wurde.
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);
+      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR;
+      --can-sync-timeout MS beendet einen Versuch, wenn MS lang kein SYNC kommt (Standard 20).
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      Identifiziert neu aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
+      und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identifiziert Trägheit und Reibung eines realen Roboters aus seinen
+      aufgezeichneten Logs (CSV) und vergleicht das Ergebnis an den --validate-Logs
+      mit seinem URDF.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plant den nächsten Versuch für den eigenen Regler des Roboters: q_d(t) und
+      tau_f(t) (DIR/plan.csv) und die Prüfung vor dem Versuch (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Lernt aus dem Log des Reglers zu einem Plan; der nächste Plan verwendet
+      die neue Schätzung.
+  learnid-cli COMMAND --help
+      Die Optionen eines Befehls.
+</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+76"/>
+        <source>The robot: paper (default), panda, puma560, double-pendulum, or a URDF file.</source>
+        <translation>Der Roboter: paper (Standard), panda, puma560, double-pendulum oder eine URDF-Datei.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Print a complete scenario for a robot as JSON.</source>
+        <translation>Ein vollständiges Szenario für einen Roboter als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&apos;scenario&apos; needs --print</source>
         <translation>&apos;scenario&apos; braucht --print</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
@@ -3649,7 +3665,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--nodes %1: %2 Knoten-IDs für einen Roboter mit %3 Gelenken: ein Knoten pro Gelenk ist nötig</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+73"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
@@ -4042,6 +4058,11 @@ neue Schätzung.
         <location line="+19"/>
         <source>t [s]</source>
         <translation>t [s]</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/ScenarioCommand.cpp" line="+20"/>
+        <source>learnid-cli: error: --robot %1: %2</source>
+        <translation>learnid-cli: Fehler: --robot %1: %2</translation>
     </message>
 </context>
 <context>
@@ -4441,7 +4462,7 @@ neue Schätzung.
         <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+67"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
@@ -5538,7 +5559,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
-        <location filename="../ui/PreTrialCheckView.cpp" line="+35"/>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+36"/>
         <source>Joint</source>
         <translation>Gelenk</translation>
     </message>
@@ -6232,6 +6253,16 @@ Verhältnis %</translation>
         <translation>Planungsanteil</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Gentle first trials</source>
+        <translation>Sanfte erste Versuche</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gentle trials&apos; speed</source>
+        <translation>Geschwindigkeit sanfter Versuche</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>Controller</source>
         <translation>Regler</translation>
@@ -6262,12 +6293,12 @@ Verhältnis %</translation>
         <translation>Wiederholungen pro Versuch</translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-56"/>
         <source>Initial parameters</source>
         <translation>Anfangsparameter</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+59"/>
         <source>Safety</source>
         <translation>Sicherheit</translation>
     </message>
@@ -6287,12 +6318,12 @@ Verhältnis %</translation>
         <translation>Simulierter Roboter</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-63"/>
         <source>True parameters</source>
         <translation>Wahre Parameter</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+67"/>
         <source>CAD perturbation (URDF robots)</source>
         <translation>CAD-Abweichung (URDF-Roboter)</translation>
     </message>
@@ -6610,7 +6641,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::TrackingErrorPlot</name>
     <message>
-        <location filename="../ui/TrackingErrorPlot.cpp" line="+30"/>
+        <location filename="../ui/TrackingErrorPlot.cpp" line="+31"/>
         <source>Auto-scale</source>
         <translation>Automatisch skalieren</translation>
     </message>
@@ -6631,11 +6662,12 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="+94"/>
         <source>Tracking error [deg]</source>
         <translation>Folgefehler [°]</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
@@ -6681,14 +6713,25 @@ Verhältnis %</translation>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../ui/TrackingErrorStyle.cpp" line="+51"/>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="-41"/>
+        <location line="+18"/>
         <source>Joint %1</source>
         <translation>Gelenk %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-17"/>
         <source>Joint %1 (%2)</source>
         <translation>Gelenk %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Error [deg]</source>
+        <translation>Fehler [°]</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>[deg]</source>
+        <translation>[°]</translation>
     </message>
 </context>
 <context>
@@ -6893,9 +6936,14 @@ Verhältnis %</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+38"/>
+        <location filename="../app/gui/StartOptions.cpp" line="+67"/>
         <source>Commissioning tool: learning identification of robot dynamics.</source>
         <translation>Inbetriebnahmewerkzeug: lernende Identifikation der Roboterdynamik.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The window needs a display; learnid-cli works without one.</source>
+        <translation>Das Fenster braucht einen Bildschirm; learnid-cli arbeitet ohne.</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -6908,14 +6956,34 @@ Verhältnis %</translation>
         <translation>Sprache der Oberfläche, z. B. de oder zh_CN (Standard: wie in der Anwendung gewählt, sonst die des Systems).</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>What --screenshot shows: %1 (default: main).</source>
         <translation>Was --screenshot zeigt: %1 (Standard: main).</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+5"/>
+        <source>Open the scenario &lt;file&gt; at start.</source>
+        <translation>Das Szenario &lt;file&gt; beim Start öffnen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A scenario file to open at start (as --scenario).</source>
+        <translation>Eine Szenariodatei, die beim Start geöffnet wird (wie --scenario).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>learnid: unknown --screenshot-view &apos;%1&apos;; known: %2</source>
         <translation>learnid: unbekannte --screenshot-view &apos;%1&apos;; bekannt: %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>learnid: one scenario at a time, got %1: %2</source>
+        <translation>learnid: nur ein Szenario auf einmal, erhalten %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>learnid: the window needs a display, and none is set (DISPLAY, WAYLAND_DISPLAY); learnid --help lists the options, learnid-cli works without a display.</source>
+        <translation>learnid: Das Fenster braucht einen Bildschirm, und keiner ist gesetzt (DISPLAY, WAYLAND_DISPLAY); learnid --help listet die Optionen, learnid-cli arbeitet ohne Bildschirm.</translation>
     </message>
 </context>
 </TS>

@@ -87,12 +87,6 @@ RobotRequest robotRequest(const RunOptions &options)
 
 } // namespace
 
-ExitCode printScenarioCommand(QTextStream &out)
-{
-    out << QString::fromUtf8(scenarioToJson(Scenario{}));
-    return ExitOk;
-}
-
 ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
 {
     RunOptions options = given;
