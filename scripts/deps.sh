@@ -16,6 +16,7 @@ LEARNID_PACKAGES=(
     clang-format  # scripts/format --check (CI)
     liburdfdom-dev  # URDF robots (core/model/UrdfChain)
     liborocos-kdl-dev  # tests only: Orocos KDL, the dynamics oracle of tst_chaindynamics
+    can-utils  # scripts/test-socketcan: cansend, candump, canplayer inside the VM (CI)
 )
 
 learnid_install_deps() {

@@ -36,8 +36,9 @@ RobotPanel::RobotPanel(QWidget *parent)
                             "to try learnid-robot-sim first"));
     m_interface->setToolTip(tr("e.g. can0 (socketcan) or tcp://127.0.0.1:35468/can0 (virtualcan)"));
     m_nodes->setToolTip(tr("CANopen node id of joint 1, 2, ... (docs/can-protocol.md)"));
-    m_syncTimeout->setRange(4, 60000);
-    m_syncTimeout->setValue(20);
+    m_syncTimeout->setRange(0, 60000);
+    m_syncTimeout->setValue(0);
+    m_syncTimeout->setSpecialValueText(tr("10 SYNC periods, at least 50 ms"));
     m_syncTimeout->setSuffix(tr(" ms"));
     m_syncTimeout->setToolTip(tr("A trial stops when no SYNC arrives for this long"));
 

@@ -204,14 +204,7 @@ void parseRunCommandLine(const QStringList &args, CommandLine *cl)
                                                     "'replay' needs at least one --candump FILE");
             return;
         }
-        if (run.iterations && *run.iterations > run.candumpFiles.size()) {
-            cl->error = QCoreApplication::translate(
-                            "learnid-cli", "--iterations: %1 trials need %1 logs, %2 given")
-                            .arg(*run.iterations)
-                            .arg(run.candumpFiles.size());
-            cl->errorCode = ExitBadInput;
-            return;
-        }
+        // --iterations against the trials the logs hold: runCommand, once they are read.
     }
     run.apply = parser.isSet(apply);
     run.consistent = parser.isSet(consistent);

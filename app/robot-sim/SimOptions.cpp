@@ -141,7 +141,7 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
         QCoreApplication::translate(
             "learnid-robot-sim",
             "SYNC periods in Operation enabled without a set-point before a drive faults with "
-            "EMCY 0x8100 (default 3; raise it on a heavily loaded machine)."),
+            "EMCY 0x8100 (default: 3 periods, at least 50 ms)."),
         QCoreApplication::translate("learnid-robot-sim", "N"));
     parser.addOptions({help, version, plugin, interface, nodes, scenario, state, drop, silent, emcy,
                        refuse, setPointTimeout});

@@ -24,7 +24,7 @@ struct SimOptions
     QString scenarioPath; ///< empty: the paper scenario
     QString statePath;    ///< empty: no state file
     CanSimFaults faults;
-    int setPointTimeoutSyncs = cansim::missedSetPointLimit;
+    int setPointTimeoutSyncs = 0; ///< 0: 3 SYNC periods, at least 50 ms (can/CanTimeouts.h)
 };
 
 struct SimCommandLine

@@ -16,12 +16,15 @@ struct CanRobotOptions
     QString plugin = QStringLiteral("socketcan"); ///< QCanBus plugin name
     QString interface = QStringLiteral("can0");   ///< the plugin's interface name
     QList<int> nodes{1, 2};                       ///< node id of joint 1, 2, ...
-    int connectTimeoutMs = 3000;     ///< virtualcan stays "connecting" on an unreachable host
-    int sdoTimeoutMs = 500;          ///< per SDO request
-    int heartbeatPeriodMs = 100;     ///< written to 0x1017 of every node
-    int heartbeatTimeoutFactor = 3;  ///< heartbeat lost after factor x period
-    int enableTimeoutMs = 500;       ///< CiA 402 enable walk
-    int syncGapPeriods = 10;         ///< no SYNC for this many periods aborts a trial
+    int connectTimeoutMs = 3000; ///< virtualcan stays "connecting" on an unreachable host
+    int sdoTimeoutMs = 500;      ///< per SDO request
+    /// Written to 0x1017 of every node (a node is lost after 3 periods without a heartbeat);
+    /// 0: cantimeouts::heartbeatPeriodMs at the SYNC period (10 periods, at least 100 ms).
+    int heartbeatPeriodMs = 0;
+    int enableTimeoutMs = 500; ///< CiA 402 enable walk
+    /// No SYNC for this long aborts a trial (at least 2 periods); 0: cantimeouts::syncTimeoutMs
+    /// at the SYNC period (10 periods, at least 50 ms).
+    int syncTimeoutMs = 0;
     double syncPeriod = 0.002;       ///< the SYNC period the robot side produces [s]
     double bitrate = 1'000'000.0;    ///< [bit/s]
     double maxBusLoadPercent = 70.0; ///< refuse to connect above this computed load
@@ -57,12 +60,19 @@ QString canNodeOptionsError(const CanRobotOptions &options);
 /// canNodeOptionsError, then busLoadError: why the options cannot work, or empty.
 QString canRobotOptionsError(const CanRobotOptions &options);
 
-/// Sets syncGapPeriods so that a trial stops after ms without SYNC (at least 2 periods).
+/// Sets the time without SYNC that stops a trial [ms] (0: the default of the SYNC period).
 void setSyncTimeoutMs(CanRobotOptions &options, int ms);
 
 /// Sets the SYNC period [s] (the scenario's controller.samplePeriod, which the robot side
-/// produces) and keeps the time without SYNC that stops a trial (syncGapPeriods x period).
+/// produces); a SYNC timeout given in ms stays, the default ones follow the period.
 void setSyncPeriod(CanRobotOptions &options, double seconds);
+
+/// The SYNC timeout in force [ms]: syncTimeoutMs (at least 2 periods), or the default at the
+/// SYNC period (cantimeouts::syncTimeoutMs).
+int effectiveSyncTimeoutMs(const CanRobotOptions &options);
+
+/// The heartbeat period in force [ms]: heartbeatPeriodMs, or cantimeouts::heartbeatPeriodMs.
+int effectiveHeartbeatPeriodMs(const CanRobotOptions &options);
 
 /// Nodes 1, 2, ..., joints: joint j is node j (the default of --nodes for an n-joint robot).
 QList<int> defaultNodeList(int joints);

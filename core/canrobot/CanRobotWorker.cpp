@@ -6,6 +6,7 @@
 #include "can/HeartbeatConsumer.h"
 #include "can/Nmt.h"
 #include "can/SdoClient.h"
+#include "can/SocketCanInterface.h"
 #include "canrobot/ApplySteps.h"
 #include "canrobot/CanConnection.h"
 #include "canrobot/CandumpRecorder.h"
@@ -69,6 +70,8 @@ CanRobotWorker::CanRobotWorker(std::shared_ptr<const RobotModel> model, CanRobot
     m_connection =
         new CanConnection(std::move(factory), connectionName(), m_options.connectTimeoutMs, this);
     connect(m_connection, &CanConnection::lost, this, &CanRobotWorker::onLost);
+    if (m_options.plugin == QLatin1String("socketcan"))
+        m_connection->watchSocketCanInterface(m_options.interface);
 }
 
 CanRobotWorker::~CanRobotWorker()
@@ -92,9 +95,22 @@ void CanRobotWorker::connectBus(std::function<void(const QString &)> done)
     if (m_units && !m_connection->isConnected())
         m_units.reset(); // built on the link of a connection that was lost
     m_connection->open([this, done](const QString &error) {
-        if (error.isEmpty())
-            ensureUnits();
-        done(error);
+        if (!error.isEmpty())
+            return done(error);
+        if (m_options.plugin == QLatin1String("socketcan")) {
+            // The bus load at the bitrate the interface really has, where the driver tells it.
+            const quint32 bitrate = readSocketCanInterface(m_options.interface).bitrate;
+            if (bitrate > 0 && bitrate != m_options.bitrate) {
+                m_options.bitrate = bitrate;
+                const QString load = busLoadError(m_options);
+                if (!load.isEmpty()) {
+                    m_connection->close();
+                    return done(tr("%1: %2").arg(m_options.interface, load));
+                }
+            }
+        }
+        ensureUnits();
+        done({});
     });
 }
 

@@ -15,6 +15,56 @@ bool isMasterFrame(const QCanBusFrame &frame)
            (id > canopen::sdoRxCobId(0) && id <= canopen::sdoRxCobId(canopen::maxNodeId));
 }
 
+namespace {
+
+bool isNmt(const QCanBusFrame &frame, quint8 command)
+{
+    return frame.frameType() == QCanBusFrame::DataFrame && !frame.hasExtendedFrameFormat() &&
+           frame.frameId() == canopen::nmtCobId && frame.payload().size() >= 2 &&
+           quint8(frame.payload().at(0)) == command && frame.payload().at(1) == 0;
+}
+
+constexpr quint8 nmtStart = 0x01;
+constexpr quint8 nmtPreOperational = 0x80;
+
+} // namespace
+
+QList<QList<CandumpEntry>> recordedTrials(const QList<CandumpEntry> &entries)
+{
+    QList<QList<CandumpEntry>> trials;
+    qsizetype open = -1;
+    bool started = false;
+    for (qsizetype i = 0; i < entries.size(); ++i) {
+        const QCanBusFrame &f = entries.at(i).frame;
+        if (isNmt(f, nmtPreOperational)) {
+            if (started) {
+                trials.append(entries.mid(open, i - open + 1));
+                started = false;
+                open = -1;
+            } else {
+                open = i; // the latest one before a start opens the trial
+            }
+        } else if (isNmt(f, nmtStart) && open >= 0) {
+            started = true;
+        }
+    }
+    return trials;
+}
+
+QList<CandumpEntry> replayEntries(const QList<CandumpEntry> &entries, int *trials)
+{
+    const QList<QList<CandumpEntry>> found = recordedTrials(entries);
+    if (found.size() <= 1) {
+        *trials = 1;
+        return entries;
+    }
+    *trials = int(found.size());
+    QList<CandumpEntry> played;
+    for (const QList<CandumpEntry> &t : found)
+        played += t;
+    return played;
+}
+
 CandumpReplayDevice::CandumpReplayDevice(QList<CandumpEntry> entries, QObject *parent)
     : QCanBusDevice(parent)
     , m_entries(std::move(entries))

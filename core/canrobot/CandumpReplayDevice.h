@@ -11,6 +11,18 @@ namespace learnid {
 /// from the robot side.
 bool isMasterFrame(const QCanBusFrame &frame);
 
+/// The trials in a recording of the bus (e.g. `candump -l` of a whole session): each runs from
+/// the master's NMT enter pre-operational (`000#8000`) that precedes an NMT start (`000#0100`)
+/// to the next enter pre-operational after that start, both included, as the master's own
+/// trial logs do (docs/can-protocol.md §8.4). What lies between trials (apply, heartbeats) and a
+/// trial that never started is left out.
+QList<QList<CandumpEntry>> recordedTrials(const QList<CandumpEntry> &entries);
+
+/// What the replay plays of one log file: its trials one after another when it holds more
+/// than one (a recording of a session), else the whole file (a trial log of --can-log); trials
+/// is set to their number (at least 1).
+QList<CandumpEntry> replayEntries(const QList<CandumpEntry> &entries, int *trials);
+
 /// A QCanBusDevice that plays back the robot side of a recorded candump log in lock step with
 /// the master: the robot's frames up to the master's next logged frame are received, then the
 /// device waits until the master writes that frame (which must be equal in identifier and

@@ -1,5 +1,6 @@
 #include "cansim/ScenarioCanArm.h"
 
+#include "can/CanTimeouts.h"
 #include "session/ScenarioRobot.h"
 #include "session/TrialPlanner.h"
 
@@ -36,6 +37,7 @@ CanArmSettings canArmSettings(const Scenario &given, std::shared_ptr<const Robot
     s.controller = scenario.controller;
     s.torqueLimits = scenario.torqueLimits;
     s.nodes = nodes;
+    s.setPointTimeoutSyncs = cantimeouts::setpointTimeoutSyncs(scenario.controller.samplePeriod);
     return s;
 }
 

@@ -46,7 +46,7 @@ private slots:
         QVERIFY2(text.contains(QStringLiteral("200")), qPrintable(text));
     }
 
-    void syncTimeout_becomesTheGapInSyncPeriods()
+    void syncTimeout_isTheLongestGapOrTheDefaultOfThePeriod()
     {
         WindowFixture f;
         chooseCan(f, QStringLiteral("virtualcan"), QStringLiteral("tcp://127.0.0.1:1/can0"),
@@ -54,14 +54,15 @@ private slots:
         auto *timeout = f.window->findChild<QSpinBox *>(QStringLiteral("canSyncTimeout"));
         const auto *panel = f.window->findChild<RobotPanel *>();
         QVERIFY(timeout && panel);
-        for (const int ms : {20, 21, 200}) {
+        QCOMPARE(timeout->value(), 0); // automatic: 10 periods, at least 50 ms
+        // {spin box, SYNC timeout in force at the 2 ms of the paper scenario}
+        for (const auto &[ms, expected] : {std::pair{0, 50}, {3, 4}, {21, 21}, {200, 200}}) {
             timeout->setValue(ms);
             QString error;
             const std::optional<RobotRequest> choice = panel->choice(&error);
             QVERIFY2(choice.has_value(), qPrintable(error));
-            // ceil(ms / period): a gap of exactly ms is still allowed
-            const int expected = int(std::ceil(ms / (1000.0 * choice->can.syncPeriod)));
-            QCOMPARE(choice->can.syncGapPeriods, expected);
+            QCOMPARE(choice->can.syncPeriod, 0.002);
+            QCOMPARE(effectiveSyncTimeoutMs(choice->can), expected);
         }
     }
 
