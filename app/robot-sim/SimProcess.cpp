@@ -75,6 +75,8 @@ int SimProcess::setUp()
                 nodes << j;
         }
         settings = canArmSettings(scenario, model, nodes);
+        if (m_options.uncommissioned)
+            settings.robotIdentity = 0;
         if (m_options.setPointTimeoutSyncs > 0)
             settings.setPointTimeoutSyncs = m_options.setPointTimeoutSyncs;
     } catch (const Error &e) {

@@ -7,6 +7,7 @@
 #include <QSocketNotifier>
 
 #ifdef Q_OS_LINUX
+#include <cstring>
 #include <linux/can/netlink.h>
 #include <linux/if_link.h>
 #include <linux/netlink.h>
@@ -14,7 +15,6 @@
 #include <net/if.h>
 #include <sys/socket.h>
 #include <unistd.h>
-#include <cstring>
 #endif
 
 namespace learnid {
@@ -86,8 +86,7 @@ void readLinkInfo(const QString &name, SocketCanInterfaceInfo *info)
                      d = RTA_NEXT(d, dataLen)) {
                     if (d->rta_type == IFLA_CAN_BITTIMING && RTA_PAYLOAD(d) >= sizeof(quint32)) {
                         std::memcpy(&info->bitrate, RTA_DATA(d), sizeof(quint32));
-                    } else if (d->rta_type == IFLA_CAN_STATE &&
-                               RTA_PAYLOAD(d) >= sizeof(quint32)) {
+                    } else if (d->rta_type == IFLA_CAN_STATE && RTA_PAYLOAD(d) >= sizeof(quint32)) {
                         quint32 s = 0;
                         std::memcpy(&s, RTA_DATA(d), sizeof(s));
                         switch (s) {

@@ -15,10 +15,10 @@ namespace learnid {
 struct SocketCanInterfaceInfo
 {
     bool exists = false;
-    bool isCan = false; ///< link type ARPHRD_CAN (280)
-    bool up = false;    ///< IFF_UP
-    int mtu = 0;        ///< 16: CAN 2.0, 72: CAN FD
-    QString kind;       ///< rtnetlink's link kind: "can", "vcan", ... (empty when unknown)
+    bool isCan = false;  ///< link type ARPHRD_CAN (280)
+    bool up = false;     ///< IFF_UP
+    int mtu = 0;         ///< 16: CAN 2.0, 72: CAN FD
+    QString kind;        ///< rtnetlink's link kind: "can", "vcan", ... (empty when unknown)
     quint32 bitrate = 0; ///< [bit/s]; 0 when not readable
     CanControllerState state = CanControllerState::Unknown;
 
@@ -27,9 +27,9 @@ struct SocketCanInterfaceInfo
 
 /// Reads the interface's facts; sysfsNet is the folder of the network interfaces (tests give
 /// a folder of their own; rtnetlink is then not asked).
-SocketCanInterfaceInfo readSocketCanInterface(const QString &name,
-                                              const QString &sysfsNet = QStringLiteral(
-                                                  "/sys/class/net"));
+SocketCanInterfaceInfo
+readSocketCanInterface(const QString &name,
+                       const QString &sysfsNet = QStringLiteral("/sys/class/net"));
 
 /// Why the interface cannot carry a trial (missing, not CAN, down, error passive, bus off), with
 /// what to do, or empty.

@@ -186,8 +186,16 @@ void CanConnection::checkInterface()
         return fail(tr("the CAN interface %1 of %2 went down (ip link set %1 up brings it back)")
                         .arg(m_watchedInterface, m_name));
     if (m_watchState && isFatalControllerState(info.state))
-        fail(tr("the CAN controller of %1 (%2) is %3")
-                 .arg(m_watchedInterface, m_name, canControllerStateName(info.state)));
+        return fail(tr("the CAN controller of %1 (%2) is %3")
+                        .arg(m_watchedInterface, m_name, canControllerStateName(info.state)));
+    // What the plugin says itself (Qt's socketcan plugin with libsocketcan: a real controller).
+    if (m_device && m_device->hasBusStatus()) {
+        const QCanBusDevice::CanBusStatus status = m_device->busStatus();
+        if (status == QCanBusDevice::CanBusStatus::BusOff)
+            return fail(tr("the CAN device %1 reports bus off").arg(m_name));
+        if (status == QCanBusDevice::CanBusStatus::Error)
+            return fail(tr("the CAN device %1 reports error passive").arg(m_name));
+    }
 }
 
 void CanConnection::onError(QCanBusDevice::CanBusError error)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "can/BusLoad.h"
+#include "types/DriveIdentity.h"
 
 #include <QCanBusDevice>
 #include <QList>
@@ -29,6 +30,18 @@ struct CanRobotOptions
     double bitrate = 1'000'000.0;    ///< [bit/s]
     double maxBusLoadPercent = 70.0; ///< refuse to connect above this computed load
     QString candumpDir;              ///< when set, trial-NNN.log per trial (can-utils format)
+    /// The robot's identity in 0x2400:01 of its drives; 0: objects::robotIdentityOf(model id).
+    quint32 robotIdentity = 0;
+    /// The first-time procedure (docs/can-protocol.md §2.4): the technician confirmed that each
+    /// node is the drive of its joint; drives never commissioned (or for another robot) are
+    /// accepted, and apply stores their joint identity.
+    bool commissioning = false;
+    /// The drives' 0x1018 per joint from a parameter file, compared before any motion; empty:
+    /// not compared.
+    QList<DriveIdentity> recordedDrives;
+    /// Read and check every node's identity before a trial or apply; off only for a replay of
+    /// recorded trials (whose logs begin at the trial's first NMT command).
+    bool checkJointIdentity = true;
 };
 
 /// Creates the (not yet connected) CAN device in the calling thread; on failure returns null

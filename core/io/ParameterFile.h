@@ -4,6 +4,7 @@
 
 #include "model/RobotModel.h"
 #include "types/ControllerSettings.h"
+#include "types/DriveIdentity.h"
 
 #include <Eigen/Core>
 #include <QByteArray>
@@ -20,9 +21,12 @@ inline constexpr char parameterFileSchema[] = "learnid-parameters/1";
 /// Everything a parameter file holds (docs/file-formats.md), filled by the caller.
 struct ParameterFileContent
 {
-    QString robotModel;            ///< model id, e.g. "paper-2link"
-    QString robotDescription;      ///< the robot in words (simulated, CAN interface and nodes)
-    QList<int> jointNodes;         ///< CANopen node of each joint's drive; empty means 1, 2, ...
+    QString robotModel;       ///< model id, e.g. "paper-2link"
+    QString robotDescription; ///< the robot in words (simulated, CAN interface and nodes)
+    QList<int> jointNodes;    ///< CANopen node of each joint's drive; empty means 1, 2, ...
+    /// The identity (0x1018) of each joint's drive when the robot is on CAN, else empty
+    /// (written as robot.drives only when there are some).
+    QList<DriveIdentity> drives;
     ControllerSettings controller; ///< the gains the parameters were identified with
     QDateTime created;             ///< stored in UTC to the millisecond
     QString toolVersion;           ///< LEARNID_VERSION of the writer

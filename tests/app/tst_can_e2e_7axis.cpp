@@ -186,7 +186,7 @@ void TestCanE2e7Axis::sevenAxesAt2ms_refusedWithTheOffer_offeredPeriodReachesThe
     QVERIFY2(offered.exitCode == 3, qPrintable(QString::number(offered.exitCode) + offered.err));
     QVERIFY2(!offered.err.contains(QLatin1String("kbit/s")), qPrintable(offered.err));
     QVERIFY2(offered.err.contains(QLatin1String("node 3")) &&
-                 offered.err.contains(QLatin1String("0x1017:00")),
+                 offered.err.contains(QLatin1String("0x1018:01")),
              qPrintable(offered.err));
 }
 

@@ -63,7 +63,8 @@ private slots:
 private:
     QStringList canRun() const
     {
-        return QStringList{QStringLiteral("run"), QStringLiteral("--robot"), QStringLiteral("can")} +
+        return QStringList{QStringLiteral("run"), QStringLiteral("--robot"),
+                           QStringLiteral("can")} +
                test::canE2eBusOptions(0) +
                QStringList{QStringLiteral("--can-sync-timeout"), QStringLiteral("200"),
                            QStringLiteral("--scenario"), m_scenario};
@@ -185,9 +186,9 @@ void TestCanE2eSocketCan::busFault_stopsWithTheInterfaceAndErrorWithinOneSecond_
     QTest::newRow("bus-off") << QStringList{QStringLiteral("cansend"), i,
                                             QStringLiteral("20000040#0000000000000000")}
                              << QStringLiteral("bus off");
-    QTest::newRow("error-passive") << QStringList{QStringLiteral("cansend"), i,
-                                                  QStringLiteral("20000004#0010000000000000")}
-                                   << QStringLiteral("error passive (rx)");
+    QTest::newRow("error-passive")
+        << QStringList{QStringLiteral("cansend"), i, QStringLiteral("20000004#0010000000000000")}
+        << QStringLiteral("error passive (rx)");
 }
 
 void TestCanE2eSocketCan::busFault_stopsWithTheInterfaceAndErrorWithinOneSecond()
@@ -225,8 +226,8 @@ void TestCanE2eSocketCan::busFault_stopsWithTheInterfaceAndErrorWithinOneSecond(
     QVERIFY(tool.waitForFinished(10000));
     const qint64 ms = sinceFault.elapsed();
     if (tag == QLatin1String("interface-down"))
-        run(QStringLiteral("ip"), {QStringLiteral("link"), QStringLiteral("set"), m_interface,
-                                   QStringLiteral("up")});
+        run(QStringLiteral("ip"),
+            {QStringLiteral("link"), QStringLiteral("set"), m_interface, QStringLiteral("up")});
     QCOMPARE(broke, 0);
     err += tool.readAllStandardError();
     const QString text = QString::fromUtf8(err);

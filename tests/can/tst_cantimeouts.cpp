@@ -55,7 +55,7 @@ void TestCanTimeouts::periodsWithFloor()
 
 void TestCanTimeouts::floor_isPeriodsTimesTsOrTheFloor()
 {
-    QCOMPARE(cantimeouts::periodsWithFloorMs(0.004, 10, 0), 40); // not 41 by rounding
+    QCOMPARE(cantimeouts::periodsWithFloorMs(0.004, 10, 0), 40);  // not 41 by rounding
     QCOMPARE(cantimeouts::periodsWithFloorMs(0.0041, 10, 0), 41); // rounded up
     QCOMPARE(cantimeouts::periodsWithFloorMs(0.004, 10, 45), 45);
     QCOMPARE(cantimeouts::periodsWithFloorMs(0.0, 10, 45), 45); // no period: the floor
