@@ -38,7 +38,8 @@ QString hex(quint32 v)
 
 } // namespace
 
-QList<SdoStep> jointIdentityReads(const QList<int> &nodes, std::shared_ptr<JointIdentityFound> found)
+QList<SdoStep> jointIdentityReads(const QList<int> &nodes,
+                                  std::shared_ptr<JointIdentityFound> found)
 {
     const int n = int(nodes.size());
     found->drives = QVector<DriveIdentity>(n);

@@ -20,14 +20,15 @@ struct JointIdentityFound
 /// What the master expects of the nodes.
 struct JointIdentityExpectation
 {
-    quint32 robot = 0;                 ///< objects::robotIdentityOf(the model's id)
-    bool commissioning = false;        ///< --commission: the technician confirmed the node list
+    quint32 robot = 0;                   ///< objects::robotIdentityOf(the model's id)
+    bool commissioning = false;          ///< --commission: the technician confirmed the node list
     QList<DriveIdentity> recordedDrives; ///< per joint from a parameter file; empty: not compared
 };
 
 /// The reads of every node's identity, in node order: 0x1018:01..04, 0x2400:01..02; they fill
 /// found, which must outlive the sequence.
-QList<SdoStep> jointIdentityReads(const QList<int> &nodes, std::shared_ptr<JointIdentityFound> found);
+QList<SdoStep> jointIdentityReads(const QList<int> &nodes,
+                                  std::shared_ptr<JointIdentityFound> found);
 
 /// Why a node is not the drive of the joint it is listed for, naming node and joint, or empty:
 /// a node commissioned as another joint of this robot (always refused, with the node list the

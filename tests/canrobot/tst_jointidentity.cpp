@@ -68,7 +68,8 @@ void TestJointIdentity::swappedNodeList_refusedBeforeAnyMotion_namingNodeAndJoin
     QTemporaryDir logs;
     test::CanSimRig *rig = nullptr;
     // Drives wired joint 1 = node 1, joint 2 = node 2; the master told --nodes 2,1.
-    CanRobot robot(test::testModel(), options({2, 1}, logs.path()), rigFactory(paperArm(true), &rig));
+    CanRobot robot(test::testModel(), options({2, 1}, logs.path()),
+                   rigFactory(paperArm(true), &rig));
     const TrialRecord r = robot.runTrial(test::testPlan(200), {});
     QCOMPARE(r.status, TrialStatus::Refused);
     QVERIFY2(r.message.contains(QLatin1String("before any motion")), qPrintable(r.message));
