@@ -173,8 +173,14 @@ QString describeSocketCanInterface(const QString &name, const SocketCanInterface
 
 void prepareCanDevice(QCanBusDevice *device, const QString &plugin)
 {
-    if (device && plugin == QLatin1String("socketcan"))
-        device->setConfigurationParameter(QCanBusDevice::BitRateKey, QVariant());
+    if (!device || plugin != QLatin1String("socketcan"))
+        return;
+    device->setConfigurationParameter(QCanBusDevice::BitRateKey, QVariant());
+    // Every error frame the controller reports (CAN_RAW_ERR_FILTER), whatever the plugin's
+    // default: they are how SocketCAN tells of bus off, error passive and lost frames.
+    device->setConfigurationParameter(
+        QCanBusDevice::ErrorFilterKey,
+        QVariant::fromValue(QCanBusFrame::FrameErrors(QCanBusFrame::AnyError)));
 }
 
 void closeCanDevice(QCanBusDevice *device)

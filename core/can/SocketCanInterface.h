@@ -40,7 +40,8 @@ QString describeSocketCanInterface(const QString &name, const SocketCanInterface
 
 /// Before connecting: on socketcan, removes the bitrate that Qt's plugin would otherwise try to
 /// set at every connect (it cannot: SocketCAN takes the bitrate from `ip link`, and Qt warns
-/// "Cannot apply parameter: 4 with value: 500000"). Other plugins are left as they are.
+/// "Cannot apply parameter: 4 with value: 500000"), and asks for every error frame. Other
+/// plugins are left as they are.
 void prepareCanDevice(QCanBusDevice *device, const QString &plugin);
 
 /// Disconnects the device so that nothing polls its socket afterwards: its socket notifiers are

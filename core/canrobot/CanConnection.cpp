@@ -79,10 +79,7 @@ void CanConnection::open(Done done)
         acknowledgeQuickly();
     });
     m_link = std::make_unique<CanLink>(device);
-    connect(m_link.get(), &CanLink::frameReceived, this, [this](const QCanBusFrame &frame) {
-        if (frame.frameType() == QCanBusFrame::ErrorFrame)
-            onErrorFrame(frame);
-    });
+    connect(m_link.get(), &CanLink::errorFrameReceived, this, &CanConnection::onErrorFrame);
     connect(device, &QCanBusDevice::stateChanged, this, &CanConnection::onStateChanged);
     connect(device, &QCanBusDevice::errorOccurred, this, &CanConnection::onError);
     m_timer->start(m_timeoutMs);
@@ -175,19 +172,29 @@ void CanConnection::onErrorFrame(const QCanBusFrame &frame)
              .arg(QString::fromLatin1(frame.payload().toHex(' '))));
 }
 
+QString CanConnection::interfaceFault() const
+{
+    if (m_watchedInterface.isEmpty())
+        return {};
+    const SocketCanInterfaceInfo info = readSocketCanInterface(m_watchedInterface);
+    if (!info.exists)
+        return tr("the CAN interface %1 of %2 disappeared").arg(m_watchedInterface, m_name);
+    if (!info.up)
+        return tr("the CAN interface %1 of %2 went down (ip link set %1 up brings it back)")
+            .arg(m_watchedInterface, m_name);
+    if (m_watchState && isFatalControllerState(info.state))
+        return tr("the CAN controller of %1 (%2) is %3")
+            .arg(m_watchedInterface, m_name, canControllerStateName(info.state));
+    return {};
+}
+
 void CanConnection::checkInterface()
 {
     if (!m_connected || m_watchedInterface.isEmpty())
         return;
-    const SocketCanInterfaceInfo info = readSocketCanInterface(m_watchedInterface);
-    if (!info.exists)
-        return fail(tr("the CAN interface %1 of %2 disappeared").arg(m_watchedInterface, m_name));
-    if (!info.up)
-        return fail(tr("the CAN interface %1 of %2 went down (ip link set %1 up brings it back)")
-                        .arg(m_watchedInterface, m_name));
-    if (m_watchState && isFatalControllerState(info.state))
-        return fail(tr("the CAN controller of %1 (%2) is %3")
-                        .arg(m_watchedInterface, m_name, canControllerStateName(info.state)));
+    const QString fault = interfaceFault();
+    if (!fault.isEmpty())
+        return fail(fault);
     // What the plugin says itself (Qt's socketcan plugin with libsocketcan: a real controller).
     if (m_device && m_device->hasBusStatus()) {
         const QCanBusDevice::CanBusStatus status = m_device->busStatus();
@@ -204,7 +211,11 @@ void CanConnection::onError(QCanBusDevice::CanBusError error)
         return;
     if (m_connected && (error == QCanBusDevice::ReadError || error == QCanBusDevice::WriteError)) {
         // On SocketCAN: ENETDOWN (the interface went down), ENOBUFS (the controller cannot send:
-        // bus off, no other node acknowledges); a trial cannot go on with either.
+        // bus off, no other node acknowledges); a trial cannot go on with either. The state of
+        // the interface says more than the errno, when it is the cause.
+        const QString fault = interfaceFault();
+        if (!fault.isEmpty())
+            return fail(fault);
         return fail(tr("the CAN device %1 reported a %2 error: %3")
                         .arg(m_name, error == QCanBusDevice::ReadError ? tr("read") : tr("write"),
                              m_device->errorString()));

@@ -53,6 +53,9 @@ private:
     void onError(QCanBusDevice::CanBusError error);
     void onErrorFrame(const QCanBusFrame &frame);
     void checkInterface();
+    /// What is wrong with the watched SocketCAN interface (gone, down, error passive, bus off),
+    /// or empty.
+    QString interfaceFault() const;
     void fail(const QString &reason);
     void complete(const QString &error);
     void acknowledgeQuickly();

@@ -92,16 +92,28 @@ bool CandumpReplayDevice::writeFrame(const QCanBusFrame &frame)
         fail(tr("The master wrote %1 after the end of the log.").arg(frame.toString()));
         return false;
     }
-    const CandumpEntry &expected = m_entries.at(m_position);
-    if (!isMasterFrame(expected.frame) || expected.frame.frameId() != frame.frameId() ||
-        expected.frame.payload() != frame.payload()) {
+    // The master's next frame in the log. A recording of the bus (candump of a session) may
+    // hold robot frames before it that the master had not handled yet when it wrote it (two
+    // processes answering the same SYNC): those stay to be played after it.
+    qsizetype next = m_position;
+    while (next < m_entries.size() && !isMasterFrame(m_entries.at(next).frame))
+        ++next;
+    const qsizetype shown = next < m_entries.size() ? next : m_position;
+    const QCanBusFrame &expected = m_entries.at(shown).frame;
+    if (next == m_entries.size() || expected.frameId() != frame.frameId() ||
+        expected.payload() != frame.payload()) {
         fail(tr("The master wrote %1 where the log holds %2 (log frame %3): the replayed trial "
                 "differs from the recorded one.")
-                 .arg(frame.toString(), expected.frame.toString())
-                 .arg(m_position + 1));
+                 .arg(frame.toString(), expected.toString())
+                 .arg(shown + 1 + m_matchedAhead));
         return false;
     }
-    ++m_position;
+    if (next == m_position) {
+        ++m_position;
+    } else {
+        m_entries.remove(next);
+        ++m_matchedAhead;
+    }
     emit framesWritten(1);
     schedulePlay();
     return true;

@@ -26,9 +26,11 @@ QList<CandumpEntry> replayEntries(const QList<CandumpEntry> &entries, int *trial
 /// A QCanBusDevice that plays back the robot side of a recorded candump log in lock step with
 /// the master: the robot's frames up to the master's next logged frame are received, then the
 /// device waits until the master writes that frame (which must be equal in identifier and
-/// payload) before it plays on. A master that runs the same plan on the recorded answers thus
-/// sees the same trial again, whatever the speed; a master that sends something else ends the
-/// replay with a ReadError naming the log line, and the device goes unconnected.
+/// payload) before it plays on; a master frame written before robot frames that the recording
+/// placed ahead of it matches too (in a recording of the bus, both sides answer the same SYNC). A
+/// master that runs the same plan on the recorded answers thus sees the same trial again, whatever
+/// the speed; a master that sends something else ends the replay with a ReadError naming the log
+/// line, and the device goes unconnected.
 class CandumpReplayDevice : public QCanBusDevice
 {
     Q_OBJECT
@@ -41,7 +43,7 @@ public:
     QCanBusDeviceInfo deviceInfo() const override;
 
     /// Log entries consumed so far (played or matched).
-    int position() const { return m_position; }
+    int position() const { return m_position + m_matchedAhead; }
     bool atEnd() const { return m_position >= m_entries.size(); }
 
 protected:
@@ -55,6 +57,7 @@ private:
 
     QList<CandumpEntry> m_entries;
     int m_position = 0;
+    int m_matchedAhead = 0; ///< master frames matched ahead of robot frames (taken out)
     bool m_playScheduled = false;
 };
 

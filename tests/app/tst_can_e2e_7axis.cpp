@@ -49,16 +49,18 @@ QByteArray readAll(const QString &path)
 
 // The 7-axis scenario of docs/scenario.md ("Any serial arm") at a 4 ms SYNC period, with the
 // gains scaled for it (the 2 ms gains are unstable at 4 ms: the pre-trial check refuses them).
-QByteArray lwrScenario(const QString &urdf, double samplePeriod, double gainScale, double lambda)
+QByteArray lwrScenario(const QString &urdf, double samplePeriod, double gainScale, double lambda,
+                       double joint6Scale = 1)
 {
     const double kp[] = {340, 600, 100, 140, 15, 14, 11};
     const double ki[] = {34, 60, 10, 14, 1.5, 1.4, 1.1};
     const double kd[] = {45, 80, 14, 19, 2, 1.9, 1.5};
     QJsonArray p, i, d;
     for (int j = 0; j < kJoints; ++j) {
-        p.append(kp[j] * gainScale);
-        i.append(ki[j] * gainScale);
-        d.append(kd[j] * gainScale);
+        const double scale = gainScale * (j == 5 ? joint6Scale : 1);
+        p.append(kp[j] * scale);
+        i.append(ki[j] * scale);
+        d.append(kd[j] * scale);
     }
     const QJsonObject scenario{
         {QStringLiteral("schema"), QStringLiteral("learnid-scenario/2")},
@@ -145,14 +147,19 @@ void TestCanE2e7Axis::initTestCase()
     m_urdf = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
     if (m_urdf.isEmpty())
         QSKIP(qPrintable(test::sharedDataMissing()));
-    // At 4 ms the gains x 0.4 with lambda 400; at 10 ms (the VM of scripts/test-socketcan)
-    // x 0.15 with lambda 150: both pass the pre-trial check.
+    // Gains that pass the pre-trial check and keep every joint within the 5 deg tracking limit
+    // for 20 trials (learnid-cli run --iterations 20 on this scenario): at 4 ms x 0.4 with
+    // lambda 400; at 5 and 10 ms (the VM of scripts/test-socketcan) x 0.2 and x 0.15 with
+    // lambda 150 and joint 6 three times that (x 0.15 alone: joint 6 passes 5 deg at 0.61 s;
+    // x 0.25 alone is unstable at 10 ms).
     m_periodMs = test::canE2ePeriodMs(4);
     m_scenario = m_dir.filePath(QStringLiteral("lwr-%1ms.json").arg(m_periodMs));
     QFile f(m_scenario);
     QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(m_periodMs == 4 ? lwrScenario(m_urdf, 0.004, 0.4, 400)
-                            : lwrScenario(m_urdf, m_periodMs / 1000.0, 0.15, 150));
+    const double ts = m_periodMs / 1000.0;
+    f.write(m_periodMs <= 4   ? lwrScenario(m_urdf, ts, 0.4, 400)
+            : m_periodMs <= 5 ? lwrScenario(m_urdf, ts, 0.2, 150, 3)
+                              : lwrScenario(m_urdf, ts, 0.15, 150, 3));
 }
 
 void TestCanE2e7Axis::sevenAxesAt2ms_refusedWithTheOffer_offeredPeriodReachesTheBus()
@@ -329,23 +336,16 @@ void TestCanE2e7Axis::robotKilledMidTrial_clearErrorWithinOneSecond_nothingAppli
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
     tool.setProcessEnvironment(env);
+    test::DrivesFollowWatch watch(interface(port), 3);
     tool.start(QStringLiteral(LEARNID_CLI_PATH),
                canRun(port) + QStringList{QStringLiteral("--iterations"), QStringLiteral("3"),
                                           QStringLiteral("--apply"), QStringLiteral("--report"),
                                           QStringLiteral("killed.json")});
     QVERIFY(tool.waitForStarted());
     // Configuration (7 x 29 SDOs), enable walk, return move and hold take about 1.5 s, the
-    // first plan 2.7 s: the first progress line of the plan ("... 100/... samples") says the
-    // drives are following it.
+    // first plan 2.7 s: then the drives follow the set-points.
     QByteArray progress;
-    QElapsedTimer waiting;
-    waiting.start();
-    while (!progress.contains("/") && waiting.elapsed() < 60000 &&
-           tool.state() == QProcess::Running) {
-        tool.waitForReadyRead(100);
-        progress += tool.readAllStandardError();
-    }
-    QVERIFY2(progress.contains("/"), progress.constData());
+    QVERIFY2(watch.wait(tool, &progress), progress.constData());
     QCOMPARE(tool.state(), QProcess::Running);
     robot.kill();
     QElapsedTimer sinceKill;

@@ -206,19 +206,13 @@ void TestCanE2eSocketCan::busFault_stopsWithTheInterfaceAndErrorWithinOneSecond(
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
     tool.setProcessEnvironment(env);
+    test::DrivesFollowWatch watch(m_interface, 1);
     tool.start(QStringLiteral(LEARNID_CLI_PATH),
                canRun() + QStringList{QStringLiteral("--iterations"), QStringLiteral("2"),
                                       QStringLiteral("--apply")});
     QVERIFY(tool.waitForStarted());
-    // The first progress line of the plan ("... 100/... samples"): the drives follow the plan.
     QByteArray err;
-    QElapsedTimer waiting;
-    waiting.start();
-    while (!err.contains("/") && waiting.elapsed() < 60000 && tool.state() == QProcess::Running) {
-        tool.waitForReadyRead(100);
-        err += tool.readAllStandardError();
-    }
-    QVERIFY2(err.contains("/"), err.constData());
+    QVERIFY2(watch.wait(tool, &err), err.constData()); // the drives follow the set-points
     QCOMPARE(tool.state(), QProcess::Running);
     QElapsedTimer sinceFault;
     sinceFault.start();

@@ -6,11 +6,14 @@
 
 #include "RobotSimProcess.h"
 
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QString>
 #include <QStringList>
+#include <QTest>
 #include <QtGlobal>
 
 namespace learnid::test {
@@ -53,6 +56,70 @@ inline QStringList canE2eBusOptions(quint16 port)
     return {QStringLiteral("--can-plugin"), canE2ePlugin(), QStringLiteral("--can-interface"),
             canE2eInterface(port)};
 }
+
+/// Tells when the drives follow set-points, so that a test can break something in the middle of
+/// a trial: on SocketCAN a candump of the bus sees the master's RPDO to node with controlword
+/// 0x000F (enable operation, bytes 6 and 7); virtualcan cannot be listened to, so there it is 3 s
+/// after the tool started (configuration, enable walk and return move take about 1.5 s on this
+/// machine). Start it before the tool.
+class DrivesFollowWatch
+{
+public:
+    DrivesFollowWatch(const QString &interface, quint32 node)
+    {
+        if (!canE2eOnSocketCan())
+            return;
+        m_candump.start(QStringLiteral("candump"),
+                        {QStringLiteral("-L"), QStringLiteral("%1,%2:7FF")
+                                                   .arg(interface)
+                                                   .arg(0x200 + node, 3, 16, QLatin1Char('0'))});
+        m_candump.waitForStarted();
+    }
+    ~DrivesFollowWatch()
+    {
+        m_candump.kill();
+        m_candump.waitForFinished(2000);
+    }
+
+    /// Waits (60 s at most) until the drives follow, plus settleMs, gathering the tool's stderr
+    /// meanwhile; false when the tool ended first or nothing came.
+    bool wait(QProcess &tool, QByteArray *toolErr, int settleMs = 500)
+    {
+        QElapsedTimer clock;
+        clock.start();
+        const auto gather = [&](int ms) {
+            tool.waitForReadyRead(ms);
+            *toolErr += tool.readAllStandardError();
+            return tool.state() == QProcess::Running;
+        };
+        if (!canE2eOnSocketCan()) {
+            while (clock.elapsed() < 3000)
+                if (!gather(50))
+                    return false;
+            return true;
+        }
+        bool enabled = false;
+        while (!enabled && clock.elapsed() < 60000) {
+            if (!gather(20))
+                return false;
+            m_candump.waitForReadyRead(0);
+            while (m_candump.canReadLine()) {
+                // "(1712345678.123456) vcan0 201#0000000000000F00"
+                const QByteArray data = m_candump.readLine().trimmed().split('#').value(1);
+                enabled = enabled || data.mid(12, 4).toUpper() == "0F00";
+            }
+        }
+        QElapsedTimer settle;
+        settle.start();
+        while (enabled && settle.elapsed() < settleMs)
+            if (!gather(20))
+                return false;
+        return enabled;
+    }
+
+private:
+    QProcess m_candump;
+};
 
 /// The paper scenario (JSON of `learnid-cli scenario --print`) at a SYNC period of periodMs,
 /// with gains that pass the pre-trial check there (kp 900 / 1000, ki 6, kd 120, lambda 60: the
