@@ -83,8 +83,8 @@ void TestCanBusErrors::errorFrame_classified_data()
                                 << false << QStringLiteral("controller error warning level");
     QTest::newRow("back-to-active") << errorFrame(CAN_ERR_CRTL, data(1, CAN_ERR_CRTL_ACTIVE))
                                     << false << QStringLiteral("controller back to error active");
-    QTest::newRow("controller-unspecified") << errorFrame(CAN_ERR_CRTL) << false
-                                            << QStringLiteral("controller problem (unspecified)");
+    QTest::newRow("controller-unspecified")
+        << errorFrame(CAN_ERR_CRTL) << false << QStringLiteral("controller problem (unspecified)");
     QByteArray prot(8, '\0');
     prot[2] = char(CAN_ERR_PROT_STUFF);
     prot[3] = char(CAN_ERR_PROT_LOC_CRC_SEQ);
@@ -99,8 +99,8 @@ void TestCanBusErrors::errorFrame_classified_data()
                                << QStringLiteral("bus error");
     QTest::newRow("restarted") << errorFrame(CAN_ERR_RESTARTED) << false
                                << QStringLiteral("controller restarted");
-    QTest::newRow("unknown-class") << errorFrame(0x200) << false
-                                   << QStringLiteral("error class 0x200");
+    QTest::newRow("unknown-class")
+        << errorFrame(0x200) << false << QStringLiteral("error class 0x200");
 }
 
 void TestCanBusErrors::errorFrame_classified()
