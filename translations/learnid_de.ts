@@ -416,7 +416,7 @@
         <translation>Knoten %1, Objekt %2: die Antwort enthält %3 Bytes, erwartet 1 bis 4</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>; the drives say --nodes %1</source>
         <translation>; die Antriebe sagen --nodes %1</translation>
     </message>
@@ -432,13 +432,13 @@
     </message>
     <message>
         <location line="+11"/>
-        <source>node %1 (joint %2) has never been commissioned (0x2400 is 0), so learnid cannot check which joint it moves: make sure it is the drive of joint %2 (its identity: %3), then run with --commission; apply stores the joint identity</source>
-        <translation>Knoten %1 (Gelenk %2) wurde nie in Betrieb genommen (0x2400 ist 0), daher kann learnid nicht prüfen, welches Gelenk er bewegt: stellen Sie sicher, dass er der Antrieb von Gelenk %2 ist (seine Identität: %3), und starten Sie dann mit --commission; Anwenden speichert die Gelenkidentität</translation>
+        <source>node %1 (joint %2) has never been commissioned (0x2400 is 0), so learnid cannot check which joint it moves: make sure it is the drive of joint %2 (its identity: %3), then run with --commission (in the window: First commissioning); apply stores the joint identity</source>
+        <translation>Knoten %1 (Gelenk %2) wurde nie in Betrieb genommen (0x2400 ist 0), daher kann learnid nicht prüfen, welches Gelenk er bewegt: stellen Sie sicher, dass er der Antrieb von Gelenk %2 ist (seine Identität: %3), und starten Sie dann mit --commission (im Fenster: Erstinbetriebnahme); Anwenden speichert die Gelenkidentität</translation>
     </message>
     <message>
         <location line="+8"/>
-        <source>node %1 (joint %2) was commissioned for another robot (0x2400:01 = %3, this robot is %4): make sure it is the drive of joint %2 (%5), then run with --commission</source>
-        <translation>Knoten %1 (Gelenk %2) wurde für einen anderen Roboter in Betrieb genommen (0x2400:01 = %3, dieser Roboter ist %4): stellen Sie sicher, dass er der Antrieb von Gelenk %2 ist (%5), und starten Sie dann mit --commission</translation>
+        <source>node %1 (joint %2) was commissioned for another robot (0x2400:01 = %3, this robot is %4): make sure it is the drive of joint %2 (%5), then run with --commission (in the window: First commissioning)</source>
+        <translation>Knoten %1 (Gelenk %2) wurde für einen anderen Roboter in Betrieb genommen (0x2400:01 = %3, dieser Roboter ist %4): stellen Sie sicher, dass er der Antrieb von Gelenk %2 ist (%5), und starten Sie dann mit --commission (im Fenster: Erstinbetriebnahme)</translation>
     </message>
 </context>
 <context>
@@ -4043,7 +4043,7 @@ neue Schätzung.
         <translation>kein CAN-Gerät für %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
         <source>cannot connect the CAN device %1: %2</source>
         <translation>das CAN-Gerät %1 kann nicht verbunden werden: %2</translation>
     </message>
@@ -4083,7 +4083,7 @@ neue Schätzung.
         <translation>der CAN-Controller von %1 (%2) ist %3</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+16"/>
         <source>the CAN device %1 reports bus off</source>
         <translation>das CAN-Gerät %1 meldet Bus aus (bus off)</translation>
     </message>
@@ -4093,7 +4093,7 @@ neue Schätzung.
         <translation>das CAN-Gerät %1 meldet fehlerpassiv</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>the CAN device %1 reported a %2 error: %3</source>
         <translation>das CAN-Gerät %1 meldete einen %2fehler: %3</translation>
     </message>
@@ -4208,7 +4208,7 @@ neue Schätzung.
         <translation>Der Master schrieb %1 nach dem Ende des Logs.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
         <translation>Der Master schrieb %1, wo das Log %2 enthält (Log-Frame %3): der wiedergegebene Versuch weicht vom aufgezeichneten ab.</translation>
     </message>
@@ -5211,7 +5211,7 @@ Verhältnis %</translation>
         <translation>Das Speicher-CAN-Gerät %1 konnte den Frame nicht schreiben.</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>CAN error frame, error classes 0x%1.</source>
         <translation>CAN-Fehlerframe, Fehlerklassen 0x%1.</translation>
     </message>
@@ -5835,13 +5835,18 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RobotPanel</name>
     <message>
-        <location filename="../ui/RobotPanel.cpp" line="+22"/>
-        <location line="+101"/>
+        <location filename="../ui/RobotPanel.cpp" line="+24"/>
+        <source>First commissioning: I confirmed each node&apos;s joint on the arm</source>
+        <translation>Erstinbetriebnahme: Ich habe das Gelenk jedes Knotens am Arm geprüft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+109"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-99"/>
         <source>Simulated (the scenario&apos;s robot)</source>
         <translation>Simuliert (der Roboter des Szenarios)</translation>
     </message>
@@ -5881,7 +5886,12 @@ Verhältnis %</translation>
         <translation>Ein Versuch endet, wenn so lange kein SYNC eintrifft</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Only for drives never commissioned (or taken from another robot): tick it after checking on the arm that the drive of each node (its serial number on the type plate) moves the joint the node is listed for. Apply then stores the joint identity in the drives, and later sessions check it without this (docs/can-protocol.md 2.4).</source>
+        <translation>Nur für Antriebe, die nie in Betrieb genommen wurden (oder aus einem anderen Roboter stammen): erst ankreuzen, nachdem Sie am Arm geprüft haben, dass der Antrieb jedes Knotens (seine Seriennummer auf dem Typenschild) das Gelenk bewegt, für das der Knoten eingetragen ist. Anwenden speichert dann die Gelenkidentität in den Antrieben, und spätere Sitzungen prüfen sie ohne dieses Häkchen (docs/can-protocol.md 2.4).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Plugin:</source>
         <translation>Plugin:</translation>
     </message>
@@ -5901,6 +5911,11 @@ Verhältnis %</translation>
         <translation>SYNC-Zeitlimit:</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Drives:</source>
+        <translation>Antriebe:</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Robot:</source>
         <translation>Roboter:</translation>
@@ -5916,7 +5931,7 @@ Verhältnis %</translation>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>CAN nodes: %1</source>
         <translation>CAN-Knoten: %1</translation>
     </message>

@@ -416,7 +416,7 @@
         <translation>节点 %1，对象 %2：应答含 %3 字节，应为 1 至 4 字节</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>; the drives say --nodes %1</source>
         <translation>；驱动器给出的是 --nodes %1</translation>
     </message>
@@ -432,13 +432,13 @@
     </message>
     <message>
         <location line="+11"/>
-        <source>node %1 (joint %2) has never been commissioned (0x2400 is 0), so learnid cannot check which joint it moves: make sure it is the drive of joint %2 (its identity: %3), then run with --commission; apply stores the joint identity</source>
-        <translation>节点 %1（关节 %2）从未调试过（0x2400 为 0），learnid 无法检查它驱动哪个关节：请确认它是关节 %2 的驱动器（其标识：%3），然后使用 --commission 运行；应用时会存储关节标识</translation>
+        <source>node %1 (joint %2) has never been commissioned (0x2400 is 0), so learnid cannot check which joint it moves: make sure it is the drive of joint %2 (its identity: %3), then run with --commission (in the window: First commissioning); apply stores the joint identity</source>
+        <translation>节点 %1（关节 %2）从未调试过（0x2400 为 0），learnid 无法检查它驱动哪个关节：请确认它是关节 %2 的驱动器（其标识：%3），然后使用 --commission 运行（在窗口中：首次调试）；应用时会存储关节标识</translation>
     </message>
     <message>
         <location line="+8"/>
-        <source>node %1 (joint %2) was commissioned for another robot (0x2400:01 = %3, this robot is %4): make sure it is the drive of joint %2 (%5), then run with --commission</source>
-        <translation>节点 %1（关节 %2）曾为另一台机器人调试（0x2400:01 = %3，本机器人为 %4）：请确认它是关节 %2 的驱动器（%5），然后使用 --commission 运行</translation>
+        <source>node %1 (joint %2) was commissioned for another robot (0x2400:01 = %3, this robot is %4): make sure it is the drive of joint %2 (%5), then run with --commission (in the window: First commissioning)</source>
+        <translation>节点 %1（关节 %2）曾为另一台机器人调试（0x2400:01 = %3，本机器人为 %4）：请确认它是关节 %2 的驱动器（%5），然后使用 --commission 运行（在窗口中：首次调试）</translation>
     </message>
 </context>
 <context>
@@ -4038,7 +4038,7 @@ stdout, and the next plan uses the new estimate.
         <translation>没有用于 %1 的 CAN 设备</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
         <source>cannot connect the CAN device %1: %2</source>
         <translation>无法连接 CAN 设备 %1：%2</translation>
     </message>
@@ -4078,7 +4078,7 @@ stdout, and the next plan uses the new estimate.
         <translation>%1 (%2) 的 CAN 控制器处于 %3</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+16"/>
         <source>the CAN device %1 reports bus off</source>
         <translation>CAN 设备 %1 报告总线关闭 (bus off)</translation>
     </message>
@@ -4088,7 +4088,7 @@ stdout, and the next plan uses the new estimate.
         <translation>CAN 设备 %1 报告错误被动</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>the CAN device %1 reported a %2 error: %3</source>
         <translation>CAN 设备 %1 报告了%2错误：%3</translation>
     </message>
@@ -4203,7 +4203,7 @@ stdout, and the next plan uses the new estimate.
         <translation>主站在日志结束后写入了 %1。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
         <translation>主站写入了 %1，而日志此处为 %2（日志帧 %3）：回放的试验与记录的不同。</translation>
     </message>
@@ -5204,7 +5204,7 @@ ratio %</source>
         <translation>内存 CAN 设备 %1 写入帧失败。</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>CAN error frame, error classes 0x%1.</source>
         <translation>CAN 错误帧，错误类别 0x%1。</translation>
     </message>
@@ -5826,13 +5826,18 @@ ratio %</source>
 <context>
     <name>learnid::RobotPanel</name>
     <message>
-        <location filename="../ui/RobotPanel.cpp" line="+22"/>
-        <location line="+101"/>
+        <location filename="../ui/RobotPanel.cpp" line="+24"/>
+        <source>First commissioning: I confirmed each node&apos;s joint on the arm</source>
+        <translation>首次调试：我已在机械臂上确认每个节点对应的关节</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+109"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-99"/>
         <source>Simulated (the scenario&apos;s robot)</source>
         <translation>仿真（场景中的机器人）</translation>
     </message>
@@ -5872,7 +5877,12 @@ ratio %</source>
         <translation>若超过此时间未收到 SYNC，试验即停止</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Only for drives never commissioned (or taken from another robot): tick it after checking on the arm that the drive of each node (its serial number on the type plate) moves the joint the node is listed for. Apply then stores the joint identity in the drives, and later sessions check it without this (docs/can-protocol.md 2.4).</source>
+        <translation>仅用于从未调试过（或取自另一台机器人）的驱动器：请先在机械臂上确认每个节点的驱动器（铭牌上的序列号）驱动的正是该节点所列的关节，然后再勾选。应用时会将关节标识存入驱动器，之后的会话无需勾选即可检查（docs/can-protocol.md 2.4）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Plugin:</source>
         <translation>插件：</translation>
     </message>
@@ -5892,6 +5902,11 @@ ratio %</source>
         <translation>SYNC 超时：</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Drives:</source>
+        <translation>驱动器：</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Robot:</source>
         <translation>机器人：</translation>
@@ -5907,7 +5922,7 @@ ratio %</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>CAN nodes: %1</source>
         <translation>CAN 节点：%1</translation>
     </message>

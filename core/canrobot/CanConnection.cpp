@@ -168,7 +168,7 @@ void CanConnection::onErrorFrame(const QCanBusFrame &frame)
     }
     fail(tr("the CAN device %1 reported %2 (error frame 0x%3 %4)")
              .arg(m_name, report.what)
-             .arg(frame.frameId(), 0, 16)
+             .arg(quint32(frame.error().toInt()), 0, 16) // frameId() is 0 for error frames
              .arg(QString::fromLatin1(frame.payload().toHex(' '))));
 }
 

@@ -108,15 +108,15 @@ QString jointIdentityError(const QList<int> &nodes, const JointIdentityFound &fo
         if (found.robot[j] == 0)
             return Text::tr("node %1 (joint %2) has never been commissioned (0x2400 is 0), so "
                             "learnid cannot check which joint it moves: make sure it is the "
-                            "drive of joint %2 (its identity: %3), then run with --commission; "
-                            "apply stores the joint identity")
+                            "drive of joint %2 (its identity: %3), then run with --commission (in "
+                            "the window: First commissioning); apply stores the joint identity")
                 .arg(nodes[j])
                 .arg(j + 1)
                 .arg(found.drives[j].text());
         if (found.robot[j] != expected.robot)
             return Text::tr("node %1 (joint %2) was commissioned for another robot (0x2400:01 = "
                             "%3, this robot is %4): make sure it is the drive of joint %2 (%5), "
-                            "then run with --commission")
+                            "then run with --commission (in the window: First commissioning)")
                 .arg(nodes[j])
                 .arg(j + 1)
                 .arg(hex(found.robot[j]), hex(expected.robot), found.drives[j].text());

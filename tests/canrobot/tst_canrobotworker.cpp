@@ -297,6 +297,8 @@ void TestCanRobotWorker::errorFrame_fatalStopsNamingTheError_otherIsOnlyLogged()
     QCOMPARE(r.status, TrialStatus::Faulted);
     QVERIFY2(r.message.contains(QLatin1String("memory/master")), qPrintable(r.message));
     QVERIFY2(r.message.contains(expected), qPrintable(r.message));
+    QVERIFY2(r.message.contains(QStringLiteral("error frame 0x%1").arg(classes, 0, 16)),
+             qPrintable(r.message));
     QVERIFY2(r.message.contains(QLatin1String("SYNC")), qPrintable(r.message));
     QVERIFY(s.drives.controlwords.contains(0x0002)); // quick stop: the device still writes
     QVERIFY2(ms < 1000, qPrintable(QString::number(ms)));

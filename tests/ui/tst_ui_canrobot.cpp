@@ -6,6 +6,7 @@
 #include "ui/MessageBar.h"
 #include "ui/RobotPanel.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QLineEdit>
 #include <QSignalSpy>
@@ -63,6 +64,56 @@ private slots:
             QVERIFY2(choice.has_value(), qPrintable(error));
             QCOMPARE(choice->can.syncPeriod, 0.002);
             QCOMPARE(effectiveSyncTimeoutMs(choice->can), expected);
+        }
+    }
+
+    // learnid-cli's --commission in the window: unticked, drives never commissioned are refused
+    // before any motion, naming node and joint; ticked, the same drives run the trial.
+    void firstCommissioning_isTheCheckBox_refusedWithoutItRunsWithIt()
+    {
+        const quint16 port = freeLoopbackPort();
+        QVERIFY(port > 0);
+        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
+        RobotSimProcess sim(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+        QVERIFY(sim.start(interface, {QStringLiteral("--uncommissioned")}));
+
+        WindowFixture f;
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        SessionController *c = f.window->controller();
+        chooseCan(f, QStringLiteral("virtualcan"), interface, QStringLiteral("1,2"));
+        f.window->findChild<QSpinBox *>(QStringLiteral("canSyncTimeout"))->setValue(200);
+        auto *commission = f.window->findChild<QCheckBox *>(QStringLiteral("canCommission"));
+        const auto *panel = f.window->findChild<RobotPanel *>();
+        QVERIFY(commission && panel);
+        QVERIFY(!commission->isChecked()); // never on by default
+        for (const bool ticked : {false, true}) {
+            commission->setChecked(ticked);
+            QString error;
+            const std::optional<RobotRequest> choice = panel->choice(&error);
+            QVERIFY2(choice.has_value(), qPrintable(error));
+            QCOMPARE(choice->can.commissioning, ticked);
+
+            QVERIFY(f.click("connectButton"));
+            QTRY_VERIFY_WITH_TIMEOUT(c->lastCheck().has_value(), 20000);
+            QVERIFY(!commission->isEnabled()); // not while connected
+            QSignalSpy finished(c, &SessionController::runFinished);
+            QTRY_VERIFY_WITH_TIMEOUT(f.button("runTrialButton")->isEnabled(), 20000);
+            QVERIFY(f.click("runTrialButton"));
+            QVERIFY(finished.wait(60000));
+            if (!ticked) {
+                const QString text = f.window->messageBar()->text();
+                QVERIFY2(text.contains(QStringLiteral("node 1 (joint 1) has never been "
+                                                      "commissioned")) &&
+                             text.contains(QStringLiteral("First commissioning")),
+                         qPrintable(text));
+            } else {
+                QVERIFY(!c->history().isEmpty());
+                QVERIFY2(c->history().constLast().record.completed(),
+                         qPrintable(c->history().constLast().record.message));
+            }
+            QVERIFY(f.click("connectButton")); // disconnect
+            QTRY_VERIFY_WITH_TIMEOUT(!c->isOpen(), 10000);
+            QVERIFY(commission->isEnabled());
         }
     }
 
