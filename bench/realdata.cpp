@@ -11,8 +11,10 @@
 #include "identify/LogFit.h"
 #include "identify/UniformLog.h"
 #include "io/RobotLogCsv.h"
+#include "model/CadPrior.h"
 #include "model/ChainModel.h"
 #include "model/Error.h"
+#include "model/Plausibility.h"
 #include "model/UrdfChain.h"
 
 #include <QCoreApplication>
@@ -43,8 +45,9 @@ QString data(const char *file)
 
 FilteredLog loadLog(const QString &path, int joints, const LogColumns &columns, const Options &o)
 {
-    return filterLog(resampleUniform(readRobotLogFile(path, joints, columns), o.resample),
-                     o.filter);
+    ResampleOptions resample = o.resample;
+    resample.fitBandwidth = o.filter.rho; // the default gap follows the filter, as identify's
+    return filterLog(resampleUniform(readRobotLogFile(path, joints, columns), resample), o.filter);
 }
 
 struct Model
@@ -81,6 +84,44 @@ void printComparison(const ChainModel &model, const std::vector<Model> &models,
     std::printf("\n\n");
 }
 
+// Per link the plausibility rule of docs/robots.md §6: smallest principal moment about the
+// centre of mass against the CAD link's smallest, (I1 + I2) / I3, the centre of mass in the
+// link's bounding volume; then joint terms strictly between 0 and 1e-6.
+void printPlausibility(const ChainModel &model, const std::vector<Model> &models)
+{
+    const int n = model.dof();
+    const Eigen::VectorXd prior = realBodyPrior(model.cadStandard(), n);
+    const auto volumes = linkVolumes(model.chain(), prior);
+    std::vector<std::vector<LinkPlausibility>> verdicts;
+    for (const Model &m : models)
+        verdicts.push_back(checkPlausibility(m.pi, prior, n, volumes));
+    std::printf("| link | volume |");
+    for (const Model &m : models)
+        std::printf(" %s: I_min / CAD's, (I1+I2)/I3, CoM |", m.name);
+    std::printf("\n|---|---|");
+    for (size_t i = 0; i < models.size(); ++i)
+        std::printf("---|");
+    std::printf("\n");
+    for (int l = 0; l < n; ++l) {
+        const auto &e = volumes[size_t(l)];
+        std::printf("| %d | %s |", l + 1,
+                    !e                                    ? "none"
+                    : e->source == VolumeSource::Geometry ? "geometry"
+                                                          : "CAD inertia x2");
+        for (const auto &v : verdicts) {
+            const LinkPlausibility &p = v[size_t(l)];
+            std::printf(" %s %.2g, %.3g, %s |", p.plausible ? "ok" : "**no**",
+                        p.cadSmallestMoment > 0 ? p.moments[0] / p.cadSmallestMoment : 0.0,
+                        p.triangleRatio, p.hasVolume ? (p.volumeOk ? "in" : "out") : "-");
+        }
+        std::printf("\n");
+    }
+    std::printf("| terms in (0, 1e-6) | |");
+    for (const Model &m : models)
+        std::printf(" %zu |", tinyJointTerms(m.pi, model.nonnegativeStandard()).size());
+    std::printf("\n\n");
+}
+
 void printFit(const ChainModel &model, const LogFit &fit)
 {
     std::printf("Fit: %lld samples, %d of %d standard-parameter directions determined "
@@ -89,6 +130,7 @@ void printFit(const ChainModel &model, const LogFit &fit)
                 static_cast<long long>(fit.samples), fit.rank, model.standardCount(), fit.condition,
                 fit.undetermined().size(), fit.baseCount,
                 fit.converged ? "converged" : "stopped at its step limit");
+    std::printf("Plausible fit: %s.\n\n", qPrintable(fit.solverReport));
 }
 
 // FloBaRoID's published model: its URDF's inertia, <dynamics damping> as viscous friction
@@ -128,6 +170,9 @@ void kuka(const Options &o)
         model,
         {{"CAD URDF", model.cadStandard()}, {"FloBaRoID", flobaroid}, {"learnid", fit12.standard}},
         runs[2]);
+    printPlausibility(
+        model,
+        {{"CAD URDF", model.cadStandard()}, {"FloBaRoID", flobaroid}, {"learnid", fit12.standard}});
     std::printf("### KUKA LWR4+: identified from run 3, validated on run 1\n\n");
     const LogFit fit3 = fitLogs(model, {runs[2]}, o.fit);
     printFit(model, fit3);
@@ -135,6 +180,9 @@ void kuka(const Options &o)
         model,
         {{"CAD URDF", model.cadStandard()}, {"FloBaRoID", flobaroid}, {"learnid", fit3.standard}},
         runs[0]);
+    printPlausibility(
+        model,
+        {{"CAD URDF", model.cadStandard()}, {"FloBaRoID", flobaroid}, {"learnid", fit3.standard}});
 
     // CPU time: read, resample, filter and fit runs 1 + 2 (median of 5).
     std::vector<double> cpu;
@@ -171,6 +219,7 @@ void pendulum(Options o)
     printFit(model, fit);
     printComparison(model, {{"lab's model 3.0", model.cadStandard()}, {"learnid", fit.standard}},
                     validation);
+    printPlausibility(model, {{"lab's model 3.0", model.cadStandard()}, {"learnid", fit.standard}});
 }
 
 } // namespace
@@ -203,10 +252,17 @@ int main(int argc, char **argv)
             o.fit.weighted = false;
         else if (a == "--inconsistent")
             o.fit.consistent = false;
+        else if (a == "--geometric-share" && value)
+            o.fit.geometricShare = std::atof(argv[++i]);
+        else if (a == "--no-volumes")
+            o.fit.volumes = false;
+        else if (a == "--no-rule")
+            o.fit.plausible = false;
         else {
-            std::fprintf(stderr, "usage: learnid-bench-realdata [--rho R] [--share S] "
-                                 "[--stride K] [--velocity-from-q] [--unweighted] "
-                                 "[--inconsistent]\n");
+            std::fprintf(
+                stderr, "usage: learnid-bench-realdata [--rho R] [--share S] [--geometric-share S] "
+                        "[--stride K] [--velocity-from-q] [--unweighted] "
+                        "[--inconsistent] [--no-volumes]\n");
             return 2;
         }
     }

@@ -15,6 +15,7 @@ LEARNID_PACKAGES=(
     clang libclang-rt-14-dev  # scripts/fuzz: libFuzzer and the sanitizer runtimes of clang
     clang-format  # scripts/format --check (CI)
     liburdfdom-dev  # URDF robots (core/model/UrdfChain)
+    libassimp-dev  # URDF mesh files' bounding boxes (core/model/MeshBounds)
     liborocos-kdl-dev  # tests only: Orocos KDL, the dynamics oracle of tst_chaindynamics
     can-utils  # scripts/test-socketcan: cansend, candump, canplayer inside the VM (CI)
     libsocketcan2  # Qt's socketcan plugin loads it: bus state and bitrate of a real controller

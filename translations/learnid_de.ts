@@ -44,6 +44,24 @@
     </message>
 </context>
 <context>
+    <name>BoundingVolume</name>
+    <message>
+        <location filename="../core/model/BoundingVolume.cpp" line="+55"/>
+        <source>A bounding box needs its upper corner above its lower one.</source>
+        <translation>Ein Hüllquader braucht seine obere Ecke über der unteren.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>A link without positive mass has no inertia ellipsoid.</source>
+        <translation>Ein Glied ohne positive Masse hat kein Trägheitsellipsoid.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The inertia ellipsoid&apos;s margin must be above 1.</source>
+        <translation>Der Zuschlag des Trägheitsellipsoids muss über 1 liegen.</translation>
+    </message>
+</context>
+<context>
     <name>BusLoad</name>
     <message>
         <location filename="../core/can/BusLoad.cpp" line="+41"/>
@@ -664,7 +682,7 @@
         <translation>%1: das Log gehört zu Plan %2, nicht zu Plan %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>sample %1 (t = %2 s) is beyond the plan&apos;s %3 samples, the last at t = %4 s</source>
         <translation>Abtastwert %1 (t = %2 s) liegt hinter den %3 Abtastwerten des Plans, deren letzter bei t = %4 s liegt</translation>
     </message>
@@ -952,7 +970,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+86"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+129"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
     </message>
@@ -970,6 +988,11 @@
         <location line="+4"/>
         <source>physically consistent: every link a real body</source>
         <translation>physikalisch konsistent: jedes Glied ein realer Körper</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>link %1 (%2): not a plausible body: %3</source>
+        <translation>Glied %1 (%2): kein plausibler Körper: %3</translation>
     </message>
 </context>
 <context>
@@ -1330,7 +1353,7 @@
 <context>
     <name>LogFit</name>
     <message>
-        <location filename="../core/identify/LogFit.cpp" line="+140"/>
+        <location filename="../core/identify/LogFit.cpp" line="+141"/>
         <source>%1 has %2 joints, the robot %3</source>
         <translation>%1 hat %2 Gelenke, der Roboter %3</translation>
     </message>
@@ -1345,12 +1368,12 @@
         <translation>keine Abtastwerte für die Anpassung</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>the prior share must lie between 0 and 1</source>
         <translation>der Prior-Anteil muss zwischen 0 und 1 liegen</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+98"/>
         <source>%1 does not fit the robot&apos;s joints or parameters</source>
         <translation>%1 passt nicht zu den Gelenken oder Parametern des Roboters</translation>
     </message>
@@ -1358,7 +1381,7 @@
 <context>
     <name>LogIdentification</name>
     <message>
-        <location filename="../core/service/LogIdentification.cpp" line="+78"/>
+        <location filename="../core/service/LogIdentification.cpp" line="+81"/>
         <source>identification cancelled; nothing was produced</source>
         <translation>Identifikation abgebrochen; nichts wurde erzeugt</translation>
     </message>
@@ -1373,25 +1396,122 @@
         <translation>eingebauter Roboter %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>no log to identify from: add a training log</source>
         <translation>kein Log zum Identifizieren: ein Trainings-Log hinzufügen</translation>
     </message>
     <message>
-        <location filename="../core/service/LogIdentificationExport.cpp" line="+35"/>
+        <location filename="../core/service/LogIdentificationExport.cpp" line="+29"/>
         <source>%1 (%2), identified from the logs %3</source>
         <translation>%1 (%2), identifiziert aus den Logs %3</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+32"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>die Reglerverstärkungen, die die Parameterdatei festhält, gelten für %1 Gelenke, der Roboter hat %2</translation>
     </message>
 </context>
 <context>
+    <name>LogIdentificationSummary</name>
+    <message>
+        <location filename="../core/service/LogIdentificationSummary.cpp" line="+21"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine all %2 (condition %3).</source>
+        <translation>Von den %1 Standardparametern könnten beliebige Daten höchstens %2 Kombinationen bestimmen (die Basisparameter); diese Logs bestimmen alle %2 (Kondition %3).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n stay near the URDF&apos;s values.</source>
+        <translation>
+            <numerusform>Von den %1 Standardparametern könnten beliebige Daten höchstens %2 Kombinationen bestimmen (die Basisparameter); diese Logs bestimmen %3 dieser %2 Richtungen (Kondition %4), die übrige %n Richtung bleibt nahe den Werten des URDF.</numerusform>
+            <numerusform>Von den %1 Standardparametern könnten beliebige Daten höchstens %2 Kombinationen bestimmen (die Basisparameter); diese Logs bestimmen %3 dieser %2 Richtungen (Kondition %4), die übrigen %n bleiben nahe den Werten des URDF.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12"/>
+        <source>%n of the %1 base parameters are mostly undetermined by these logs (less than half determined) and kept near the URDF&apos;s values: %2.</source>
+        <translation>
+            <numerusform>%n der %1 Basisparameter ist durch diese Logs überwiegend unbestimmt (weniger als zur Hälfte bestimmt) und bleibt nahe den Werten des URDF: %2.</numerusform>
+            <numerusform>%n der %1 Basisparameter sind durch diese Logs überwiegend unbestimmt (weniger als zur Hälfte bestimmt) und bleiben nahe den Werten des URDF: %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs.</source>
+        <translation>Keiner der %1 Basisparameter ist durch diese Logs überwiegend unbestimmt.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs: the %n direction(s) they miss are shared among several.</source>
+        <translation>
+            <numerusform>Keiner der %1 Basisparameter ist durch diese Logs überwiegend unbestimmt: die %n Richtung, die sie nicht bestimmen, verteilt sich auf mehrere.</numerusform>
+            <numerusform>Keiner der %1 Basisparameter ist durch diese Logs überwiegend unbestimmt: die %n Richtungen, die sie nicht bestimmen, verteilen sich auf mehrere.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n stale row(s) (values repeated under a new time stamp) treated as missing</source>
+        <translation>
+            <numerusform>%n veraltete Zeile (Werte unter neuem Zeitstempel wiederholt) als fehlend behandelt</numerusform>
+            <numerusform>%n veraltete Zeilen (Werte unter neuem Zeitstempel wiederholt) als fehlend behandelt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n row(s) written twice (the same time stamp and values) dropped</source>
+        <translation>
+            <numerusform>%n doppelt geschriebene Zeile (gleicher Zeitstempel, gleiche Werte) verworfen</numerusform>
+            <numerusform>%n doppelt geschriebene Zeilen (gleicher Zeitstempel, gleiche Werte) verworfen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2.</source>
+        <translation>%1: %2.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 (URDF robot &quot;%2&quot;)</source>
+        <translation>%1 (URDF-Roboter „%2“)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>%1 in %2, %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1 in %2, %n bewegliches Gelenk.</numerusform>
+            <numerusform>%1 in %2, %n bewegliche Gelenke.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 (built-in), %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1 (eingebaut), %n bewegliches Gelenk.</numerusform>
+            <numerusform>%1 (eingebaut), %n bewegliche Gelenke.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Fitted to %n log(s), %1 samples; %2.</source>
+        <translation>
+            <numerusform>An %n Log angepasst, %1 Abtastwerte; %2.</numerusform>
+            <numerusform>An %n Logs angepasst, %1 Abtastwerte; %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the consistent fit converged</source>
+        <translation>die konsistente Anpassung ist konvergiert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the consistent fit stopped at its step limit</source>
+        <translation>die konsistente Anpassung hielt an ihrer Schrittgrenze an</translation>
+    </message>
+</context>
+<context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+28"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
         <source>Reading the robot %1…</source>
         <translation>Roboter %1 wird gelesen…</translation>
     </message>
@@ -1419,50 +1539,22 @@
         <translation>Validierungs-Log %1 von %2 wird vorhergesagt: %3…</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; (%2), %3 moving joints.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; (%2), %3 bewegliche Gelenke.&lt;/p&gt;</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+4"/>
-        <source>&lt;p&gt;Fitted to %n log(s), %1 samples: %2 of %3 standard-parameter directions determined (condition %4); %5.&lt;/p&gt;</source>
-        <translation>
-            <numerusform>&lt;p&gt;An %n Log angepasst, %1 Abtastwerte: %2 von %3 Standardparameter-Richtungen bestimmt (Kondition %4); %5.&lt;/p&gt;</numerusform>
-            <numerusform>&lt;p&gt;An %n Logs angepasst, %1 Abtastwerte: %2 von %3 Standardparameter-Richtungen bestimmt (Kondition %4); %5.&lt;/p&gt;</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the consistent fit converged</source>
-        <translation>die konsistente Anpassung ist konvergiert</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the consistent fit stopped at its step limit</source>
-        <translation>die konsistente Anpassung hielt an ihrer Schrittgrenze an</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+16"/>
         <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Konsistenz:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters:&lt;/b&gt; none of %1.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Unbestimmte Basisparameter:&lt;/b&gt; keiner von %1.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters&lt;/b&gt; (kept near the URDF&apos;s values), %1 of %2: %3&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Unbestimmte Basisparameter&lt;/b&gt; (nahe den Werten des URDF gehalten), %1 von %2: %3&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Trainingsresiduum&lt;/b&gt;, RMS pro Gelenk [N m]: %1&lt;/p&gt;</translation>
     </message>
     <message>
         <location line="+8"/>
+        <source>&lt;p style=&quot;color:#8a5300&quot;&gt;&lt;b&gt;Warning:&lt;/b&gt; the URDF as a real robot: %1&lt;/p&gt;</source>
+        <translation>&lt;p style=&quot;color:#8a5300&quot;&gt;&lt;b&gt;Warnung:&lt;/b&gt; das URDF als realer Roboter: %1&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Identified; no validation log. Accept the result to export it.</source>
         <translation>Identifiziert; kein Validierungs-Log. Das Ergebnis akzeptieren, um es zu exportieren.</translation>
     </message>
@@ -1568,9 +1660,106 @@
     </message>
 </context>
 <context>
+    <name>MeshBounds</name>
+    <message>
+        <location filename="../core/model/MeshBounds.cpp" line="+67"/>
+        <source>not readable as a mesh (%1)</source>
+        <translation>nicht als Netz lesbar (%1)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>has no vertices</source>
+        <translation>hat keine Eckpunkte</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>names no package</source>
+        <translation>nennt kein Paket</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>package &quot;%1&quot; not found (ROS_PACKAGE_PATH, the URDF&apos;s folder)</source>
+        <translation>Paket „%1“ nicht gefunden (ROS_PACKAGE_PATH, Ordner des URDF)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>a relative name without the URDF&apos;s folder</source>
+        <translation>ein relativer Name ohne den Ordner des URDF</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+11"/>
+        <source>no such file</source>
+        <translation>keine solche Datei</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>empty</source>
+        <translation>leer</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>larger than 256 MB, not read</source>
+        <translation>größer als 256 MB, nicht gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>ModelCheck</name>
+    <message>
+        <location filename="../core/model/ModelCheck.cpp" line="+25"/>
+        <source>link %1 (%2)</source>
+        <translation>Glied %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>joint %1 (%2)</source>
+        <translation>Gelenk %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: its smallest principal moment of inertia about the centre of mass, %2 kg m^2, is below %3 % of the CAD link&apos;s smallest (%4 kg m^2): a point mass or a needle, not a link</source>
+        <translation>%1: sein kleinstes Hauptträgheitsmoment um den Schwerpunkt, %2 kg m^2, liegt unter %3 % des kleinsten des CAD-Glieds (%4 kg m^2): eine Punktmasse oder Nadel, kein Glied</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: its principal moments %2, %3 and %4 kg m^2 give I1 + I2 = %5 I3, below %6 I3 (a flat plate at best)</source>
+        <translation>%1: seine Hauptträgheitsmomente %2, %3 und %4 kg m^2 ergeben I1 + I2 = %5 I3, unter %6 I3 (bestenfalls eine flache Platte)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: its centre of mass lies outside its bounding volume (%2)</source>
+        <translation>%1: sein Schwerpunkt liegt außerhalb seines Hüllvolumens (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the URDF&apos;s geometry: %1</source>
+        <translation>die Geometrie des URDF: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
+        <translation>das Trägheitsellipsoid des CAD-Körpers, %1-fach vergrößert</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1: its mass is %2 kg: not a real body</source>
+        <translation>%1: seine Masse ist %2 kg: kein realer Körper</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: no mass distribution has its inertia (its pseudo-inertia has the negative eigenvalue %2): not a real body</source>
+        <translation>%1: keine Massenverteilung hat seine Trägheit (seine Pseudo-Trägheit hat den negativen Eigenwert %2): kein realer Körper</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: %2 is %3, negative: friction and rotor inertia take energy, they do not give it</source>
+        <translation>%1: %2 ist %3, negativ: Reibung und Rotorträgheit nehmen Energie auf, sie geben keine ab</translation>
+    </message>
+</context>
+<context>
     <name>ModelFactory</name>
     <message>
-        <location filename="../core/model/ModelFactory.cpp" line="+70"/>
+        <location filename="../core/model/ModelFactory.cpp" line="+71"/>
         <source>robot.urdf.file: the &quot;urdf&quot; model needs a URDF file</source>
         <translation>robot.urdf.file: das Modell „urdf“ braucht eine URDF-Datei</translation>
     </message>
@@ -1642,12 +1831,17 @@
         <translation>DCF-Fragment: Gelenk %1 existiert nicht; der Roboter hat %2 Gelenke</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+143"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+178"/>
         <source>must be given for every parameter or for none</source>
         <translation>muss für jeden Parameter oder für keinen angegeben sein</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+33"/>
+        <source>must be &quot;%1&quot; for determined %2, got &quot;%3&quot;</source>
+        <translation>muss für determined %2 „%1“ sein, gefunden: „%3“</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>must be an object index written as &quot;0x&quot; and four hex digits, got &quot;%1&quot;</source>
         <translation>muss ein Objektindex aus „0x“ und vier Hexadezimalziffern sein, gefunden: „%1“</translation>
     </message>
@@ -1662,17 +1856,17 @@
         <translation>muss Datum und Uhrzeit wie 2024-05-01T12:00:00.000Z sein, gefunden: „%1“</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+71"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>fehlt; dies ist keine learnid-Parameterdatei</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>this version of learnid reads &quot;%1&quot;, got %2</source>
-        <translation>diese Version von learnid liest „%1“, gefunden: %2</translation>
+        <location line="+5"/>
+        <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
+        <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>is missing; this key is required</source>
         <translation>fehlt; dieser Schlüssel ist erforderlich</translation>
     </message>
@@ -1682,17 +1876,17 @@
         <translation>passt nicht zum Inhalt: die Datei wurde nach dem Schreiben durch learnid geändert oder ist beschädigt</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFileValidation.cpp" line="+48"/>
+        <location filename="../core/io/ParameterFileValidation.cpp" line="+78"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>one per joint of %1</source>
         <translation>einer pro Gelenk von %1</translation>
     </message>
@@ -1702,19 +1896,40 @@
         <translation>Knoten %1 ist zwei Gelenken zugeordnet</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>must be a valid date and time</source>
         <translation>muss ein gültiges Datum mit Uhrzeit sein</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-73"/>
+        <location line="+75"/>
         <location line="+15"/>
         <location line="+5"/>
         <source>must not be empty</source>
         <translation>darf nicht leer sein</translation>
     </message>
     <message>
-        <location line="-17"/>
+        <location line="-105"/>
+        <source>one per standard parameter</source>
+        <translation>einer pro Standardparameter</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>determined shares, %1</source>
+        <translation>bestimmte Anteile, %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>must be a share from 0 to 1 or null, got %1</source>
+        <translation>muss ein Anteil von 0 bis 1 oder null sein, gefunden: %1</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>must give each joint&apos;s node when the file records no controller</source>
+        <translation>muss den Knoten jedes Gelenks angeben, wenn die Datei keinen Regler festhält</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
@@ -1734,7 +1949,8 @@
         <translation>muss „%1“ sein (Parameter %2 von %3), gefunden: „%4“</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-105"/>
+        <location line="+111"/>
         <source>values, %1</source>
         <translation>Werte, %1</translation>
     </message>
@@ -1744,7 +1960,7 @@
         <translation>Standardabweichungen, %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>must name the CANopen data type</source>
         <translation>muss den CANopen-Datentyp nennen</translation>
     </message>
@@ -1854,24 +2070,6 @@
     </message>
 </context>
 <context>
-    <name>PhysicalConsistency</name>
-    <message>
-        <location filename="../core/model/LogCholesky.cpp" line="+17"/>
-        <source>%1 has %2 entries; a link has 10.</source>
-        <translation>%1 hat %2 Einträge; ein Glied hat 10.</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1[%2] is not finite.</source>
-        <translation>%1[%2] ist nicht endlich.</translation>
-    </message>
-    <message>
-        <location line="+91"/>
-        <source>The link is not strictly physically consistent (mass %1 kg, smallest pseudo-inertia eigenvalue %2); it has no log-Cholesky parameters.</source>
-        <translation>Das Glied ist nicht streng physikalisch konsistent (Masse %1 kg, kleinster Eigenwert der Pseudoträgheitsmatrix %2); es hat keine Log-Cholesky-Parameter.</translation>
-    </message>
-</context>
-<context>
     <name>PlanCsv</name>
     <message>
         <location filename="../core/io/PlanCsv.cpp" line="+109"/>
@@ -1963,6 +2161,101 @@
         <location line="+29"/>
         <source>a second plan-id, %1, other than %2 on line %3; a log is of one plan</source>
         <translation>eine zweite plan-id, %1, anders als %2 in Zeile %3; ein Log gehört zu einem Plan</translation>
+    </message>
+</context>
+<context>
+    <name>Plausibility</name>
+    <message>
+        <location filename="../core/model/Plausibility.cpp" line="+45"/>
+        <source>The CAD vector has %1 entries, too few for %2 links.</source>
+        <translation>Der CAD-Vektor hat %1 Einträge, zu wenige für %2 Glieder.</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>The plausibility check needs 10 parameters and a volume per link (%1 links, %2 and %3 parameters, %4 volumes).</source>
+        <translation>Die Plausibilitätsprüfung braucht 10 Parameter und ein Volumen pro Glied (%1 Glieder, %2 und %3 Parameter, %4 Volumina).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The parameters to check are not finite.</source>
+        <translation>Die zu prüfenden Parameter sind nicht endlich.</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>mass %1 kg</source>
+        <translation>Masse %1 kg</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
+        <translation>kleinstes Hauptträgheitsmoment %1 kg m², unter %2 % des kleinsten des CAD-Glieds (%3 kg m²)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
+        <translation>(I1 + I2) / I3 = %1, unter %2: eine Nadel oder eine Platte</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
+        <translation>Schwerpunkt außerhalb des Hüllvolumens des Glieds (das %1-Fache seiner Größe)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Index %1 is outside the %2 standard parameters.</source>
+        <translation>Index %1 liegt außerhalb der %2 Standardparameter.</translation>
+    </message>
+</context>
+<context>
+    <name>PlausibleEstimate</name>
+    <message>
+        <location filename="../core/model/PlausibleEstimate.cpp" line="+30"/>
+        <source>The estimation problem&apos;s sizes do not match: A is %1 x %2, b has %3 entries, the prior %4 for %5 links.</source>
+        <translation>Die Größen des Schätzproblems passen nicht zusammen: A ist %1 x %2, b hat %3 Einträge, der Prior %4, für %5 Glieder.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The estimation problem has entries that are not finite.</source>
+        <translation>Das Schätzproblem hat Einträge, die keine endlichen Zahlen sind.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The prior share must lie between 0 and 1, not %1.</source>
+        <translation>Der Anteil des Priors muss zwischen 0 und 1 liegen, nicht %1.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 bounding volumes for %2 links.</source>
+        <translation>%1 Hüllvolumina für %2 Glieder.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+3"/>
+        <source>Index %1 is not a joint term.</source>
+        <translation>Index %1 ist kein Gelenkterm.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The prior&apos;s joint term %1 is negative (%2).</source>
+        <translation>Der Gelenkterm %1 des Priors ist negativ (%2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The prior&apos;s link %1 does not lie inside its bounding volume.</source>
+        <translation>Das Glied %1 des Priors liegt nicht in seinem Hüllvolumen.</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>The prior&apos;s link %1 is not strictly a real body (its pseudo-inertia is not positive definite).</source>
+        <translation>Das Glied %1 des Priors ist nicht streng ein realer Körper (seine Pseudoträgheit ist nicht positiv definit).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+61"/>
+        <source>%n Newton step(s)</source>
+        <translation>
+            <numerusform>%n Newton-Schritt</numerusform>
+            <numerusform>%n Newton-Schritte</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2066,7 +2359,7 @@
         <translation>%1: %2 Gelenkarten für einen Roboter mit %3 Gelenken angegeben</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>expected %1 fields (%2), got %3</source>
         <translation>%1 Felder erwartet (%2), gefunden: %3</translation>
     </message>
@@ -2101,14 +2394,22 @@
         <translation>die Zeit %1 wiederholt die der Zeile %2 mit anderen Werten (%3: dort %4, hier %5); nur eine exakte Wiederholung einer Zeile wird verworfen</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>the file holds no header line; expected one naming the columns %1</source>
         <translation>die Datei enthält keine Kopfzeile; erwartet wird eine, die die Spalten %1 nennt</translation>
     </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source> (and %n stale row(s): values repeated under a new time stamp, treated as missing)</source>
+        <translation>
+            <numerusform> (und %n veraltete Zeile: Werte unter neuem Zeitstempel wiederholt, als fehlend behandelt)</numerusform>
+            <numerusform> (und %n veraltete Zeilen: Werte unter neuem Zeitstempel wiederholt, als fehlend behandelt)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+7"/>
-        <source>%1 samples after the header on line %2; a log needs at least %3</source>
-        <translation>%1 Abtastwerte nach der Kopfzeile in Zeile %2; ein Log braucht mindestens %3</translation>
+        <location line="+4"/>
+        <source>%1 samples after the header on line %2%3; a log needs at least %4</source>
+        <translation>%1 Abtastwerte nach der Kopfzeile in Zeile %2%3; ein Log braucht mindestens %4</translation>
     </message>
 </context>
 <context>
@@ -2284,7 +2585,7 @@
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+60"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+70"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits: Gelenk %1 (%2) hat im URDF keine Momentengrenze (effort): die Momentengrenzen im Szenario angeben</translation>
     </message>
@@ -2468,12 +2769,12 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+84"/>
+        <location filename="../core/service/SessionExport.cpp" line="+91"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>nur URDF-Roboter haben ein URDF, das sich exportieren lässt</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-29"/>
         <source>no consistent estimate near estimate %1: %2</source>
         <translation>keine konsistente Schätzung nahe Schätzung %1: %2</translation>
     </message>
@@ -2483,7 +2784,7 @@
         <translation>nur URDF-Roboter haben Standardparameter, die sich konsistent machen lassen</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+74"/>
         <source>cannot create the folder %1</source>
         <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -2491,7 +2792,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+83"/>
+        <location filename="../core/service/SessionReport.cpp" line="+116"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>Schätzung %1 existiert in dieser Sitzung nicht</translation>
     </message>
@@ -2530,9 +2831,27 @@
     </message>
 </context>
 <context>
+    <name>StandardExport</name>
+    <message>
+        <location filename="../core/service/StandardExport.cpp" line="+37"/>
+        <source>data</source>
+        <translation>Daten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>prior</source>
+        <translation>Prior</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 standard parameters given, the model has %2</source>
+        <translation>%1 Standardparameter angegeben, das Modell hat %2</translation>
+    </message>
+</context>
+<context>
     <name>Text</name>
     <message>
-        <location filename="../core/model/UrdfChain.cpp" line="+49"/>
+        <location filename="../core/model/UrdfChain.cpp" line="+53"/>
         <source>%1: not a valid URDF: %2</source>
         <translation>%1: kein gültiges URDF: %2</translation>
     </message>
@@ -2542,7 +2861,7 @@
         <translation>der Parser nannte keinen Grund</translation>
     </message>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="-33"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="-41"/>
         <source>simulation.realUrdf: %1 has %2 moving joints, the robot %3</source>
         <translation>simulation.realUrdf: %1 hat %2 bewegliche Gelenke, der Roboter %3</translation>
     </message>
@@ -2552,7 +2871,12 @@
         <translation>simulation.realUrdf: Gelenk %1 (%2) sitzt anders als im URDF des Roboters: der reale Roboter darf nur in Trägheit und Reibung abweichen</translation>
     </message>
     <message>
-        <location filename="../core/identify/UniformLog.cpp" line="+123"/>
+        <location line="+12"/>
+        <source>simulation.realUrdf: %1 is not a robot that could be built: %2</source>
+        <translation>simulation.realUrdf: %1 ist kein Roboter, der sich bauen ließe: %2</translation>
+    </message>
+    <message>
+        <location filename="../core/identify/UniformLog.cpp" line="+145"/>
         <source>%1: the time stamps are off the nominal times t0 + k T (T = %2 ms) by %3 ms at %4 (t = %5 s) and by %6 ms at %7 (t = %8 s), more than half a step apart: the samples are not equidistant (one lost or added?), so the nominal times do not apply</source>
         <translation>%1: die Zeitstempel weichen von den Sollzeiten t0 + k T (T = %2 ms) um %3 ms bei %4 (t = %5 s) und um %6 ms bei %7 (t = %8 s) ab, mehr als einen halben Schritt auseinander: die Abtastwerte sind nicht äquidistant (einer verloren oder hinzugekommen?), also gelten die Sollzeiten nicht</translation>
     </message>
@@ -2698,7 +3022,7 @@
 <context>
     <name>UniformLog</name>
     <message>
-        <location filename="../core/identify/UniformLog.cpp" line="-78"/>
+        <location filename="../core/identify/UniformLog.cpp" line="-99"/>
         <source>sample %1</source>
         <translation>Abtastwert %1</translation>
     </message>
@@ -2708,7 +3032,17 @@
         <translation>Zeile %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
+        <source> (line %1 is stale: it repeated the values of line %2 under a new time stamp and counts as missing)</source>
+        <translation> (Zeile %1 ist veraltet: sie wiederholte die Werte von Zeile %2 unter einem neuen Zeitstempel und zählt als fehlend)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> (lines %1 to %2 are stale: %3 rows that repeated the values of line %4 under new time stamps and count as missing)</source>
+        <translation> (Zeilen %1 bis %2 sind veraltet: %3 Zeilen, die die Werte von Zeile %4 unter neuen Zeitstempeln wiederholten und als fehlend zählen)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1: a log of %2 times, %3 x %4 positions, %5 x %6 velocities, %7 x %8 torques and %9 line numbers; expected n x N for all</source>
         <translation>%1: ein Log mit %2 Zeiten, %3 x %4 Positionen, %5 x %6 Geschwindigkeiten, %7 x %8 Momenten und %9 Zeilennummern; erwartet wird n x N für alle</translation>
     </message>
@@ -2733,14 +3067,29 @@
         <translation>%1: das Log reicht von %2 bis %3 s, zu lang zum Neuabtasten</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+74"/>
         <source>%1: the period (%2 s) and the largest gap (%3 s) must be zero (the default) or positive</source>
         <translation>%1: die Periode (%2 s) und die größte Lücke (%3 s) müssen null (der Standard) oder positiv sein</translation>
     </message>
     <message>
-        <location line="+18"/>
-        <source>%1: a gap of %2 ms after the sample at t = %3 s, more than the %4 ms allowed (--max-gap)</source>
-        <translation>%1: eine Lücke von %2 ms nach dem Abtastwert bei t = %3 s, mehr als die erlaubten %4 ms (--max-gap)</translation>
+        <location line="+5"/>
+        <source>%1: the fit&apos;s filter bandwidth rho (%2 rad/s) must be positive</source>
+        <translation>%1: die Bandbreite rho des Filters der Anpassung (%2 rad/s) muss positiv sein</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 ms allowed (--max-gap)</source>
+        <translation>erlaubten %1 ms (--max-gap)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 ms allowed (--max-gap; by default half the time constant 1/rho of the fit&apos;s filter, rho = %2 rad/s, and at least %3 of the log&apos;s steps)</source>
+        <translation>erlaubten %1 ms (--max-gap; standardmäßig die halbe Zeitkonstante 1/rho des Filters der Anpassung, rho = %2 rad/s, und mindestens %3 Schritte des Logs)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: a gap of %2 ms after the sample at t = %3 s%4, more than the %5</source>
+        <translation>%1: eine Lücke von %2 ms nach dem Abtastwert bei t = %3 s%4, mehr als die %5</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -2761,7 +3110,7 @@
         <translation>%1: Glied „%2“ hat eine negative Masse (%3 kg)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>%1: the robot branches at link &quot;%2&quot; (children %3): name the tip link of the chain</source>
         <translation>%1: der Roboter verzweigt sich am Glied „%2“ (Kindglieder %3): das Endglied der Kette angeben</translation>
     </message>
@@ -2771,7 +3120,7 @@
         <translation>%1: Gelenk „%2“ hat keine Achse (Nullvektor)</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <location line="+4"/>
         <source>%1: no link &quot;%2&quot;</source>
         <translation>%1: kein Glied „%2“</translation>
@@ -2782,17 +3131,17 @@
         <translation>%1: Glied „%2“ liegt nicht unterhalb von Glied „%3“</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>%1: joint &quot;%2&quot; mimics another joint: mimic joints are not supported</source>
         <translation>%1: Gelenk „%2“ ahmt ein anderes Gelenk nach (mimic): Mimic-Gelenke werden nicht unterstützt</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+27"/>
         <source>%1: joint &quot;%2&quot; is floating or planar: only revolute, continuous, prismatic and fixed joints form a serial arm</source>
         <translation>%1: Gelenk „%2“ ist frei (floating) oder eben (planar): nur Drehgelenke (revolute, continuous), Schubgelenke (prismatic) und feste Gelenke (fixed) bilden einen seriellen Arm</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
         <source>%1: no moving joint between link &quot;%2&quot; and link &quot;%3&quot;</source>
         <translation>%1: kein bewegliches Gelenk zwischen Glied „%2“ und Glied „%3“</translation>
     </message>
@@ -2805,7 +3154,7 @@
 <context>
     <name>UrdfExport</name>
     <message>
-        <location filename="../core/io/UrdfExport.cpp" line="+120"/>
+        <location filename="../core/io/UrdfExport.cpp" line="+122"/>
         <source>%1: link &quot;%2&quot;: the identified body has an entry that is not a finite number</source>
         <translation>%1: Glied „%2“: der identifizierte Körper hat einen Eintrag, der keine endliche Zahl ist</translation>
     </message>
@@ -2825,12 +3174,17 @@
         <translation>%1: Gelenk „%2“: die Reibung muss endlich und nicht negativ sein, gefunden: viskos %3 und Coulomb %4</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+5"/>
+        <source>%1: joint &quot;%2&quot;: the armature must be finite and not negative and the offset finite, got armature %3 and offset %4</source>
+        <translation>%1: Gelenk „%2“: die Rotorträgheit muss endlich und nicht negativ und der Offset endlich sein, gefunden: Rotorträgheit %3 und Offset %4</translation>
+    </message>
+    <message>
+        <location line="+158"/>
         <source>%1: the identified URDF reads back with another body or friction at link &quot;%2&quot; than was written</source>
         <translation>%1: das identifizierte URDF ergibt beim Zurücklesen am Glied „%2“ einen anderen Körper oder eine andere Reibung, als geschrieben wurde</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1: bodies for %2 and friction for %3 joints given, the chain has %4 moving joints</source>
         <translation>%1: Körper für %2 und Reibung für %3 Gelenke angegeben, die Kette hat %4 bewegliche Gelenke</translation>
     </message>
@@ -2843,6 +3197,107 @@
         <location line="+13"/>
         <source>%1: line %2, column %3: not XML: %4</source>
         <translation>%1: Zeile %2, Spalte %3: kein XML: %4</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfExtension</name>
+    <message>
+        <location filename="../core/model/UrdfExtension.cpp" line="+20"/>
+        <source>%1: line %2, column %3: &lt;%4&gt;: %5</source>
+        <translation>%1: Zeile %2, Spalte %3: &lt;%4&gt;: %5</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>unknown attribute &quot;%1&quot; (the attributes are armature and offset)</source>
+        <translation>unbekanntes Attribut „%1“ (die Attribute sind armature und offset)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 must be a finite number, got &quot;%2&quot;</source>
+        <translation>%1 muss eine endliche Zahl sein, gefunden: „%2“</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>given twice in joint &quot;%1&quot;</source>
+        <translation>zweimal in Gelenk „%1“ angegeben</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfGeometry</name>
+    <message>
+        <location filename="../core/model/UrdfGeometry.cpp" line="+85"/>
+        <source>%1: link &quot;%2&quot;, &lt;%3&gt; %4: %5</source>
+        <translation>%1: Glied „%2“, &lt;%3&gt; %4: %5</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the box&apos;s size is negative or not a number</source>
+        <translation>die Größe des Quaders ist negativ oder keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the cylinder&apos;s radius or length is negative or not a number</source>
+        <translation>Radius oder Länge des Zylinders ist negativ oder keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the sphere&apos;s radius is negative or not a number</source>
+        <translation>der Radius der Kugel ist negativ oder keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the mesh&apos;s scale is not a number</source>
+        <translation>der Maßstab des Netzes ist keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>mesh &quot;%1&quot; of link &quot;%2&quot; skipped: %3</source>
+        <translation>Netz „%1“ von Glied „%2“ übersprungen: %3</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>1 box</source>
+        <translation>1 Quader</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 boxes</source>
+        <translation>%1 Quader</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 cylinder</source>
+        <translation>1 Zylinder</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 cylinders</source>
+        <translation>%1 Zylinder</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 sphere</source>
+        <translation>1 Kugel</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 spheres</source>
+        <translation>%1 Kugeln</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 mesh</source>
+        <translation>1 Netz</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 meshes</source>
+        <translation>%1 Netze</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>visual shapes of %1 (no collision shape)</source>
+        <translation>Sichtformen von %1 (keine Kollisionsform)</translation>
     </message>
 </context>
 <context>
@@ -2906,32 +3361,35 @@
 <context>
     <name>learnid-cli</name>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+41"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+43"/>
         <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
         <translation>--robot: &apos;%1&apos; ist weder eine URDF-Datei noch ein eingebauter Roboter (%2)</translation>
     </message>
     <message>
-        <location line="+20"/>
-        <source>--export: a parameter file records the controller&apos;s gains, and the default gains are for %1 joints, the robot has %2: give them with --scenario FILE (its controller section)</source>
-        <translation>--export: eine Parameterdatei hält die Verstärkungen des Reglers fest, und die Standardverstärkungen gelten für %1 Gelenke, der Roboter hat %2: sie mit --scenario FILE angeben (in dessen Abschnitt controller)</translation>
+        <location line="+73"/>
+        <source>robot %1: %2, %3 moving joints</source>
+        <translation>Roboter %1: %2, %3 bewegliche Gelenke</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+9"/>
         <source>learnid-cli: reading %1</source>
         <translation>learnid-cli: %1 wird gelesen</translation>
     </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>fitting %1 standard parameters to %n log(s)</source>
+        <translation>
+            <numerusform>%1 Standardparameter werden an %n Log angepasst</numerusform>
+            <numerusform>%1 Standardparameter werden an %n Logs angepasst</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+35"/>
+        <location line="+24"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>identifiziert von learnid-cli %1 identify am %2</translation>
     </message>
     <message>
-        <location line="-44"/>
-        <source>robot %1 (%2): %3 moving joints</source>
-        <translation>Roboter %1 (%2): %3 bewegliche Gelenke</translation>
-    </message>
-    <message>
-        <location line="-38"/>
+        <location line="-76"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1: vorhergesagtes und gemessenes Moment</translation>
     </message>
@@ -2941,25 +3399,15 @@
         <translation>learnid: %1 aus Logs identifiziert</translation>
     </message>
     <message>
-        <location line="+41"/>
-        <source>fitting %1 standard parameters to %2 logs</source>
-        <translation>%1 Standardparameter werden an %2 Logs angepasst</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>base parameters the logs leave undetermined (kept near the URDF&apos;s values): %1</source>
-        <translation>Basisparameter, die die Logs unbestimmt lassen (nahe den Werten des URDF gehalten): %1</translation>
-    </message>
-    <message>
-        <location line="+25"/>
+        <location line="+72"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+108"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+110"/>
         <location line="+9"/>
         <location line="+6"/>
         <location line="+13"/>
         <location line="+12"/>
-        <location line="+52"/>
+        <location line="+61"/>
         <location line="+44"/>
         <location filename="../app/cli/main.cpp" line="+52"/>
         <source>learnid-cli: error: %1</source>
@@ -3110,7 +3558,7 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-176"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-185"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
@@ -3178,7 +3626,7 @@
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+208"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -3384,8 +3832,13 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-79"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+7"/>
+        <location line="+8"/>
+        <source>learnid-cli: warning: the URDF as a real robot: %1</source>
+        <translation>learnid-cli: Warnung: das URDF als realer Roboter: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+8"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
     </message>
@@ -3443,7 +3896,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-163"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-166"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms: unbekannter Term &apos;%1&apos;; die Terme sind armature, viscous, coulomb und offset, oder none</translation>
     </message>
@@ -3514,11 +3967,11 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+5"/>
-        <source>Longest time step allowed in a log [ms]; default 5 sample periods.</source>
-        <translation>Längster erlaubter Zeitschritt in einem Log [ms]; Standard 5 Abtastperioden.</translation>
+        <source>Longest time step allowed in a log [ms]; default half the time constant 1/rho of the fit&apos;s filter (10 ms at rho 50), at least 2.5 sample periods.</source>
+        <translation>Längster erlaubter Zeitschritt in einem Log [ms]; Standard: die halbe Zeitkonstante 1/rho des Filters der Anpassung (10 ms bei rho 50), mindestens 2,5 Abtastperioden.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
         <translation>Basisglied der Kette; Standard: die Wurzel des URDF.</translation>
     </message>
@@ -3529,11 +3982,11 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+4"/>
-        <source>Write the identified base parameters as a parameter file (and DCF).</source>
-        <translation>Die identifizierten Basisparameter als Parameterdatei (und DCF) schreiben.</translation>
+        <source>Write the identified model as a parameter file (and DCF); it records controller gains only with --scenario.</source>
+        <translation>Das identifizierte Modell als Parameterdatei (und DCF) schreiben; Reglerverstärkungen hält sie nur mit --scenario fest.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Write the URDF with the identified inertia and friction.</source>
         <translation>Das URDF mit der identifizierten Trägheit und Reibung schreiben.</translation>
     </message>
@@ -3584,7 +4037,7 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>&apos;identify&apos; braucht mindestens ein --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+23"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
         <location line="+16"/>
         <source>name</source>
         <translation>Name</translation>
@@ -3595,33 +4048,12 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>Gel.</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>fit: %1 logs, %2 samples; %3 of %4 standard-parameter directions determined (condition %5)
-fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %8
-</source>
-        <translation>Anpassung: %1 Logs, %2 Abtastwerte; %3 von %4 Standardparameter-Richtungen bestimmt (Kondition %5)
-Anpassung: %6 von %7 Basisparametern unbestimmt (nahe den Werten des URDF gehalten); %8
-</translation>
+        <location line="+33"/>
+        <source>Identified parameters: %1.</source>
+        <translation>Identifizierte Parameter: %1.</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>consistent fit converged</source>
-        <translation>konsistente Anpassung konvergiert</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>consistent fit stopped at its step limit</source>
-        <translation>konsistente Anpassung an ihrer Schrittgrenze angehalten</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>identified parameters: %1
-</source>
-        <translation>identifizierte Parameter: %1
-</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>training logs: residual of the fit</source>
         <translation>Trainings-Logs: Residuum der Anpassung</translation>
     </message>
@@ -3647,18 +4079,56 @@ Anpassung: %6 von %7 Basisparametern unbestimmt (nahe den Werten des URDF gehalt
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../app/cli/TorquePlotPng.cpp" line="+124"/>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="+154"/>
         <source>URDF as given</source>
         <translation>URDF wie gegeben</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../app/cli/IdentifyParameters.cpp" line="+32"/>
+        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: data, below: kept from the prior)</source>
+        <translation>Standardparameter: die des URDF, die identifizierten und was die Daten bestimmt haben (Anteil der Richtung des Parameters; ab 0,5: Daten, darunter: vom Prior übernommen)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>link or joint</source>
+        <translation>Glied oder Gelenk</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF</source>
+        <translation>URDF</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+1"/>
         <location filename="../app/cli/TorquePlotPng.cpp" line="+2"/>
         <source>identified</source>
         <translation>identifiziert</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>determined</source>
+        <translation>bestimmt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>from</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>warning: the URDF as a real robot: %1
+</source>
+        <translation>Warnung: das URDF als realer Roboter: %1
+</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+2"/>
         <source>RMS measured [N m]</source>
         <translation>RMS gemessen [N m]</translation>
     </message>
@@ -4668,12 +5138,7 @@ neue Schätzung.
 <context>
     <name>learnid::LogExportController</name>
     <message>
-        <location filename="../ui/LogExportController.cpp" line="+59"/>
-        <source>a parameter file records the controller&apos;s gains, and the default gains are for %1 joints, the robot has %2: choose a scenario of this robot under &quot;Gains from&quot;</source>
-        <translation>eine Parameterdatei hält die Verstärkungen des Reglers fest, und die Standardverstärkungen gelten für %1 Gelenke, der Roboter hat %2: unter „Verstärkungen aus“ ein Szenario dieses Roboters wählen</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location filename="../ui/LogExportController.cpp" line="+75"/>
         <source>identify and accept a result first</source>
         <translation>zuerst ein Ergebnis identifizieren und akzeptieren</translation>
     </message>
@@ -5270,12 +5735,17 @@ Verhältnis %</translation>
         <translation>⚠ beibehalten</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>✗ no</source>
         <translation>✗ nein</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <source>⚠ not plausible</source>
+        <translation>⚠ nicht plausibel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>✓</source>
         <translation>✓</translation>
     </message>
@@ -5581,8 +6051,8 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>default gains (robots with 2 joints)</source>
-        <translation>Standardverstärkungen (Roboter mit 2 Gelenken)</translation>
+        <source>none: the parameter file holds the model alone</source>
+        <translation>keine: die Parameterdatei enthält nur das Modell</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5706,7 +6176,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RobotChooser</name>
     <message>
-        <location filename="../ui/RobotChooser.cpp" line="+35"/>
+        <location filename="../ui/RobotChooser.cpp" line="+36"/>
         <source>Robot model</source>
         <translation>Robotermodell</translation>
     </message>
@@ -5827,9 +6297,14 @@ Verhältnis %</translation>
         <translation>%1, %2 kg bewegt; Gelenkterme: %3; %4 Basisparameter (von %5 Standardparametern)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>none</source>
         <translation>keine</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Warning: %1</source>
+        <translation>Warnung: %1</translation>
     </message>
 </context>
 <context>
@@ -6367,7 +6842,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::TorqueFitPlot</name>
     <message>
-        <location filename="../ui/TorqueFitPlot.cpp" line="+79"/>
+        <location filename="../ui/TorqueFitPlot.cpp" line="+93"/>
         <source>Identify to see the predicted against the measured torque.</source>
         <translation>Identifizieren, um das vorhergesagte gegenüber dem gemessenen Moment zu sehen.</translation>
     </message>
@@ -6392,7 +6867,7 @@ Verhältnis %</translation>
         <translation>URDF wie gegeben</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+83"/>
         <source>All joints</source>
         <translation>Alle Gelenke</translation>
     </message>

@@ -44,6 +44,24 @@
     </message>
 </context>
 <context>
+    <name>BoundingVolume</name>
+    <message>
+        <location filename="../core/model/BoundingVolume.cpp" line="+55"/>
+        <source>A bounding box needs its upper corner above its lower one.</source>
+        <translation>包围盒的上角必须高于下角。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>A link without positive mass has no inertia ellipsoid.</source>
+        <translation>质量不为正的连杆没有惯性椭球。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The inertia ellipsoid&apos;s margin must be above 1.</source>
+        <translation>惯性椭球的裕量必须大于 1。</translation>
+    </message>
+</context>
+<context>
     <name>BusLoad</name>
     <message>
         <location filename="../core/can/BusLoad.cpp" line="+41"/>
@@ -664,7 +682,7 @@
         <translation>%1：该日志属于计划 %2，而不是计划 %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>sample %1 (t = %2 s) is beyond the plan&apos;s %3 samples, the last at t = %4 s</source>
         <translation>采样点 %1（t = %2 s）超出了计划的 %3 个采样点，最后一个位于 t = %4 s</translation>
     </message>
@@ -952,7 +970,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+86"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+129"/>
         <source>link %1 (%2): mass %3 kg: not a real body</source>
         <translation>连杆 %1（%2）：质量 %3 kg：不是真实刚体</translation>
     </message>
@@ -970,6 +988,11 @@
         <location line="+4"/>
         <source>physically consistent: every link a real body</source>
         <translation>物理一致：每个连杆都是真实刚体</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>link %1 (%2): not a plausible body: %3</source>
+        <translation>连杆 %1（%2）：不是合理的刚体：%3</translation>
     </message>
 </context>
 <context>
@@ -1330,7 +1353,7 @@
 <context>
     <name>LogFit</name>
     <message>
-        <location filename="../core/identify/LogFit.cpp" line="+140"/>
+        <location filename="../core/identify/LogFit.cpp" line="+141"/>
         <source>%1 has %2 joints, the robot %3</source>
         <translation>%1 有 %2 个关节，机器人有 %3 个</translation>
     </message>
@@ -1345,12 +1368,12 @@
         <translation>没有可用于拟合的采样点</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>the prior share must lie between 0 and 1</source>
         <translation>先验比例必须在 0 到 1 之间</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+98"/>
         <source>%1 does not fit the robot&apos;s joints or parameters</source>
         <translation>%1 与机器人的关节或参数不符</translation>
     </message>
@@ -1358,7 +1381,7 @@
 <context>
     <name>LogIdentification</name>
     <message>
-        <location filename="../core/service/LogIdentification.cpp" line="+78"/>
+        <location filename="../core/service/LogIdentification.cpp" line="+81"/>
         <source>identification cancelled; nothing was produced</source>
         <translation>辨识已取消；未生成任何结果</translation>
     </message>
@@ -1373,25 +1396,114 @@
         <translation>内置机器人 %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>no log to identify from: add a training log</source>
         <translation>没有可用于辨识的日志：请添加一个训练日志</translation>
     </message>
     <message>
-        <location filename="../core/service/LogIdentificationExport.cpp" line="+35"/>
+        <location filename="../core/service/LogIdentificationExport.cpp" line="+29"/>
         <source>%1 (%2), identified from the logs %3</source>
         <translation>%1（%2），由日志 %3 辨识</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+32"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>参数文件记录的控制器增益适用于 %1 个关节，机器人有 %2 个</translation>
     </message>
 </context>
 <context>
+    <name>LogIdentificationSummary</name>
+    <message>
+        <location filename="../core/service/LogIdentificationSummary.cpp" line="+21"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine all %2 (condition %3).</source>
+        <translation>在 %1 个标准参数中，任何数据至多能确定 %2 个组合（即基参数）；这些日志确定了全部 %2 个（条件数 %3）。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n stay near the URDF&apos;s values.</source>
+        <translation>
+            <numerusform>在 %1 个标准参数中，任何数据至多能确定 %2 个组合（即基参数）；这些日志确定了这 %2 个方向中的 %3 个（条件数 %4），其余 %n 个保持在 URDF 值附近。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12"/>
+        <source>%n of the %1 base parameters are mostly undetermined by these logs (less than half determined) and kept near the URDF&apos;s values: %2.</source>
+        <translation>
+            <numerusform>%1 个基参数中有 %n 个基本未被这些日志确定（确定的部分不到一半），保持在 URDF 值附近：%2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs.</source>
+        <translation>%1 个基参数中没有一个基本未被这些日志确定。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs: the %n direction(s) they miss are shared among several.</source>
+        <translation>
+            <numerusform>%1 个基参数中没有一个基本未被这些日志确定：日志未确定的 %n 个方向分散在多个基参数上。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n stale row(s) (values repeated under a new time stamp) treated as missing</source>
+        <translation>
+            <numerusform>%n 行过时数据（在新时间戳下重复了之前的值）按缺失处理</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n row(s) written twice (the same time stamp and values) dropped</source>
+        <translation>
+            <numerusform>%n 行重复写入的数据（时间戳和值都相同）已丢弃</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2.</source>
+        <translation>%1：%2。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 (URDF robot &quot;%2&quot;)</source>
+        <translation>%1（URDF 机器人“%2”）</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>%1 in %2, %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1，位于 %2，%n 个可动关节。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 (built-in), %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1（内置），%n 个可动关节。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Fitted to %n log(s), %1 samples; %2.</source>
+        <translation>
+            <numerusform>用 %n 个日志、%1 个采样点拟合；%2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the consistent fit converged</source>
+        <translation>一致拟合已收敛</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the consistent fit stopped at its step limit</source>
+        <translation>一致拟合在步数上限处停止</translation>
+    </message>
+</context>
+<context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+28"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
         <source>Reading the robot %1…</source>
         <translation>正在读取机器人 %1…</translation>
     </message>
@@ -1418,49 +1530,22 @@
         <translation>正在预测验证日志 %1/%2：%3…</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; (%2), %3 moving joints.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt;（%2），%3 个可动关节。&lt;/p&gt;</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+4"/>
-        <source>&lt;p&gt;Fitted to %n log(s), %1 samples: %2 of %3 standard-parameter directions determined (condition %4); %5.&lt;/p&gt;</source>
-        <translation>
-            <numerusform>&lt;p&gt;用 %n 个日志、%1 个采样点拟合：%3 个标准参数方向中确定了 %2 个（条件数 %4）；%5。&lt;/p&gt;</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the consistent fit converged</source>
-        <translation>一致拟合已收敛</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the consistent fit stopped at its step limit</source>
-        <translation>一致拟合在步数上限处停止</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+16"/>
         <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;一致性：&lt;/b&gt;&lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters:&lt;/b&gt; none of %1.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;未确定的基参数：&lt;/b&gt;无（共 %1 个）。&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&lt;p&gt;&lt;b&gt;Undetermined base parameters&lt;/b&gt; (kept near the URDF&apos;s values), %1 of %2: %3&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;未确定的基参数&lt;/b&gt;（保持在 URDF 值附近），%2 个中有 %1 个：%3&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;训练残差&lt;/b&gt;，各关节 RMS [N m]：%1&lt;/p&gt;</translation>
     </message>
     <message>
         <location line="+8"/>
+        <source>&lt;p style=&quot;color:#8a5300&quot;&gt;&lt;b&gt;Warning:&lt;/b&gt; the URDF as a real robot: %1&lt;/p&gt;</source>
+        <translation>&lt;p style=&quot;color:#8a5300&quot;&gt;&lt;b&gt;警告：&lt;/b&gt;该 URDF 作为真实机器人：%1&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Identified; no validation log. Accept the result to export it.</source>
         <translation>已辨识；没有验证日志。接受结果后即可导出。</translation>
     </message>
@@ -1566,9 +1651,106 @@
     </message>
 </context>
 <context>
+    <name>MeshBounds</name>
+    <message>
+        <location filename="../core/model/MeshBounds.cpp" line="+67"/>
+        <source>not readable as a mesh (%1)</source>
+        <translation>无法作为网格读取（%1）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>has no vertices</source>
+        <translation>没有顶点</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>names no package</source>
+        <translation>未指明软件包</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>package &quot;%1&quot; not found (ROS_PACKAGE_PATH, the URDF&apos;s folder)</source>
+        <translation>未找到软件包“%1”（ROS_PACKAGE_PATH、URDF 所在文件夹）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>a relative name without the URDF&apos;s folder</source>
+        <translation>相对名称，但没有 URDF 所在文件夹</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+11"/>
+        <source>no such file</source>
+        <translation>没有该文件</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>empty</source>
+        <translation>空文件</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>larger than 256 MB, not read</source>
+        <translation>大于 256 MB，未读取</translation>
+    </message>
+</context>
+<context>
+    <name>ModelCheck</name>
+    <message>
+        <location filename="../core/model/ModelCheck.cpp" line="+25"/>
+        <source>link %1 (%2)</source>
+        <translation>连杆 %1（%2）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>joint %1 (%2)</source>
+        <translation>关节 %1（%2）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: its smallest principal moment of inertia about the centre of mass, %2 kg m^2, is below %3 % of the CAD link&apos;s smallest (%4 kg m^2): a point mass or a needle, not a link</source>
+        <translation>%1：其绕质心的最小主惯性矩 %2 kg m^2 低于 CAD 连杆最小主惯性矩（%4 kg m^2）的 %3 %：是质点或细针，不是连杆</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: its principal moments %2, %3 and %4 kg m^2 give I1 + I2 = %5 I3, below %6 I3 (a flat plate at best)</source>
+        <translation>%1：其主惯性矩 %2、%3 和 %4 kg m^2 给出 I1 + I2 = %5 I3，低于 %6 I3（至多是一块薄板）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: its centre of mass lies outside its bounding volume (%2)</source>
+        <translation>%1：其质心位于包围体之外（%2）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the URDF&apos;s geometry: %1</source>
+        <translation>URDF 的几何体：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
+        <translation>CAD 刚体的惯性椭球，放大 %1 倍</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1: its mass is %2 kg: not a real body</source>
+        <translation>%1：其质量为 %2 kg：不是真实刚体</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: no mass distribution has its inertia (its pseudo-inertia has the negative eigenvalue %2): not a real body</source>
+        <translation>%1：没有任何质量分布具有其惯性（其伪惯性矩阵有负特征值 %2）：不是真实刚体</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: %2 is %3, negative: friction and rotor inertia take energy, they do not give it</source>
+        <translation>%1：%2 为 %3，是负值：摩擦和转子惯量只消耗能量，不会提供能量</translation>
+    </message>
+</context>
+<context>
     <name>ModelFactory</name>
     <message>
-        <location filename="../core/model/ModelFactory.cpp" line="+70"/>
+        <location filename="../core/model/ModelFactory.cpp" line="+71"/>
         <source>robot.urdf.file: the &quot;urdf&quot; model needs a URDF file</source>
         <translation>robot.urdf.file：“urdf”模型需要 URDF 文件</translation>
     </message>
@@ -1640,12 +1822,17 @@
         <translation>DCF 片段：关节 %1 不存在；机器人有 %2 个关节</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+143"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+178"/>
         <source>must be given for every parameter or for none</source>
         <translation>必须为每个参数都给出，或都不给出</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+33"/>
+        <source>must be &quot;%1&quot; for determined %2, got &quot;%3&quot;</source>
+        <translation>determined 为 %2 时必须是“%1”，实际为“%3”</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>must be an object index written as &quot;0x&quot; and four hex digits, got &quot;%1&quot;</source>
         <translation>必须是以“0x”加四位十六进制数字写成的对象索引，实际为“%1”</translation>
     </message>
@@ -1660,17 +1847,17 @@
         <translation>必须是形如 2024-05-01T12:00:00.000Z 的日期时间，实际为“%1”</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+71"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>缺失；这不是 learnid 参数文件</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>this version of learnid reads &quot;%1&quot;, got %2</source>
-        <translation>此版本的 learnid 读取“%1”，实际为 %2</translation>
+        <location line="+5"/>
+        <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
+        <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>is missing; this key is required</source>
         <translation>缺失；此键为必需项</translation>
     </message>
@@ -1680,17 +1867,17 @@
         <translation>与内容不符：文件在 learnid 写入后被修改，或已损坏</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFileValidation.cpp" line="+48"/>
+        <location filename="../core/io/ParameterFileValidation.cpp" line="+78"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>one per joint of %1</source>
         <translation>%1 的每个关节一个</translation>
     </message>
@@ -1700,19 +1887,40 @@
         <translation>节点 %1 被分配给两个关节</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>must be a valid date and time</source>
         <translation>必须是有效的日期时间</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-73"/>
+        <location line="+75"/>
         <location line="+15"/>
         <location line="+5"/>
         <source>must not be empty</source>
         <translation>不得为空</translation>
     </message>
     <message>
-        <location line="-17"/>
+        <location line="-105"/>
+        <source>one per standard parameter</source>
+        <translation>每个标准参数一个</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>determined shares, %1</source>
+        <translation>确定份额，%1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>must be a share from 0 to 1 or null, got %1</source>
+        <translation>必须是 0 到 1 之间的份额或 null，实际为 %1</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>must give each joint&apos;s node when the file records no controller</source>
+        <translation>文件未记录控制器时必须给出每个关节的节点</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>未知学习律“%1”；已知学习律：%2</translation>
     </message>
@@ -1732,7 +1940,8 @@
         <translation>必须是“%1”（%3 的参数 %2），实际为“%4”</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-105"/>
+        <location line="+111"/>
         <source>values, %1</source>
         <translation>数值，%1</translation>
     </message>
@@ -1742,7 +1951,7 @@
         <translation>标准差，%1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>must name the CANopen data type</source>
         <translation>必须指明 CANopen 数据类型</translation>
     </message>
@@ -1852,24 +2061,6 @@
     </message>
 </context>
 <context>
-    <name>PhysicalConsistency</name>
-    <message>
-        <location filename="../core/model/LogCholesky.cpp" line="+17"/>
-        <source>%1 has %2 entries; a link has 10.</source>
-        <translation>%1 有 %2 个条目；一个连杆有 10 个。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1[%2] is not finite.</source>
-        <translation>%1[%2] 不是有限值。</translation>
-    </message>
-    <message>
-        <location line="+91"/>
-        <source>The link is not strictly physically consistent (mass %1 kg, smallest pseudo-inertia eigenvalue %2); it has no log-Cholesky parameters.</source>
-        <translation>该连杆不满足严格的物理一致性（质量 %1 kg，伪惯量矩阵的最小特征值 %2）；它没有对数 Cholesky 参数。</translation>
-    </message>
-</context>
-<context>
     <name>PlanCsv</name>
     <message>
         <location filename="../core/io/PlanCsv.cpp" line="+109"/>
@@ -1961,6 +2152,100 @@
         <location line="+29"/>
         <source>a second plan-id, %1, other than %2 on line %3; a log is of one plan</source>
         <translation>第二个 plan-id %1 与第 %3 行的 %2 不同；一个日志只属于一个计划</translation>
+    </message>
+</context>
+<context>
+    <name>Plausibility</name>
+    <message>
+        <location filename="../core/model/Plausibility.cpp" line="+45"/>
+        <source>The CAD vector has %1 entries, too few for %2 links.</source>
+        <translation>CAD 向量有 %1 个元素，不足以描述 %2 个连杆。</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>The plausibility check needs 10 parameters and a volume per link (%1 links, %2 and %3 parameters, %4 volumes).</source>
+        <translation>合理性检查需要每个连杆 10 个参数和一个包围体（%1 个连杆，%2 和 %3 个参数，%4 个包围体）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The parameters to check are not finite.</source>
+        <translation>待检查的参数不是有限值。</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>mass %1 kg</source>
+        <translation>质量 %1 kg</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
+        <translation>最小主惯量 %1 kg m²，低于 CAD 连杆最小主惯量（%3 kg m²）的 %2 %</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
+        <translation>(I1 + I2) / I3 = %1，低于 %2：像针或薄板</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
+        <translation>质心位于连杆包围体之外（其尺寸的 %1 倍）</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Index %1 is outside the %2 standard parameters.</source>
+        <translation>索引 %1 超出了 %2 个标准参数的范围。</translation>
+    </message>
+</context>
+<context>
+    <name>PlausibleEstimate</name>
+    <message>
+        <location filename="../core/model/PlausibleEstimate.cpp" line="+30"/>
+        <source>The estimation problem&apos;s sizes do not match: A is %1 x %2, b has %3 entries, the prior %4 for %5 links.</source>
+        <translation>估计问题的维度不匹配：A 为 %1 x %2，b 有 %3 个元素，先验有 %4 个，连杆 %5 个。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The estimation problem has entries that are not finite.</source>
+        <translation>估计问题中有非有限的元素。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The prior share must lie between 0 and 1, not %1.</source>
+        <translation>先验权重必须在 0 和 1 之间，而不是 %1。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 bounding volumes for %2 links.</source>
+        <translation>%1 个包围体对应 %2 个连杆。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+3"/>
+        <source>Index %1 is not a joint term.</source>
+        <translation>索引 %1 不是关节项。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The prior&apos;s joint term %1 is negative (%2).</source>
+        <translation>先验的关节项 %1 为负（%2）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The prior&apos;s link %1 does not lie inside its bounding volume.</source>
+        <translation>先验的连杆 %1 不在其包围体内。</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>The prior&apos;s link %1 is not strictly a real body (its pseudo-inertia is not positive definite).</source>
+        <translation>先验的连杆 %1 不是严格意义上的真实刚体（其伪惯量不是正定的）。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+61"/>
+        <source>%n Newton step(s)</source>
+        <translation>
+            <numerusform>%n 个牛顿步</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2064,7 +2349,7 @@
         <translation>%1：为有 %3 个关节的机器人给出了 %2 个关节类型</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>expected %1 fields (%2), got %3</source>
         <translation>应有 %1 个字段（%2），实际为 %3</translation>
     </message>
@@ -2099,14 +2384,21 @@
         <translation>时间 %1 与第 %2 行的相同，但数值不同（%3：那里为 %4，这里为 %5）；只有完全重复的行才会被丢弃</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>the file holds no header line; expected one naming the columns %1</source>
         <translation>文件中没有表头行；应有一行表头列出各列 %1</translation>
     </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source> (and %n stale row(s): values repeated under a new time stamp, treated as missing)</source>
+        <translation>
+            <numerusform>（另有 %n 行过时数据：在新时间戳下重复了之前的值，按缺失处理）</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+7"/>
-        <source>%1 samples after the header on line %2; a log needs at least %3</source>
-        <translation>第 %2 行的表头之后有 %1 个采样点；日志至少需要 %3 个</translation>
+        <location line="+4"/>
+        <source>%1 samples after the header on line %2%3; a log needs at least %4</source>
+        <translation>第 %2 行的表头之后有 %1 个采样点%3；日志至少需要 %4 个</translation>
     </message>
 </context>
 <context>
@@ -2282,7 +2574,7 @@
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+60"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+70"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits：关节 %1（%2）在 URDF 中没有 effort 限值：请在场景中给出力矩限值</translation>
     </message>
@@ -2466,12 +2758,12 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+84"/>
+        <location filename="../core/service/SessionExport.cpp" line="+91"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>只有 URDF 机器人才有可导出的 URDF</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-29"/>
         <source>no consistent estimate near estimate %1: %2</source>
         <translation>估计 %1 附近没有一致的估计：%2</translation>
     </message>
@@ -2481,7 +2773,7 @@
         <translation>只有 URDF 机器人有可使其一致的标准参数</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+74"/>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
@@ -2489,7 +2781,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+83"/>
+        <location filename="../core/service/SessionReport.cpp" line="+116"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>本会话中不存在估计 %1</translation>
     </message>
@@ -2528,9 +2820,27 @@
     </message>
 </context>
 <context>
+    <name>StandardExport</name>
+    <message>
+        <location filename="../core/service/StandardExport.cpp" line="+37"/>
+        <source>data</source>
+        <translation>数据</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>prior</source>
+        <translation>先验</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 standard parameters given, the model has %2</source>
+        <translation>给出了 %1 个标准参数，模型有 %2 个</translation>
+    </message>
+</context>
+<context>
     <name>Text</name>
     <message>
-        <location filename="../core/model/UrdfChain.cpp" line="+49"/>
+        <location filename="../core/model/UrdfChain.cpp" line="+53"/>
         <source>%1: not a valid URDF: %2</source>
         <translation>%1：不是有效的 URDF：%2</translation>
     </message>
@@ -2540,7 +2850,7 @@
         <translation>解析器未给出原因</translation>
     </message>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="-33"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="-41"/>
         <source>simulation.realUrdf: %1 has %2 moving joints, the robot %3</source>
         <translation>simulation.realUrdf：%1 有 %2 个可动关节，机器人有 %3 个</translation>
     </message>
@@ -2550,7 +2860,12 @@
         <translation>simulation.realUrdf：关节 %1（%2）的位置与机器人 URDF 中的不同：真实机器人只能在惯量和摩擦上有所不同</translation>
     </message>
     <message>
-        <location filename="../core/identify/UniformLog.cpp" line="+123"/>
+        <location line="+12"/>
+        <source>simulation.realUrdf: %1 is not a robot that could be built: %2</source>
+        <translation>simulation.realUrdf：%1 不是可以制造出来的机器人：%2</translation>
+    </message>
+    <message>
+        <location filename="../core/identify/UniformLog.cpp" line="+145"/>
         <source>%1: the time stamps are off the nominal times t0 + k T (T = %2 ms) by %3 ms at %4 (t = %5 s) and by %6 ms at %7 (t = %8 s), more than half a step apart: the samples are not equidistant (one lost or added?), so the nominal times do not apply</source>
         <translation>%1：时间戳偏离名义时刻 t0 + k T（T = %2 ms），在%4（t = %5 s）处偏离 %3 ms，在%7（t = %8 s）处偏离 %6 ms，两者相差超过半个步长：采样点不等距（丢失或多出了一个？），因此名义时刻不适用</translation>
     </message>
@@ -2696,7 +3011,7 @@
 <context>
     <name>UniformLog</name>
     <message>
-        <location filename="../core/identify/UniformLog.cpp" line="-78"/>
+        <location filename="../core/identify/UniformLog.cpp" line="-99"/>
         <source>sample %1</source>
         <translation>采样点 %1</translation>
     </message>
@@ -2706,7 +3021,17 @@
         <translation>第 %1 行</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
+        <source> (line %1 is stale: it repeated the values of line %2 under a new time stamp and counts as missing)</source>
+        <translation>（第 %1 行是过时数据：它在新时间戳下重复了第 %2 行的值，按缺失计）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> (lines %1 to %2 are stale: %3 rows that repeated the values of line %4 under new time stamps and count as missing)</source>
+        <translation>（第 %1 至 %2 行是过时数据：%3 行在新时间戳下重复了第 %4 行的值，按缺失计）</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1: a log of %2 times, %3 x %4 positions, %5 x %6 velocities, %7 x %8 torques and %9 line numbers; expected n x N for all</source>
         <translation>%1：日志有 %2 个时间、%3 x %4 个位置、%5 x %6 个速度、%7 x %8 个力矩和 %9 个行号；全部应为 n x N</translation>
     </message>
@@ -2731,14 +3056,29 @@
         <translation>%1：日志跨度为 %2 到 %3 s，太长，无法重采样</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+74"/>
         <source>%1: the period (%2 s) and the largest gap (%3 s) must be zero (the default) or positive</source>
         <translation>%1：周期（%2 s）和最大间隔（%3 s）必须为零（默认）或正数</translation>
     </message>
     <message>
-        <location line="+18"/>
-        <source>%1: a gap of %2 ms after the sample at t = %3 s, more than the %4 ms allowed (--max-gap)</source>
-        <translation>%1：t = %3 s 处的采样点之后有 %2 ms 的间隔，超过允许的 %4 ms（--max-gap）</translation>
+        <location line="+5"/>
+        <source>%1: the fit&apos;s filter bandwidth rho (%2 rad/s) must be positive</source>
+        <translation>%1：拟合滤波器的带宽 rho（%2 rad/s）必须为正</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 ms allowed (--max-gap)</source>
+        <translation>允许的 %1 ms（--max-gap）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 ms allowed (--max-gap; by default half the time constant 1/rho of the fit&apos;s filter, rho = %2 rad/s, and at least %3 of the log&apos;s steps)</source>
+        <translation>允许的 %1 ms（--max-gap；默认为拟合滤波器时间常数 1/rho 的一半，rho = %2 rad/s，且至少为日志步长的 %3 倍）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: a gap of %2 ms after the sample at t = %3 s%4, more than the %5</source>
+        <translation>%1：t = %3 s 处的采样点之后有 %2 ms 的间隔%4，超过%5</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -2759,7 +3099,7 @@
         <translation>%1：连杆“%2”的质量为负（%3 kg）</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>%1: the robot branches at link &quot;%2&quot; (children %3): name the tip link of the chain</source>
         <translation>%1：机器人在连杆“%2”处分叉（子连杆 %3）：请指定运动链的末端连杆</translation>
     </message>
@@ -2769,7 +3109,7 @@
         <translation>%1：关节“%2”没有轴（零向量）</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <location line="+4"/>
         <source>%1: no link &quot;%2&quot;</source>
         <translation>%1：没有连杆“%2”</translation>
@@ -2780,17 +3120,17 @@
         <translation>%1：连杆“%2”不在连杆“%3”之下</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>%1: joint &quot;%2&quot; mimics another joint: mimic joints are not supported</source>
         <translation>%1：关节“%2”模仿另一个关节（mimic）：不支持 mimic 关节</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+27"/>
         <source>%1: joint &quot;%2&quot; is floating or planar: only revolute, continuous, prismatic and fixed joints form a serial arm</source>
         <translation>%1：关节“%2”为浮动（floating）或平面（planar）关节：只有旋转（revolute、continuous）、移动（prismatic）和固定（fixed）关节能构成串联机械臂</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
         <source>%1: no moving joint between link &quot;%2&quot; and link &quot;%3&quot;</source>
         <translation>%1：连杆“%2”和连杆“%3”之间没有可动关节</translation>
     </message>
@@ -2803,7 +3143,7 @@
 <context>
     <name>UrdfExport</name>
     <message>
-        <location filename="../core/io/UrdfExport.cpp" line="+120"/>
+        <location filename="../core/io/UrdfExport.cpp" line="+122"/>
         <source>%1: link &quot;%2&quot;: the identified body has an entry that is not a finite number</source>
         <translation>%1：连杆“%2”：辨识出的刚体有一个条目不是有限数</translation>
     </message>
@@ -2823,12 +3163,17 @@
         <translation>%1：关节“%2”：摩擦必须为有限值且非负，实际为粘性 %3、库仑 %4</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+5"/>
+        <source>%1: joint &quot;%2&quot;: the armature must be finite and not negative and the offset finite, got armature %3 and offset %4</source>
+        <translation>%1：关节“%2”：转子惯量必须为有限非负值，偏置必须为有限值，实际转子惯量为 %3，偏置为 %4</translation>
+    </message>
+    <message>
+        <location line="+158"/>
         <source>%1: the identified URDF reads back with another body or friction at link &quot;%2&quot; than was written</source>
         <translation>%1：辨识出的 URDF 读回后，连杆“%2”处的刚体或摩擦与写入的不同</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1: bodies for %2 and friction for %3 joints given, the chain has %4 moving joints</source>
         <translation>%1：给出了 %2 个关节的刚体和 %3 个关节的摩擦，而运动链有 %4 个可动关节</translation>
     </message>
@@ -2841,6 +3186,107 @@
         <location line="+13"/>
         <source>%1: line %2, column %3: not XML: %4</source>
         <translation>%1：第 %2 行第 %3 列：不是 XML：%4</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfExtension</name>
+    <message>
+        <location filename="../core/model/UrdfExtension.cpp" line="+20"/>
+        <source>%1: line %2, column %3: &lt;%4&gt;: %5</source>
+        <translation>%1：第 %2 行，第 %3 列：&lt;%4&gt;：%5</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>unknown attribute &quot;%1&quot; (the attributes are armature and offset)</source>
+        <translation>未知属性“%1”（属性为 armature 和 offset）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 must be a finite number, got &quot;%2&quot;</source>
+        <translation>%1 必须是有限数，实际为“%2”</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>given twice in joint &quot;%1&quot;</source>
+        <translation>在关节“%1”中出现两次</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfGeometry</name>
+    <message>
+        <location filename="../core/model/UrdfGeometry.cpp" line="+85"/>
+        <source>%1: link &quot;%2&quot;, &lt;%3&gt; %4: %5</source>
+        <translation>%1：连杆“%2”，&lt;%3&gt; %4：%5</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the box&apos;s size is negative or not a number</source>
+        <translation>长方体的尺寸为负或不是数字</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the cylinder&apos;s radius or length is negative or not a number</source>
+        <translation>圆柱体的半径或长度为负或不是数字</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the sphere&apos;s radius is negative or not a number</source>
+        <translation>球体的半径为负或不是数字</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the mesh&apos;s scale is not a number</source>
+        <translation>网格的缩放比例不是数字</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>mesh &quot;%1&quot; of link &quot;%2&quot; skipped: %3</source>
+        <translation>连杆“%2”的网格“%1”已跳过：%3</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>1 box</source>
+        <translation>1 个长方体</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 boxes</source>
+        <translation>%1 个长方体</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 cylinder</source>
+        <translation>1 个圆柱体</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 cylinders</source>
+        <translation>%1 个圆柱体</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 sphere</source>
+        <translation>1 个球体</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 spheres</source>
+        <translation>%1 个球体</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 mesh</source>
+        <translation>1 个网格</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 meshes</source>
+        <translation>%1 个网格</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>visual shapes of %1 (no collision shape)</source>
+        <translation>%1 的可视形状（无碰撞形状）</translation>
     </message>
 </context>
 <context>
@@ -2904,32 +3350,34 @@
 <context>
     <name>learnid-cli</name>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+41"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+43"/>
         <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
         <translation>--robot：&apos;%1&apos; 既不是 URDF 文件，也不是内置机器人（%2）</translation>
     </message>
     <message>
-        <location line="+20"/>
-        <source>--export: a parameter file records the controller&apos;s gains, and the default gains are for %1 joints, the robot has %2: give them with --scenario FILE (its controller section)</source>
-        <translation>--export：参数文件会记录控制器的增益，而默认增益适用于 %1 个关节，机器人有 %2 个：请用 --scenario FILE 给出增益（在其 controller 部分）</translation>
+        <location line="+73"/>
+        <source>robot %1: %2, %3 moving joints</source>
+        <translation>机器人 %1：%2，%3 个可动关节</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+9"/>
         <source>learnid-cli: reading %1</source>
         <translation>learnid-cli：正在读取 %1</translation>
     </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>fitting %1 standard parameters to %n log(s)</source>
+        <translation>
+            <numerusform>正在用 %n 个日志拟合 %1 个标准参数</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+35"/>
+        <location line="+24"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>由 learnid-cli %1 identify 于 %2 辨识</translation>
     </message>
     <message>
-        <location line="-44"/>
-        <source>robot %1 (%2): %3 moving joints</source>
-        <translation>机器人 %1（%2）：%3 个可动关节</translation>
-    </message>
-    <message>
-        <location line="-38"/>
+        <location line="-76"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1：预测力矩与测量力矩</translation>
     </message>
@@ -2939,25 +3387,15 @@
         <translation>learnid：根据日志辨识 %1</translation>
     </message>
     <message>
-        <location line="+41"/>
-        <source>fitting %1 standard parameters to %2 logs</source>
-        <translation>正在用 %2 个日志拟合 %1 个标准参数</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>base parameters the logs leave undetermined (kept near the URDF&apos;s values): %1</source>
-        <translation>日志未能确定的基参数（保持在 URDF 值附近）：%1</translation>
-    </message>
-    <message>
-        <location line="+25"/>
+        <location line="+72"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+108"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+110"/>
         <location line="+9"/>
         <location line="+6"/>
         <location line="+13"/>
         <location line="+12"/>
-        <location line="+52"/>
+        <location line="+61"/>
         <location line="+44"/>
         <location filename="../app/cli/main.cpp" line="+52"/>
         <source>learnid-cli: error: %1</source>
@@ -3107,7 +3545,7 @@
         <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-176"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-185"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1：%2</translation>
@@ -3175,7 +3613,7 @@
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+208"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -3381,8 +3819,13 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-79"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+7"/>
+        <location line="+8"/>
+        <source>learnid-cli: warning: the URDF as a real robot: %1</source>
+        <translation>learnid-cli：警告：该 URDF 作为真实机器人：%1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+8"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
     </message>
@@ -3440,7 +3883,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-163"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-166"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms：未知项 &apos;%1&apos;；可用的项为 armature、viscous、coulomb 和 offset，或 none</translation>
     </message>
@@ -3511,11 +3954,11 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+5"/>
-        <source>Longest time step allowed in a log [ms]; default 5 sample periods.</source>
-        <translation>日志中允许的最长时间步长 [ms]；默认 5 个采样周期。</translation>
+        <source>Longest time step allowed in a log [ms]; default half the time constant 1/rho of the fit&apos;s filter (10 ms at rho 50), at least 2.5 sample periods.</source>
+        <translation>日志中允许的最长时间步长 [ms]；默认为拟合滤波器时间常数 1/rho 的一半（rho 为 50 时为 10 ms），至少 2.5 个采样周期。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
         <translation>运动链的基座连杆；默认：URDF 的根连杆。</translation>
     </message>
@@ -3526,11 +3969,11 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+4"/>
-        <source>Write the identified base parameters as a parameter file (and DCF).</source>
-        <translation>将辨识出的基参数写为参数文件（及 DCF）。</translation>
+        <source>Write the identified model as a parameter file (and DCF); it records controller gains only with --scenario.</source>
+        <translation>将识别出的模型写为参数文件（及 DCF）；仅在给出 --scenario 时记录控制器增益。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Write the URDF with the identified inertia and friction.</source>
         <translation>写出带有辨识出的惯量和摩擦的 URDF。</translation>
     </message>
@@ -3581,7 +4024,7 @@ and compare the result with the URDF as given on --validate logs.
         <translation>&apos;identify&apos; 至少需要一个 --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+23"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
         <location line="+16"/>
         <source>name</source>
         <translation>名称</translation>
@@ -3592,33 +4035,12 @@ and compare the result with the URDF as given on --validate logs.
         <translation>关节</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>fit: %1 logs, %2 samples; %3 of %4 standard-parameter directions determined (condition %5)
-fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %8
-</source>
-        <translation>拟合：%1 个日志，%2 个采样点；%4 个标准参数方向中确定了 %3 个（条件数 %5）
-拟合：%7 个基参数中有 %6 个未确定（保持在 URDF 值附近）；%8
-</translation>
+        <location line="+33"/>
+        <source>Identified parameters: %1.</source>
+        <translation>辨识出的参数：%1。</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>consistent fit converged</source>
-        <translation>一致拟合已收敛</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>consistent fit stopped at its step limit</source>
-        <translation>一致拟合在步数上限处停止</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>identified parameters: %1
-</source>
-        <translation>辨识出的参数：%1
-</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>training logs: residual of the fit</source>
         <translation>训练日志：拟合残差</translation>
     </message>
@@ -3644,18 +4066,56 @@ fit: %6 of %7 base parameters undetermined (kept near the URDF&apos;s values); %
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../app/cli/TorquePlotPng.cpp" line="+124"/>
+        <location filename="../app/cli/TorquePlotPng.cpp" line="+154"/>
         <source>URDF as given</source>
         <translation>给定的 URDF</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../app/cli/IdentifyParameters.cpp" line="+32"/>
+        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: data, below: kept from the prior)</source>
+        <translation>标准参数：URDF 的值、识别值以及数据确定的程度（参数方向的份额；至少 0.5：来自数据，低于此值：保留先验值）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>link or joint</source>
+        <translation>连杆或关节</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URDF</source>
+        <translation>URDF</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+1"/>
         <location filename="../app/cli/TorquePlotPng.cpp" line="+2"/>
         <source>identified</source>
         <translation>辨识结果</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>determined</source>
+        <translation>确定份额</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>from</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>warning: the URDF as a real robot: %1
+</source>
+        <translation>警告：该 URDF 作为真实机器人：%1
+</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+2"/>
         <source>RMS measured [N m]</source>
         <translation>RMS 测量值 [N m]</translation>
     </message>
@@ -4661,12 +5121,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::LogExportController</name>
     <message>
-        <location filename="../ui/LogExportController.cpp" line="+59"/>
-        <source>a parameter file records the controller&apos;s gains, and the default gains are for %1 joints, the robot has %2: choose a scenario of this robot under &quot;Gains from&quot;</source>
-        <translation>参数文件会记录控制器的增益，而默认增益适用于 %1 个关节，机器人有 %2 个：请在“增益来源”中选择此机器人的场景</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location filename="../ui/LogExportController.cpp" line="+75"/>
         <source>identify and accept a result first</source>
         <translation>请先辨识并接受一个结果</translation>
     </message>
@@ -5263,12 +5718,17 @@ ratio %</source>
         <translation>⚠ 保留</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>✗ no</source>
         <translation>✗ 否</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <source>⚠ not plausible</source>
+        <translation>⚠ 不合理</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>✓</source>
         <translation>✓</translation>
     </message>
@@ -5574,8 +6034,8 @@ ratio %</source>
     </message>
     <message>
         <location line="+2"/>
-        <source>default gains (robots with 2 joints)</source>
-        <translation>默认增益（2 关节机器人）</translation>
+        <source>none: the parameter file holds the model alone</source>
+        <translation>无：参数文件仅包含模型</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5699,7 +6159,7 @@ ratio %</source>
 <context>
     <name>learnid::RobotChooser</name>
     <message>
-        <location filename="../ui/RobotChooser.cpp" line="+35"/>
+        <location filename="../ui/RobotChooser.cpp" line="+36"/>
         <source>Robot model</source>
         <translation>机器人模型</translation>
     </message>
@@ -5818,9 +6278,14 @@ ratio %</source>
         <translation>%1，运动质量 %2 kg；关节项：%3；%4 个基参数（共 %5 个标准参数）</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>none</source>
         <translation>无</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Warning: %1</source>
+        <translation>警告：%1</translation>
     </message>
 </context>
 <context>
@@ -6356,7 +6821,7 @@ ratio %</source>
 <context>
     <name>learnid::TorqueFitPlot</name>
     <message>
-        <location filename="../ui/TorqueFitPlot.cpp" line="+79"/>
+        <location filename="../ui/TorqueFitPlot.cpp" line="+93"/>
         <source>Identify to see the predicted against the measured torque.</source>
         <translation>辨识后即可查看预测力矩与测量力矩的对比。</translation>
     </message>
@@ -6381,7 +6846,7 @@ ratio %</source>
         <translation>给定的 URDF</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+83"/>
         <source>All joints</source>
         <translation>所有关节</translation>
     </message>

@@ -53,16 +53,8 @@ void LogExportController::exportUrdf()
 std::optional<ControllerSettings> LogExportController::gains(QString *error) const
 {
     const int joints = m_result->model().dof();
-    if (m_gainsScenario.isEmpty()) {
-        if (const auto defaults = defaultExportController(joints))
-            return defaults;
-        *error = tr("a parameter file records the controller's gains, and the default gains are "
-                    "for %1 joints, the robot has %2: choose a scenario of this robot under "
-                    "\"Gains from\"")
-                     .arg(ControllerSettings().dof())
-                     .arg(joints);
-        return std::nullopt;
-    }
+    if (m_gainsScenario.isEmpty())
+        return std::nullopt; // the parameter file holds the model alone
     try {
         const Scenario s = readScenarioFile(m_gainsScenario);
         validateControllerSettings(
@@ -83,13 +75,13 @@ void LogExportController::exportParameterFileTo(const QString &jsonPath)
         error = tr("identify and accept a result first");
     else
         controller = gains(&error);
-    if (!controller) {
+    if (!error.isEmpty()) {
         emit finished(tr("Parameter file not written: %1").arg(error), false);
         return;
     }
     LogExportRequest request;
     request.parameterPath = jsonPath;
-    request.controller = *controller;
+    request.controller = controller;
     write(request, tr("Parameter file written: %1"), tr("Parameter file not written: %1"));
 }
 

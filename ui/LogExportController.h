@@ -15,9 +15,9 @@ class UiSettings;
 
 /// Exports an accepted identification from logs as `learnid-cli identify` does: the parameter
 /// file with its DCF fragment beside it, and the identified URDF, each written atomically
-/// (writeLogExport). The parameter file records controller gains, which logs do not carry: a
-/// scenario's (setGainsScenario), else the default gains when the robot has their joint count,
-/// else it is refused with the reason. Results and errors come by finished(), never a box.
+/// (writeLogExport). The parameter file records controller gains, which logs do not carry, only
+/// when a scenario gives them (setGainsScenario); else it holds the model alone. Results and
+/// errors come by finished(), never a box.
 class LogExportController : public QObject
 {
     Q_OBJECT
@@ -29,7 +29,8 @@ public:
     void setPathChooser(RecordedDataPathChooser chooser) { m_chooser = std::move(chooser); }
     /// The accepted result; null: nothing to export.
     void setResult(std::shared_ptr<const LogIdentificationResult> result);
-    /// The scenario whose controller gains the parameter file records; "": the defaults.
+    /// The scenario whose controller gains the parameter file records; "": none (the file
+    /// holds the model alone).
     void setGainsScenario(const QString &path) { m_gainsScenario = path; }
 
 public slots:
@@ -44,7 +45,8 @@ signals:
 
 private:
     QString choosePath(RecordedDataPath purpose, const QString &suggestedName);
-    /// The gains the parameter file records, or nullopt with error saying why there are none.
+    /// The gains the parameter file records: nullopt without a scenario, or with error set when
+    /// the scenario cannot give them.
     std::optional<ControllerSettings> gains(QString *error) const;
     /// written, notWritten: the messages, %1 the paths or the error.
     void write(const LogExportRequest &request, const QString &written, const QString &notWritten);

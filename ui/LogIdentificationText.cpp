@@ -1,5 +1,7 @@
 #include "ui/LogIdentificationText.h"
 
+#include "service/LogIdentificationSummary.h"
+
 #include <QCoreApplication>
 #include <QFileInfo>
 
@@ -41,37 +43,30 @@ QString logIdentificationStageText(const LogIdentificationProgress &p)
 QString logIdentificationSummaryHtml(const LogIdentificationResult &r)
 {
     const ChainModel &model = r.model();
-    const LogFit &fit = r.fit;
+    const LogIdentificationSummary s = summarizeLogIdentification(r);
+    const auto paragraph = [](const QString &text) {
+        return QStringLiteral("<p>%1</p>").arg(text.toHtmlEscaped());
+    };
     QStringList residual;
     for (int j = 0; j < model.dof(); ++j)
-        residual << QStringLiteral("%1: %2").arg(j + 1).arg(number(fit.trainingRms[j], 'f', 4));
-    const QString robot = Text::tr("<p><b>%1</b> (%2), %3 moving joints.</p>")
-                              .arg(model.chain().name.toHtmlEscaped(),
-                                   r.robot.source.toHtmlEscaped(), QString::number(model.dof()));
-    const QString fitText =
-        Text::tr("<p>Fitted to %n log(s), %1 samples: %2 of %3 standard-parameter directions "
-                 "determined (condition %4); %5.</p>",
-                 nullptr, int(r.trainingLogs.size()))
-            .arg(QString::number(fit.samples), QString::number(fit.rank),
-                 QString::number(model.standardCount()), number(fit.condition, 'g', 3),
-                 fit.converged ? Text::tr("the consistent fit converged")
-                               : Text::tr("the consistent fit stopped at its step limit"));
+        residual << QStringLiteral("%1: %2").arg(j + 1).arg(number(r.fit.trainingRms[j], 'f', 4));
     const QString consistency =
         Text::tr("<p><b>Consistency:</b> <span style=\"color:%1\">%2</span></p>")
             .arg(r.consistent ? QStringLiteral("#1e7b34") : QStringLiteral("#b06000"),
                  r.consistency.join(QStringLiteral("; ")).toHtmlEscaped());
-    const QString undetermined =
-        r.undetermined.isEmpty()
-            ? Text::tr("<p><b>Undetermined base parameters:</b> none of %1.</p>")
-                  .arg(QString::number(fit.baseCount))
-            : Text::tr(
-                  "<p><b>Undetermined base parameters</b> (kept near the URDF's values), %1 of "
-                  "%2: %3</p>")
-                  .arg(QString::number(r.undetermined.size()), QString::number(fit.baseCount),
-                       r.undetermined.join(QStringLiteral(", ")).toHtmlEscaped());
     const QString training = Text::tr("<p><b>Training residual</b>, RMS per joint [N m]: %1</p>")
                                  .arg(residual.join(QStringLiteral(", ")));
-    return robot + fitText + consistency + undetermined + training;
+    QString readings;
+    for (const QString &reading : s.readings)
+        readings += paragraph(reading);
+    // The URDF's own values as a real robot's (docs/robots.md §7): used as the prior all the same.
+    QString warnings;
+    for (const QString &w : r.robot.warnings)
+        warnings += Text::tr("<p style=\"color:#8a5300\"><b>Warning:</b> the URDF as a real "
+                             "robot: %1</p>")
+                        .arg(w.toHtmlEscaped());
+    return paragraph(s.robot) + warnings + paragraph(s.logs) + readings + paragraph(s.directions) +
+           paragraph(s.undetermined) + consistency + training;
 }
 
 QString logIdentificationMessage(const LogIdentificationResult &r)

@@ -136,7 +136,10 @@ QString ParameterTableModel::text(int i, Column kind, int k) const
     case Column::Consistent:
         if (!m_figures.consistencyChecked || p.group.isEmpty())
             return QStringLiteral("\u2013");
-        return m_figures.inconsistentGroups.contains(p.group) ? tr("\u2717 no") : tr("\u2713");
+        if (m_figures.inconsistentGroups.contains(p.group))
+            return tr("\u2717 no");
+        return m_figures.implausibleGroups.contains(p.group) ? tr("\u26a0 not plausible")
+                                                             : tr("\u2713");
     }
     return {};
 }

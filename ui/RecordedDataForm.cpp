@@ -98,7 +98,7 @@ RecordedDataForm::RecordedDataForm(QWidget *parent)
     m_columns->setToolTip(
         tr("The logs' column names as learnid-cli identify --columns takes them: t=, q=, dq=, "
            "tau= with %1 for the joint number. Empty: t, q%1, dq%1, tau%1."));
-    m_gains->setPlaceholderText(tr("default gains (robots with 2 joints)"));
+    m_gains->setPlaceholderText(tr("none: the parameter file holds the model alone"));
     m_gains->setToolTip(tr("A scenario of this robot whose controller gains the parameter file "
                            "records; the logs do not say which gains they were recorded with."));
     const QStringList termNames = {tr("armature"), tr("viscous"), tr("Coulomb"), tr("offset")};

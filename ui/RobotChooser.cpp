@@ -1,6 +1,7 @@
 #include "ui/RobotChooser.h"
 
 #include "model/ChainModel.h"
+#include "model/ModelCheck.h"
 #include "service/LogIdentification.h"
 
 #include <QComboBox>
@@ -172,13 +173,18 @@ void RobotChooser::showModel(const RobotModel &model)
         revolute == c.dof()
             ? tr("%n revolute joint(s)", nullptr, c.dof())
             : tr("%n joint(s) (%1 prismatic)", nullptr, c.dof()).arg(c.dof() - revolute);
-    m_summary->setText(tr("%1, %2 kg moving; joint terms: %3; %4 base parameters (of %5 "
-                          "standard)")
-                           .arg(joints)
-                           .arg(mass, 0, 'f', 2)
-                           .arg(terms.isEmpty() ? tr("none") : terms.join(QStringLiteral(", ")))
-                           .arg(model.parameterCount())
-                           .arg(chain->standardCount()));
+    QString text = tr("%1, %2 kg moving; joint terms: %3; %4 base parameters (of %5 standard)")
+                       .arg(joints)
+                       .arg(mass, 0, 'f', 2)
+                       .arg(terms.isEmpty() ? tr("none") : terms.join(QStringLiteral(", ")))
+                       .arg(model.parameterCount())
+                       .arg(chain->standardCount());
+    // The URDF's own values as a real robot's (docs/robots.md §7): a warning, not a refusal.
+    const QStringList warnings = modelWarnings(*chain);
+    for (const QString &w : warnings)
+        text += QLatin1Char('\n') + tr("Warning: %1").arg(w);
+    m_summary->setText(text);
+    m_summary->setStyleSheet(warnings.isEmpty() ? QString() : QStringLiteral("color: #8a5300;"));
 }
 
 } // namespace learnid

@@ -1,11 +1,13 @@
 #include "ui/TorqueFitPlot.h"
 
 #include <QComboBox>
+#include <QFontMetricsF>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
 #include <QPixmap>
+#include <QScopedValueRollback>
 #include <QVBoxLayout>
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
@@ -44,6 +46,18 @@ double niceStep(double span, int ticks)
         if (m * power >= raw)
             return m * power;
     return 10.0 * power;
+}
+
+// A printf format that tells ticks `step` apart: as many decimals as the step needs (0.005:
+// 3), or, for steps below 1e-4, as many significant digits as the largest value needs.
+QString tickFormat(double step, double largest)
+{
+    const int decimals = std::max(0, int(-std::floor(std::log10(step) + 1e-9)));
+    if (decimals <= 4)
+        return QStringLiteral("%.%1f").arg(decimals);
+    const int digits = int(std::floor(std::log10(std::max(largest, step)) + 1e-9)) -
+                       int(std::floor(std::log10(step) + 1e-9)) + 1;
+    return QStringLiteral("%.%1g").arg(std::max(digits, 1));
 }
 
 constexpr TorqueFitPlot::Curve kDrawOrder[] = {
@@ -130,7 +144,8 @@ TorqueFitPlot::JointChart TorqueFitPlot::makeChart()
     c.time->setLabelsFont(labels);
     c.torque->setLabelsFont(labels);
     c.time->setTickType(QValueAxis::TicksDynamic);
-    c.torque->setLabelFormat(QStringLiteral("%.3g"));
+    c.torque->setTickType(QValueAxis::TicksDynamic);
+    c.torque->setTickAnchor(0.0);
     c.chart->addAxis(c.time, Qt::AlignBottom);
     c.chart->addAxis(c.torque, Qt::AlignLeft);
     for (int i = 0; i < 3; ++i)
@@ -176,7 +191,9 @@ void TorqueFitPlot::setData(const QStringList &jointNames, const Eigen::VectorXd
         const QString name = QStringLiteral("%1 %2").arg(j + 1).arg(jointNames.at(j));
         c.chart->setTitle(tr("Joint %1 [N m]").arg(name));
         m_selection->addItem(tr("Joint %1").arg(name), j);
-        double low = 0.0, high = 0.0;
+        // The joint's own torques, not zero too: a small torque beside an offset (a wrist joint,
+        // a friction offset) would be a flat line at the edge of a range from zero.
+        double low = samples > 0 ? measured(j, 0) : 0.0, high = low;
         for (const auto &[curve, torque] :
              {std::pair{Curve::Measured, &measured}, std::pair{Curve::Identified, &identified},
               std::pair{Curve::Given, &given}}) {
@@ -191,17 +208,53 @@ void TorqueFitPlot::setData(const QStringList &jointNames, const Eigen::VectorXd
             }
         }
         const double pad = 0.05 * std::max(high - low, 1e-6);
-        c.torque->setRange(low - pad, high + pad);
-        c.torque->applyNiceNumbers();
+        low -= pad;
+        high += pad;
         // The same time axis in every chart.
         const double span = t1 > t0 ? t1 - t0 : 1.0, step = niceStep(span, 6);
         c.time->setRange(t0, t0 + span);
         c.time->setTickAnchor(std::ceil(t0 / step) * step);
         c.time->setTickInterval(step);
         c.time->setLabelFormat(step >= 1.0 ? QStringLiteral("%.0f") : QStringLiteral("%.2g"));
+        QChart *chart = c.chart;
+        QValueAxis *axis = c.torque;
+        connect(chart, &QChart::plotAreaChanged, axis, [axis, low, high](const QRectF &area) {
+            fitTorqueTicks(axis, low, high, area.height());
+        });
+        fitTorqueTicks(axis, low, high, chart->plotArea().height());
         m_joints.append(c);
     }
     relayout();
+}
+
+void TorqueFitPlot::fitTorqueTicks(QValueAxis *axis, double low, double high, double height)
+{
+    // Qt Charts gives each label the height between two ticks and cuts a taller label to "…";
+    // the ticks Qt's nice numbers chose left a short chart (seven joints on a laptop's screen)
+    // with its labels cut, all but "0". So: as many ticks as there is room for, the step the
+    // smallest of 1, 2 or 5 times a power of ten that needs no more, the range widened to whole
+    // steps so that both ends carry a label.
+    // A range set while the chart lays itself out lays it out again: once is enough.
+    static bool fitting = false;
+    if (fitting)
+        return;
+    const QScopedValueRollback<bool> guard(fitting, true);
+    const double room = QFontMetricsF(axis->labelsFont()).height() + 8.0;
+    const int ticks = std::max(3, int(height / room));
+    const double span = std::max(high - low, 1e-12);
+    double step = std::pow(10.0, std::floor(std::log10(span / ticks)) - 1.0);
+    const auto count = [&](double s) {
+        return std::ceil(high / s - 1e-9) - std::floor(low / s + 1e-9) + 1.0;
+    };
+    for (int i = 0; count(step) > ticks && i < 12; ++i)
+        step *= i % 3 == 1 ? 2.5 : 2.0; // 1, 2, 5, 10, 20, 50, ...
+    const double min = std::floor(low / step + 1e-9) * step;
+    const double max = std::ceil(high / step - 1e-9) * step;
+    if (step == axis->tickInterval() && min == axis->min() && max == axis->max())
+        return; // plotAreaChanged comes for widths too: change nothing unchanged
+    axis->setRange(min, max);
+    axis->setTickInterval(step);
+    axis->setLabelFormat(tickFormat(step, std::max(std::abs(min), std::abs(max))));
 }
 
 void TorqueFitPlot::relayout()

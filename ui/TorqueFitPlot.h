@@ -57,6 +57,10 @@ private:
 
     JointChart makeChart();
     void relayout();
+    /// The torque axis over [low, high] for a plot area `height` px high: as many ticks as its
+    /// labels have room for (3 at least), at a step of 1, 2 or 5 times a power of ten, labelled
+    /// with the digits the step needs.
+    static void fitTorqueTicks(QValueAxis *axis, double low, double high, double height);
 
     QComboBox *m_selection;
     QLabel *m_empty;

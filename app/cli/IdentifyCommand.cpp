@@ -3,11 +3,13 @@
 #include "cli/IdentifyReportPdf.h"
 #include "cli/TorquePlotPng.h"
 
+#include "cli/IdentifyParameters.h"
 #include "cli/IdentifyTable.h"
 #include "io/AtomicFile.h"
 #include "io/ScenarioFile.h"
 #include "model/Error.h"
 #include "service/LogIdentification.h"
+#include "service/LogIdentificationSummary.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -45,26 +47,17 @@ LogRobot loadRobot(const LogIdentificationRequest &request)
     return loadLogRobot(request);
 }
 
-// The parameter file records the gains the data were recorded with; logs do not say, so they
-// come from --scenario, else the scenario's defaults (for two joints only).
-ControllerSettings exportController(const IdentifyOptions &o, int joints)
+// The parameter file records the gains the data were recorded with when --scenario names them;
+// logs do not say, so without it the file holds the model alone.
+std::optional<ControllerSettings> exportController(const IdentifyOptions &o, int joints)
 {
-    if (!o.scenarioPath.isEmpty()) {
-        const Scenario scenario = readScenarioFile(o.scenarioPath);
-        validateControllerSettings(
-            scenario.controller, joints,
-            QStringLiteral("%1: controller").arg(QDir::toNativeSeparators(o.scenarioPath)));
-        return scenario.controller;
-    }
-    if (const auto defaults = defaultExportController(joints))
-        return *defaults;
-    throw Error(QCoreApplication::translate(
-                    "learnid-cli",
-                    "--export: a parameter file records the controller's gains, and the "
-                    "default gains are for %1 joints, the robot has %2: give them with "
-                    "--scenario FILE (its controller section)")
-                    .arg(ControllerSettings().dof())
-                    .arg(joints));
+    if (o.scenarioPath.isEmpty())
+        return std::nullopt;
+    const Scenario scenario = readScenarioFile(o.scenarioPath);
+    validateControllerSettings(
+        scenario.controller, joints,
+        QStringLiteral("%1: controller").arg(QDir::toNativeSeparators(o.scenarioPath)));
+    return scenario.controller;
 }
 
 // --plots DIR: DIR/<log name>-torque.png per validation log; --report FILE: the text and the
@@ -95,7 +88,7 @@ plotFiles(const IdentifyOptions &o, const LogIdentificationResult &result, const
         files.append(
             {o.reportPath, identifyReportPdf(QCoreApplication::translate(
                                                  "learnid-cli", "learnid: %1 identified from logs")
-                                                 .arg(result.robot.chain.name),
+                                                 .arg(logRobotName(result.robot)),
                                              text, pngs)});
     }
     return files;
@@ -120,8 +113,8 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
             exports.parameterPath = o.exportPath;
             exports.controller = exportController(o, model.dof());
         }
-        progress(QCoreApplication::translate("learnid-cli", "robot %1 (%2): %3 moving joints")
-                     .arg(robot.chain.name, robot.source)
+        progress(QCoreApplication::translate("learnid-cli", "robot %1: %2, %3 moving joints")
+                     .arg(logRobotName(robot), robot.source)
                      .arg(model.dof()));
 
         const auto stage = [&](const LogIdentificationProgress &p) {
@@ -135,9 +128,9 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
                 break;
             case LogIdentificationStage::Fit:
                 progress(QCoreApplication::translate("learnid-cli",
-                                                     "fitting %1 standard parameters to %2 logs")
-                             .arg(model.standardCount())
-                             .arg(p.count));
+                                                     "fitting %1 standard parameters to %n log(s)",
+                                                     nullptr, p.count)
+                             .arg(model.standardCount()));
                 break;
             case LogIdentificationStage::Robot:
             case LogIdentificationStage::Validate:
@@ -145,15 +138,9 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
             }
         };
         const LogIdentificationResult result = identifyFromLogs(robot, request, stage);
-        if (!result.undetermined.isEmpty())
-            progress(QCoreApplication::translate("learnid-cli",
-                                                 "base parameters the logs leave undetermined "
-                                                 "(kept near the URDF's values): %1")
-                         .arg(result.undetermined.join(QStringLiteral(", "))));
-
-        QString text = identifySummary(model, result.fit, int(result.trainingLogs.size()),
-                                       result.consistency) +
-                       QLatin1Char('\n') + trainingTable(model, result.fit);
+        QString text = identifySummary(result) + modelWarningText(result.robot.warnings) +
+                       QLatin1Char('\n') + trainingTable(model, result.fit) + QLatin1Char('\n') +
+                       parameterTable(model, result.fit);
         for (const LogValidation &v : result.validation) {
             text += QLatin1Char('\n') + validationTable(model, v.source,
                                                         static_cast<long long>(v.samples()),

@@ -168,7 +168,9 @@ void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
         cliOption(
             "max-gap",
             QT_TRANSLATE_NOOP("learnid-cli",
-                              "Longest time step allowed in a log [ms]; default 5 sample periods."),
+                              "Longest time step allowed in a log [ms]; default half the time "
+                              "constant 1/rho of the fit's filter (10 ms at rho 50), at least 2.5 "
+                              "sample periods."),
             "MS"),
         cliOption(
             "base-link",
@@ -181,7 +183,8 @@ void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
         cliOption("export",
                   QT_TRANSLATE_NOOP(
                       "learnid-cli",
-                      "Write the identified base parameters as a parameter file (and DCF)."),
+                      "Write the identified model as a parameter file (and DCF); it records "
+                      "controller gains only with --scenario."),
                   "FILE"),
         cliOption("urdf-out",
                   QT_TRANSLATE_NOOP("learnid-cli",

@@ -1,6 +1,7 @@
 #include "cli/IdentifyTable.h"
 
 #include "model/ChainModel.h"
+#include "service/LogIdentificationSummary.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -39,30 +40,39 @@ QString jointHeader(int width)
            QCoreApplication::translate("learnid-cli", "name").leftJustified(width);
 }
 
+// text in lines of at most width characters (a longer word on a line of its own), the lines
+// after the first indented by two spaces.
+QString wrapped(const QString &text, int width)
+{
+    QStringList lines;
+    QString line;
+    for (const QString &word : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        if (line.isEmpty()) {
+            line = word;
+        } else if (line.size() + 1 + word.size() > width) {
+            lines << line;
+            line = QStringLiteral("  ") + word;
+        } else {
+            line += QLatin1Char(' ') + word;
+        }
+    }
+    lines << line;
+    return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+}
+
 } // namespace
 
-QString identifySummary(const ChainModel &model, const LogFit &fit, int logs,
-                        const QStringList &consistency)
+QString identifySummary(const LogIdentificationResult &result, int width)
 {
-    QString text =
-        QCoreApplication::translate(
-            "learnid-cli",
-            "fit: %1 logs, %2 samples; %3 of %4 standard-parameter directions determined "
-            "(condition %5)\n"
-            "fit: %6 of %7 base parameters undetermined (kept near the URDF's values); %8\n")
-            .arg(logs)
-            .arg(fit.samples)
-            .arg(fit.rank)
-            .arg(model.standardCount())
-            .arg(fit.condition, 0, 'g', 3)
-            .arg(fit.undetermined().size())
-            .arg(fit.baseCount)
-            .arg(fit.converged
-                     ? QCoreApplication::translate("learnid-cli", "consistent fit converged")
-                     : QCoreApplication::translate("learnid-cli",
-                                                   "consistent fit stopped at its step limit"));
-    text += QCoreApplication::translate("learnid-cli", "identified parameters: %1\n")
-                .arg(consistency.join(QStringLiteral("; ")));
+    const LogIdentificationSummary s = summarizeLogIdentification(result);
+    const QStringList sentences =
+        QStringList{s.robot, s.logs} + s.readings +
+        QStringList{s.directions, s.undetermined,
+                    QCoreApplication::translate("learnid-cli", "Identified parameters: %1.")
+                        .arg(result.consistency.join(QStringLiteral("; ")))};
+    QString text;
+    for (const QString &sentence : sentences)
+        text += wrapped(sentence, width);
     return text;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "identify/LogFit.h"
+#include "service/LogIdentification.h"
 
 #include <QString>
 #include <QStringList>
@@ -11,12 +12,13 @@ class ChainModel;
 
 namespace learnid::cli {
 
-/// The fit in a few lines: logs and samples used, the determined standard-parameter directions
-/// and their condition, how many base parameters the data left undetermined, whether the
-/// consistent fit converged, and the consistency verdict of the result (consistency: the lines
-/// of EstimateConsistency::describe()).
-QString identifySummary(const ChainModel &model, const LogFit &fit, int logs,
-                        const QStringList &consistency);
+/// The identification in a few lines (LogIdentificationSummary, the window's words): the robot,
+/// logs and samples, how the determined directions relate to the standard and base parameters,
+/// the base parameters the logs leave mostly undetermined, the consistency verdict of the result
+/// and what the reader dropped from each log (before the fit). Sentences are wrapped at `width`
+/// characters, their continuation lines indented by two spaces (the PDF report prints the lines as
+/// they are).
+QString identifySummary(const LogIdentificationResult &result, int width = 100);
 
 /// One row per joint: the RMS of the fitted torque's residual on the --log files [N m].
 QString trainingTable(const ChainModel &model, const LogFit &fit);

@@ -2,7 +2,9 @@
 
 #include "cli/ResultTable.h"
 #include "io/ScenarioFile.h"
+#include "model/ChainModel.h"
 #include "model/Error.h"
+#include "model/ModelCheck.h"
 #include "service/RobotFactory.h"
 #include "service/SessionWorker.h"
 
@@ -160,6 +162,15 @@ ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
                    .arg(session->robot().description(), scenario.law)
                    .arg(scenario.iterations)
             << Qt::endl;
+        // The URDF's own values as a real robot's: a warning, the session runs all the same.
+        if (const auto *chain = dynamic_cast<const ChainModel *>(&session->model())) {
+            for (const QString &line : modelWarnings(*chain))
+                err << QCoreApplication::translate("learnid-cli",
+                                                   "learnid-cli: warning: the URDF as a real "
+                                                   "robot: %1")
+                           .arg(line)
+                    << Qt::endl;
+        }
         // What the trials can learn, before the robot moves.
         for (const QString &line : session->identifiability().describe(session->model()))
             err << QCoreApplication::translate("learnid-cli", "learnid-cli: %1").arg(line)

@@ -33,6 +33,34 @@ double niceStep(double span, int ticks)
     return 10.0 * power;
 }
 
+// The smallest step of 1, 2 or 5 times a power of ten that puts at most `ticks` ticks on
+// [low, high] widened to whole steps.
+double torqueTick(double low, double high, int ticks)
+{
+    const double span = std::max(high - low, 1e-12);
+    double step = std::pow(10.0, std::floor(std::log10(span / ticks)) - 1.0);
+    const auto count = [&](double s) {
+        return std::ceil(high / s - 1e-9) - std::floor(low / s + 1e-9) + 1.0;
+    };
+    for (int i = 0; count(step) > ticks && i < 12; ++i)
+        step *= i % 3 == 1 ? 2.5 : 2.0; // 1, 2, 5, 10, 20, 50, ...
+    return step;
+}
+
+// A tick's label with the digits that tell it from its neighbours `tick` apart (0.6, 0.61,
+// 0.62, not 0.6, 0.61, 0.62 from 'g' with 3 digits only up to 0.615).
+QString tickLabel(double v, double tick, double largest)
+{
+    if (std::abs(v) < 1e-9 * tick)
+        v = 0.0; // not "-0.00"
+    const int decimals = std::max(0, int(-std::floor(std::log10(tick) + 1e-9)));
+    if (decimals <= 4)
+        return QString::number(v, 'f', decimals);
+    const int digits = int(std::floor(std::log10(std::max(largest, tick)) + 1e-9)) -
+                       int(std::floor(std::log10(tick) + 1e-9)) + 1;
+    return QString::number(v, 'g', std::max(digits, 1));
+}
+
 void drawSeries(QPainter &p, const QRectF &r, const Eigen::VectorXd &t, const Eigen::RowVectorXd &y,
                 double lo, double hi, const QPen &pen)
 {
@@ -63,19 +91,21 @@ void drawPanel(QPainter &p, const QRectF &r, const TorquePlotData &d, int joint,
     double lo = std::min({m.minCoeff(), g.minCoeff(), i.minCoeff()});
     double hi = std::max({m.maxCoeff(), g.maxCoeff(), i.maxCoeff()});
     const double margin = std::max(0.05 * (hi - lo), 1e-6);
-    lo -= margin;
-    hi += margin;
+    // The range widened to whole ticks, as many as fit (7 in a panel): every panel has 3 labels
+    // at least. A step chosen from the span alone could leave one inside the range ("0").
+    const double tick = torqueTick(lo - margin, hi + margin, 7);
+    lo = std::floor((lo - margin) / tick + 1e-9) * tick;
+    hi = std::ceil((hi + margin) / tick - 1e-9) * tick;
     p.setPen(QPen(QColor(200, 200, 200), 1));
     p.drawRect(r);
-    const double tick = niceStep(hi - lo, 4);
     p.setFont(QFont(p.font().family(), 9));
-    for (double v = std::ceil(lo / tick) * tick; v <= hi; v += tick) {
+    for (double v = lo; v <= hi + 1e-9 * tick; v += tick) {
         const double y = r.bottom() - (v - lo) / (hi - lo) * r.height();
         p.setPen(QPen(QColor(225, 225, 225), 1));
         p.drawLine(QPointF(r.left(), y), QPointF(r.right(), y));
         p.setPen(Qt::black);
         p.drawText(QRectF(0, y - 8, left - 6, 16), Qt::AlignRight | Qt::AlignVCenter,
-                   QString::number(std::abs(v) < 1e-12 * tick ? 0.0 : v, 'g', 3));
+                   tickLabel(v, tick, std::max(std::abs(lo), std::abs(hi))));
     }
     const double t0 = d.t[0];
     const double span = std::max(d.t[d.t.size() - 1] - t0, 1e-12);

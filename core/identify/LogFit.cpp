@@ -3,7 +3,8 @@
 #include "model/CadPrior.h"
 #include "model/ChainModel.h"
 #include "model/Error.h"
-#include "model/PhysicalConsistency.h"
+#include "model/Plausibility.h"
+#include "model/PlausibleEstimate.h"
 
 #include <Eigen/QR>
 #include <Eigen/SVD>
@@ -146,7 +147,8 @@ LogFit fitLogs(const ChainModel &model, const std::vector<FilteredLog> &logs,
     }
     if (total == 0)
         throw Error(Text::tr("no samples to fit"));
-    if (!(settings.priorShare > 0.0 && settings.priorShare < 1.0))
+    if (!(settings.priorShare > 0.0 && settings.priorShare < 1.0) ||
+        !(settings.geometricShare > 0.0 && settings.geometricShare < 1.0))
         throw Error(Text::tr("the prior share must lie between 0 and 1"));
 
     LogFit fit;
@@ -185,13 +187,32 @@ LogFit fitLogs(const ChainModel &model, const std::vector<FilteredLog> &logs,
         const double size = row.norm();
         fit.observedShare.push_back(size > 0.0 ? (row * ls.directions).norm() / size : 0.0);
     }
+    // A standard parameter alone is the unit vector e_i in scaled units: its determined share
+    // is the norm of row i of the orthonormal directions.
+    for (Eigen::Index i = 0; i < p; ++i)
+        fit.standardDetermined.push_back(std::min(1.0, ls.directions.row(i).norm()));
 
     fit.standard = fit.leastSquares;
     if (settings.consistent) {
-        const ConsistentEstimate c = nearestConsistentEstimate(
-            a, b, fit.prior, d, settings.priorShare * ls.largest, n, model.nonnegativeStandard());
+        PlausibleProblem problem;
+        problem.a = a;
+        problem.b = b;
+        problem.prior = fit.prior;
+        problem.links = n;
+        problem.nonnegative = model.nonnegativeStandard();
+        // A joint term the data do not determine (a joint that never moves) keeps the CAD value.
+        for (Eigen::Index i = 10 * n; i < p; ++i)
+            if (fit.standardDetermined[size_t(i)] < 0.5)
+                problem.heldAtPrior.push_back(int(i));
+        if (settings.volumes)
+            problem.volumes = linkVolumes(model.chain(), fit.prior);
+        problem.priorShare = settings.geometricShare;
+        if (settings.plausible)
+            problem.rule = PlausibilityRule();
+        const PlausibleEstimate c = plausibleEstimate(problem);
         fit.standard = c.standard;
         fit.converged = c.converged;
+        fit.solverReport = c.report;
     }
     fit.base = model.baseFromStandard(fit.standard);
     fit.trainingRms = residualRms(factors, fit.standard, total);

@@ -3,6 +3,7 @@
 #include "identify/LogSignals.h"
 
 #include <Eigen/Core>
+#include <QString>
 #include <vector>
 
 namespace learnid {
@@ -13,15 +14,26 @@ class ChainModel;
 struct LogFitSettings
 {
     /// Directions of the parameters (each scaled by its regressor column's norm) whose singular
-    /// value is below priorShare times the largest are held at the CAD prior: the data do not
-    /// determine them. The same figure weighs the prior in the physically consistent fit.
-    /// 0.03: on the KUKA LWR4+ logs 0.01 to 0.05 predict the held-out run alike (docs/identify.md).
+    /// value is below priorShare times the largest are not determined by the data: the plain
+    /// fit holds them at the CAD prior, the plausible fit holds the joint terms among them there,
+    /// and the reports say which standard parameters they are (standardDetermined).
     double priorShare = 0.03;
+    /// The geometric prior's weight in the plausible fit (PlausibleProblem::priorShare): it
+    /// counts 0.003^2 (1e-5) of the best-determined direction's information. On the KUKA LWR4+
+    /// logs 0.002 to 0.007 predict the held-out runs within 0.3 points of each other; larger
+    /// values hold the double pendulum's light links too close to its published model
+    /// (docs/identify.md).
+    double geometricShare = 0.003;
     /// Weigh each joint's rows by the inverse RMS of its residual after a first, unweighted fit
     /// (weighted least squares: a joint with noisy torque does not drown the others).
     bool weighted = true;
-    /// Physically consistent standard parameters (PhysicalConsistency.h), else the fit as is.
+    /// Plausible standard parameters (plausibleEstimate(): every link a body near the CAD one,
+    /// friction not negative), else the fit as is.
     bool consistent = true;
+    /// Each link's mass kept inside its bounding volume (linkVolumes()).
+    bool volumes = true;
+    /// Each link kept inside the plausibility rule (PlausibilityRule) where the CAD link is.
+    bool plausible = true;
 };
 
 /// The parameters fitted to logs, and what the data could determine.
@@ -39,7 +51,13 @@ struct LogFit
     Eigen::Index samples = 0;     ///< samples used, all logs
     /// Per base parameter: the share of its direction the data determine (0 to 1).
     std::vector<double> observedShare;
+    /// Per standard parameter (p): the share of its own direction (the parameter alone, scaled
+    /// by its regressor column) that lies in what the data determine, 0 to 1. At least 0.5: the
+    /// data determined it; below: it was kept from the prior (the CAD model), or is only
+    /// known in combination with others.
+    std::vector<double> standardDetermined;
     bool converged = true; ///< the consistent fit met its stopping rule
+    QString solverReport;  ///< the solver's summary of the consistent fit
 
     /// Base parameters with a share below 0.5, in order.
     std::vector<int> undetermined() const;

@@ -17,8 +17,9 @@ struct Text
     Q_DECLARE_TR_FUNCTIONS(UniformLog)
 };
 
-constexpr double defaultGapInSteps = 5.0;   // of the log's step
-constexpr Eigen::Index maxUpsampling = 100; // grid samples per log sample at most
+constexpr double gapOfFilterTimeConstant = 0.5; // of 1/rho: defaultMaxGap()
+constexpr double minimumGapInSteps = 2.5;       // of the log's step: one lost sample, jittered
+constexpr Eigen::Index maxUpsampling = 100;     // grid samples per log sample at most
 // A grid time within this fraction of a period past the last stamp still counts as covered:
 // t0 + k T rounds, and the last sample must not be lost to it.
 constexpr double gridTolerance = 1e-9;
@@ -49,6 +50,27 @@ QString lineOf(const RobotLog &log, Eigen::Index k)
 QString samplePlace(const RobotLog &log, Eigen::Index k)
 {
     return QStringLiteral("%1: %2").arg(log.source, lineOf(log, k));
+}
+
+// " (lines A to B: stale, ...)": the stale rows the reader dropped between sample k-1 and k.
+QString staleRowsBefore(const RobotLog &log, Eigen::Index k)
+{
+    if (log.rows.empty() || log.staleRows.empty())
+        return {};
+    const int after = log.rows[size_t(k - 1)], before = log.rows[size_t(k)];
+    const auto first = std::upper_bound(log.staleRows.begin(), log.staleRows.end(), after);
+    const auto last = std::lower_bound(first, log.staleRows.end(), before);
+    if (first == last)
+        return {};
+    if (last - first == 1) {
+        return Text::tr(" (line %1 is stale: it repeated the values of line %2 under a new time "
+                        "stamp and counts as missing)")
+            .arg(QString::number(*first), QString::number(after));
+    }
+    return Text::tr(" (lines %1 to %2 are stale: %3 rows that repeated the values of line %4 "
+                    "under new time stamps and count as missing)")
+        .arg(QString::number(*first), QString::number(*(last - 1)), QString::number(last - first),
+             QString::number(after));
 }
 
 void checkLog(const RobotLog &log)
@@ -149,6 +171,11 @@ Eigen::MatrixXd interpolate(const Eigen::MatrixXd &x, const Eigen::VectorXd &tim
 
 } // namespace
 
+double defaultMaxGap(double rho, double logStep)
+{
+    return std::max(gapOfFilterTimeConstant / rho, minimumGapInSteps * logStep);
+}
+
 UniformLog resampleUniform(const RobotLog &log, const ResampleOptions &options)
 {
     checkLog(log);
@@ -156,6 +183,10 @@ UniformLog resampleUniform(const RobotLog &log, const ResampleOptions &options)
         throw Error(Text::tr("%1: the period (%2 s) and the largest gap (%3 s) must be zero "
                              "(the default) or positive")
                         .arg(log.source, number(options.period), number(options.maxGap)));
+    }
+    if (!(options.fitBandwidth > 0.0) || !std::isfinite(options.fitBandwidth)) {
+        throw Error(Text::tr("%1: the fit's filter bandwidth rho (%2 rad/s) must be positive")
+                        .arg(log.source, number(options.fitBandwidth)));
     }
     const Eigen::Index samples = log.t.size();
     const Eigen::VectorXd times = options.useNominalTimes ? nominalTimes(log) : log.t;
@@ -167,14 +198,23 @@ UniformLog resampleUniform(const RobotLog &log, const ResampleOptions &options)
     uniform.t0 = t0;
     const double logStep = options.useNominalTimes ? span / double(samples - 1) : medianStep(log.t);
     uniform.period = options.period > 0.0 ? options.period : logStep;
-    const double maxGap = options.maxGap > 0.0 ? options.maxGap : defaultGapInSteps * logStep;
+    const double maxGap =
+        options.maxGap > 0.0 ? options.maxGap : defaultMaxGap(options.fitBandwidth, logStep);
     for (Eigen::Index k = 1; k < samples; ++k) {
         const double gap = log.t[k] - log.t[k - 1];
         if (gap > maxGap) {
-            throw Error(Text::tr("%1: a gap of %2 ms after the sample at t = %3 s, more than the "
-                                 "%4 ms allowed (--max-gap)")
+            const QString allowed =
+                options.maxGap > 0.0
+                    ? Text::tr("%1 ms allowed (--max-gap)").arg(milliseconds(maxGap))
+                    : Text::tr("%1 ms allowed (--max-gap; by default half the time constant "
+                               "1/rho of the fit's filter, rho = %2 rad/s, and at least %3 of "
+                               "the log's steps)")
+                          .arg(milliseconds(maxGap), number(options.fitBandwidth),
+                               number(minimumGapInSteps));
+            throw Error(Text::tr("%1: a gap of %2 ms after the sample at t = %3 s%4, more than "
+                                 "the %5")
                             .arg(samplePlace(log, k), milliseconds(gap), seconds(log.t[k - 1]),
-                                 milliseconds(maxGap)));
+                                 staleRowsBefore(log, k), allowed));
         }
     }
 

@@ -22,11 +22,34 @@ struct UniformLog
     double time(Eigen::Index k) const { return t0 + double(k) * period; }
 };
 
+/// The longest step between two time stamps that the fit tolerates by default [s]: half the
+/// time constant 1/rho of the fit's filter F(s) = rho^3/(s+rho)^3, run forward and backward
+/// (LogSignals.h), and at least 2.5 of the log's steps: one lost sample, with the stamps' jitter
+/// (a log coarser than the bound is fitted at the resolution it has).
+///
+/// Why: across a gap g linear interpolation errs by e(t) = x''/2 (t - a)(t - b) (a, b the
+/// stamps around it), whose integral is -x'' g^3 / 12. The filter, whose impulse response
+/// h = f * f(-t) peaks at h(0) = 3 rho / 16 (|h''| at most rho^3 / 16), spreads that over its
+/// width of a few 1/rho: the filtered torque errs by at most rho g^3 |tau''| / 64, the filtered
+/// acceleration by rho^3 g^3 |q''| / 192. For a component at the highest frequency the filter
+/// keeps (rho; above it |F|^2 < 1/8) that is (rho g)^3 / 64 of its amplitude: at g = 1/(2 rho),
+/// 0.2 %, and only within a few 1/rho of the gap. A robot's motion lies far below rho (50 rad/s,
+/// 8 Hz): for 1 Hz and an 8.5 ms gap the error is 2e-5 of the torque. The bound follows the
+/// filter: a wider one (larger rho) keeps more of the motion and tolerates shorter gaps.
+///
+/// rho: [rad/s] > 0; logStep: [s] the log's typical step, >= 0.
+double defaultMaxGap(double rho, double logStep);
+
 struct ResampleOptions
 {
     double period =
         0.0; ///< [s]; 0: the median time step of the log (the nominal step with useNominalTimes)
-    double maxGap = 0.0; ///< [s] the longest step allowed between two samples; 0: 5 x the period
+    /// [s] the longest step allowed between two samples (--max-gap); 0: defaultMaxGap() for
+    /// fitBandwidth and the log's step.
+    double maxGap = 0.0;
+    /// [rad/s] the bandwidth rho of the filter the fit applies (LogFilterSettings::rho), for the
+    /// default maxGap.
+    double fitBandwidth = 50.0;
     /// Take sample k of the log as taken at t0 + k T, T = (t_N-1 - t0) / (N - 1), and its time
     /// stamp as the noise. Off by default; see resampleUniform().
     bool useNominalTimes = false;
@@ -59,9 +82,11 @@ struct ResampleOptions
 /// stamps is off by at most the jitter, at the few samples around a late stamp.
 ///
 /// Throws Error "<source>: line L: a gap of X ms after the sample at t = Y s, more than the
-/// Z ms allowed (--max-gap)" for a step between two consecutive time stamps longer than maxGap,
+/// Z ms allowed (--max-gap ...)" for a step between two consecutive time stamps longer than
+/// maxGap (naming the stale rows that the reader dropped in it, RobotLog::staleRows),
 /// and Error naming the source for a log of mismatched sizes, non-finite values, times that do
-/// not increase, fewer than 2 samples, a negative or non-finite period or maxGap, a period that
+/// not increase, fewer than 2 samples, a negative or non-finite period or maxGap, a fitBandwidth
+/// that is not positive and finite, a period that
 /// gives fewer than 2 grid samples or more than 100 times the log's, and nominal times that
 /// do not apply.
 UniformLog resampleUniform(const RobotLog &log, const ResampleOptions &options = {});

@@ -41,7 +41,10 @@ ControllerLog readControllerLog(const QByteArray &csv, const QString &source, co
         throw Error(Text::tr("%1: the log is of plan %2, not of plan %3")
                         .arg(source, log.planId, plan.planId));
 
-    const RobotLog robotLog = readRobotLog(csv, source, plan.joints(), LogColumns{}, angular);
+    // Every sample of the plan's grid, as the controller took it: at rest a noise-free
+    // simulation repeats its values exactly, and those rows are samples, not stale.
+    const RobotLog robotLog =
+        readRobotLog(csv, source, plan.joints(), LogColumns{}, angular, StaleRows::Keep);
     const double ts = plan.samplePeriod;
     const int planned = plan.samples();
     const int samples = int(robotLog.samples());

@@ -24,7 +24,8 @@ struct ControllerLog
 
 /// Reads a controller's log of a run of `plan`: a robot log CSV (io/RobotLogCsv.h, default
 /// columns `t,q1..qn,tau1..taun`, other columns ignored) whose comment lines include the plan's
-/// `# plan-id:` line. Sample k must be logged at t = k Ts within +-controllerLogJitter Ts. A log
+/// `# plan-id:` line. Sample k must be logged at t = k Ts within +-controllerLogJitter Ts; a row
+/// repeating the values of the row before is a sample like any (StaleRows::Keep). A log
 /// with fewer samples than the plan is a trial that ended early: its record is Aborted, with a
 /// message saying where it ended.
 ///

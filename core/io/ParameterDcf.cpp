@@ -131,10 +131,12 @@ QByteArray parameterDcfFragment(const ParameterFileContent &content, int joint)
     }
     const ControllerSettings &c = content.controller;
     objects::ManufacturerDefaults defaults;
-    defaults.kp = c.kp[joint];
-    defaults.ki = c.ki[joint];
-    defaults.kd = c.kd[joint];
-    defaults.lambda = c.lambda;
+    if (content.hasController) {
+        defaults.kp = c.kp[joint];
+        defaults.ki = c.ki[joint];
+        defaults.kd = c.kd[joint];
+        defaults.lambda = c.lambda;
+    }
     defaults.parameterCount = int(content.parameters.size());
     // What the drive holds once configured and applied: the gains (its defaults here, as the
     // robot side is set up from the same controller), the count and the identified values.
@@ -171,9 +173,16 @@ QByteArray parameterDcfFragment(const ParameterFileContent &content, int joint)
                  content.created.toUTC().toString(Qt::ISODateWithMs), content.toolVersion);
     QByteArray out = comments.toUtf8();
     out += "[DeviceComissioning]\nNodeID=" + QByteArray::number(nodes.at(joint)) + "\n\n";
-    out += "[ManufacturerObjects]\nSupportedObjects=2\n";
-    out += "1=0x" + hex(objects::gains) + "\n2=0x" + hex(objects::identifiedParameters) + "\n\n";
-    writeObject(out, objects::gains, QStringLiteral("Joint controller gains"), gains);
+    // Without recorded gains the fragment holds the identified parameters alone.
+    if (content.hasController) {
+        out += "[ManufacturerObjects]\nSupportedObjects=2\n";
+        out +=
+            "1=0x" + hex(objects::gains) + "\n2=0x" + hex(objects::identifiedParameters) + "\n\n";
+        writeObject(out, objects::gains, QStringLiteral("Joint controller gains"), gains);
+    } else {
+        out += "[ManufacturerObjects]\nSupportedObjects=1\n";
+        out += "1=0x" + hex(objects::identifiedParameters) + "\n\n";
+    }
     writeObject(out, objects::identifiedParameters, QStringLiteral("Identified dynamic parameters"),
                 parameters);
     return out;

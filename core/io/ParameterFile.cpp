@@ -10,6 +10,8 @@
 #include <QDir>
 #include <QJsonDocument>
 #include <QRegularExpression>
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace learnid {
@@ -43,6 +45,38 @@ JsonTree controllerTree(const ControllerSettings &c)
         .insert(key("kd"), JsonTree::numbers(c.kd))
         .insert(key("lambda"), c.lambda);
     return t;
+}
+
+// "data", "prior" or "unknown" for a determined share (LogFit::standardDetermined).
+QString determinedSource(double share)
+{
+    if (!std::isfinite(share))
+        return QStringLiteral("unknown");
+    return share >= 0.5 ? QStringLiteral("data") : QStringLiteral("prior");
+}
+
+double determinedAt(const ParameterFileContent &c, int i)
+{
+    return c.standardDetermined.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                        : c.standardDetermined[size_t(i)];
+}
+
+JsonTree standardTree(const ParameterFileContent &c)
+{
+    JsonTree list = JsonTree::array();
+    for (int i = 0; i < int(c.standardParameters.size()); ++i) {
+        const ParameterInfo &p = c.standardParameters.at(i);
+        const double share = determinedAt(c, i);
+        JsonTree o = JsonTree::object();
+        o.insert(key("name"), p.name)
+            .insert(key("unit"), p.unit)
+            .insert(key("description"), p.description)
+            .insert(key("value"), c.standardValues[i])
+            .insert(key("determined"), share) // NaN -> null
+            .insert(key("source"), determinedSource(share));
+        list.append(o);
+    }
+    return list;
 }
 
 JsonTree contentTree(const ParameterFileContent &c)
@@ -102,9 +136,10 @@ JsonTree contentTree(const ParameterFileContent &c)
         .insert(key("created"), c.created.toUTC().toString(Qt::ISODateWithMs))
         .insert(key("toolVersion"), c.toolVersion)
         .insert(key("robot"), robot)
-        .insert(key("controller"), controllerTree(c.controller))
+        .insert(key("controller"), c.hasController ? controllerTree(c.controller) : JsonTree())
         .insert(key("identification"), identification)
         .insert(key("parameters"), parameters)
+        .insert(key("standardParameters"), standardTree(c))
         .insert(key("quality"), quality)
         .insert(key("canWrites"), writes);
     return root;
@@ -152,6 +187,38 @@ void readParameters(const QJsonValue &value, const QString &path, ParameterFileC
         c.standardDeviations.resize(0);
 }
 
+void readStandard(const QJsonValue &value, const QString &path, ParameterFileContent &c)
+{
+    const QJsonArray list = jsonArray(value, path);
+    const int p = int(list.size());
+    c.standardValues.resize(p);
+    c.standardDetermined.assign(size_t(p), std::numeric_limits<double>::quiet_NaN());
+    for (int i = 0; i < p; ++i) {
+        JsonObjectReader r(list.at(i), jsonIndexPath(path, i));
+        ParameterInfo info;
+        info.name = jsonString(r.require(key("name")), r.keyPath(key("name")));
+        info.unit = jsonString(r.require(key("unit")), r.keyPath(key("unit")));
+        info.description = jsonString(r.require(key("description")), r.keyPath(key("description")));
+        c.standardParameters.append(info);
+        c.standardValues[i] = jsonNumber(r.require(key("value")), r.keyPath(key("value")));
+        const QJsonValue determined = r.require(key("determined"));
+        if (!determined.isNull())
+            c.standardDetermined[size_t(i)] = jsonNumber(determined, r.keyPath(key("determined")));
+        const QString source = jsonString(r.require(key("source")), r.keyPath(key("source")));
+        const QString expected = determinedSource(c.standardDetermined[size_t(i)]);
+        if (source != expected) {
+            throwAtKey(r.keyPath(key("source")),
+                       Text::tr("must be \"%1\" for determined %2, got \"%3\"")
+                           .arg(expected, describeJsonValue(determined), source));
+        }
+        r.rejectUnknownKeys();
+    }
+    // None known reads back as the writer had it: empty.
+    if (std::all_of(c.standardDetermined.begin(), c.standardDetermined.end(),
+                    [](double share) { return std::isnan(share); }))
+        c.standardDetermined.clear();
+}
+
 SdoWrite readWrite(JsonObjectReader r)
 {
     static const QRegularExpression indexPattern(QStringLiteral("^0x[0-9A-Fa-f]{4}$"));
@@ -181,7 +248,7 @@ SdoWrite readWrite(JsonObjectReader r)
     return w;
 }
 
-ParameterFileContent readContent(const QJsonObject &root)
+ParameterFileContent readContent(const QJsonObject &root, bool version1)
 {
     ParameterFileContent c;
     JsonObjectReader r(root, QString());
@@ -221,7 +288,10 @@ ParameterFileContent readContent(const QJsonObject &root)
     }
     robot.rejectUnknownKeys();
 
-    c.controller = readController(r.object(key("controller")));
+    // Version 2 records no gains as null: the identification from logs without a scenario.
+    c.hasController = version1 || !r.require(key("controller")).isNull();
+    if (c.hasController)
+        c.controller = readController(r.object(key("controller")));
 
     JsonObjectReader identification = r.object(key("identification"));
     c.law = jsonString(identification.require(key("law")), identification.keyPath(key("law")));
@@ -230,6 +300,8 @@ ParameterFileContent readContent(const QJsonObject &root)
     identification.rejectUnknownKeys();
 
     readParameters(r.require(key("parameters")), key("parameters"), c);
+    if (!version1)
+        readStandard(r.require(key("standardParameters")), key("standardParameters"), c);
 
     JsonObjectReader q = r.object(key("quality"));
     const auto figures = [&q](const char *name) {
@@ -252,15 +324,19 @@ ParameterFileContent readContent(const QJsonObject &root)
     return c;
 }
 
-void checkSchemaAndChecksum(QJsonObject root)
+// Returns whether the file is of version 1.
+bool checkSchemaAndChecksum(QJsonObject root)
 {
     const QJsonValue schema = root.value(key("schema"));
     if (schema.isUndefined())
         throwAtKey(key("schema"), Text::tr("is missing; this is not a learnid parameter file"));
-    if (jsonString(schema, key("schema")) != QLatin1String(parameterFileSchema)) {
+    const QString name = jsonString(schema, key("schema"));
+    if (name != QLatin1String(parameterFileSchema) &&
+        name != QLatin1String(parameterFileSchemaV1)) {
         throwAtKey(key("schema"),
-                   Text::tr("this version of learnid reads \"%1\", got %2")
-                       .arg(QLatin1String(parameterFileSchema), describeJsonValue(schema)));
+                   Text::tr("this version of learnid reads \"%1\" and \"%2\", got %3")
+                       .arg(QLatin1String(parameterFileSchema),
+                            QLatin1String(parameterFileSchemaV1), describeJsonValue(schema)));
     }
     const QJsonValue stored = root.value(key("checksum"));
     if (stored.isUndefined())
@@ -273,6 +349,7 @@ void checkSchemaAndChecksum(QJsonObject root)
                    Text::tr("does not match the content: the file was changed after "
                             "learnid wrote it, or is damaged"));
     }
+    return name == QLatin1String(parameterFileSchemaV1);
 }
 
 } // namespace
@@ -299,8 +376,8 @@ ParameterFileContent parameterFileFromJson(const QByteArray &json, const QString
 {
     const QJsonObject root = parseJsonObject(json, sourceName);
     try {
-        checkSchemaAndChecksum(root);
-        const ParameterFileContent c = readContent(root);
+        const bool version1 = checkSchemaAndChecksum(root);
+        const ParameterFileContent c = readContent(root, version1);
         validateParameterFileContent(c);
         return c;
     } catch (const Error &e) {

@@ -12,11 +12,15 @@
 #include <QJsonObject>
 #include <QList>
 #include <QString>
+#include <vector>
 
 namespace learnid {
 
-/// The "schema" of parameter files this version reads and writes.
-inline constexpr char parameterFileSchema[] = "learnid-parameters/1";
+/// The "schema" of parameter files this version writes; it reads these and
+/// parameterFileSchemaV1's (docs/file-formats.md).
+inline constexpr char parameterFileSchema[] = "learnid-parameters/2";
+/// The first version: always controller gains, no standard parameters.
+inline constexpr char parameterFileSchemaV1[] = "learnid-parameters/1";
 
 /// Everything a parameter file holds (docs/file-formats.md), filled by the caller.
 struct ParameterFileContent
@@ -27,6 +31,9 @@ struct ParameterFileContent
     /// The identity (0x1018) of each joint's drive when the robot is on CAN, else empty
     /// (written as robot.drives only when there are some).
     QList<DriveIdentity> drives;
+    /// false: the file records no controller gains ("controller": null), as an identification
+    /// from logs without a scenario writes it; jointNodes then give the joint count.
+    bool hasController = true;
     ControllerSettings controller; ///< the gains the parameters were identified with
     QDateTime created;             ///< stored in UTC to the millisecond
     QString toolVersion;           ///< LEARNID_VERSION of the writer
@@ -43,9 +50,19 @@ struct ParameterFileContent
     double condition = 0.0;              ///< cond(W^T W), columns scaled; +inf when rank deficient
     int rank = 0;                        ///< observable directions of the fit (0..m)
     QList<SdoWrite> canWrites;           ///< the exact writes "apply" performs, in order
+    /// The whole model as standard parameters (URDF robots, ChainModel's layout: 10 per link,
+    /// then each joint's terms, offsets included); empty when not recorded.
+    QList<ParameterInfo> standardParameters;
+    Eigen::VectorXd standardValues; ///< one per standardParameters entry, finite
+    /// Per standard parameter the share of its direction the data determined (0..1; at least
+    /// 0.5: determined by the data, below: kept from the prior); NaN where not known. Empty:
+    /// not known for any.
+    std::vector<double> standardDetermined;
 
     /// jointNodes, or 1..n when it is empty.
     QList<int> nodes() const;
+    /// The joint count: the controller's, or the nodes' when there is no controller.
+    int dof() const;
 };
 
 /// Checks the content against its model: known model and law, one name/value (and standard
@@ -58,9 +75,10 @@ void validateParameterFileContent(const ParameterFileContent &content);
 /// "checksum" (parameterFileChecksum()). Validates first; throws Error naming the key.
 QByteArray parameterFileToJson(const ParameterFileContent &content);
 
-/// Reads and checks a parameter file: schema, checksum, every key present with the right type
-/// (standardDeviation of all parameters or of none), no unknown keys, then
-/// validateParameterFileContent(). Throws Error "<sourceName>: <key path>: <problem>".
+/// Reads and checks a parameter file (schema 2, or 1 as older learnid versions wrote it): schema,
+/// checksum, every key present with the right type (standardDeviation of all parameters or of
+/// none), no unknown keys, then validateParameterFileContent(). Throws Error
+/// "<sourceName>: <key path>: <problem>".
 ParameterFileContent parameterFileFromJson(const QByteArray &json, const QString &sourceName);
 
 /// readFile() then parameterFileFromJson() with the path as the source name.
@@ -71,8 +89,9 @@ ParameterFileContent readParameterFile(const QString &path);
 QByteArray parameterFileChecksum(const QJsonObject &withoutChecksum);
 
 /// The CiA 306 DCF fragment for the drive of one joint (0-based): [DeviceComissioning] NodeID,
-/// [ManufacturerObjects], object 0x2100 (the joint's gains kp, ki, kd, lambda as REAL32) and
-/// object 0x2200 (all identified parameters as REAL32, sub0 = their count).
+/// [ManufacturerObjects], object 0x2100 (the joint's gains kp, ki, kd, lambda as REAL32; only
+/// when the file records a controller) and object 0x2200 (all identified parameters as REAL32,
+/// sub0 = their count).
 QByteArray parameterDcfFragment(const ParameterFileContent &content, int joint);
 
 /// The fragments of all joints, one after another, each starting with its comment lines and

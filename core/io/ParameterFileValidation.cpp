@@ -6,6 +6,7 @@
 #include "model/ModelFactory.h"
 
 #include <QCoreApplication>
+#include <cmath>
 
 namespace learnid {
 
@@ -29,6 +30,30 @@ void checkOptionalVector(const QString &path, const Eigen::VectorXd &values, Eig
         checkVector(path, values, expected, what, EntryRule::NonNegativeOrInfinite);
 }
 
+// The standard parameters: names, finite values, determined shares in [0, 1] or unknown.
+void validateStandard(const ParameterFileContent &c)
+{
+    const int p = int(c.standardParameters.size());
+    const QString perStandard = Text::tr("one per standard parameter");
+    checkLength(key("standardParameters"), c.standardValues.size(), p,
+                Text::tr("values, %1").arg(perStandard));
+    if (!c.standardDetermined.empty()) {
+        checkLength(key("standardParameters"), Eigen::Index(c.standardDetermined.size()), p,
+                    Text::tr("determined shares, %1").arg(perStandard));
+    }
+    for (int i = 0; i < p; ++i) {
+        const QString path = jsonIndexPath(key("standardParameters"), i);
+        if (c.standardParameters.at(i).name.isEmpty())
+            throwAtKey(jsonKeyPath(path, key("name")), Text::tr("must not be empty"));
+        checkFinite(jsonKeyPath(path, key("value")), c.standardValues[i]);
+        const double share = c.standardDetermined.empty() ? 0.0 : c.standardDetermined[size_t(i)];
+        if (!std::isnan(share) && !(share >= 0.0 && share <= 1.0)) {
+            throwAtKey(jsonKeyPath(path, key("determined")),
+                       Text::tr("must be a share from 0 to 1 or null, got %1").arg(share));
+        }
+    }
+}
+
 } // namespace
 
 QList<int> ParameterFileContent::nodes() const
@@ -39,6 +64,11 @@ QList<int> ParameterFileContent::nodes() const
     for (int j = 0; j < controller.dof(); ++j)
         n.append(j + 1);
     return n;
+}
+
+int ParameterFileContent::dof() const
+{
+    return hasController ? controller.dof() : int(jointNodes.size());
 }
 
 void validateParameterFileContent(const ParameterFileContent &c)
@@ -53,7 +83,11 @@ void validateParameterFileContent(const ParameterFileContent &c)
     // against itself; the paper's arm against its model.
     const bool urdf = isUrdfModel(c.robotModel);
     const auto model = urdf ? nullptr : makeRobotModel(c.robotModel);
-    const int n = urdf ? c.controller.dof() : model->dof();
+    if (!c.hasController && c.jointNodes.isEmpty()) {
+        throwAtKey(key("robot.jointNodes"),
+                   Text::tr("must give each joint's node when the file records no controller"));
+    }
+    const int n = urdf ? c.dof() : model->dof();
     const int m = urdf ? int(c.parameters.size()) : model->parameterCount();
     const QString perJoint = Text::tr("one per joint of %1").arg(c.robotModel);
 
@@ -69,16 +103,19 @@ void validateParameterFileContent(const ParameterFileContent &c)
     }
     if (!c.drives.isEmpty())
         checkLength(key("robot.drives"), c.drives.size(), n, perJoint);
-    validateControllerSettings(c.controller, n, key("controller"));
-    // The gains and the parameters go to the drives' REAL32 objects (the DCF fragment, apply).
-    const auto checkGains = [](const char *name, const Eigen::VectorXd &gains) {
-        for (int j = 0; j < int(gains.size()); ++j)
-            checkFitsReal32(jsonIndexPath(jsonKeyPath(key("controller"), key(name)), j), gains[j]);
-    };
-    checkGains("kp", c.controller.kp);
-    checkGains("ki", c.controller.ki);
-    checkGains("kd", c.controller.kd);
-    checkFitsReal32(key("controller.lambda"), c.controller.lambda);
+    if (c.hasController) {
+        validateControllerSettings(c.controller, n, key("controller"));
+        // The gains and the parameters go to the drives' REAL32 objects (the DCF fragment, apply).
+        const auto checkGains = [](const char *name, const Eigen::VectorXd &gains) {
+            for (int j = 0; j < int(gains.size()); ++j)
+                checkFitsReal32(jsonIndexPath(jsonKeyPath(key("controller"), key(name)), j),
+                                gains[j]);
+        };
+        checkGains("kp", c.controller.kp);
+        checkGains("ki", c.controller.ki);
+        checkGains("kd", c.controller.kd);
+        checkFitsReal32(key("controller.lambda"), c.controller.lambda);
+    }
     if (!c.created.isValid())
         throwAtKey(key("created"), Text::tr("must be a valid date and time"));
     if (c.toolVersion.isEmpty())
@@ -125,6 +162,8 @@ void validateParameterFileContent(const ParameterFileContent &c)
                 c.standardDeviations[i]);
         }
     }
+
+    validateStandard(c);
 
     checkOptionalVector(key("quality.maxTrackingErrorDeg"), c.maxTrackingErrorDeg, n, perJoint);
     checkOptionalVector(key("quality.rmsTrackingErrorDeg"), c.rmsTrackingErrorDeg, n, perJoint);

@@ -207,7 +207,7 @@ LogColumns parseLogColumns(const QString &spec)
 }
 
 RobotLog readRobotLog(const QByteArray &csv, const QString &source, int joints,
-                      const LogColumns &columns, const QList<bool> &angular)
+                      const LogColumns &columns, const QList<bool> &angular, StaleRows stale)
 {
     if (joints < 1)
         throw Error(Text::tr("%1: a log is read for 1 joint or more, not %2")
@@ -229,6 +229,8 @@ RobotLog readRobotLog(const QByteArray &csv, const QString &source, int joints,
     int headerLine = 0;
     std::vector<double> values; // sample after sample: t, q1..qn, [dq1..dqn], tau1..taun
     std::vector<double> row;
+    std::vector<double> lastRead; // the last row read (kept, stale or repeated): t, values
+    int lastLine = 0;
     for (int i = 0; i < int(lines.size()); ++i) {
         const int lineNumber = i + 1;
         QByteArray line = lines.at(i);
@@ -280,35 +282,43 @@ RobotLog readRobotLog(const QByteArray &csv, const QString &source, int joints,
             }
             row.push_back(v);
         }
-        if (!log.rows.empty()) {
-            const double *previous = values.data() + values.size() - row.size();
-            const int previousLine = log.rows.back();
+        if (!lastRead.empty()) {
+            // Compared with the last row read, kept or not: a stale or repeated row has the
+            // values of the last sample kept, and its time stamp still orders the rows.
             const int tc = layout.entries.first().field;
-            if (row.front() < previous[0]) {
+            if (row.front() < lastRead.front()) {
                 throwAtField(source, lineNumber, tc + 1, names.at(tc),
                              Text::tr("the times must increase from sample to sample, got %1 "
                                       "after %2 on line %3")
-                                 .arg(describeNumber(row.front()), describeNumber(previous[0]))
-                                 .arg(previousLine));
+                                 .arg(describeNumber(row.front()), describeNumber(lastRead.front()))
+                                 .arg(lastLine));
             }
-            if (row.front() == previous[0]) {
-                const auto differs = std::mismatch(row.begin(), row.end(), previous).first;
-                if (differs == row.end()) {
+            const auto differs = std::mismatch(row.begin() + 1, row.end(), lastRead.begin() + 1);
+            if (row.front() == lastRead.front()) {
+                if (differs.first == row.end()) {
                     ++log.repeatedSamples; // the logger wrote the sample twice
                     continue;
                 }
-                const int dc = layout.entries.at(int(differs - row.begin())).field;
+                const int dc = layout.entries.at(int(differs.first - row.begin())).field;
                 throwAtField(source, lineNumber, tc + 1, names.at(tc),
                              Text::tr("the time %1 repeats that of line %2 with other values "
                                       "(%3: %4 there, %5 here); only an exact repeat of a row is "
                                       "dropped")
                                  .arg(describeNumber(row.front()))
-                                 .arg(previousLine)
+                                 .arg(lastLine)
                                  .arg(QString::fromUtf8(names.at(dc)),
-                                      describeNumber(previous[differs - row.begin()]),
-                                      describeNumber(*differs)));
+                                      describeNumber(*differs.second),
+                                      describeNumber(*differs.first)));
+            }
+            if (differs.first == row.end() && stale == StaleRows::Drop) {
+                log.staleRows.push_back(lineNumber); // old values under a new time stamp
+                lastRead.front() = row.front();
+                lastLine = lineNumber;
+                continue;
             }
         }
+        lastRead = row;
+        lastLine = lineNumber;
         values.insert(values.end(), row.begin(), row.end());
         log.rows.push_back(lineNumber);
     }
@@ -326,10 +336,17 @@ RobotLog readRobotLog(const QByteArray &csv, const QString &source, int joints,
     const int width = int(layout.entries.size());
     const int samples = int(log.rows.size());
     if (samples < minimumSamples) {
+        const QString stale =
+            log.staleRows.empty()
+                ? QString()
+                : Text::tr(" (and %n stale row(s): values repeated under a new time stamp, "
+                           "treated as missing)",
+                           nullptr, log.staleSamples());
         throwAtLine(source, endLine,
-                    Text::tr("%1 samples after the header on line %2; a log needs at least %3")
+                    Text::tr("%1 samples after the header on line %2%3; a log needs at least %4")
                         .arg(samples)
                         .arg(headerLine)
+                        .arg(stale)
                         .arg(minimumSamples));
     }
     const Eigen::Map<const Eigen::MatrixXd> table(values.data(), width, samples);

@@ -41,7 +41,14 @@ constexpr double maxLoggedAngularVelocity = 100.0;
 /// byte order mark is skipped; numbers as QByteArray::toDouble reads them (C locale).
 ///
 /// A row with the same time as the sample before and the same values in every column read is a
-/// repeat the logger wrote twice: it is dropped and counted (RobotLog::repeatedSamples).
+/// repeat the logger wrote twice: it is dropped and counted (RobotLog::repeatedSamples). A row
+/// with a new time stamp but exactly the values of the sample before (every value read: q, dq if
+/// read, tau, all joints) is stale, a logger that sampled a state the controller had not updated:
+/// it is dropped too and its line kept in RobotLog::staleRows, so that the grid interpolates
+/// across it as across a missing sample (the gap rule of resampleUniform() then applies to the
+/// gap it leaves). Sensor noise makes exact repeats of every value vanishingly rare on a real
+/// robot; a noise-free log of a robot at rest looks stale too, and a rest longer than the
+/// gap allowed is then refused, the message naming the repeating lines.
 ///
 /// angular: one flag per joint, true for a revolute joint (empty: no unit check). For those,
 /// |q| beyond maxLoggedAngle or |dq| beyond maxLoggedAngularVelocity is refused as degrees.
@@ -49,11 +56,18 @@ constexpr double maxLoggedAngularVelocity = 100.0;
 /// Throws Error "<source>: ..." for joints < 1, angular of another size than joints, and columns
 /// that parseLogColumns() would refuse; "<source>: line <L>: ..." for the header (a missing or
 /// repeated column name, position columns for another number of joints than `joints`, velocities of
-/// some joints only), an empty file and fewer than 4 samples, and "<source>: line <L>, column <C>
+/// some joints only), an empty file and fewer than 4 samples (stale rows not counted), and
+/// "<source>: line <L>, column <C>
 /// (<name>): ..." for a wrong number of fields, a field that is not a finite number, a time that
 /// does not increase, a repeated time with other values, and degrees where radians are expected.
+/// What readRobotLog() does with stale rows: Drop them (a logger's log, the default), or Keep
+/// them as samples (a log that must hold every sample of a known grid, written by the controller
+/// itself: a noise-free simulation at rest repeats its values exactly, io/ControllerLogCsv.h).
+enum class StaleRows { Drop, Keep };
+
 RobotLog readRobotLog(const QByteArray &csv, const QString &source, int joints,
-                      const LogColumns &columns = {}, const QList<bool> &angular = {});
+                      const LogColumns &columns = {}, const QList<bool> &angular = {},
+                      StaleRows stale = StaleRows::Drop);
 
 /// readFile() then readRobotLog() with the path as the source; a missing or unreadable file
 /// throws Error naming the path and the reason.

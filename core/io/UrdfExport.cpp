@@ -3,6 +3,7 @@
 #include "model/Error.h"
 #include "model/PhysicalConsistency.h"
 #include "model/UrdfChain.h"
+#include "model/UrdfExtension.h"
 
 #include <QCoreApplication>
 #include <QDomDocument>
@@ -15,7 +16,8 @@
 #include <cmath>
 #include <utility>
 
-// The original document is edited, not regenerated: only <inertial> and <dynamics> change.
+// The original document is edited, not regenerated: only <inertial>, <dynamics> and learnid's
+// extension element (UrdfExtension.h) change.
 // The comment written into the file is not translated: it is part of the file, read by whoever
 // opens it next, as the DCF fragment's text is (ParameterDcf.cpp).
 
@@ -137,6 +139,11 @@ void checkJoint(const ChainJoint &joint, const InertialParameters &pi, const Ide
                              "viscous %3 and Coulomb %4")
                         .arg(source, joint.name, number(f.viscous), number(f.coulomb)));
     }
+    if (!(std::isfinite(f.armature) && f.armature >= 0.0 && std::isfinite(f.offset))) {
+        throw Error(Text::tr("%1: joint \"%2\": the armature must be finite and not negative and "
+                             "the offset finite, got armature %3 and offset %4")
+                        .arg(source, joint.name, number(f.armature), number(f.offset)));
+    }
 }
 
 // <inertial> of the body pi about its centre of mass c = h / m, axes as the link frame's:
@@ -193,6 +200,32 @@ void setDynamics(QDomDocument &doc, QDomElement joint, const IdentifiedJoint &f)
     dynamics.setAttribute(QStringLiteral("friction"), number(f.coulomb));
 }
 
+// learnid's element for armature and offset, after <dynamics>; written where either is not 0 or
+// the joint had one (a model without these terms then writes 0, which it used). Returns whether
+// the joint has one now.
+bool setExtension(QDomDocument &doc, QDomElement joint, const IdentifiedJoint &f)
+{
+    const QString tag = QLatin1String(urdfExtensionElement);
+    QDomElement e = joint.firstChildElement(tag);
+    if (e.isNull() && f.armature == 0.0 && f.offset == 0.0)
+        return false;
+    if (e.isNull()) {
+        e = doc.createElement(tag);
+        joint.insertAfter(e, joint.firstChildElement(QStringLiteral("dynamics")));
+    }
+    e.setAttribute(QStringLiteral("armature"), number(f.armature));
+    e.setAttribute(QStringLiteral("offset"), number(f.offset));
+    return true;
+}
+
+QString commentText(const QStringList &lines)
+{
+    QString text = QLatin1Char(' ') + lines.join(QLatin1String("\n     ")) + QLatin1Char(' ');
+    while (text.contains(QLatin1String("--"))) // not allowed in an XML comment
+        text.replace(QLatin1String("--"), QLatin1String("- -"));
+    return text;
+}
+
 QString fileComment(const QString &comment, const SerialChain &chain,
                     const std::vector<QStringList> &merged)
 {
@@ -208,14 +241,13 @@ QString fileComment(const QString &comment, const SerialChain &chain,
                          .arg(chain.joints[j].link, merged[j].join(QLatin1String(", ")));
     }
     lines << QStringLiteral("<dynamics damping> is the viscous friction [N m s/rad or N s/m],")
-          << QStringLiteral("friction the Coulomb friction [N m or N]. Torque offsets and armature")
-          << QStringLiteral("have no place in URDF: they are in the parameter file.");
+          << QStringLiteral("friction the Coulomb friction [N m or N]. URDF has no place for a")
+          << QStringLiteral("joint's rotor inertia and torque offset: learnid writes them as")
+          << QStringLiteral("<learnid:dynamics armature=\"kg m^2 or kg\" offset=\"N m or N\"/> in")
+          << QStringLiteral("the joint, an element other URDF parsers skip.");
     if (!comment.isEmpty())
         lines.prepend(comment);
-    QString text = QLatin1Char(' ') + lines.join(QLatin1String("\n     ")) + QLatin1Char(' ');
-    while (text.contains(QLatin1String("--"))) // not allowed in an XML comment
-        text.replace(QLatin1String("--"), QLatin1String("- -"));
-    return text;
+    return commentText(lines);
 }
 
 // Qt's DOM keeps attributes in a hash: written in name order, the output is the same every time.
@@ -264,7 +296,8 @@ void verifyWritten(const QByteArray &xml, const QString &source, const SerialCha
         const InertialParameters &pi = inertials[j];
         const ChainJoint &joint = read.joints.at(j);
         if ((joint.inertial - pi).cwiseAbs().maxCoeff() > 1e-9 * pi.cwiseAbs().maxCoeff() ||
-            joint.damping != friction[j].viscous || joint.friction != friction[j].coulomb) {
+            joint.damping != friction[j].viscous || joint.friction != friction[j].coulomb ||
+            joint.armature != friction[j].armature || joint.offset != friction[j].offset) {
             throw Error(Text::tr("%1: the identified URDF reads back with another body or "
                                  "friction at link \"%2\" than was written")
                             .arg(source, joint.link));
@@ -277,7 +310,8 @@ void verifyWritten(const QByteArray &xml, const QString &source, const SerialCha
 QByteArray identifiedUrdf(const QByteArray &originalXml, const QString &source,
                           const SerialChain &chain,
                           const std::vector<InertialParameters> &inertials,
-                          const std::vector<IdentifiedJoint> &friction, const QString &comment)
+                          const std::vector<IdentifiedJoint> &friction, const QString &comment,
+                          const QStringList &notes)
 {
     if (inertials.size() != chain.joints.size() || friction.size() != chain.joints.size()) {
         throw Error(Text::tr("%1: bodies for %2 and friction for %3 joints given, the chain has "
@@ -312,12 +346,19 @@ QByteArray identifiedUrdf(const QByteArray &originalXml, const QString &source,
     }
     const UrdfTree tree = indexTree(doc.documentElement());
     const std::vector<QStringList> merged = mergedLinks(tree, chain);
+    bool extended = false;
     for (int j = 0; j < chain.dof(); ++j) {
         const ChainJoint &joint = chain.joints[j];
         setInertial(tree.links.value(joint.link), inertialElement(doc, inertials[j]));
         for (const QString &link : merged[j])
             setInertial(tree.links.value(link));
         setDynamics(doc, tree.parentJoint.value(joint.link), friction[j]);
+        extended |= setExtension(doc, tree.parentJoint.value(joint.link), friction[j]);
+    }
+    if (extended) {
+        doc.documentElement().setAttribute(QStringLiteral("xmlns:") +
+                                               QLatin1String(urdfExtensionPrefix),
+                                           QLatin1String(urdfExtensionNamespace));
     }
 
     QByteArray xml;
@@ -326,6 +367,8 @@ QByteArray identifiedUrdf(const QByteArray &originalXml, const QString &source,
     out.setAutoFormattingIndent(2);
     out.writeStartDocument();
     out.writeComment(fileComment(comment, chain, merged));
+    if (!notes.isEmpty())
+        out.writeComment(commentText(notes));
     for (QDomNode node = doc.firstChild(); !node.isNull(); node = node.nextSibling())
         writeNode(out, node);
     out.writeEndDocument();

@@ -89,11 +89,15 @@ Eigen::VectorXd ChainModel::standardOf(const SerialChain &chain) const
     for (int k = 0; k < n; ++k) {
         const ChainJoint &joint = chain.joints[size_t(k)];
         pi.segment<10>(10 * k) = joint.inertial;
-        Eigen::Index at = 10 * n + Eigen::Index(k) * m_terms.count() + int(m_terms.armature);
+        Eigen::Index at = 10 * n + Eigen::Index(k) * m_terms.count();
+        if (m_terms.armature)
+            pi[at++] = joint.armature;
         if (m_terms.viscous)
             pi[at++] = joint.damping;
         if (m_terms.coulomb)
             pi[at++] = joint.friction;
+        if (m_terms.offset)
+            pi[at++] = joint.offset;
     }
     return pi;
 }

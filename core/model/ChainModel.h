@@ -13,10 +13,10 @@ namespace learnid {
 /// (BaseParameters.h): the regressor is the base regressor, the learning laws estimate phi.
 /// The standard parameters pi (p = 10 n + n terms.count()) are the links' inertia (10 per
 /// link) then each joint's terms in JointTerms' order. The CAD vector (from the chain: its
-/// inertia, the URDF's damping as viscous and friction as Coulomb friction, no armature or
-/// offset) is the prior that fills what the base parameters do not fix: dynamics from phi are
-/// evaluated with standardFromBase(phi), which gives the same torques as any pi with those base
-/// parameters.
+/// inertia, the URDF's damping as viscous and friction as Coulomb friction, armature and offset
+/// from learnid's URDF extension, 0 without it) is the prior that fills what the base parameters do
+/// not fix: dynamics from phi are evaluated with standardFromBase(phi), which gives the same
+/// torques as any pi with those base parameters.
 class ChainModel final : public RobotModel
 {
 public:
@@ -32,7 +32,8 @@ public:
     QList<ParameterInfo> standardParameters() const { return m_standardInfo; }
     const Eigen::VectorXd &cadStandard() const { return m_cad; }
     /// The standard vector of a chain with this model's joints (the CAD one, or a real robot's
-    /// URDF): its links' inertia, its URDF damping and friction as viscous and Coulomb terms.
+    /// URDF): its links' inertia, its URDF damping and friction as viscous and Coulomb terms,
+    /// armature and offset from learnid's URDF extension.
     /// Throws Error when the joint count differs.
     Eigen::VectorXd standardOf(const SerialChain &chain) const;
     /// Indices of the standard parameters that must not be negative (armature, friction).

@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <QCryptographicHash>
 #include <QFile>
+#include <QFileInfo>
 #include <QHash>
 #include <mutex>
 
@@ -85,7 +86,8 @@ std::shared_ptr<const RobotModel> makeRobotModel(const QString &id, const UrdfRo
         if (const auto found = cache.constFind(key); found != cache.constEnd())
             return found.value();
     }
-    SerialChain chain = parseUrdfChain(xml, path, urdf.baseLink, urdf.tipLink);
+    SerialChain chain =
+        parseUrdfChain(xml, path, urdf.baseLink, urdf.tipLink, QFileInfo(path).absolutePath());
     chain.gravity = urdf.gravity;
     auto model = std::make_shared<const ChainModel>(chain, urdf.jointTerms, id);
     const std::lock_guard<std::mutex> lock(cacheMutex);

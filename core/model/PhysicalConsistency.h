@@ -54,44 +54,4 @@ std::vector<LinkConsistency> checkConsistency(const Eigen::VectorXd &standard, i
 std::vector<int> negativeJointTerms(const Eigen::VectorXd &standard,
                                     const std::vector<int> &nonnegativeIndices);
 
-/// The result of nearestConsistentEstimate().
-struct ConsistentEstimate
-{
-    Eigen::VectorXd standard; ///< pi (p), consistent by construction
-    double cost = 0.0;        ///< ||A pi - b||^2 + w^2 ||D (pi - prior)||^2 at standard
-    int iterations = 0;       ///< Levenberg-Marquardt trial steps (linear solves)
-    int newtonSteps = 0;      ///< interior-point Newton steps of the start
-    bool converged = false;   ///< a stopping rule held before the iteration limit
-};
-
-/// The consistent standard vector nearest to the data and the prior:
-///   minimise ||A pi - b||^2 + w^2 ||D (pi - prior)||^2
-/// over every link's log-Cholesky parameters theta_l (pi's block l = inertialFromLogCholesky)
-/// and the joint terms: pi_i = s_i^2 for i in nonnegativeIndices (reaches 0, smooth; never
-/// negative), pi_i itself for the others. A is r x p, b (r) its targets (e.g. the data's
-/// weighted base-parameter rows), prior (p) the CAD vector, priorScale the diagonal of D (p,
-/// >= 0, e.g. 1/|prior_i| floored) and priorWeight w >= 0: the prior term keeps what A does not
-/// see at the prior. nonnegativeIndices must be joint terms (10 links <= i < p).
-///
-/// Levenberg-Marquardt over theta and s: analytic Jacobian, the Hessian J^T J plus the
-/// positive part of the second-order term (logCholeskyCurvature()), damping mu diag(J^T J),
-/// LLT, Nielsen's mu update; it stops when an accepted step lowers the cost by less than 1e-12
-/// of it, when the step is below 1e-12 of |x|, when the cost is 0 (converged), or after 200
-/// trial steps (converged = false). Its start is the optimum to within 1e-9 of the cost from
-/// an interior-point (log-barrier) Newton method in pi, where the problem is convex, begun at
-/// the cheaper of the prior and the unconstrained least-squares fit about it, each made
-/// strictly consistent (J's eigenvalues floored at 1e-2 lambda_max, nonnegative terms at 1e-2
-/// of their size). LM alone needs hundreds to thousands of steps, and can stop short, when
-/// the optimum lies on the boundary and the prior weight is small: theta then runs off to
-/// infinity along a curved valley. Boundary optima (a degenerate link, a term at 0) are
-/// approached, not reached: the result is strictly consistent.
-///
-/// Throws Error naming the argument (and the index) when a size does not match, an entry of
-/// A, b, prior or priorScale is not finite (or priorScale is negative), priorWeight is negative
-/// or not finite, an index is not a joint term, or a prior link has no positive mass.
-ConsistentEstimate nearestConsistentEstimate(const Eigen::MatrixXd &a, const Eigen::VectorXd &b,
-                                             const Eigen::VectorXd &prior,
-                                             const Eigen::VectorXd &priorScale, double priorWeight,
-                                             int links, const std::vector<int> &nonnegativeIndices);
-
 } // namespace learnid

@@ -41,7 +41,16 @@ struct ChainJoint
     double effortLimit = std::numeric_limits<double>::infinity();   ///< [N m] or [N]
     double damping = 0.0;  ///< the URDF's <dynamics damping> (viscous friction), 0 when absent
     double friction = 0.0; ///< the URDF's <dynamics friction> (Coulomb friction), 0 when absent
+    /// Rotor inertia as the joint sees it [kg m^2 or kg] and torque offset [N m or N]: learnid's
+    /// URDF extension element (UrdfExtension.h), 0 when absent.
+    double armature = 0.0;
+    double offset = 0.0;
     InertialParameters inertial = InertialParameters::Zero(); ///< the body it moves
+    /// The axis-aligned box around the body's URDF geometry (its collision shapes, else its
+    /// visual ones; links fixed to it included) in this joint's frame [m]; empty when it has
+    /// none that could be read. The plausibility rule's bounding volume (Plausibility.h).
+    Eigen::AlignedBox3d geometryBox;
+    QString geometryDescription; ///< what geometryBox was made of, e.g. "2 cylinders, 1 sphere"
 };
 
 /// A serial chain from a base to a tip: the moving joints in order, each joint frame placed in

@@ -1,9 +1,13 @@
 #include "model/UrdfChain.h"
 
 #include "model/Error.h"
+#include "model/MeshBounds.h"
+#include "model/UrdfExtension.h"
+#include "model/UrdfGeometry.h"
 
 #include <QCoreApplication>
 #include <QFile>
+#include <QFileInfo>
 #include <QStringList>
 #include <algorithm>
 #include <console_bridge/console.h>
@@ -82,11 +86,11 @@ InertialParameters linkInertial(const urdf::Link &link, const QString &source)
                               com.linear() * atCom * com.linear().transpose());
 }
 
-// Adds the inertia of every link fixed (directly or through other fixed joints) to `link`,
-// except the chain's next link, to `body`; `pose` places link's frame in the body's frame.
+// Adds the inertia and geometry of every link fixed (directly or through other fixed joints) to
+// `link`, except the chain's next link, to `body`; `pose` places link's frame in the body's frame.
 void mergeFixedChildren(const urdf::Link &link, const Eigen::Isometry3d &pose,
                         const urdf::Link *nextOnChain, const QString &source,
-                        InertialParameters &body)
+                        InertialParameters &body, BodyGeometry &geometry)
 {
     for (const urdf::LinkSharedPtr &child : link.child_links) {
         if (child.get() == nextOnChain || !child->parent_joint ||
@@ -96,7 +100,8 @@ void mergeFixedChildren(const urdf::Link &link, const Eigen::Isometry3d &pose,
         const Eigen::Isometry3d childPose =
             pose * toIsometry(child->parent_joint->parent_to_joint_origin_transform);
         body += transformedInertial(linkInertial(*child, source), childPose.inverse());
-        mergeFixedChildren(*child, childPose, nullptr, source, body);
+        geometry.addLink(*child, childPose);
+        mergeFixedChildren(*child, childPose, nullptr, source, body, geometry);
     }
 }
 
@@ -153,9 +158,11 @@ ChainJoint movingJoint(const urdf::Joint &joint, const urdf::Link &child,
 } // namespace
 
 SerialChain parseUrdfChain(const QByteArray &xml, const QString &source, const QString &baseLink,
-                           const QString &tipLink)
+                           const QString &tipLink, const QString &urdfDirectory)
 {
     const urdf::ModelInterfaceSharedPtr model = parse(xml, source);
+    const QHash<QString, JointExtension> extensions = readJointExtensions(xml, source);
+    const QStringList packagePath = rosPackagePath();
     const urdf::LinkConstSharedPtr base =
         baseLink.isEmpty() ? model->getRoot() : model->getLink(baseLink.toStdString());
     if (!base)
@@ -181,6 +188,7 @@ SerialChain parseUrdfChain(const QByteArray &xml, const QString &source, const Q
     chain.baseLink = qs(base->name);
     chain.tipLink = tipName;
     Eigen::Isometry3d pending = Eigen::Isometry3d::Identity(); // link frame in the body's frame
+    std::vector<BodyGeometry> geometry;                        // per moving joint
     for (size_t i = 0; i < path.size(); ++i) {
         const urdf::Link &link = *path[i];
         const urdf::Joint &joint = *link.parent_joint;
@@ -194,15 +202,24 @@ SerialChain parseUrdfChain(const QByteArray &xml, const QString &source, const Q
         switch (joint.type) {
         case urdf::Joint::FIXED:
             pending = origin;
-            if (!chain.joints.empty()) // links fixed to the base do not move
+            if (!chain.joints.empty()) { // links fixed to the base do not move
                 chain.joints.back().inertial +=
                     transformedInertial(linkInertial(link, source), pending.inverse());
+                geometry.back().addLink(link, pending);
+            }
             break;
         case urdf::Joint::REVOLUTE:
         case urdf::Joint::CONTINUOUS:
         case urdf::Joint::PRISMATIC:
             chain.joints.push_back(movingJoint(joint, link, origin, source));
             pending = Eigen::Isometry3d::Identity();
+            geometry.emplace_back(urdfDirectory, packagePath, source);
+            geometry.back().addLink(link, pending);
+            if (const auto e = extensions.constFind(chain.joints.back().name);
+                e != extensions.constEnd()) {
+                chain.joints.back().armature = e->armature;
+                chain.joints.back().offset = e->offset;
+            }
             break;
         default:
             throw Error(Text::tr("%1: joint \"%2\" is floating or planar: only revolute, "
@@ -211,8 +228,13 @@ SerialChain parseUrdfChain(const QByteArray &xml, const QString &source, const Q
         }
         if (!chain.joints.empty()) {
             const urdf::Link *next = i + 1 < path.size() ? path[i + 1].get() : nullptr;
-            mergeFixedChildren(link, pending, next, source, chain.joints.back().inertial);
+            mergeFixedChildren(link, pending, next, source, chain.joints.back().inertial,
+                               geometry.back());
         }
+    }
+    for (size_t j = 0; j < geometry.size(); ++j) {
+        chain.joints[j].geometryBox = geometry[j].box();
+        chain.joints[j].geometryDescription = geometry[j].description();
     }
     if (chain.joints.empty()) {
         throw Error(Text::tr("%1: no moving joint between link \"%2\" and link \"%3\"")
@@ -226,7 +248,7 @@ SerialChain readUrdfChain(const QString &path, const QString &baseLink, const QS
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         throw Error(Text::tr("%1: cannot read the URDF: %2").arg(path, file.errorString()));
-    return parseUrdfChain(file.readAll(), path, baseLink, tipLink);
+    return parseUrdfChain(file.readAll(), path, baseLink, tipLink, QFileInfo(path).absolutePath());
 }
 
 } // namespace learnid

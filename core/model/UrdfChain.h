@@ -15,12 +15,22 @@ namespace learnid {
 /// chain are not part of it. Links fixed to the base do not move and are dropped.
 /// Throws Error naming the file and, where the fault is, the link or joint: unreadable file,
 /// invalid URDF (with urdfdom's message), unknown link, tip not below base, a floating or
-/// planar joint on the chain, a mimic joint, a zero axis, a negative mass, or no moving joint.
+/// planar joint on the chain, a mimic joint, a zero axis, a negative mass, a shape of negative
+/// size (UrdfGeometry.h), a bad learnid extension element (UrdfExtension.h; naming line and
+/// column), or no moving joint.
+///
+/// Each joint also gets its body's geometry box (ChainJoint::geometryBox: the collision shapes,
+/// else the visual ones, of the links merged into it; meshes by their file's bounding box, found
+/// relative to the URDF's folder or through ROS_PACKAGE_PATH, skipped when they cannot be read)
+/// and its armature and torque offset from learnid's extension element (0 without one).
 SerialChain readUrdfChain(const QString &path, const QString &baseLink = {},
                           const QString &tipLink = {});
 
 /// The same from the URDF text; source names it in messages (a file path or "built-in ...").
+/// urdfDirectory: the folder relative mesh names (and package:// names, after
+/// ROS_PACKAGE_PATH) are looked for from; empty: relative mesh names are skipped.
 SerialChain parseUrdfChain(const QByteArray &xml, const QString &source,
-                           const QString &baseLink = {}, const QString &tipLink = {});
+                           const QString &baseLink = {}, const QString &tipLink = {},
+                           const QString &urdfDirectory = {});
 
 } // namespace learnid

@@ -1,6 +1,7 @@
 #include "service/LogIdentification.h"
 
 #include "io/AtomicFile.h"
+#include "model/ModelCheck.h"
 #include "model/ModelFactory.h"
 #include "model/UrdfChain.h"
 #include "session/EstimateConsistency.h"
@@ -47,14 +48,16 @@ private:
 };
 
 FilteredLog loadLog(const QString &path, const ChainModel &model,
-                    const LogIdentificationRequest &request)
+                    const LogIdentificationRequest &request, std::vector<LogReading> &readings)
 {
     QList<bool> angular; // revolute joints: a log in degrees is refused
     for (const ChainJoint &j : model.chain().joints)
         angular << (j.type == JointType::Revolute);
-    return filterLog(resampleUniform(readRobotLogFile(path, model.dof(), request.columns, angular),
-                                     request.resample),
-                     request.filter);
+    const RobotLog log = readRobotLogFile(path, model.dof(), request.columns, angular);
+    readings.push_back({path, log.samples(), log.repeatedSamples, log.staleSamples()});
+    ResampleOptions resample = request.resample;
+    resample.fitBandwidth = request.filter.rho; // the default gap allowed follows the filter
+    return filterLog(resampleUniform(log, resample), request.filter);
 }
 
 LogValidation validate(const ChainModel &model, const LogFit &fit, const FilteredLog &log)
@@ -105,8 +108,10 @@ LogRobot loadLogRobot(const LogIdentificationRequest &request)
         builtIn ? QCoreApplication::translate("LogIdentification", "built-in %1").arg(request.robot)
                 : QDir::toNativeSeparators(path);
     r.urdf = readFile(path);
-    r.chain = parseUrdfChain(r.urdf, r.source, request.baseLink, request.tipLink);
+    r.chain = parseUrdfChain(r.urdf, r.source, request.baseLink, request.tipLink,
+                             QFileInfo(path).absolutePath());
     r.model = std::make_shared<const ChainModel>(r.chain, request.terms, r.modelId);
+    r.warnings = modelWarnings(*r.model);
     return r;
 }
 
@@ -127,19 +132,19 @@ LogIdentificationResult run(const LogRobot &robot, const LogIdentificationReques
     const ChainModel &model = *robot.model;
     const int training = int(request.trainingLogs.size());
     const int validation = int(request.validationLogs.size());
+    LogIdentificationResult r;
     std::vector<FilteredLog> trainingLogs;
     for (int i = 0; i < training; ++i) {
         stages.begin(LogIdentificationStage::ReadTraining, i, training, request.trainingLogs[i]);
-        trainingLogs.push_back(loadLog(request.trainingLogs[i], model, request));
+        trainingLogs.push_back(loadLog(request.trainingLogs[i], model, request, r.readings));
     }
     std::vector<FilteredLog> validationLogs;
     for (int i = 0; i < validation; ++i) {
         stages.begin(LogIdentificationStage::ReadValidation, i, validation,
                      request.validationLogs[i]);
-        validationLogs.push_back(loadLog(request.validationLogs[i], model, request));
+        validationLogs.push_back(loadLog(request.validationLogs[i], model, request, r.readings));
     }
     stages.begin(LogIdentificationStage::Fit, 0, training, {});
-    LogIdentificationResult r;
     r.robot = robot;
     r.trainingLogs = request.trainingLogs;
     r.fit = fitLogs(model, trainingLogs, request.fit);

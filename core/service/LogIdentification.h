@@ -48,6 +48,9 @@ struct LogRobot
     QByteArray urdf; ///< the URDF as given
     SerialChain chain;
     std::shared_ptr<const ChainModel> model; ///< chain with the request's joint terms
+    /// What is wrong with the URDF's own values as a real robot's (modelWarnings()): the prior
+    /// is used all the same, the report lists them.
+    QStringList warnings;
 };
 
 /// One validation log predicted with the URDF as given and with the identified parameters. The
@@ -65,6 +68,15 @@ struct LogValidation
     Eigen::Index samples() const { return time.size(); }
 };
 
+/// How one log was read: the rows the reader dropped (io/RobotLogCsv.h).
+struct LogReading
+{
+    QString source;           ///< the log's path
+    Eigen::Index samples = 0; ///< the samples kept
+    int repeated = 0;         ///< rows written twice (the same time, the same values), dropped
+    int stale = 0; ///< stale rows (the values before under a new time stamp), treated as missing
+};
+
 /// What an identification from logs produced. Nothing of it is written anywhere until
 /// logExportFiles()/writeLogExport() is asked to.
 struct LogIdentificationResult
@@ -78,6 +90,7 @@ struct LogIdentificationResult
     bool consistent = false;
     QStringList undetermined; ///< names of the base parameters the logs leave undetermined
     std::vector<LogValidation> validation; ///< one per validation log, in order
+    std::vector<LogReading> readings;      ///< the training logs, then the validation logs
 
     const ChainModel &model() const { return *robot.model; }
 };
@@ -119,8 +132,9 @@ QStringList builtInUrdfRobots();
 LogRobot loadLogRobot(const LogIdentificationRequest &request);
 
 /// The pipeline of `learnid-cli identify` (bench/realdata.cpp): every log read
-/// (readRobotLogFile: revolute angles beyond 1.05 turns refused as degrees), resampled
-/// (resampleUniform) and filtered (filterLog), the training logs fitted together (fitLogs),
+/// (readRobotLogFile: revolute angles beyond 1.05 turns refused as degrees, stale rows dropped),
+/// resampled (resampleUniform; the default gap allowed follows request.filter.rho,
+/// defaultMaxGap()) and filtered (filterLog), the training logs fitted together (fitLogs),
 /// the validation logs predicted with the URDF as given and the fit (torqueFigures). observer
 /// hears of each stage as it begins; cancel (may be null) is read before each stage and once
 /// more at the end: when set, LogIdentificationCancelled is thrown. Throws Error for no
@@ -138,24 +152,25 @@ LogIdentificationResult identifyFromLogs(const LogIdentificationRequest &request
 /// What to export from an identification; an empty path leaves that file out.
 struct LogExportRequest
 {
-    QString parameterPath;         ///< the parameter file (JSON); its DCF fragment beside it
-    ControllerSettings controller; ///< the gains the parameter file records (logs do not say)
-    QString urdfPath;              ///< the robot's URDF with the identified bodies and friction
-    QString urdfComment;           ///< who made it and when, for the URDF's leading comment
+    QString parameterPath; ///< the parameter file (JSON); its DCF fragment beside it
+    /// The gains the parameter file records (logs do not say; a scenario may); none: the file
+    /// holds the model alone ("controller": null).
+    std::optional<ControllerSettings> controller;
+    QString urdfPath;    ///< the robot's URDF with the identified bodies and joint terms
+    QString urdfComment; ///< who made it and when, for the URDF's leading comment
 };
 
-/// The gains a parameter file records when nothing else says: the scenario defaults
-/// (docs/scenario.md), which are for two joints; nullopt for a robot with another count.
-std::optional<ControllerSettings> defaultExportController(int joints);
-
-/// The parameter file of the identified base parameters: robot.model the built-in id or "urdf",
-/// law "improved" (its filter prepares the logs), no source trial, the training residual, the
-/// fit's condition and rank, and the CAN writes of an apply to nodes 1..n.
+/// The parameter file of the identification: robot.model the built-in id or "urdf", nodes
+/// 1..n, the controller's gains when given, law "improved" (its filter prepares the logs), no
+/// source trial, the identified base parameters, the whole model as standard parameters
+/// (offsets included) with what the data determined (LogFit::standardDetermined), the
+/// training residual, the fit's condition and rank, and the CAN writes of an apply.
 ParameterFileContent logParameterFile(const LogIdentificationResult &result,
-                                      const ControllerSettings &controller);
+                                      const std::optional<ControllerSettings> &controller);
 
-/// The robot's URDF as given with each moving body the identified one and each joint's
-/// <dynamics> its identified viscous and Coulomb friction (0 for a term the model leaves out);
+/// The robot's URDF as given with each moving body the identified one, each joint's <dynamics>
+/// its identified viscous and Coulomb friction and learnid's element its armature and offset (0
+/// for a term the model leaves out), and a comment on what the data determined;
 /// identifiedUrdf() checks it reads back.
 QByteArray logIdentifiedUrdf(const LogIdentificationResult &result, const QString &comment);
 

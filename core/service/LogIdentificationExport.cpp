@@ -7,6 +7,7 @@
 #include "io/UrdfExport.h"
 #include "model/Error.h"
 #include "service/SessionExport.h"
+#include "service/StandardExport.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -14,43 +15,41 @@
 
 namespace learnid {
 
-std::optional<ControllerSettings> defaultExportController(int joints)
-{
-    const ControllerSettings defaults;
-    if (defaults.dof() != joints)
-        return std::nullopt;
-    return defaults;
-}
-
 ParameterFileContent logParameterFile(const LogIdentificationResult &result,
-                                      const ControllerSettings &controller)
+                                      const std::optional<ControllerSettings> &controller)
 {
     QStringList logs;
     for (const QString &log : result.trainingLogs)
         logs << QFileInfo(log).fileName();
     const LogFit &fit = result.fit;
+    const ChainModel &model = result.model();
     ParameterFileContent c;
     c.robotModel = result.robot.modelId;
     c.robotDescription =
         QCoreApplication::translate("LogIdentification", "%1 (%2), identified from the logs %3")
             .arg(result.robot.chain.name, result.robot.source, logs.join(QStringLiteral(", ")));
-    c.controller = controller;
+    c.hasController = controller.has_value();
+    if (controller)
+        c.controller = *controller;
+    for (int j = 0; j < model.dof(); ++j)
+        c.jointNodes.append(j + 1);
     c.created = QDateTime::currentDateTimeUtc();
     c.toolVersion = QStringLiteral(LEARNID_VERSION);
     c.law = QStringLiteral("improved"); // its zero-phase filter F(s) prepares the logs
-    c.parameters = result.model().parameters();
+    c.parameters = model.parameters();
     c.values = fit.base;
     c.residualRms = fit.trainingRms;
     c.condition = fit.condition;
     c.rank = fit.rank;
     c.canWrites = objects::parameterWriteSequence(c.nodes(), fit.base);
+    setStandardParameters(c, model, fit.standard, fit.standardDetermined);
     return c;
 }
 
 QByteArray logIdentifiedUrdf(const LogIdentificationResult &result, const QString &comment)
 {
     return urdfWithStandard(result.model(), result.robot.urdf, result.robot.source,
-                            result.fit.standard, comment);
+                            result.fit.standard, comment, result.fit.standardDetermined);
 }
 
 QList<QPair<QString, QByteArray>> logExportFiles(const LogIdentificationResult &result,
@@ -58,11 +57,11 @@ QList<QPair<QString, QByteArray>> logExportFiles(const LogIdentificationResult &
 {
     QList<QPair<QString, QByteArray>> files;
     if (!request.parameterPath.isEmpty()) {
-        if (request.controller.dof() != result.model().dof()) {
+        if (request.controller && request.controller->dof() != result.model().dof()) {
             throw Error(QCoreApplication::translate("LogIdentification",
                                                     "the controller gains the parameter file "
                                                     "records are for %1 joints, the robot has %2")
-                            .arg(request.controller.dof())
+                            .arg(request.controller->dof())
                             .arg(result.model().dof()));
         }
         const ParameterFileContent content = logParameterFile(result, request.controller);

@@ -10,6 +10,7 @@
 #include "model/Error.h"
 #include "model/ModelFactory.h"
 #include "service/SessionReport.h"
+#include "service/StandardExport.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -38,22 +39,15 @@ QString dcfPathFor(const QString &parameterPath)
 }
 
 QByteArray urdfWithStandard(const ChainModel &model, const QByteArray &xml, const QString &source,
-                            const Eigen::VectorXd &pi, const QString &comment)
+                            const Eigen::VectorXd &pi, const QString &comment,
+                            const std::vector<double> &determined)
 {
     const int n = model.dof();
-    const JointTerms &t = model.jointTerms();
     std::vector<InertialParameters> bodies(size_t(n), InertialParameters::Zero());
-    std::vector<IdentifiedJoint> friction(static_cast<size_t>(n));
-    for (int j = 0; j < n; ++j) {
+    for (int j = 0; j < n; ++j)
         bodies[size_t(j)] = pi.segment<10>(10 * j);
-        // pi: 10 n inertia entries, then per joint its terms in JointTerms' order.
-        Eigen::Index at = 10 * n + Eigen::Index(j) * t.count() + (t.armature ? 1 : 0);
-        if (t.viscous)
-            friction[size_t(j)].viscous = pi[at++];
-        if (t.coulomb)
-            friction[size_t(j)].coulomb = pi[at];
-    }
-    return identifiedUrdf(xml, source, model.chain(), bodies, friction, comment);
+    return identifiedUrdf(xml, source, model.chain(), bodies, urdfJointTerms(model, pi), comment,
+                          determinedNotes(model, pi, determined));
 }
 
 namespace {
@@ -63,7 +57,7 @@ namespace {
 // none (the parameter file's --consistent and the URDF export alike).
 EstimateConsistency consistencyWithNearest(const CommissioningSession &session, int k)
 {
-    const EstimateConsistency c = session.consistency(k);
+    const EstimateConsistency c = session.consistency(k, NearestEstimate::Always);
     if (!c.applicable || !c.nearestError.isEmpty()) {
         throw Error(QCoreApplication::translate("SessionExport",
                                                 "no consistent estimate near estimate %1: %2")
@@ -76,6 +70,19 @@ EstimateConsistency consistencyWithNearest(const CommissioningSession &session, 
     return c;
 }
 
+// Estimate k's standard parameters: completed by the CAD model (made real bodies), or, when a
+// consistent one is asked for, its nearest plausible estimate where there is one.
+Eigen::VectorXd standardOfEstimate(const CommissioningSession &session, const ChainModel &chain,
+                                   int k, const EstimateConsistency &c, bool consistent)
+{
+    // The nearest plausible estimate whenever there is one: a consistent estimate's CAD
+    // completion can still hold point masses and needles.
+    if (consistent && c.nearestStandard.size() > 0)
+        return c.nearestStandard;
+    return chain.base().standardFromBase(session.estimates().at(k),
+                                         realBodyPrior(chain.cadStandard(), chain.dof()));
+}
+
 QByteArray sessionUrdf(const CommissioningSession &session, int k, const QString &comment)
 {
     const auto *chain = dynamic_cast<const ChainModel *>(&session.model());
@@ -83,15 +90,12 @@ QByteArray sessionUrdf(const CommissioningSession &session, int k, const QString
         throw Error(
             QCoreApplication::translate("SessionExport", "only URDF robots have a URDF to export"));
     }
+    // Without a trial there is no path to weigh by: a consistent estimate's completion then.
     const EstimateConsistency c = consistencyWithNearest(session, k);
-    const Eigen::VectorXd pi =
-        c.consistent
-            ? chain->base().standardFromBase(session.estimates().at(k),
-                                             realBodyPrior(chain->cadStandard(), chain->dof()))
-            : c.nearestStandard;
+    const Eigen::VectorXd pi = standardOfEstimate(session, *chain, k, c, true);
     const Scenario &s = session.scenario();
     const QString source = urdfFileOf(s.model, s.urdf);
-    return urdfWithStandard(*chain, readFile(source), source, pi, comment);
+    return urdfWithStandard(*chain, readFile(source), source, pi, comment, c.standardDetermined);
 }
 
 } // namespace
@@ -106,11 +110,18 @@ QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &sessio
         request.estimateIndex >= 0 ? request.estimateIndex : int(session.estimates().size()) - 1;
     if (!request.parameterPath.isEmpty()) {
         ParameterFileContent content = parameterFileContent(session, k);
+        const auto *chain = dynamic_cast<const ChainModel *>(&session.model());
         if (request.nearestConsistent) {
             const EstimateConsistency c = consistencyWithNearest(session, k);
             content.values = c.nearest;
             content.standardDeviations.resize(0);
             content.canWrites = objects::parameterWriteSequence(content.nodes(), c.nearest);
+            setStandardParameters(content, *chain, standardOfEstimate(session, *chain, k, c, true),
+                                  c.standardDetermined);
+        } else if (chain) {
+            const EstimateConsistency c = session.consistency(k);
+            setStandardParameters(content, *chain, standardOfEstimate(session, *chain, k, c, false),
+                                  c.standardDetermined);
         }
         files.append({request.parameterPath, parameterFileToJson(content)});
         files.append({dcfPathFor(request.parameterPath), parameterDcfFragment(content)});

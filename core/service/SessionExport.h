@@ -27,10 +27,12 @@ struct ExportRequest
     QString urdfComment; ///< who made it and when, for the URDF's leading comment
 };
 
-/// The URDF xml (read from source) with the links and joint friction of standard parameters
-/// pi of model (ChainModel's layout): identifiedUrdf() with pi's bodies and friction.
+/// The URDF xml (read from source) with the links and joint terms of standard parameters pi of
+/// model (ChainModel's layout): identifiedUrdf() with pi's bodies, friction, armature and
+/// offsets, and determinedNotes() of the shares `determined` (empty: no such comment).
 QByteArray urdfWithStandard(const ChainModel &model, const QByteArray &xml, const QString &source,
-                            const Eigen::VectorXd &pi, const QString &comment);
+                            const Eigen::VectorXd &pi, const QString &comment,
+                            const std::vector<double> &determined = {});
 
 /// The files of a request, built in memory (path, content), so that the caller writes all or
 /// none (writeFilesAtomically). The one export path of the window and learnid-cli. Throws

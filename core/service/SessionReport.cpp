@@ -2,7 +2,10 @@
 
 #include "can/JointIdentity.h"
 #include "can/ManufacturerObjects.h"
+#include "model/CadPrior.h"
+#include "model/ChainModel.h"
 #include "model/Error.h"
+#include "service/StandardExport.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -25,6 +28,34 @@ QJsonArray toArray(const Eigen::VectorXd &v)
     for (Eigen::Index i = 0; i < v.size(); ++i)
         a.append(finiteOrNull(v[i]));
     return a;
+}
+
+// The final estimate's standard parameters (completed by the CAD model made real bodies) with
+// what the path determined (EstimateConsistency::standardDetermined; null when not known).
+QJsonArray standardReport(const CommissioningSession &session, const ChainModel &chain)
+{
+    const int k = int(session.estimates().size()) - 1;
+    const std::vector<double> determined = session.consistency(k).standardDetermined;
+    const Eigen::VectorXd pi = chain.base().standardFromBase(
+        session.currentEstimate(), realBodyPrior(chain.cadStandard(), chain.dof()));
+    const QList<ParameterInfo> info = chain.standardParameters();
+    QJsonArray list;
+    for (int i = 0; i < int(info.size()); ++i) {
+        const ParameterOrigin origin = parameterOrigin(determined, i);
+        QJsonObject o;
+        o.insert(QStringLiteral("name"), info.at(i).name);
+        o.insert(QStringLiteral("unit"), info.at(i).unit);
+        o.insert(QStringLiteral("value"), finiteOrNull(pi[i]));
+        o.insert(QStringLiteral("determined"), origin == ParameterOrigin::Unknown
+                                                   ? QJsonValue(QJsonValue::Null)
+                                                   : QJsonValue(determined[size_t(i)]));
+        o.insert(QStringLiteral("source"), origin == ParameterOrigin::Data ? QStringLiteral("data")
+                                           : origin == ParameterOrigin::Prior
+                                               ? QStringLiteral("prior")
+                                               : QStringLiteral("unknown"));
+        list.append(o);
+    }
+    return list;
 }
 
 } // namespace
@@ -71,6 +102,8 @@ QByteArray sessionReportJson(const CommissioningSession &session)
     QJsonObject finalEstimate;
     finalEstimate.insert(QStringLiteral("phi"), toArray(session.currentEstimate()));
     finalEstimate.insert(QStringLiteral("learningSteps"), int(estimates.size()) - 1);
+    if (const auto *chain = dynamic_cast<const ChainModel *>(&session.model()))
+        finalEstimate.insert(QStringLiteral("standardParameters"), standardReport(session, *chain));
     root.insert(QStringLiteral("final"), finalEstimate);
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }

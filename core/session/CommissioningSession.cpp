@@ -188,7 +188,7 @@ QString CommissioningSession::accept(int estimateIndex, bool nearestConsistent)
     }
     Eigen::VectorXd phi = m_estimates.at(estimateIndex);
     if (nearestConsistent) {
-        const EstimateConsistency c = consistency(estimateIndex);
+        const EstimateConsistency c = consistency(estimateIndex, NearestEstimate::Always);
         if (!c.applicable)
             return tr("only URDF robots have standard parameters to make consistent");
         if (!c.nearestError.isEmpty())
@@ -217,7 +217,7 @@ PathIdentifiability CommissioningSession::identifiability() const
                                m_scenario.estimator.rankTolerance);
 }
 
-EstimateConsistency CommissioningSession::consistency(int estimateIndex) const
+EstimateConsistency CommissioningSession::consistency(int estimateIndex, NearestEstimate when) const
 {
     if (estimateIndex < 0 || estimateIndex >= m_estimates.size())
         return {};
@@ -225,7 +225,7 @@ EstimateConsistency CommissioningSession::consistency(int estimateIndex) const
     if (!ran && !m_history.isEmpty())
         ran = &m_history.constLast();
     const JointTrajectory path = ran ? ran->plan().desired : JointTrajectory();
-    return checkEstimateConsistency(*m_model, m_estimates.at(estimateIndex), path);
+    return checkEstimateConsistency(*m_model, m_estimates.at(estimateIndex), path, when);
 }
 
 QString CommissioningSession::apply()

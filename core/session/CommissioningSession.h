@@ -69,15 +69,17 @@ public:
     void clearCancel() { m_cancel.store(false); }
 
     /// Accepts estimate k (1 .. estimates().size()-1) for apply, or with nearestConsistent the
-    /// nearest physically consistent estimate to it (consistency()). Returns an error or empty.
+    /// nearest plausible estimate to it (consistency() with NearestEstimate::Always). Returns an
+    /// error or empty.
     QString accept(int estimateIndex, bool nearestConsistent = false);
     /// What apply writes: the accepted estimate, or its nearest consistent one; empty when
     /// nothing is accepted.
     Eigen::VectorXd acceptedParameters() const;
-    /// Whether estimate k describes real bodies, and its nearest consistent estimate, weighted
-    /// by the torques on the path of the trial run with it (URDF robots; see
+    /// Whether estimate k describes real bodies, and (as `when` asks) its nearest plausible
+    /// estimate, weighted by the torques on the path of the trial run with it (URDF robots; see
     /// EstimateConsistency.h). Not applicable for other models or a k that does not exist.
-    EstimateConsistency consistency(int estimateIndex) const;
+    EstimateConsistency consistency(int estimateIndex,
+                                    NearestEstimate when = NearestEstimate::WhenInconsistent) const;
     std::optional<int> acceptedIndex() const { return m_accepted; }
     /// Writes the accepted estimate to the robot (all or nothing). Returns an error or empty.
     QString apply();

@@ -74,6 +74,9 @@ EstimateFigures estimateFigures(const RobotModel &model, const JointTrajectory &
     for (const LinkConsistency &l : verdict.links)
         if (!l.consistent)
             f.inconsistentGroups << standard.value(10 * l.link).group;
+    for (const LinkPlausibility &l : verdict.plausibility)
+        if (!l.plausible && verdict.links.at(size_t(l.link)).consistent)
+            f.implausibleGroups << standard.value(10 * l.link).group;
     for (const int i : verdict.negativeTerms)
         if (!f.inconsistentGroups.contains(standard.value(i).group))
             f.inconsistentGroups << standard.value(i).group;

@@ -42,6 +42,9 @@ struct EstimateFigures
     /// The ParameterInfo::group of every link that is no real body and every joint with a
     /// negative friction or rotor inertia, in the newest estimate.
     QStringList inconsistentGroups;
+    /// The group of every link that is a real body but not a plausible one (Plausibility.h): a
+    /// point mass, needle or plate, or its centre of mass outside its bounding volume.
+    QStringList implausibleGroups;
     QStringList consistencyLines; ///< EstimateConsistency::describe() of the newest estimate
 };
 

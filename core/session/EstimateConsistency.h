@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/PhysicalConsistency.h"
+#include "model/Plausibility.h"
 #include "model/RobotModel.h"
 #include "types/JointTrajectory.h"
 
@@ -24,12 +25,19 @@ struct EstimateConsistency
     std::vector<LinkConsistency> links; ///< per link, in chain order
     std::vector<int> negativeTerms;     ///< standard indices of negative friction or inertia
     bool consistent = true;             ///< every link and term as it should be
-    Eigen::VectorXd nearest;            ///< base parameters of the nearest consistent estimate
+    /// Per link, whether it is a body a robot could have (Plausibility.h), and whether all are.
+    std::vector<LinkPlausibility> plausibility;
+    bool plausible = true;
+    Eigen::VectorXd nearest; ///< base parameters of the nearest consistent estimate
     /// Standard parameters with those base parameters that are consistent (the witness; its
     /// unseen part near the CAD model); empty when phi is consistent or nothing was found.
     Eigen::VectorXd nearestStandard;
     double pathTorqueChangePercent = 0; ///< ||W_path (nearest - phi)|| / ||W_path phi|| * 100
     QString nearestError;               ///< why no nearest estimate could be found, or empty
+    /// Per standard parameter: the share of its own direction the path observes (0 to 1, as
+    /// LogFit::standardDetermined); at least 0.5 counts as determined by the trials, below as
+    /// kept from the CAD model. Empty when not known (no path).
+    std::vector<double> standardDetermined;
 
     /// One line per problem ("link 3 (lwr_3_link): ..."), or that the estimate is consistent.
     QStringList describe(const RobotModel &model) const;
@@ -40,10 +48,21 @@ struct EstimateConsistency
 EstimateConsistency checkStandardConsistency(const ChainModel &model,
                                              const Eigen::VectorXd &standard);
 
-/// Checks phi (base parameters of model) and, when it is not consistent, finds the nearest
-/// consistent estimate weighting parameter errors by the torque they cause on path (the
-/// desired trajectory of a trial). Never throws: a failure is in nearestError.
-EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eigen::VectorXd &phi,
-                                             const JointTrajectory &path);
+/// When checkEstimateConsistency() finds standard parameters for the estimate.
+enum class NearestEstimate {
+    WhenInconsistent, ///< only for an estimate that is not consistent (the pre-trial check)
+    Always, ///< always: what accept, apply and export offer (the CAD completion of a consistent
+            ///< estimate can still be a point mass or a needle)
+};
+
+/// Checks phi (base parameters of model) and, as `when` asks and a path is given, finds the
+/// nearest plausible estimate: standard parameters whose torques on path (the desired
+/// trajectory of a trial) are closest to phi's, each link kept near the CAD body by the
+/// geometric prior of plausibleEstimate() (docs/robots.md §6: what the path sees follows phi).
+/// Never throws: a failure is in nearestError.
+EstimateConsistency
+checkEstimateConsistency(const RobotModel &model, const Eigen::VectorXd &phi,
+                         const JointTrajectory &path,
+                         NearestEstimate when = NearestEstimate::WhenInconsistent);
 
 } // namespace learnid

@@ -1,8 +1,10 @@
 #include "session/ScenarioRobot.h"
 
+#include "model/CadPrior.h"
 #include "model/ChainModel.h"
 #include "model/ChainPerturbation.h"
 #include "model/Error.h"
+#include "model/ModelCheck.h"
 #include "model/UrdfChain.h"
 
 #include <QCoreApplication>
@@ -40,6 +42,14 @@ Eigen::VectorXd realRobotStandard(const Scenario &s, const ChainModel &model)
                             .arg(j + 1)
                             .arg(b.name));
         }
+    }
+    // A simulated robot must be one that could be built: the URDF's links real and plausible
+    // bodies, its friction dissipative (docs/robots.md §7).
+    const QStringList problems =
+        modelProblems(model, real, realBodyPrior(model.cadStandard(), model.dof()));
+    if (!problems.isEmpty()) {
+        throw Error(Text::tr("simulation.realUrdf: %1 is not a robot that could be built: %2")
+                        .arg(s.simulation.realUrdf, problems.join(QLatin1String("; "))));
     }
     return model.standardOf(real);
 }

@@ -12,7 +12,9 @@ namespace learnid {
 /// base parameters, empty simulation.trueParameters the simulated real robot's (its own URDF,
 /// simulation.realUrdf, or else the CAD robot perturbed by simulation.inertiaPerturbation with
 /// simulation.seed). Other models return the scenario unchanged. Throws Error naming the key
-/// when the URDF has no effort limit for a joint or the real robot's URDF does not fit.
+/// when the URDF has no effort limit for a joint or the real robot's URDF does not fit: other
+/// joints, or a robot that could not be built (modelProblems(): a link that is not a real or
+/// plausible body, a negative friction, damping or armature; each named).
 Scenario withRobotDefaults(const Scenario &scenario, const RobotModel &model);
 
 /// The simulated robot a scenario describes: its true parameters and measurement options.

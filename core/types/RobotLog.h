@@ -20,9 +20,15 @@ struct RobotLog
     std::vector<int> rows;
     /// Rows dropped because they repeated the previous time stamp with identical values.
     int repeatedSamples = 0;
+    /// The CSV line numbers of stale rows, in order: rows with a new time stamp whose values
+    /// (every one read) are exactly those of the sample before, a logger that sampled a state
+    /// the controller had not updated. They are dropped, so that the grid interpolates across
+    /// them as across missing samples (identify/UniformLog.h).
+    std::vector<int> staleRows;
 
     int dof() const { return int(q.rows()); }
     Eigen::Index samples() const { return t.size(); }
+    int staleSamples() const { return int(staleRows.size()); }
 };
 
 } // namespace learnid

@@ -1,6 +1,7 @@
 // End-to-end tests of the learnid-cli executable: what a user types, what it prints and writes.
 #include "../support/ToolRun.h"
 #include "io/ParameterFile.h"
+#include "io/ScenarioFile.h"
 
 #include <QDir>
 #include <QFile>
@@ -18,6 +19,7 @@ class TestCli : public QObject
 private slots:
     void printedScenario_runsLikeTheDefault();
     void run_writesReportParameterFileAndTrialCsv();
+    void urdfRobot_warnsAboutItsModelAndExportsItsStandardParameters();
     void paperEstimator_showsTableOneShape();
     void badInput_exitsWithMessageAndWritesNothing_data();
     void badInput_exitsWithMessageAndWritesNothing();
@@ -131,6 +133,62 @@ void TestCli::run_writesReportParameterFileAndTrialCsv()
         const int lines = csv.readAll().count('\n');
         QCOMPARE(lines, trials.at(k).toObject().value(QStringLiteral("samples")).toInt() + 1);
     }
+}
+
+void TestCli::urdfRobot_warnsAboutItsModelAndExportsItsStandardParameters()
+{
+    // The double pendulum, a URDF robot whose published link 2 has a negative inertia.
+    learnid::Scenario s;
+    s.model = QStringLiteral("double-pendulum");
+    s.torqueLimits.resize(0);
+    s.initialParameters.resize(0);
+    s.simulation.trueParameters.resize(0);
+    s.path.kind = learnid::PathKind::Waypoints;
+    s.path.waypoints = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1.2, -0.8), Eigen::Vector2d(0, 0)};
+    s.planningFraction = 0.5;
+    s.controller.kp = Eigen::Vector2d(20, 8);
+    s.controller.ki = Eigen::Vector2d(2, 1);
+    s.controller.kd = Eigen::Vector2d(1.5, 0.6);
+    s.controller.lambda = 1000;
+    s.maxTrackingErrorDeg = 5;
+    QTemporaryDir dir;
+    write(dir.filePath(QStringLiteral("pendulum.json")), learnid::scenarioToJson(s));
+    const Result r =
+        cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("pendulum.json"),
+             QStringLiteral("--iterations"), QStringLiteral("1"), QStringLiteral("--report"),
+             QStringLiteral("r.json"), QStringLiteral("--export"), QStringLiteral("p.json")},
+            dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    // A warning, not a refusal (docs/robots.md §7).
+    QVERIFY2(r.err.contains(QStringLiteral("learnid-cli: warning: the URDF as a real robot: link 2 "
+                                           "(link2): no mass distribution has its inertia")),
+             qPrintable(r.err));
+
+    // The report and the parameter file list the same standard parameters: 10 per link, then
+    // viscous and Coulomb friction per joint, each with where it came from.
+    const QJsonArray standard = readJson(dir.filePath(QStringLiteral("r.json")))
+                                    .value(QStringLiteral("final"))
+                                    .toObject()
+                                    .value(QStringLiteral("standardParameters"))
+                                    .toArray();
+    QCOMPARE(standard.size(), 24);
+    QFile params(dir.filePath(QStringLiteral("p.json")));
+    QVERIFY(params.open(QIODevice::ReadOnly));
+    const learnid::ParameterFileContent content =
+        learnid::parameterFileFromJson(params.readAll(), QStringLiteral("p.json"));
+    QCOMPARE(content.standardParameters.size(), 24);
+    for (int i = 0; i < 24; ++i) {
+        const QJsonObject o = standard.at(i).toObject();
+        QCOMPARE(o.value(QStringLiteral("name")).toString(), content.standardParameters.at(i).name);
+        QCOMPARE(o.value(QStringLiteral("value")).toDouble(), content.standardValues[i]);
+        const QJsonValue determined = o.value(QStringLiteral("determined"));
+        const QString source = o.value(QStringLiteral("source")).toString();
+        QCOMPARE(source, determined.isNull()            ? QStringLiteral("unknown")
+                         : determined.toDouble() >= 0.5 ? QStringLiteral("data")
+                                                        : QStringLiteral("prior"));
+    }
+    QCOMPARE(content.standardParameters.at(0).name.left(1), QStringLiteral("m"));
+    QVERIFY(content.standardValues[0] > 0.0);
 }
 
 // docs/method.md §2.1 and paper Table 1: after one learning, a within ~1 %, b about -25 %,

@@ -17,6 +17,7 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+#include <cmath>
 
 using namespace learnid;
 
@@ -80,6 +81,7 @@ class TestCliIdentify : public QObject
 private slots:
     void doublePendulum_printsTheLibrarysFiguresAndWritesItsFit();
     void kuka_identifiedModelPredictsTheHeldOutRunBetterThanItsUrdf();
+    void kuka_exportedUrdfAndParameterFileAloneReproduceThePrintedFigures();
     void plotsAndReport_drawEveryJointOfEveryValidationLog();
     void badInput_exitsWithMessageAndWritesNothing_data();
     void badInput_exitsWithMessageAndWritesNothing();
@@ -175,6 +177,75 @@ void TestCliIdentify::kuka_identifiedModelPredictsTheHeldOutRunBetterThanItsUrdf
     QVERIFY2(table.identifiedOverall.toDouble() < table.givenOverall.toDouble(), qPrintable(r.out));
 }
 
+void TestCliIdentify::kuka_exportedUrdfAndParameterFileAloneReproduceThePrintedFigures()
+{
+    const QString urdf = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
+    QStringList runs;
+    for (const char *name : {"measurements_1.csv", "measurements_2.csv", "measurements_3.csv"})
+        runs << test::sharedDataFile(QStringLiteral("kuka-lwr4/") + QLatin1String(name));
+    if (urdf.isEmpty() || runs.contains(QString()))
+        QSKIP(qPrintable(test::sharedDataMissing()));
+    // A 7-joint arm exports without --scenario: the parameter file holds the model alone.
+    QTemporaryDir dir;
+    const test::ToolRun r =
+        cli({QStringLiteral("identify"), QStringLiteral("--robot"), urdf, QStringLiteral("--log"),
+             runs[0], QStringLiteral("--log"), runs[1], QStringLiteral("--validate"), runs[2],
+             QStringLiteral("--export"), QStringLiteral("lwr.json"), QStringLiteral("--urdf-out"),
+             QStringLiteral("lwr.urdf"), QStringLiteral("--quiet")},
+            dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const ValidationTable table = readValidationTable(r.out);
+    QCOMPARE(table.jointRows, 7);
+    const double printed = table.identifiedOverall.toDouble();
+    QVERIFY2(printed > 0.0, qPrintable(r.out));
+    QVERIFY(r.out.contains(QLatin1String("standard parameters: the URDF's, the identified")));
+
+    // The exported URDF alone, read as a robot: its own values are the identified model,
+    // offsets included (learnid's extension element).
+    const JointTerms terms{false, true, true, true};
+    const QString written = dir.filePath(QStringLiteral("lwr.urdf"));
+    const ChainModel exported(readUrdfChain(written), terms, QStringLiteral("urdf"));
+    const FilteredLog run3 = loadLog(runs[2], exported, LogColumns{});
+    const double fromUrdf = 100.0 * torqueFigures(exported, exported.cadStandard(), run3).overall;
+    LEARNID_COMPARE_NEAR(fromUrdf, printed, 0.01);
+    // The offsets enter the prediction as the constants they are: F(s)F(-s) passes a constant
+    // unchanged, so the torque with and without them differs by each joint's offset.
+    SerialChain noOffsets = readUrdfChain(written);
+    for (ChainJoint &j : noOffsets.joints)
+        j.offset = 0.0;
+    const ChainModel withoutOffsets(noOffsets, terms, QStringLiteral("urdf"));
+    const Eigen::MatrixXd difference =
+        predictedTorque(exported, exported.cadStandard(), run3) -
+        predictedTorque(withoutOffsets, withoutOffsets.cadStandard(), run3);
+    for (int j = 0; j < 7; ++j) {
+        const double offset = exported.chain().joints[size_t(j)].offset;
+        LEARNID_COMPARE_NEAR(difference.row(j).minCoeff(), offset, 1e-9 + 1e-6 * std::abs(offset));
+        LEARNID_COMPARE_NEAR(difference.row(j).maxCoeff(), offset, 1e-9 + 1e-6 * std::abs(offset));
+    }
+
+    // The parameter file alone, with the robot's URDF as given: its standard parameters, and
+    // its base parameters, predict the same.
+    const ParameterFileContent params = readParameterFile(dir.filePath(QStringLiteral("lwr.json")));
+    QVERIFY(!params.hasController);
+    const ChainModel cad(readUrdfChain(urdf), terms, QStringLiteral("urdf"));
+    QCOMPARE(params.standardValues.size(), cad.standardCount());
+    LEARNID_COMPARE_NEAR(100.0 * torqueFigures(cad, params.standardValues, run3).overall, printed,
+                         0.01);
+    LEARNID_COMPARE_NEAR(100.0 *
+                             torqueFigures(cad, cad.standardFromBase(params.values), run3).overall,
+                         printed, 0.01);
+    // Both files carry the same offsets, the fit's.
+    for (int j = 0; j < 7; ++j) {
+        const int at = 70 + 3 * j + 2; // per joint: viscous, Coulomb, offset
+        QCOMPARE(params.standardParameters.at(at).name.left(2), QStringLiteral("τo"));
+        QCOMPARE(params.standardValues[at], exported.chain().joints[size_t(j)].offset);
+    }
+    int data = 0;
+    for (int i = 0; i < cad.standardCount(); ++i)
+        data += params.standardDetermined[size_t(i)] >= 0.5;
+    QVERIFY2(data > 0 && data < cad.standardCount(), qPrintable(QString::number(data)));
+}
+
 void TestCliIdentify::plotsAndReport_drawEveryJointOfEveryValidationLog()
 {
     QStringList files;
@@ -251,10 +322,10 @@ void TestCliIdentify::badInput_exitsWithMessageAndWritesNothing_data()
     QTest::newRow("unknown robot")
         << good << QStringList{QStringLiteral("--robot"), QStringLiteral("no-such-robot")} << 2
         << QStringList{QStringLiteral("--robot: 'no-such-robot' is neither a URDF file")};
-    // The parameter file records controller gains; the defaults are the paper arm's two.
-    QTest::newRow("gains for another robot")
-        << good << QStringList{QStringLiteral("--robot"), QStringLiteral("puma560")} << 2
-        << QStringList{QStringLiteral("--scenario FILE")};
+    // The parameter file records controller gains only from a scenario, which must be read.
+    QTest::newRow("missing gains scenario")
+        << good << QStringList{QStringLiteral("--scenario"), QStringLiteral("gains.json")} << 2
+        << QStringList{QStringLiteral("gains.json")};
 }
 
 void TestCliIdentify::badInput_exitsWithMessageAndWritesNothing()

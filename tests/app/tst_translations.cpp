@@ -30,6 +30,9 @@ private slots:
     void tsFile_everyMessageFinishedWithItsPlaceholders();
     void tsFiles_holdTheSameTexts();
     void tsFile_holdsExactlyTheTextsOfTheSources();
+    void pluralsFile_givesEveryPluralTextItsEnglishForms();
+    void installTranslators_englishPluralsUnderEveryLanguage_data();
+    void installTranslators_englishPluralsUnderEveryLanguage();
     void commandLineTools_speakTheSystemLanguage_data();
     void commandLineTools_speakTheSystemLanguage();
 
@@ -40,6 +43,7 @@ private:
         QString source;
         QString type;             ///< the translation's type attribute: "" when finished
         QStringList translations; ///< one, or the numerus forms
+        bool numerus = false;     ///< a text with %n and plural forms
     };
     static QList<TsMessage> readTs(const QString &path, QString *error);
     static bool installFromResource(const QString &qm);
@@ -154,7 +158,12 @@ QList<TestTranslations::TsMessage> TestTranslations::readTs(const QString &path,
         if (name == QLatin1String("name")) {
             context = xml.readElementText();
         } else if (name == QLatin1String("message")) {
-            messages.append({context, {}, {}, {}});
+            messages.append(
+                {context,
+                 {},
+                 {},
+                 {},
+                 xml.attributes().value(QLatin1String("numerus")) == QLatin1String("yes")});
         } else if (name == QLatin1String("source") && !messages.isEmpty()) {
             messages.last().source = xml.readElementText();
         } else if (name == QLatin1String("translation") && !messages.isEmpty()) {
@@ -271,6 +280,66 @@ void TestTranslations::tsFile_holdsExactlyTheTextsOfTheSources()
              qPrintable(QStringLiteral("in translations/*.ts but no longer in the sources (run "
                                        "the update_translations target): ") +
                         stale.join(QStringLiteral(" | "))));
+}
+
+void TestTranslations::pluralsFile_givesEveryPluralTextItsEnglishForms()
+{
+    // English needs a translation for its plurals only ("1 log", "2 logs"): every text with %n
+    // of the German file, and nothing else, with two finished forms and their placeholders.
+    QString error;
+    QSet<QString> plurals, english;
+    for (const TsMessage &m : readTs(tsPath(QStringLiteral("de")), &error)) {
+        if (m.numerus)
+            plurals.insert(m.context + QLatin1String(": ") + m.source);
+    }
+    const QList<TsMessage> messages = readTs(tsPath(QStringLiteral("plurals_en")), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QStringList problems;
+    for (const TsMessage &m : messages) {
+        english.insert(m.context + QLatin1String(": ") + m.source);
+        const bool finished = m.type.isEmpty() && m.numerus && m.translations.size() == 2;
+        if (!finished)
+            problems << m.source + QStringLiteral(": not two finished forms");
+        for (const QString &t : m.translations) {
+            if (placeholders(t) != placeholders(m.source))
+                problems << m.source + QStringLiteral(": placeholders differ in \"%1\"").arg(t);
+        }
+    }
+    QVERIFY(plurals.size() >= 10);
+    QCOMPARE(english, plurals);
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QStringLiteral("\n  "))));
+}
+
+void TestTranslations::installTranslators_englishPluralsUnderEveryLanguage_data()
+{
+    QTest::addColumn<QString>("locale");
+    QTest::addColumn<QString>("one");
+    QTest::addColumn<QString>("two");
+    QTest::newRow("C") << "C"
+                       << "Fitted to 1 log, %1 samples; %2."
+                       << "Fitted to 2 logs, %1 samples; %2.";
+    QTest::newRow("en_US") << "en_US"
+                           << "Fitted to 1 log, %1 samples; %2."
+                           << "Fitted to 2 logs, %1 samples; %2.";
+    QTest::newRow("fr_FR") << "fr_FR"
+                           << "Fitted to 1 log, %1 samples; %2."
+                           << "Fitted to 2 logs, %1 samples; %2.";
+    QTest::newRow("de_DE") << "de_DE"
+                           << "An 1 Log angepasst, %1 Abtastwerte; %2."
+                           << "An 2 Logs angepasst, %1 Abtastwerte; %2.";
+}
+
+void TestTranslations::installTranslators_englishPluralsUnderEveryLanguage()
+{
+    QFETCH(QString, locale);
+    QFETCH(QString, one);
+    QFETCH(QString, two);
+    const char *text = "Fitted to %n log(s), %1 samples; %2.";
+    QCOMPARE(QCoreApplication::translate("LogIdentificationSummary", text, nullptr, 1),
+             QStringLiteral("Fitted to 1 log(s), %1 samples; %2.")); // no translator: as written
+    learnid::installTranslators(*QCoreApplication::instance(), QLocale(locale));
+    QCOMPARE(QCoreApplication::translate("LogIdentificationSummary", text, nullptr, 1), one);
+    QCOMPARE(QCoreApplication::translate("LogIdentificationSummary", text, nullptr, 2), two);
 }
 
 void TestTranslations::commandLineTools_speakTheSystemLanguage_data()

@@ -3,11 +3,13 @@
 //   bits 0-1  joints - 1 (1 to 4)            bit 4  maxGap unbounded (+inf)
 //   bit 2     all joints revolute (unit check) bit 5  period 1 ms instead of the median step
 //   bit 3     useNominalTimes                  bit 6  the first line is a --columns spec
+//                                              bit 7  the fit's filter at 200 rad/s, not 50
 // The seeds start with a letter, so each has a --columns line: 'A' (0x41) two joints, 'E' the
 // same with the unit check, 'I' with nominal times, 'Q' with no gap limit, 'a' at 1 ms. Bad input
 // must end in a learnid::Error. An accepted log has consistent sizes, at least 4 samples, finite
-// values, strictly increasing times and increasing line numbers; resampling it either throws Error
-// or gives finite values on a grid within the log.
+// values, strictly increasing times and increasing line numbers, and its stale rows' lines
+// increase, lie after the first sample and are none of the samples'; resampling it either throws
+// Error or gives finite values on a grid within the log.
 
 #include "FuzzSupport.h"
 
@@ -15,6 +17,7 @@
 #include "io/RobotLogCsv.h"
 #include "model/Error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -39,6 +42,13 @@ void checkLog(const RobotLog &log, int joints)
                               QString::number(log.t[k], 'g', 17));
         if (log.rows[size_t(k)] <= log.rows[size_t(k) - 1])
             fuzz::fuzzFailure("the line numbers of an accepted log do not increase");
+    }
+    for (size_t i = 0; i < log.staleRows.size(); ++i) {
+        const int line = log.staleRows[i];
+        if ((i > 0 && line <= log.staleRows[i - 1]) || line <= log.rows.front() ||
+            std::binary_search(log.rows.begin(), log.rows.end(), line))
+            fuzz::fuzzFailure("the stale rows of an accepted log are not lines between samples",
+                              QString::number(line));
     }
 }
 
@@ -77,6 +87,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         options.maxGap = std::numeric_limits<double>::infinity();
     if (control & 0x20)
         options.period = 1e-3;
+    if (control & 0x80)
+        options.fitBandwidth = 200.0;
 
     LogColumns columns;
     if (control & 0x40) {

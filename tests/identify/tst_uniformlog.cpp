@@ -2,6 +2,7 @@
 #include "../io/IoTestSupport.h"
 #include "../support/NumericAssert.h"
 #include "../support/SharedData.h"
+#include "identify/LogSignals.h"
 #include "identify/UniformLog.h"
 #include "io/RobotLogCsv.h"
 
@@ -20,6 +21,9 @@ private slots:
     void jitteredSine_matchesTheFunctionWithinTheInterpolationBound();
     void gridOnTheStamps_takesTheSamplesBitForBit();
     void gap_isRefusedNamingTheLine();
+    void defaultGap_isHalfTheFilterTimeConstant_atLeastTwoSteps();
+    void gapAtTheBound_costsTheFilteredSignalWhatTheDerivationSays();
+    void staleRows_leaveAGap_refusedNamingThem();
     void repeatedRows_droppedByTheReader_resampleCleanly();
     void nominalTimes_takeSampleKAtT0PlusKT();
     void nominalTimes_refusedWhenASampleIsMissing();
@@ -129,22 +133,128 @@ void TestUniformLog::gridOnTheStamps_takesTheSamplesBitForBit()
 void TestUniformLog::gap_isRefusedNamingTheLine()
 {
     QByteArray csv = "t,q1,tau1\n";
-    for (int k = 0; k < 10; ++k)
-        csv += QByteArray::number(k < 5 ? k * 0.005 : 0.04 + k * 0.005) + ",0.1,1\n";
+    for (int k = 0; k < 10; ++k) {
+        csv += QByteArray::number(k < 5 ? k * 0.005 : 0.04 + k * 0.005) + ',' +
+               QByteArray::number(0.1 * k) + ",1\n";
+    }
     const RobotLog log = readRobotLog(csv, QStringLiteral("gap.csv"), 1);
+    // The default: half of 1 / (50 rad/s) is 10 ms, less than 2.5 of the log's 5 ms steps.
     LEARNID_VERIFY_ERROR(resampleUniform(log),
                          QStringLiteral("gap.csv: line 7: a gap of 45 ms after the sample at t = "
-                                        "0.02 s, more than the 25 ms allowed (--max-gap)"));
+                                        "0.02 s, more than the 12.5 ms allowed (--max-gap; by "
+                                        "default half the time constant 1/rho of the fit's "
+                                        "filter, rho = 50 rad/s, and at least 2.5 of the log's "
+                                        "steps)"));
     ResampleOptions options;
     options.maxGap = 0.05;
     QCOMPARE(resampleUniform(log, options).samples(), Eigen::Index(18));
     options.maxGap = 0.0;
-    options.period = 0.001; // the default gap is 5 of the log's steps, not of the grid's
-    LEARNID_VERIFY_ERROR(resampleUniform(log, options), QStringLiteral("the 25 ms allowed"));
+    options.fitBandwidth = 10.0; // a narrower filter: 50 ms
+    QCOMPARE(resampleUniform(log, options).samples(), Eigen::Index(18));
+    options.fitBandwidth = 50.0;
+    options.period = 0.001; // the default gap does not follow the grid's period
+    LEARNID_VERIFY_ERROR(resampleUniform(log, options), QStringLiteral("the 12.5 ms allowed"));
     options.maxGap = 0.01;
     LEARNID_VERIFY_ERROR(resampleUniform(log, options),
                          QStringLiteral("gap.csv: line 7: a gap of 45 ms after the sample at t = "
-                                        "0.02 s, more than the 10 ms allowed"));
+                                        "0.02 s, more than the 10 ms allowed (--max-gap)"));
+    options.maxGap = 0.0;
+    options.fitBandwidth = 0.0;
+    LEARNID_VERIFY_ERROR(resampleUniform(log, options),
+                         QStringLiteral("gap.csv: the fit's filter bandwidth rho (0 rad/s) must "
+                                        "be positive"));
+}
+
+void TestUniformLog::defaultGap_isHalfTheFilterTimeConstant_atLeastTwoSteps()
+{
+    QCOMPARE(defaultMaxGap(50.0, 0.001), 0.01);     // 1 kHz: 10 ms
+    QCOMPARE(defaultMaxGap(200.0, 0.0005), 0.0025); // a wider filter tolerates less
+    QCOMPARE(defaultMaxGap(50.0, 0.005), 0.0125);   // 200 Hz: one lost sample, jittered
+    QCOMPARE(defaultMaxGap(50.0, 0.0), 0.01);
+}
+
+void TestUniformLog::gapAtTheBound_costsTheFilteredSignalWhatTheDerivationSays()
+{
+    // x(t) = cos(w (t - tc)) at 1 kHz, the samples within a gap g around its peak tc lost, put
+    // back on the grid and filtered by F(s)F(-s) (rho = 50 rad/s) as the fit filters every
+    // signal. UniformLog.h: the filtered error is at most rho g^3 w^2 / 64 (the integral of the
+    // interpolation error, w^2 g^3 / 12, times the filter's peak 3 rho / 16), and nearly that
+    // at the peak of x, where x'' is largest.
+    const double rho = 50.0, period = 0.001, tc = 1.0;
+    const auto filteredError = [&](double w, int lostTicks) {
+        const int ticks = 2001;
+        RobotLog clean;
+        clean.source = QStringLiteral("cos.csv");
+        clean.t = Eigen::VectorXd::LinSpaced(ticks, 0.0, 2.0);
+        clean.q = (w * (clean.t.array() - tc)).cos().matrix().transpose();
+        clean.tau = clean.q;
+        RobotLog gapped = clean;
+        const int centre = 1000, first = centre - lostTicks / 2;
+        std::vector<Eigen::Index> kept;
+        for (Eigen::Index k = 0; k < ticks; ++k)
+            if (k < first || k >= first + lostTicks)
+                kept.push_back(k);
+        gapped.t = clean.t(kept);
+        gapped.q = clean.q(Eigen::all, kept);
+        gapped.tau = gapped.q;
+        ResampleOptions loose;
+        loose.maxGap = 1.0;
+        FilteredLog filter;
+        filter.rho = rho;
+        filter.period = period;
+        filter.q.resize(1, ticks); // keptSamples(): every sample, none cut
+        const UniformLog a = resampleUniform(clean, loose), b = resampleUniform(gapped, loose);
+        if (a.samples() != ticks || b.samples() != ticks)
+            return -1.0;
+        return (filter.rows(b.q.transpose()) - filter.rows(a.q.transpose())).cwiseAbs().maxCoeff();
+    };
+    // At the bound, g = 1 / (2 rho) = 10 ms (9 ticks lost), for a component at w = rho: the
+    // derivation's (rho g)^3 / 64 = 0.2 % of its amplitude.
+    const double g = 0.5 / rho, bound = rho * g * g * g * rho * rho / 64.0;
+    const double atTheCorner = filteredError(rho, 9);
+    QVERIFY2(atTheCorner <= bound && atTheCorner > 0.8 * bound,
+             qPrintable(QStringLiteral("%1 against %2").arg(atTheCorner).arg(bound)));
+    // A robot's motion at 1 Hz across the 8.5 ms gaps of a Panda's logger (8 ticks lost, 9 ms
+    // here): 2.4e-5 of its amplitude.
+    const double w1 = 2.0 * M_PI, g1 = 0.009, bound1 = rho * g1 * g1 * g1 * w1 * w1 / 64.0;
+    const double slow = filteredError(w1, 8);
+    QVERIFY2(slow <= bound1 && slow > 0.8 * bound1,
+             qPrintable(QStringLiteral("%1 against %2").arg(slow).arg(bound1)));
+    QVERIFY(bound1 < 3e-5);
+}
+
+void TestUniformLog::staleRows_leaveAGap_refusedNamingThem()
+{
+    // Lines 5 to 14 repeat line 4's values: the gap from t = 0.002 to 0.013 s is 11 ms.
+    QByteArray csv = "t,q1,tau1\n";
+    for (int k = 0; k < 20; ++k) {
+        const int value = k < 3 || k > 12 ? k : 2;
+        csv += QByteArray::number(k * 0.001) + ',' + QByteArray::number(0.01 * value) + ',' +
+               QByteArray::number(value) + '\n';
+    }
+    const RobotLog log = readRobotLog(csv, QStringLiteral("stale.csv"), 1);
+    QCOMPARE(log.staleSamples(), 10);
+    ResampleOptions options;
+    options.maxGap = 0.005;
+    LEARNID_VERIFY_ERROR(resampleUniform(log, options),
+                         QStringLiteral("stale.csv: line 15: a gap of 11 ms after the sample at "
+                                        "t = 0.002 s (lines 5 to 14 are stale: 10 rows that "
+                                        "repeated the values of line 4 under new time stamps and "
+                                        "count as missing), more than the 5 ms allowed "
+                                        "(--max-gap)"));
+    // Across the gap the grid interpolates: the values a steady motion would have had.
+    options.maxGap = 0.012;
+    const UniformLog uniform = resampleUniform(log, options);
+    QCOMPARE(uniform.samples(), Eigen::Index(20));
+    LEARNID_COMPARE_MATRIX(uniform.q, Eigen::RowVectorXd::LinSpaced(20, 0.0, 0.19), 1e-15);
+    // One stale row is named alone.
+    QByteArray one = "t,q1,tau1\n0,0,0\n0.001,0.01,1\n0.002,0.01,1\n0.003,0.03,3\n0.004,0.04,4\n";
+    options.maxGap = 0.0015;
+    LEARNID_VERIFY_ERROR(resampleUniform(readRobotLog(one, QStringLiteral("one.csv"), 1), options),
+                         QStringLiteral("one.csv: line 5: a gap of 2 ms after the sample at t = "
+                                        "0.001 s (line 4 is stale: it repeated the values of line "
+                                        "3 under a new time stamp and counts as missing), more "
+                                        "than the 1.5 ms allowed (--max-gap)"));
 }
 
 void TestUniformLog::repeatedRows_droppedByTheReader_resampleCleanly()

@@ -20,6 +20,8 @@ private slots:
     void withoutVelocityColumns_theLogHasNone();
     void commentsBlankLinesCrlfSpacesAndBom_areAccepted_lineNumbersKept();
     void repeatedRows_areDroppedAndCounted();
+    void staleRows_areDroppedAndListed_apartFromRepeats();
+    void staleRows_stillOrderTheTimes();
     void unitCheck_onlyForAngularPositionsAndVelocities();
     void columnsOption_readsKeysAndKeepsDefaults();
     void columnsOption_badSpec_namesTheKey_data();
@@ -74,7 +76,7 @@ void TestRobotLogCsv::defaultColumns_readByNameOthersIgnored()
 
 void TestRobotLogCsv::withoutVelocityColumns_theLogHasNone()
 {
-    const QByteArray csv = "t,q1,tau1\n0,1,2\n1,1,2\n2,1,2\n3,1,2\n";
+    const QByteArray csv = "t,q1,tau1\n0,1,2\n1,1.1,2\n2,1.2,2\n3,1.3,2\n";
     const RobotLog log = readRobotLog(csv, source, 1);
     QCOMPARE(log.dq.rows(), Eigen::Index(0));
     QCOMPARE(log.dq.cols(), Eigen::Index(0));
@@ -83,7 +85,7 @@ void TestRobotLogCsv::withoutVelocityColumns_theLogHasNone()
     // An empty velocity pattern reads none even when the log has them.
     LogColumns noVelocities;
     noVelocities.velocity.clear();
-    const QByteArray withDq = "t,q1,dq1,tau1\n0,1,0,2\n1,1,0,2\n2,1,0,2\n3,1,0,2\n";
+    const QByteArray withDq = "t,q1,dq1,tau1\n0,1,0,2\n1,1.1,0,2\n2,1.2,0,2\n3,1.3,0,2\n";
     QCOMPARE(readRobotLog(withDq, source, 1, noVelocities).dq.size(), Eigen::Index(0));
     QCOMPARE(readRobotLog(withDq, source, 1).dq.size(), Eigen::Index(4));
 }
@@ -122,6 +124,70 @@ void TestRobotLogCsv::repeatedRows_areDroppedAndCounted()
     QCOMPARE(log.rows, std::vector<int>({2, 3, 6, 7}));
 }
 
+void TestRobotLogCsv::staleRows_areDroppedAndListed_apartFromRepeats()
+{
+    const QByteArray csv = "t,q1,dq1,tau1\n"
+                           "0,1,0.5,2\n"
+                           "0.01,1.1,0.5,2.1\n"
+                           "0.02,1.1,0.5,2.1\n" // stale: line 3's values, a new time
+                           "0.03,1.1,0.5,2.1\n" // stale
+                           "0.03,1.1,0.5,2.1\n" // line 5 written twice: a repeat
+                           "0.04,1.2,0.5,2.2\n"
+                           "0.05,1.2,0.6,2.2\n" // only the velocity is new: not stale
+                           "0.06,1.3,0.6,2.3\n";
+    const RobotLog log = readRobotLog(csv, source, 1);
+    QCOMPARE(log.rows, std::vector<int>({2, 3, 7, 8, 9}));
+    QCOMPARE(log.staleRows, std::vector<int>({4, 5}));
+    QCOMPARE(log.staleSamples(), 2);
+    QCOMPARE(log.repeatedSamples, 1);
+    QVERIFY(bitEqual(
+        log.t, Eigen::VectorXd((Eigen::VectorXd(5) << 0, 0.01, 0.04, 0.05, 0.06).finished())));
+    QVERIFY(bitEqual(
+        log.dq, Eigen::RowVectorXd((Eigen::RowVectorXd(5) << 0.5, 0.5, 0.5, 0.6, 0.6).finished())));
+
+    // Without the velocities read, line 8 repeats every value read: stale too.
+    LogColumns noVelocities;
+    noVelocities.velocity.clear();
+    const RobotLog positions = readRobotLog(csv, source, 1, noVelocities);
+    QCOMPARE(positions.staleRows, std::vector<int>({4, 5, 8}));
+    QCOMPARE(positions.rows, std::vector<int>({2, 3, 7, 9}));
+    QCOMPARE(positions.repeatedSamples, 1);
+
+    // Kept on request (a controller's own log of a plan): every row a sample, the repeat too.
+    const RobotLog kept = readRobotLog(csv, source, 1, {}, {}, StaleRows::Keep);
+    QCOMPARE(kept.rows, std::vector<int>({2, 3, 4, 5, 7, 8, 9}));
+    QVERIFY(kept.staleRows.empty());
+    QCOMPARE(kept.repeatedSamples, 1);
+
+    // A joint whose values stay is not enough: every joint's must repeat.
+    const QByteArray twoJoints = "t,q1,q2,tau1,tau2\n0,1,2,3,4\n0.01,1,2,3,4.5\n"
+                                 "0.02,1,2.5,3,4.5\n0.03,1,2.5,3,4.5\n0.04,1,2.6,3,4.5\n";
+    const RobotLog two = readRobotLog(twoJoints, source, 2);
+    QCOMPARE(two.staleRows, std::vector<int>({5}));
+    QCOMPARE(two.samples(), Eigen::Index(4));
+}
+
+void TestRobotLogCsv::staleRows_stillOrderTheTimes()
+{
+    // A stale row's time stamp still counts: the next must be later.
+    const QByteArray back = "t,q1,tau1\n0,1,2\n0.01,1.1,2.1\n0.05,1.1,2.1\n0.03,1.2,2.2\n";
+    LEARNID_VERIFY_ERROR(readRobotLog(back, source, 1),
+                         QStringLiteral("log.csv: line 5, column 1 (t): the times must increase "
+                                        "from sample to sample, got 0.03 after 0.05 on line 4"));
+    // The same time as a stale row with other values is no repeat.
+    const QByteArray same = "t,q1,tau1\n0,1,2\n0.01,1.1,2.1\n0.02,1.1,2.1\n0.02,1.2,2.2\n";
+    LEARNID_VERIFY_ERROR(readRobotLog(same, source, 1),
+                         QStringLiteral("log.csv: line 5, column 1 (t): the time 0.02 repeats that "
+                                        "of line 4 with other values (q1: 1.1 there, 1.2 here)"));
+    // Samples are counted without the stale rows, and the message says how many there were.
+    const QByteArray few = "t,q1,tau1\n0,1,2\n0.01,1.1,2.1\n0.02,1.1,2.1\n0.03,1.1,2.1\n"
+                           "0.04,1.2,2.2\n";
+    LEARNID_VERIFY_ERROR(readRobotLog(few, source, 1),
+                         QStringLiteral("log.csv: line 7: 3 samples after the header on line 1 "
+                                        "(and 2 stale row(s): values repeated under a new time "
+                                        "stamp, treated as missing); a log needs at least 4"));
+}
+
 void TestRobotLogCsv::unitCheck_onlyForAngularPositionsAndVelocities()
 {
     // Joint 2 prismatic: 95 m is not degrees; torques are never checked; 6.5 rad is 1.03 turns.
@@ -129,7 +195,7 @@ void TestRobotLogCsv::unitCheck_onlyForAngularPositionsAndVelocities()
                            "0,6.5,95,-99,500,1000,0\n"
                            "1,-6.5,95,99,500,-1000,0\n"
                            "2,0,95,0,500,0,0\n"
-                           "3,0,95,0,500,0,0\n";
+                           "3,0.1,95,0,500,0,0\n";
     const RobotLog log = readRobotLog(csv, source, 2, {}, {true, false});
     QCOMPARE(log.q(1, 0), 95.0);
     QCOMPARE(log.tau(0, 0), 1000.0);
@@ -249,12 +315,12 @@ void TestRobotLogCsv::badInput_namesFileLineAndColumn_data()
         << "line 4, column 1 (t): the time 0.01 repeats that of line 3 with other values (q2: "
            "0.2 there, 0.3 here)";
     QTest::newRow("three samples")
-        << header + "0,0,0,0,0,0,0\n1,0,0,0,0,0,0\n2,0,0,0,0,0,0" << 2 << QList<bool>()
+        << header + "0,0,0,0,0,0,0\n1,1,0,0,0,0,0\n2,2,0,0,0,0,0" << 2 << QList<bool>()
         << "line 5: 3 samples after the header on line 1; a log needs "
            "at least 4";
     QTest::newRow("four rows, one a repeat")
-        << header + "0,0,0,0,0,0,0\n1,0,0,0,0,0,0\n1,0,0,0,0,0,0\n2,0,0,0,0,0,0\n"
-        << 2 << QList<bool>() << "line 6: 3 samples after the header on line 1";
+        << header + "0,0,0,0,0,0,0\n1,1,0,0,0,0,0\n1,1,0,0,0,0,0\n2,2,0,0,0,0,0\n"
+        << 2 << QList<bool>() << "line 6: 3 samples after the header on line 1; a log";
     QTest::newRow("degrees") << head + "0.01,0.1,95.5,0,0,1,2\n" + tail << 2 << revolute
                              << "line 3, column 3 (q2): 95.5 rad is more than 1.05 turns (6.60 "
                                 "rad); the log looks like it holds degrees, radians are expected";
@@ -299,6 +365,7 @@ void TestRobotLogCsv::kukaLogs_everyLineIsASample()
         QCOMPARE(log.dq.rows(), Eigen::Index(7));
         QCOMPARE(log.tau.cols(), log.samples());
         QCOMPARE(log.repeatedSamples, 0);
+        QCOMPARE(log.staleSamples(), 0);
         QCOMPARE(log.rows.front(), 2);
         QCOMPARE(log.rows.back(), int(log.samples()) + 1);
         QVERIFY(log.t[log.samples() - 1] > 25.0);
@@ -323,6 +390,8 @@ void TestRobotLogCsv::pendulumLogs_readThroughTheColumnsOption()
         QCOMPARE(log.samples(), Eigen::Index(nonEmptyLines(path) - 1));
         QCOMPARE(log.dq.cols(), log.samples());
         QVERIFY(log.t[log.samples() - 1] > 9.9);
+        // trajectory_00's rows 2 and 3 repeat positions and torques at rest, not the velocities.
+        QCOMPARE(log.staleSamples(), 0);
     }
     // Without the option the header does not name the time t; the long header is shortened.
     const QString path = test::sharedDataFile(QStringLiteral("double-pendulum/trajectory_00.csv"));

@@ -8,6 +8,7 @@
 #include <QFile>
 #include <QTest>
 #include <random>
+#include <urdf_parser/urdf_parser.h>
 
 using namespace learnid;
 using learnid::test::errorOf;
@@ -178,6 +179,7 @@ private slots:
     void fixedLinks_loseTheirInertialAndKeepTheirVisuals();
     void nonPhysicalBody_isRefusedNamingTheLink();
     void otherChainOrBadFriction_isRefused();
+    void armatureAndOffsets_inTheExtensionThatUrdfdomSkips();
 };
 
 void TestUrdfExport::kukaRandomBodies_readBackWithTheSameKinematics()
@@ -349,6 +351,64 @@ void TestUrdfExport::otherChainOrBadFriction_isRefused()
         errorOf([&] { identifiedUrdf(original, source, renamed, bodies, friction, {}); })
             .contains(QLatin1String(
                 "(j1, elbow) are not the URDF's from link \"world\" to link \"tool\" (j1, j2)")));
+}
+
+void TestUrdfExport::armatureAndOffsets_inTheExtensionThatUrdfdomSkips()
+{
+    const QByteArray original = kukaUrdf();
+    if (original.isEmpty())
+        QSKIP(qPrintable(test::sharedDataMissing()));
+    const SerialChain chain = parseUrdfChain(original, QStringLiteral("kuka_lwr4.urdf"));
+    std::mt19937 rng(11);
+    std::vector<IdentifiedJoint> terms = randomFriction(chain.dof(), rng);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (IdentifiedJoint &t : terms) {
+        t.armature = 0.1 * std::abs(unit(rng));
+        t.offset = 0.5 * unit(rng);
+    }
+    terms[2].armature = terms[2].offset = 0.0; // nothing to write there
+    const QStringList notes = {QStringLiteral("What the data determined: a test note")};
+    const QByteArray xml = identifiedUrdf(original, QStringLiteral("kuka_lwr4.urdf"), chain,
+                                          bodiesOf(chain), terms, QString(), notes);
+    QVERIFY(xml.contains(R"(xmlns:learnid="urn:learnid:urdf:1")"));
+    QCOMPARE(xml.mid(xml.indexOf("<robot")).count("<learnid:dynamics "), chain.dof() - 1);
+    QVERIFY(xml.left(xml.indexOf("<robot")).contains("What the data determined: a test note"));
+    // learnid reads them back exactly.
+    const SerialChain read = parseUrdfChain(xml, QStringLiteral("written"));
+    for (int j = 0; j < chain.dof(); ++j) {
+        QCOMPARE(read.joints[size_t(j)].armature, terms[size_t(j)].armature);
+        QCOMPARE(read.joints[size_t(j)].offset, terms[size_t(j)].offset);
+    }
+    // urdfdom itself (what KDL, pinocchio and MoveIt read with) accepts the file and skips the
+    // element: the same joints, dynamics and masses as learnid reads.
+    const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml.toStdString());
+    QVERIFY(model);
+    for (int j = 0; j < chain.dof(); ++j) {
+        const urdf::JointConstSharedPtr joint =
+            model->getJoint(chain.joints[size_t(j)].name.toStdString());
+        QVERIFY(joint && joint->dynamics);
+        QCOMPARE(joint->dynamics->damping, terms[size_t(j)].viscous);
+        QCOMPARE(joint->dynamics->friction, terms[size_t(j)].coulomb);
+    }
+    // Written again without these terms (a model without armature and offset): 0, not the old
+    // values, so the file says what that model used.
+    std::vector<IdentifiedJoint> plain = terms;
+    for (IdentifiedJoint &t : plain)
+        t.armature = t.offset = 0.0;
+    const QByteArray again =
+        identifiedUrdf(xml, QStringLiteral("written"), read, bodiesOf(read), plain, QString());
+    for (const ChainJoint &j : parseUrdfChain(again, QStringLiteral("again")).joints) {
+        QCOMPARE(j.armature, 0.0);
+        QCOMPARE(j.offset, 0.0);
+    }
+    // A negative armature is refused, naming the joint.
+    terms[1].armature = -0.01;
+    const QString error = errorOf([&] {
+        identifiedUrdf(original, QStringLiteral("kuka_lwr4.urdf"), chain, bodiesOf(chain), terms,
+                       QString());
+    });
+    QVERIFY2(error.contains(QLatin1String("joint \"lwr_1_joint\": the armature")),
+             qPrintable(error));
 }
 
 QTEST_GUILESS_MAIN(TestUrdfExport)

@@ -120,7 +120,7 @@ void TestLogIdentification::exports_areTheFitAndRefuseGainsOfAnotherRobot()
     QTemporaryDir dir;
     LogExportRequest request;
     request.parameterPath = dir.filePath(QStringLiteral("p.json"));
-    request.controller = *defaultExportController(2);
+    request.controller = ControllerSettings(); // the scenario defaults: two joints
     request.urdfPath = dir.filePath(QStringLiteral("r.urdf"));
     request.urdfComment = QStringLiteral("test");
     QCOMPARE(
@@ -131,7 +131,17 @@ void TestLogIdentification::exports_areTheFitAndRefuseGainsOfAnotherRobot()
     QCOMPARE(params.law, QStringLiteral("improved"));
     QCOMPARE(readUrdfChain(request.urdfPath).dof(), 2);
 
-    QVERIFY(!defaultExportController(7));
+    QVERIFY(params.hasController);
+    // Without gains the file holds the model alone: base and standard parameters.
+    request.controller.reset();
+    request.parameterPath = dir.filePath(QStringLiteral("model.json"));
+    request.urdfPath.clear();
+    writeLogExport(r, request);
+    const ParameterFileContent model = readParameterFile(request.parameterPath);
+    QVERIFY(!model.hasController);
+    QCOMPARE(model.jointNodes, (QList<int>{1, 2}));
+    LEARNID_COMPARE_MATRIX(model.standardValues, r.fit.standard, 0.0);
+    QCOMPARE(model.standardDetermined, r.fit.standardDetermined);
     ControllerSettings three;
     three.kp = three.ki = three.kd = Eigen::Vector3d(1, 1, 1);
     request.controller = three;

@@ -96,6 +96,7 @@ class TestChainSession : public QObject
 private slots:
     void urdfScenario_takesLimitsEstimateAndTruthFromTheRobot();
     void realUrdf_mustHaveTheRobotsJoints();
+    void realUrdf_ownCadOrImplausibleIdentified();
     void doublePendulum_learnsThePathTorquesFromThePerturbedCad();
     void kukaLwr4_learnsThePathTorquesOfSevenAxes();
     void panda_learnsThePathTorquesOfSevenAxes();
@@ -136,10 +137,55 @@ void TestChainSession::realUrdf_mustHaveTheRobotsJoints()
                      e.message().contains(QLatin1String("6 moving joints")),
                  qPrintable(e.message()));
     }
-    // Its own URDF as the real robot: the truth is the CAD.
+    // Its own URDF as the real robot is refused: link 2's published inertia (negative about
+    // the joint's own centre of mass) is no body, link 1 is a needle.
     s.simulation.realUrdf = QStringLiteral(":/robots/double-pendulum.urdf");
+    try {
+        withRobotDefaults(s, *model);
+        QFAIL("the double pendulum's negative inertia was accepted as a real robot");
+    } catch (const Error &e) {
+        QVERIFY2(e.message().startsWith(QLatin1String("simulation.realUrdf: :/robots/"
+                                                      "double-pendulum.urdf is not a robot that "
+                                                      "could be built: ")) &&
+                     e.message().contains(QLatin1String("link 2 (link2): no mass distribution "
+                                                        "has its inertia")) &&
+                     e.message().contains(QLatin1String("link 1 (link1): its smallest principal "
+                                                        "moment")),
+                 qPrintable(e.message()));
+    }
+}
+
+void TestChainSession::realUrdf_ownCadOrImplausibleIdentified()
+{
+    const QString cad = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
+    const QString flobaroid =
+        test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4_identified.urdf"));
+    if (cad.isEmpty() || flobaroid.isEmpty())
+        QSKIP(qPrintable(test::sharedDataMissing()));
+    Scenario s = doublePendulum();
+    s.model = QStringLiteral("urdf");
+    s.urdf.file = cad;
+    const auto model = makeRobotModel(s.model, s.urdf);
+    // The CAD robot as its own real robot: plausible, the truth is the CAD.
+    s.simulation.realUrdf = cad;
     const Scenario resolved = withRobotDefaults(s, *model);
     LEARNID_COMPARE_MATRIX(resolved.simulation.trueParameters, resolved.initialParameters, 0.0);
+    // FloBaRoID's identification: inertias no mass distribution has (written about the centre
+    // of mass, they break the triangle inequality) and negative Coulomb friction, each named.
+    s.simulation.realUrdf = flobaroid;
+    try {
+        withRobotDefaults(s, *model);
+        QFAIL("FloBaRoID's implausible URDF was accepted as a real robot");
+    } catch (const Error &e) {
+        const QString m = e.message();
+        QVERIFY2(m.startsWith(QLatin1String("simulation.realUrdf: ")) &&
+                     m.contains(QLatin1String("is not a robot that could be built")) &&
+                     m.contains(QLatin1String("link 1 (lwr_1_link): no mass distribution has "
+                                              "its inertia")) &&
+                     m.contains(QLatin1String("joint 4 (lwr_3_joint): <dynamics friction> is "
+                                              "-0.39, negative")),
+                 qPrintable(m));
+    }
 }
 
 void TestChainSession::doublePendulum_learnsThePathTorquesFromThePerturbedCad()

@@ -86,6 +86,11 @@ private slots:
                                       .arg(pandaModel().parameterCount())
                                       .arg(pandaModel().standardCount())),
                  qPrintable(summary));
+        // The URDF's own values as a real robot's, under the summary (docs/robots.md §7): the
+        // published Panda's link 2 is a flat plate.
+        QVERIFY2(summary.contains(QStringLiteral("\nWarning: link 2 (panda_link2): its principal "
+                                                 "moments")),
+                 qPrintable(summary));
         // The default path: the waypoints of scenarioForRobot, in degrees, a column per joint.
         const Scenario expected = scenarioForRobot(kPanda);
         const QTableWidget *table = form->waypointEditor()->table();
@@ -217,6 +222,19 @@ private slots:
                     c->estimates()[k][i]);
         }
         QVERIFY(figures.consistencyChecked);
+        // The Real body column: a link that is no real body, one that is not plausible, or one
+        // that is both, as the newest estimate's verdict says.
+        const int body = params->columnOf(ParameterTableModel::Column::Consistent);
+        for (int i = 0; i < m; ++i) {
+            const QString group = info[i].group, mark = params->index(i, body).data().toString();
+            if (group.isEmpty())
+                continue;
+            const QString expected =
+                figures.inconsistentGroups.contains(group)  ? QStringLiteral("\u2717 no")
+                : figures.implausibleGroups.contains(group) ? QStringLiteral("\u26a0 not plausible")
+                                                            : QStringLiteral("\u2713");
+            QCOMPARE(mark, expected);
+        }
 
         // The tracking plot: a joint each, selectable.
         TrackingErrorPlot *plot = f.window->plot();
@@ -241,6 +259,14 @@ private slots:
         const ParameterFileContent content = parameterFileFromJson(
             readFile(out.filePath(QStringLiteral("panda.json"))), QStringLiteral("panda.json"));
         QCOMPARE(content.values, c->estimates()[3]);
+        // The whole model: standard parameters with the estimate's base parameters, and what
+        // the trials determined of each where the session knows it.
+        QCOMPARE(int(content.standardParameters.size()), pandaModel().standardCount());
+        const Eigen::VectorXd fromStandard = pandaModel().baseFromStandard(content.standardValues);
+        QVERIFY2((fromStandard - c->estimates()[3]).norm() <= 1e-9 * c->estimates()[3].norm(),
+                 qPrintable(QString::number((fromStandard - c->estimates()[3]).norm())));
+        QVERIFY(content.standardDetermined.empty() ||
+                int(content.standardDetermined.size()) == pandaModel().standardCount());
 
         QVERIFY(f.window->actions()->exportUrdf->isEnabled());
         const QString urdf = out.filePath(QStringLiteral("panda-identified.urdf"));
@@ -252,6 +278,8 @@ private slots:
         // accepted estimate is consistent, else its nearest consistent estimate's).
         const SerialChain identified = readUrdfChain(urdf);
         QCOMPARE(identified.dof(), 7);
+        QCOMPARE(readFile(urdf).contains("What the data determined."),
+                 !content.standardDetermined.empty());
         const Eigen::VectorXd standard = pandaModel().standardOf(identified);
         for (const LinkConsistency &l : checkConsistency(standard, 7, 1e-9))
             QVERIFY2(l.consistent, qPrintable(QString::number(l.link)));

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "identify/LogFit.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace learnid {
+class ChainModel;
+}
+
+namespace learnid::cli {
+
+/// One row per standard parameter (ChainModel's layout): its link or joint, name and unit, the
+/// URDF's value, the identified one, the share of its direction the data determined and where it
+/// came from: "data" (share at least 0.5) or "prior" (kept near the URDF's value).
+QString parameterTable(const ChainModel &model, const LogFit &fit);
+
+/// The URDF's own values' problems as a real robot's (LogRobot::warnings), one "warning:" line
+/// each; empty without any.
+QString modelWarningText(const QStringList &warnings);
+
+} // namespace learnid::cli

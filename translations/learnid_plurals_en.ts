@@ -1,0 +1,175 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en">
+<context>
+    <name>LogIdentificationSummary</name>
+    <message numerus="yes">
+        <location filename="../core/service/LogIdentificationSummary.cpp" line="+26"/>
+        <source>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n stay near the URDF&apos;s values.</source>
+        <translation>
+            <numerusform>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n direction stays near the URDF&apos;s values.</numerusform>
+            <numerusform>Of the %1 standard parameters, any data could determine at most %2 combinations (the base parameters); these logs determine %3 of those %2 directions (condition %4), the other %n stay near the URDF&apos;s values.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12"/>
+        <source>%n of the %1 base parameters are mostly undetermined by these logs (less than half determined) and kept near the URDF&apos;s values: %2.</source>
+        <translation>
+            <numerusform>%n of the %1 base parameters is mostly undetermined by these logs (less than half determined) and kept near the URDF&apos;s values: %2.</numerusform>
+            <numerusform>%n of the %1 base parameters are mostly undetermined by these logs (less than half determined) and kept near the URDF&apos;s values: %2.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source>None of the %1 base parameters is mostly undetermined by these logs: the %n direction(s) they miss are shared among several.</source>
+        <translation>
+            <numerusform>None of the %1 base parameters is mostly undetermined by these logs: the %n direction they miss is shared among several.</numerusform>
+            <numerusform>None of the %1 base parameters is mostly undetermined by these logs: the %n directions they miss are shared among several.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n stale row(s) (values repeated under a new time stamp) treated as missing</source>
+        <translation>
+            <numerusform>%n stale row (values repeated under a new time stamp) treated as missing</numerusform>
+            <numerusform>%n stale rows (values repeated under a new time stamp) treated as missing</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n row(s) written twice (the same time stamp and values) dropped</source>
+        <translation>
+            <numerusform>%n row written twice (the same time stamp and values) dropped</numerusform>
+            <numerusform>%n rows written twice (the same time stamp and values) dropped</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+24"/>
+        <source>%1 in %2, %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1 in %2, %n moving joint.</numerusform>
+            <numerusform>%1 in %2, %n moving joints.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1 (built-in), %n moving joint(s).</source>
+        <translation>
+            <numerusform>%1 (built-in), %n moving joint.</numerusform>
+            <numerusform>%1 (built-in), %n moving joints.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Fitted to %n log(s), %1 samples; %2.</source>
+        <translation>
+            <numerusform>Fitted to %n log, %1 samples; %2.</numerusform>
+            <numerusform>Fitted to %n logs, %1 samples; %2.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>LogIdentificationText</name>
+    <message numerus="yes">
+        <location filename="../ui/LogIdentificationText.cpp" line="+36"/>
+        <source>Fitting the parameters to %n log(s)…</source>
+        <translation>
+            <numerusform>Fitting the parameters to %n log…</numerusform>
+            <numerusform>Fitting the parameters to %n logs…</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>PlausibleEstimate</name>
+    <message numerus="yes">
+        <location filename="../core/model/PlausibleEstimate.cpp" line="+190"/>
+        <source>%n Newton step(s)</source>
+        <translation>
+            <numerusform>%n Newton step</numerusform>
+            <numerusform>%n Newton steps</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>RobotLogCsv</name>
+    <message numerus="yes">
+        <location filename="../core/io/RobotLogCsv.cpp" line="+342"/>
+        <source> (and %n stale row(s): values repeated under a new time stamp, treated as missing)</source>
+        <translation>
+            <numerusform> (and %n stale row: values repeated under a new time stamp, treated as missing)</numerusform>
+            <numerusform> (and %n stale rows: values repeated under a new time stamp, treated as missing)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>learnid-cli</name>
+    <message numerus="yes">
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+130"/>
+        <source>fitting %1 standard parameters to %n log(s)</source>
+        <translation>
+            <numerusform>fitting %1 standard parameters to %n log</numerusform>
+            <numerusform>fitting %1 standard parameters to %n logs</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>learnid::FileController</name>
+    <message numerus="yes">
+        <location filename="../ui/FileController.cpp" line="+59"/>
+        <source>%n trial CSV file(s) written to %1</source>
+        <translation>
+            <numerusform>%n trial CSV file written to %1</numerusform>
+            <numerusform>%n trial CSV files written to %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/ReportContent.cpp" line="+42"/>
+        <source>Path: %n joint waypoint(s)</source>
+        <translation>
+            <numerusform>Path: %n joint waypoint</numerusform>
+            <numerusform>Path: %n joint waypoints</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>learnid::RobotChooser</name>
+    <message numerus="yes">
+        <location filename="../ui/RobotChooser.cpp" line="+174"/>
+        <source>%n revolute joint(s)</source>
+        <translation>
+            <numerusform>%n revolute joint</numerusform>
+            <numerusform>%n revolute joints</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n joint(s) (%1 prismatic)</source>
+        <translation>
+            <numerusform>%n joint (%1 prismatic)</numerusform>
+            <numerusform>%n joints (%1 prismatic)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>learnid::ScenarioForm</name>
+    <message numerus="yes">
+        <location filename="../ui/ScenarioForm.cpp" line="+138"/>
+        <source>Initial parameters (%n base parameter(s))</source>
+        <translation>
+            <numerusform>Initial parameters (%n base parameter)</numerusform>
+            <numerusform>Initial parameters (%n base parameters)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>learnid::SessionPresenter</name>
+    <message numerus="yes">
+        <location filename="../ui/ApplyPreview.cpp" line="+21"/>
+        <source>%n parameter(s)</source>
+        <translation>
+            <numerusform>%n parameter</numerusform>
+            <numerusform>%n parameters</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>
