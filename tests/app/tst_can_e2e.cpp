@@ -1,8 +1,9 @@
 // End to end over virtualcan: learnid-robot-sim and learnid-cli as two processes on a loopback
 // port of their own (or over socketcan on a vcan interface, see ../support/CanE2eBus.h). The CAN
-// session identifies what the simulated robot's session identifies; every fault the simulator
-// injects ends the run with a clear error, quickly, a non-zero exit code and the robot's stored
-// parameters unchanged; a recorded trial replays to the same estimate.
+// session identifies what the simulated robot's session identifies; a swapped node list is
+// refused before any motion (on socketcan: no NMT start, RPDO or SDO write on the bus); every
+// fault the simulator injects ends the run with a clear error, quickly, a non-zero exit code and
+// the robot's stored parameters unchanged; a recorded trial replays to the same estimate.
 #include "can/CandumpLog.h"
 
 #include "../support/CanE2eBus.h"
@@ -34,6 +35,12 @@ QJsonObject readJson(const QString &path)
     return QJsonDocument::fromJson(f.readAll()).object();
 }
 
+QByteArray readAll(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
 // The final estimate of a session report.
 QList<double> finalEstimate(const QString &reportPath)
 {
@@ -54,6 +61,7 @@ private slots:
     void initTestCase();
     void canSession_identifiesAsTheSimulatedRobot();
     void recordedTrials_replayToTheSameEstimate();
+    void swappedNodeList_refusedBeforeAnyMotion();
     void fault_endsWithClearErrorQuickly_data();
     void fault_endsWithClearErrorQuickly();
 
@@ -163,6 +171,61 @@ void TestCanE2e::recordedTrials_replayToTheSameEstimate()
     const Result replay = cli(args);
     QVERIFY2(replay.exitCode == 0, qPrintable(replay.err));
     QCOMPARE(finalEstimate(m_dir.filePath(QStringLiteral("replay.json"))), m_canEstimate);
+}
+
+void TestCanE2e::swappedNodeList_refusedBeforeAnyMotion()
+{
+    // The drives wired joint 1 = node 1, joint 2 = node 2 (the simulator's default); the master
+    // told --nodes 2,1, as the independent robot side of issue 24 found a session complete with
+    // a and c exchanged.
+    const quint16 port = test::canE2ePort();
+    const QString state = m_dir.filePath(QStringLiteral("swapped-state.json"));
+    test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+    QVERIFY(startRobot(robot, port, {QStringLiteral("--state"), state}));
+    const QByteArray stateBefore = readAll(state);
+    QVERIFY(!stateBefore.isEmpty());
+    QProcess candump; // on socketcan the whole bus is watched as well
+    if (test::canE2eOnSocketCan()) {
+        candump.setStandardOutputFile(m_dir.filePath(QStringLiteral("swapped-bus.log")));
+        candump.start(QStringLiteral("candump"),
+                      {QStringLiteral("-L"), test::canE2eInterface(port)});
+        QVERIFY(candump.waitForStarted());
+        QTest::qWait(300);
+    }
+    const Result r =
+        cli(canRun(port) + QStringList{QStringLiteral("--nodes"), QStringLiteral("2,1"),
+                                       QStringLiteral("--iterations"), QStringLiteral("2"),
+                                       QStringLiteral("--apply"), QStringLiteral("--can-log"),
+                                       QStringLiteral("swapped-logs")});
+    QVERIFY2(r.exitCode == 3, qPrintable(QString::number(r.exitCode) + r.err));
+    QVERIFY2(r.err.contains(QLatin1String("refused before any motion: node 2 is listed for joint 1 "
+                                          "but is the drive of joint 2")),
+             qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("--nodes 1,2")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("no files written")), qPrintable(r.err));
+    // No trial started: a trial's log begins with its NMT start; nothing stored on the drives.
+    QVERIFY(QDir(m_dir.filePath(QStringLiteral("swapped-logs"))).entryList(QDir::Files).isEmpty());
+    QCOMPARE(readAll(state), stateBefore);
+    if (!test::canE2eOnSocketCan())
+        return;
+    QTest::qWait(300);
+    candump.terminate();
+    QVERIFY(candump.waitForFinished(5000));
+    const QList<CandumpEntry> bus =
+        candump::readFile(m_dir.filePath(QStringLiteral("swapped-bus.log")));
+    QVERIFY(!bus.isEmpty()); // the identity reads (SDO 0x600 + node) at least
+    for (const CandumpEntry &e : bus) {
+        const quint32 id = e.frame.frameId();
+        // No NMT start (0x000, command 0x01), no RPDO (0x200 + node), and of the SDO requests
+        // (0x600 + node) only reads: client command 2 (initiate upload) or 3 (upload segment).
+        const QByteArray data = e.frame.payload();
+        QVERIFY2(!(id == 0 && data.startsWith('\x01')), "NMT start on the bus");
+        QVERIFY2(id < 0x200 || id > 0x27F, qPrintable(QString::number(id, 16)));
+        if (id > 0x600 && id <= 0x67F) {
+            const int command = quint8(data.at(0)) >> 5;
+            QVERIFY2(command == 2 || command == 3, qPrintable(data.toHex(' ')));
+        }
+    }
 }
 
 void TestCanE2e::fault_endsWithClearErrorQuickly_data()
