@@ -145,8 +145,11 @@ int runTrials(const QString &simPath, const QString &title, const QString &scena
     QElapsedTimer wait;
     wait.start();
     bool ready = false;
-    while (!ready && wait.elapsed() < 10000 && sim.waitForReadyRead(500))
-        ready = sim.readAll().contains("ready");
+    // Up to 30 s: in the VM of ../shared/tools/can-kernel the simulator needs seconds to start.
+    while (!ready && wait.elapsed() < 30000 && sim.state() != QProcess::NotRunning) {
+        if (sim.waitForReadyRead(500))
+            ready = sim.readAll().contains("ready");
+    }
     if (!ready) {
         std::fprintf(stderr, "learnid-bench-can: %s did not get ready\n", qPrintable(simPath));
         return -1;
