@@ -113,6 +113,170 @@
     </message>
 </context>
 <context>
+    <name>CanBus</name>
+    <message>
+        <location filename="../core/can/CanBusErrors.cpp" line="+30"/>
+        <location line="+51"/>
+        <source>bus off</source>
+        <translation>Bus aus (bus off)</translation>
+    </message>
+    <message>
+        <location line="-47"/>
+        <source>controller error passive (%1)</source>
+        <translation>Controller fehlerpassiv (%1)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>controller buffer overflow: frames were lost</source>
+        <translation>Pufferüberlauf im Controller: Frames gingen verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller error warning level</source>
+        <translation>Controller an der Fehlerwarnschwelle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller back to error active</source>
+        <translation>Controller wieder fehleraktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller problem (unspecified)</source>
+        <translation>Controllerproblem (nicht näher bezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>transmit timeout</source>
+        <translation>Sende-Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>protocol violation (type 0x%1, location 0x%2)</source>
+        <translation>Protokollverletzung (Typ 0x%1, Ort 0x%2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>transceiver error (0x%1)</source>
+        <translation>Transceiverfehler (0x%1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no acknowledgement (no other node on the bus?)</source>
+        <translation>keine Bestätigung (kein anderer Knoten am Bus?)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bus error</source>
+        <translation>Busfehler</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lost arbitration</source>
+        <translation>Arbitrierung verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller restarted</source>
+        <translation>Controller neu gestartet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error class 0x%1</source>
+        <translation>Fehlerklasse 0x%1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>error active</source>
+        <translation>fehleraktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error warning</source>
+        <translation>Fehlerwarnung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error passive</source>
+        <translation>fehlerpassiv</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>stopped</source>
+        <translation>gestoppt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../core/can/SocketCanInterface.cpp" line="+142"/>
+        <source>the CAN interface %1 does not exist (ip link show: is the adapter plugged in, its driver loaded?)</source>
+        <translation>die CAN-Schnittstelle %1 existiert nicht (ip link show: ist der Adapter eingesteckt, sein Treiber geladen?)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a CAN interface</source>
+        <translation>%1 ist keine CAN-Schnittstelle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 is down (as root: ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up)</source>
+        <translation>die CAN-Schnittstelle %1 ist nicht aktiv (als root: ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the CAN controller of %1 is %2 (as root: ip link set %1 down &amp;&amp; ip link set %1 up; check wiring and termination)</source>
+        <translation>der CAN-Controller von %1 ist %2 (als root: ip link set %1 down &amp;&amp; ip link set %1 up; Verkabelung und Abschluss prüfen)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>CAN FD (mtu %1)</source>
+        <translation>CAN FD (MTU %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN (mtu %1)</source>
+        <translation>CAN (MTU %1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bitrate %1 kbit/s</source>
+        <translation>Bitrate %1 kbit/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bitrate not readable</source>
+        <translation>Bitrate nicht lesbar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2, %3, %4</source>
+        <translation>%1: %2, %3, %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up</source>
+        <translation>aktiv</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>down</source>
+        <translation>nicht aktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, driver %1</source>
+        <translation>, Treiber %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, controller %1</source>
+        <translation>, Controller %1</translation>
+    </message>
+</context>
+<context>
     <name>CanOpen</name>
     <message>
         <location filename="../core/can/CanOpen.cpp" line="+51"/>
@@ -149,7 +313,7 @@
 <context>
     <name>CanRobot</name>
     <message>
-        <location filename="../core/canrobot/ApplySteps.cpp" line="+23"/>
+        <location filename="../core/canrobot/ApplySteps.cpp" line="+24"/>
         <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
         <translation>Knoten %1, Objekt %2: nach dem Schreiben von %4 (%5 %6) %3 zurückgelesen: nichts wurde gespeichert</translation>
     </message>
@@ -159,7 +323,7 @@
         <translation>CAN %1/%2, Knoten %3</translation>
     </message>
     <message>
-        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+43"/>
         <source>cannot create the CAN device %1/%2: %3</source>
         <translation>das CAN-Gerät %1/%2 kann nicht angelegt werden: %3</translation>
     </message>
@@ -195,17 +359,17 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+54"/>
+        <location line="+64"/>
         <source>node %1 is listed twice</source>
         <translation>Knoten %1 ist zweimal aufgeführt</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-57"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN-Zeitoptionen müssen positiv sein (Heartbeat-Periode höchstens 65535 ms)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+52"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; ist keine CANopen-Knoten-ID (1 bis 127)</translation>
     </message>
@@ -263,6 +427,36 @@
         <location line="+5"/>
         <source>at SYNC %1 (counter %2), %3 s after NMT start</source>
         <translation>bei SYNC %1 (Zähler %2), %3 s nach NMT-Start</translation>
+    </message>
+    <message>
+        <location filename="../core/canrobot/JointIdentityCheck.cpp" line="+23"/>
+        <source>node %1, object %2: the answer holds %3 bytes, 1 to 4 expected</source>
+        <translation>Knoten %1, Objekt %2: die Antwort enthält %3 Bytes, erwartet 1 bis 4</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>; the drives say --nodes %1</source>
+        <translation>; die Antriebe sagen --nodes %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>node %1 is listed for joint %2 but is the drive of joint %3 of this robot (0x2400:02 = %3): the node list does not match the wiring%4</source>
+        <translation>Knoten %1 ist für Gelenk %2 angegeben, ist aber der Antrieb von Gelenk %3 dieses Roboters (0x2400:02 = %3): die Knotenliste passt nicht zur Verdrahtung%4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>node %1 (joint %2) is not the drive the parameter file records for joint %2: it reports %3 (0x1018), the file holds %4</source>
+        <translation>Knoten %1 (Gelenk %2) ist nicht der Antrieb, den die Parameterdatei für Gelenk %2 verzeichnet: er meldet %3 (0x1018), die Datei enthält %4</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>node %1 (joint %2) has never been commissioned (0x2400 is 0), so learnid cannot check which joint it moves: make sure it is the drive of joint %2 (its identity: %3), then run with --commission (in the window: First commissioning); apply stores the joint identity</source>
+        <translation>Knoten %1 (Gelenk %2) wurde nie in Betrieb genommen (0x2400 ist 0), daher kann learnid nicht prüfen, welches Gelenk er bewegt: stellen Sie sicher, dass er der Antrieb von Gelenk %2 ist (seine Identität: %3), und starten Sie dann mit --commission (im Fenster: Erstinbetriebnahme); Anwenden speichert die Gelenkidentität</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>node %1 (joint %2) was commissioned for another robot (0x2400:01 = %3, this robot is %4): make sure it is the drive of joint %2 (%5), then run with --commission (in the window: First commissioning)</source>
+        <translation>Knoten %1 (Gelenk %2) wurde für einen anderen Roboter in Betrieb genommen (0x2400:01 = %3, dieser Roboter ist %4): stellen Sie sicher, dass er der Antrieb von Gelenk %2 ist (%5), und starten Sie dann mit --commission (im Fenster: Erstinbetriebnahme)</translation>
     </message>
 </context>
 <context>
@@ -1483,7 +1677,7 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
-        <location filename="../core/can/ManufacturerObjects.cpp" line="+117"/>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+119"/>
         <source>No node to write the parameters to.</source>
         <translation>Kein Knoten, in den die Parameter geschrieben werden können.</translation>
     </message>
@@ -1660,7 +1854,7 @@
         <translation>DCF-Fragment: Gelenk %1 existiert nicht; der Roboter hat %2 Gelenke</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+166"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+178"/>
         <source>must be given for every parameter or for none</source>
         <translation>muss für jeden Parameter oder für keinen angegeben sein</translation>
     </message>
@@ -1685,7 +1879,7 @@
         <translation>muss Datum und Uhrzeit wie 2024-05-01T12:00:00.000Z sein, gefunden: „%1“</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+71"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>fehlt; dies ist keine learnid-Parameterdatei</translation>
     </message>
@@ -1725,20 +1919,20 @@
         <translation>Knoten %1 ist zwei Gelenken zugeordnet</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>must be a valid date and time</source>
         <translation>muss ein gültiges Datum mit Uhrzeit sein</translation>
     </message>
     <message>
-        <location line="-71"/>
-        <location line="+73"/>
+        <location line="-73"/>
+        <location line="+75"/>
         <location line="+15"/>
         <location line="+5"/>
         <source>must not be empty</source>
         <translation>darf nicht leer sein</translation>
     </message>
     <message>
-        <location line="-103"/>
+        <location line="-105"/>
         <source>one per standard parameter</source>
         <translation>einer pro Standardparameter</translation>
     </message>
@@ -1758,7 +1952,7 @@
         <translation>muss den Knoten jedes Gelenks angeben, wenn die Datei keinen Regler festhält</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
@@ -1778,8 +1972,8 @@
         <translation>muss „%1“ sein (Parameter %2 von %3), gefunden: „%4“</translation>
     </message>
     <message>
-        <location line="-103"/>
-        <location line="+109"/>
+        <location line="-105"/>
+        <location line="+111"/>
         <source>values, %1</source>
         <translation>Werte, %1</translation>
     </message>
@@ -2641,7 +2835,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+115"/>
+        <location filename="../core/service/SessionReport.cpp" line="+116"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>Schätzung %1 existiert in dieser Sitzung nicht</translation>
     </message>
@@ -3251,8 +3445,10 @@
         <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+103"/>
-        <location line="+7"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+110"/>
+        <location line="+9"/>
+        <location line="+6"/>
+        <location line="+13"/>
         <location line="+12"/>
         <location line="+61"/>
         <location line="+44"/>
@@ -3284,7 +3480,7 @@
 %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+24"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+25"/>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
         <translation>--robot: muss &apos;sim&apos; oder &apos;can&apos; sein, gefunden: &apos;%1&apos;</translation>
     </message>
@@ -3306,6 +3502,16 @@
     </message>
     <message>
         <location line="+10"/>
+        <source>--can-drives: %1</source>
+        <translation>--can-drives: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--can-drives: %1 records no drives (robot.drives): export it from a session on CAN drives</source>
+        <translation>--can-drives: %1 verzeichnet keine Antriebe (robot.drives): exportieren Sie sie aus einer Sitzung mit CAN-Antrieben</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes: %1 in &apos;%2&apos;</translation>
     </message>
@@ -3315,7 +3521,7 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-158"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-185"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
@@ -3418,6 +3624,16 @@
         <location line="+3"/>
         <source>Write each trial&apos;s CAN frames as a candump log into DIR.</source>
         <translation>Die CAN-Frames jedes Versuchs als candump-Log nach DIR schreiben.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>First commissioning: you confirmed that each node is the drive of its joint (docs/can-protocol.md 2.4).</source>
+        <translation>Erstinbetriebnahme: Sie haben bestätigt, dass jeder Knoten der Antrieb seines Gelenks ist (docs/can-protocol.md 2.4).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A parameter file of this robot: its drives&apos; identities (0x1018) must match.</source>
+        <translation>Eine Parameterdatei dieses Roboters: die Identitäten seiner Antriebe (0x1018) müssen übereinstimmen.</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -3536,7 +3752,7 @@
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+17"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+18"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>Neu identifizieren aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
@@ -3563,11 +3779,6 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <location line="+18"/>
         <source>&apos;replay&apos; needs at least one --candump FILE</source>
         <translation>&apos;replay&apos; braucht mindestens ein --candump FILE</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>--iterations: %1 trials need %1 logs, %2 given</source>
-        <translation>--iterations: %1 Versuche brauchen %1 Logs, %2 angegeben</translation>
     </message>
     <message>
         <location filename="../app/cli/ResultTable.cpp" line="+39"/>
@@ -3665,7 +3876,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--nodes %1: %2 Knoten-IDs für einen Roboter mit %3 Gelenken: ein Knoten pro Gelenk ist nötig</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+66"/>
+        <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
+        <translation>--iterations: %1 Versuche brauchen %1 aufgezeichnete Versuche, die Logs enthalten %2</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
@@ -4216,11 +4432,16 @@ neue Schätzung.
     </message>
     <message>
         <location line="+3"/>
-        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default 3; raise it on a heavily loaded machine).</source>
-        <translation>SYNC-Perioden in Betrieb freigegeben ohne Sollwert, bevor ein Antrieb mit EMCY 0x8100 in Fehler geht (Standard 3; auf einem stark ausgelasteten Rechner erhöhen).</translation>
+        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default: 3 periods, at least 50 ms).</source>
+        <translation>SYNC-Perioden in Operation enabled ohne Sollwert, bevor ein Antrieb mit EMCY 0x8100 in Fehler geht (Standard: 3 Perioden, mindestens 50 ms).</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+7"/>
+        <source>Drives that were never commissioned: 0x2400 is 0 (by default joint j&apos;s drive holds the robot&apos;s identity and j).</source>
+        <translation>Antriebe, die nie in Betrieb genommen wurden: 0x2400 ist 0 (standardmäßig enthält der Antrieb von Gelenk j die Identität des Roboters und j).</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
@@ -4339,7 +4560,7 @@ neue Schätzung.
 <context>
     <name>learnid::CanConnection</name>
     <message>
-        <location filename="../core/canrobot/CanConnection.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanConnection.cpp" line="+34"/>
         <source>the CAN device %1 did not connect within %2 ms (is the bus or the robot side running?)</source>
         <translation>das CAN-Gerät %1 hat sich nicht innerhalb von %2 ms verbunden (läuft der Bus oder die Roboterseite?)</translation>
     </message>
@@ -4349,12 +4570,12 @@ neue Schätzung.
         <translation>kein CAN-Gerät für %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>cannot connect the CAN device %1: %2</source>
         <translation>das CAN-Gerät %1 kann nicht verbunden werden: %2</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+59"/>
         <source>no error reported (the other side may have exited)</source>
         <translation>kein Fehler gemeldet (die Gegenseite wurde vielleicht beendet)</translation>
     </message>
@@ -4364,7 +4585,57 @@ neue Schätzung.
         <translation>das CAN-Gerät %1 ist nicht mehr verbunden: %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
+        <source>the CAN device %1 reported an error frame: %2</source>
+        <translation>das CAN-Gerät %1 meldete einen Fehlerframe: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN device %1 reported %2 (error frame 0x%3 %4)</source>
+        <translation>das CAN-Gerät %1 meldete %2 (Fehlerframe 0x%3 %4)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the CAN interface %1 of %2 disappeared</source>
+        <translation>die CAN-Schnittstelle %1 von %2 ist verschwunden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 of %2 went down (ip link set %1 up brings it back)</source>
+        <translation>die CAN-Schnittstelle %1 von %2 wurde deaktiviert (ip link set %1 up aktiviert sie wieder)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN controller of %1 (%2) is %3</source>
+        <translation>der CAN-Controller von %1 (%2) ist %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>the CAN device %1 reports bus off</source>
+        <translation>das CAN-Gerät %1 meldet Bus aus (bus off)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN device %1 reports error passive</source>
+        <translation>das CAN-Gerät %1 meldet fehlerpassiv</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>the CAN device %1 reported a %2 error: %3</source>
+        <translation>das CAN-Gerät %1 meldete einen %2fehler: %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read</source>
+        <translation>Lese</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>write</source>
+        <translation>Schreib</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the CAN device %1 reported a connection error: %2</source>
         <translation>das CAN-Gerät %1 meldete einen Verbindungsfehler: %2</translation>
     </message>
@@ -4390,7 +4661,12 @@ neue Schätzung.
 <context>
     <name>learnid::CanRobotWorker</name>
     <message>
-        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+116"/>
+        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+110"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -4401,12 +4677,22 @@ neue Schätzung.
     </message>
     <message>
         <location line="+16"/>
-        <location line="+27"/>
+        <location line="+57"/>
         <source>stopped by the operator before the drives moved</source>
         <translation>vom Bediener gestoppt, bevor sich die Antriebe bewegten</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-52"/>
+        <source>refused before any motion: %1</source>
+        <translation>vor jeder Bewegung abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>reading the drives&apos; identity failed: %1</source>
+        <translation>das Lesen der Antriebsidentität schlug fehl: %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>configuring the drives failed, nothing moved: %1</source>
         <translation>Konfigurieren der Antriebe fehlgeschlagen, nichts hat sich bewegt: %1</translation>
     </message>
@@ -4421,7 +4707,12 @@ neue Schätzung.
         <translation>%1; die gespeicherten Parameter sind unverändert</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
+        <source>%1; nothing was stored (0x2200, 0x2400 and 0x1010 not written)</source>
+        <translation>%1; nichts wurde gespeichert (0x2200, 0x2400 und 0x1010 nicht geschrieben)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1; nichts wurde gespeichert (0x1010 nicht geschrieben)</translation>
     </message>
@@ -4434,7 +4725,7 @@ neue Schätzung.
 <context>
     <name>learnid::CandumpReplayDevice</name>
     <message>
-        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+38"/>
+        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+88"/>
         <source>Cannot write a frame: the replay is not connected.</source>
         <translation>Frame kann nicht geschrieben werden: die Wiedergabe ist nicht verbunden.</translation>
     </message>
@@ -4444,7 +4735,7 @@ neue Schätzung.
         <translation>Der Master schrieb %1 nach dem Ende des Logs.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
         <translation>Der Master schrieb %1, wo das Log %2 enthält (Log-Frame %3): der wiedergegebene Versuch weicht vom aufgezeichneten ab.</translation>
     </message>
@@ -5442,7 +5733,7 @@ Verhältnis %</translation>
         <translation>Das Speicher-CAN-Gerät %1 konnte den Frame nicht schreiben.</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>CAN error frame, error classes 0x%1.</source>
         <translation>CAN-Fehlerframe, Fehlerklassen 0x%1.</translation>
     </message>
@@ -6076,13 +6367,18 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RobotPanel</name>
     <message>
-        <location filename="../ui/RobotPanel.cpp" line="+22"/>
-        <location line="+100"/>
+        <location filename="../ui/RobotPanel.cpp" line="+24"/>
+        <source>First commissioning: I confirmed each node&apos;s joint on the arm</source>
+        <translation>Erstinbetriebnahme: Ich habe das Gelenk jedes Knotens am Arm geprüft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+109"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-91"/>
+        <location line="-99"/>
         <source>Simulated (the scenario&apos;s robot)</source>
         <translation>Simuliert (der Roboter des Szenarios)</translation>
     </message>
@@ -6108,6 +6404,11 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>10 SYNC periods, at least 50 ms</source>
+        <translation>10 SYNC-Perioden, mindestens 50 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
@@ -6117,7 +6418,12 @@ Verhältnis %</translation>
         <translation>Ein Versuch endet, wenn so lange kein SYNC eintrifft</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Only for drives never commissioned (or taken from another robot): tick it after checking on the arm that the drive of each node (its serial number on the type plate) moves the joint the node is listed for. Apply then stores the joint identity in the drives, and later sessions check it without this (docs/can-protocol.md 2.4).</source>
+        <translation>Nur für Antriebe, die nie in Betrieb genommen wurden (oder aus einem anderen Roboter stammen): erst ankreuzen, nachdem Sie am Arm geprüft haben, dass der Antrieb jedes Knotens (seine Seriennummer auf dem Typenschild) das Gelenk bewegt, für das der Knoten eingetragen ist. Anwenden speichert dann die Gelenkidentität in den Antrieben, und spätere Sitzungen prüfen sie ohne dieses Häkchen (docs/can-protocol.md 2.4).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Plugin:</source>
         <translation>Plugin:</translation>
     </message>
@@ -6137,6 +6443,11 @@ Verhältnis %</translation>
         <translation>SYNC-Zeitlimit:</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Drives:</source>
+        <translation>Antriebe:</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Robot:</source>
         <translation>Roboter:</translation>
@@ -6152,7 +6463,7 @@ Verhältnis %</translation>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>CAN nodes: %1</source>
         <translation>CAN-Knoten: %1</translation>
     </message>
@@ -6738,14 +7049,14 @@ Verhältnis %</translation>
     <name>learnid::TrialStreamer</name>
     <message>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
-        <location line="+90"/>
+        <location line="+91"/>
         <location line="+66"/>
         <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="-143"/>
+        <location line="-144"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 erreichte Betrieb freigegeben nicht innerhalb von %2 ms: meldet %3 (Statuswort 0x%4)</translation>
     </message>
@@ -6755,7 +7066,7 @@ Verhältnis %</translation>
         <translation>kein TPDO</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+76"/>
         <source>stopped by the operator %1</source>
         <translation>vom Bediener gestoppt %1</translation>
     </message>
@@ -6884,30 +7195,30 @@ Verhältnis %</translation>
 <context>
     <name>learnid::robotsim::SimProcess</name>
     <message>
-        <location filename="../app/robot-sim/SimProcess.cpp" line="+43"/>
+        <location filename="../app/robot-sim/SimProcess.cpp" line="+44"/>
         <source>learnid-robot-sim: stopping (%1)</source>
         <translation>learnid-robot-sim: wird beendet (%1)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+93"/>
+        <location line="+96"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>die CAN-Schnittstelle %1 mit Plugin %2 kann nicht verbunden werden: %3</translation>
     </message>
     <message>
-        <location line="-61"/>
-        <location line="+16"/>
+        <location line="-62"/>
+        <location line="+17"/>
         <location line="+75"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim: Fehler: %1</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-85"/>
         <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
         <translation>learnid-robot-sim: Fehler: das CAN-Gerät %1 mit Plugin %2 kann nicht angelegt werden: %3</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <location line="+58"/>
         <source>learnid-robot-sim: error: --state: %1</source>
         <translation>learnid-robot-sim: Fehler: --state: %1</translation>

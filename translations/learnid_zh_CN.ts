@@ -113,6 +113,170 @@
     </message>
 </context>
 <context>
+    <name>CanBus</name>
+    <message>
+        <location filename="../core/can/CanBusErrors.cpp" line="+30"/>
+        <location line="+51"/>
+        <source>bus off</source>
+        <translation>总线关闭 (bus off)</translation>
+    </message>
+    <message>
+        <location line="-47"/>
+        <source>controller error passive (%1)</source>
+        <translation>控制器错误被动 (%1)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>controller buffer overflow: frames were lost</source>
+        <translation>控制器缓冲区溢出：帧已丢失</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller error warning level</source>
+        <translation>控制器达到错误警告级别</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller back to error active</source>
+        <translation>控制器恢复为错误主动</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller problem (unspecified)</source>
+        <translation>控制器问题（未指明）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>transmit timeout</source>
+        <translation>发送超时</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>protocol violation (type 0x%1, location 0x%2)</source>
+        <translation>协议违规（类型 0x%1，位置 0x%2）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>transceiver error (0x%1)</source>
+        <translation>收发器错误 (0x%1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no acknowledgement (no other node on the bus?)</source>
+        <translation>无应答（总线上没有其他节点？）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bus error</source>
+        <translation>总线错误</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lost arbitration</source>
+        <translation>仲裁丢失</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller restarted</source>
+        <translation>控制器已重启</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error class 0x%1</source>
+        <translation>错误类别 0x%1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>error active</source>
+        <translation>错误主动</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error warning</source>
+        <translation>错误警告</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error passive</source>
+        <translation>错误被动</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>stopped</source>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location filename="../core/can/SocketCanInterface.cpp" line="+142"/>
+        <source>the CAN interface %1 does not exist (ip link show: is the adapter plugged in, its driver loaded?)</source>
+        <translation>CAN 接口 %1 不存在（ip link show：适配器是否已插入、驱动是否已加载？）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a CAN interface</source>
+        <translation>%1 不是 CAN 接口</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 is down (as root: ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up)</source>
+        <translation>CAN 接口 %1 未启用（以 root 运行：ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the CAN controller of %1 is %2 (as root: ip link set %1 down &amp;&amp; ip link set %1 up; check wiring and termination)</source>
+        <translation>%1 的 CAN 控制器处于 %2（以 root 运行：ip link set %1 down &amp;&amp; ip link set %1 up；请检查接线和终端电阻）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>CAN FD (mtu %1)</source>
+        <translation>CAN FD (mtu %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN (mtu %1)</source>
+        <translation>CAN (mtu %1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bitrate %1 kbit/s</source>
+        <translation>比特率 %1 kbit/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bitrate not readable</source>
+        <translation>比特率不可读</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2, %3, %4</source>
+        <translation>%1：%2，%3，%4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up</source>
+        <translation>已启用</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>down</source>
+        <translation>未启用</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, driver %1</source>
+        <translation>，驱动 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, controller %1</source>
+        <translation>，控制器 %1</translation>
+    </message>
+</context>
+<context>
     <name>CanOpen</name>
     <message>
         <location filename="../core/can/CanOpen.cpp" line="+51"/>
@@ -149,7 +313,7 @@
 <context>
     <name>CanRobot</name>
     <message>
-        <location filename="../core/canrobot/ApplySteps.cpp" line="+23"/>
+        <location filename="../core/canrobot/ApplySteps.cpp" line="+24"/>
         <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
         <translation>节点 %1，对象 %2：写入 %4（%5 %6）后回读为 %3：未存储任何内容</translation>
     </message>
@@ -159,7 +323,7 @@
         <translation>CAN %1/%2，节点 %3</translation>
     </message>
     <message>
-        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+43"/>
         <source>cannot create the CAN device %1/%2: %3</source>
         <translation>无法创建 CAN 设备 %1/%2：%3</translation>
     </message>
@@ -195,17 +359,17 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+54"/>
+        <location line="+64"/>
         <source>node %1 is listed twice</source>
         <translation>节点 %1 被列出两次</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-57"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN 定时选项必须为正（心跳周期最多 65535 ms）</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+52"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; 不是 CANopen 节点 ID（1 到 127）</translation>
     </message>
@@ -263,6 +427,36 @@
         <location line="+5"/>
         <source>at SYNC %1 (counter %2), %3 s after NMT start</source>
         <translation>于 SYNC %1（计数器 %2），NMT 启动后 %3 s</translation>
+    </message>
+    <message>
+        <location filename="../core/canrobot/JointIdentityCheck.cpp" line="+23"/>
+        <source>node %1, object %2: the answer holds %3 bytes, 1 to 4 expected</source>
+        <translation>节点 %1，对象 %2：应答含 %3 字节，应为 1 至 4 字节</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>; the drives say --nodes %1</source>
+        <translation>；驱动器给出的是 --nodes %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>node %1 is listed for joint %2 but is the drive of joint %3 of this robot (0x2400:02 = %3): the node list does not match the wiring%4</source>
+        <translation>节点 %1 被列为关节 %2，但它是本机器人关节 %3 的驱动器（0x2400:02 = %3）：节点列表与接线不符%4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>node %1 (joint %2) is not the drive the parameter file records for joint %2: it reports %3 (0x1018), the file holds %4</source>
+        <translation>节点 %1（关节 %2）不是参数文件为关节 %2 记录的驱动器：它报告 %3 (0x1018)，文件中为 %4</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>node %1 (joint %2) has never been commissioned (0x2400 is 0), so learnid cannot check which joint it moves: make sure it is the drive of joint %2 (its identity: %3), then run with --commission (in the window: First commissioning); apply stores the joint identity</source>
+        <translation>节点 %1（关节 %2）从未调试过（0x2400 为 0），learnid 无法检查它驱动哪个关节：请确认它是关节 %2 的驱动器（其标识：%3），然后使用 --commission 运行（在窗口中：首次调试）；应用时会存储关节标识</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>node %1 (joint %2) was commissioned for another robot (0x2400:01 = %3, this robot is %4): make sure it is the drive of joint %2 (%5), then run with --commission (in the window: First commissioning)</source>
+        <translation>节点 %1（关节 %2）曾为另一台机器人调试（0x2400:01 = %3，本机器人为 %4）：请确认它是关节 %2 的驱动器（%5），然后使用 --commission 运行（在窗口中：首次调试）</translation>
     </message>
 </context>
 <context>
@@ -1474,7 +1668,7 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
-        <location filename="../core/can/ManufacturerObjects.cpp" line="+117"/>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+119"/>
         <source>No node to write the parameters to.</source>
         <translation>没有可写入参数的节点。</translation>
     </message>
@@ -1651,7 +1845,7 @@
         <translation>DCF 片段：关节 %1 不存在；机器人有 %2 个关节</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+166"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+178"/>
         <source>must be given for every parameter or for none</source>
         <translation>必须为每个参数都给出，或都不给出</translation>
     </message>
@@ -1676,7 +1870,7 @@
         <translation>必须是形如 2024-05-01T12:00:00.000Z 的日期时间，实际为“%1”</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+71"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>缺失；这不是 learnid 参数文件</translation>
     </message>
@@ -1716,20 +1910,20 @@
         <translation>节点 %1 被分配给两个关节</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>must be a valid date and time</source>
         <translation>必须是有效的日期时间</translation>
     </message>
     <message>
-        <location line="-71"/>
-        <location line="+73"/>
+        <location line="-73"/>
+        <location line="+75"/>
         <location line="+15"/>
         <location line="+5"/>
         <source>must not be empty</source>
         <translation>不得为空</translation>
     </message>
     <message>
-        <location line="-103"/>
+        <location line="-105"/>
         <source>one per standard parameter</source>
         <translation>每个标准参数一个</translation>
     </message>
@@ -1749,7 +1943,7 @@
         <translation>文件未记录控制器时必须给出每个关节的节点</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>未知学习律“%1”；已知学习律：%2</translation>
     </message>
@@ -1769,8 +1963,8 @@
         <translation>必须是“%1”（%3 的参数 %2），实际为“%4”</translation>
     </message>
     <message>
-        <location line="-103"/>
-        <location line="+109"/>
+        <location line="-105"/>
+        <location line="+111"/>
         <source>values, %1</source>
         <translation>数值，%1</translation>
     </message>
@@ -2630,7 +2824,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+115"/>
+        <location filename="../core/service/SessionReport.cpp" line="+116"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>本会话中不存在估计 %1</translation>
     </message>
@@ -3239,8 +3433,10 @@
         <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+103"/>
-        <location line="+7"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+110"/>
+        <location line="+9"/>
+        <location line="+6"/>
+        <location line="+13"/>
         <location line="+12"/>
         <location line="+61"/>
         <location line="+44"/>
@@ -3272,7 +3468,7 @@
 %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+24"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+25"/>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
         <translation>--robot：必须是 &apos;sim&apos; 或 &apos;can&apos;，实际为 &apos;%1&apos;</translation>
     </message>
@@ -3294,6 +3490,16 @@
     </message>
     <message>
         <location line="+10"/>
+        <source>--can-drives: %1</source>
+        <translation>--can-drives：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--can-drives: %1 records no drives (robot.drives): export it from a session on CAN drives</source>
+        <translation>--can-drives：%1 未记录驱动器 (robot.drives)：请从使用 CAN 驱动器的会话中导出</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes：&apos;%2&apos; 中 %1</translation>
     </message>
@@ -3303,7 +3509,7 @@
         <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-158"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-185"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1：%2</translation>
@@ -3406,6 +3612,16 @@
         <location line="+3"/>
         <source>Write each trial&apos;s CAN frames as a candump log into DIR.</source>
         <translation>将每次试验的 CAN 帧以 candump 日志写入 DIR。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>First commissioning: you confirmed that each node is the drive of its joint (docs/can-protocol.md 2.4).</source>
+        <translation>首次调试：您已确认每个节点都是其关节的驱动器（docs/can-protocol.md 2.4）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A parameter file of this robot: its drives&apos; identities (0x1018) must match.</source>
+        <translation>本机器人的参数文件：其驱动器标识 (0x1018) 必须一致。</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -3522,7 +3738,7 @@
         <translation>未知命令 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+17"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+18"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>根据记录的试验重新辨识：会话再次运行，
@@ -3549,11 +3765,6 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <location line="+18"/>
         <source>&apos;replay&apos; needs at least one --candump FILE</source>
         <translation>&apos;replay&apos; 至少需要一个 --candump FILE</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>--iterations: %1 trials need %1 logs, %2 given</source>
-        <translation>--iterations：%1 次试验需要 %1 个日志，给出了 %2 个</translation>
     </message>
     <message>
         <location filename="../app/cli/ResultTable.cpp" line="+39"/>
@@ -3651,7 +3862,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--nodes %1：%2 个节点 ID，而机器人有 %3 个关节：每个关节需要一个节点</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+66"/>
+        <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
+        <translation>--iterations：%1 次试验需要 %1 次已记录的试验，日志中有 %2 次</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
@@ -4200,11 +4416,16 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+3"/>
-        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default 3; raise it on a heavily loaded machine).</source>
-        <translation>驱动器在运行使能状态下无设定值多少个 SYNC 周期后以 EMCY 0x8100 报故障（默认 3；在负载很重的机器上请调高）。</translation>
+        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default: 3 periods, at least 50 ms).</source>
+        <translation>驱动器在 Operation enabled 状态下无设定值多少个 SYNC 周期后以 EMCY 0x8100 报故障（默认：3 个周期，至少 50 ms）。</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+7"/>
+        <source>Drives that were never commissioned: 0x2400 is 0 (by default joint j&apos;s drive holds the robot&apos;s identity and j).</source>
+        <translation>从未调试过的驱动器：0x2400 为 0（默认情况下关节 j 的驱动器保存机器人标识和 j）。</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
@@ -4323,7 +4544,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CanConnection</name>
     <message>
-        <location filename="../core/canrobot/CanConnection.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanConnection.cpp" line="+34"/>
         <source>the CAN device %1 did not connect within %2 ms (is the bus or the robot side running?)</source>
         <translation>CAN 设备 %1 未在 %2 ms 内连接（总线或机器人端是否在运行？）</translation>
     </message>
@@ -4333,12 +4554,12 @@ stdout, and the next plan uses the new estimate.
         <translation>没有用于 %1 的 CAN 设备</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>cannot connect the CAN device %1: %2</source>
         <translation>无法连接 CAN 设备 %1：%2</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+59"/>
         <source>no error reported (the other side may have exited)</source>
         <translation>未报告错误（对端可能已退出）</translation>
     </message>
@@ -4348,7 +4569,57 @@ stdout, and the next plan uses the new estimate.
         <translation>CAN 设备 %1 已断开连接：%2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
+        <source>the CAN device %1 reported an error frame: %2</source>
+        <translation>CAN 设备 %1 报告了错误帧：%2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN device %1 reported %2 (error frame 0x%3 %4)</source>
+        <translation>CAN 设备 %1 报告 %2（错误帧 0x%3 %4）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the CAN interface %1 of %2 disappeared</source>
+        <translation>%2 的 CAN 接口 %1 已消失</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 of %2 went down (ip link set %1 up brings it back)</source>
+        <translation>%2 的 CAN 接口 %1 已停用（ip link set %1 up 可重新启用）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN controller of %1 (%2) is %3</source>
+        <translation>%1 (%2) 的 CAN 控制器处于 %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>the CAN device %1 reports bus off</source>
+        <translation>CAN 设备 %1 报告总线关闭 (bus off)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN device %1 reports error passive</source>
+        <translation>CAN 设备 %1 报告错误被动</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>the CAN device %1 reported a %2 error: %3</source>
+        <translation>CAN 设备 %1 报告了%2错误：%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read</source>
+        <translation>读取</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>write</source>
+        <translation>写入</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the CAN device %1 reported a connection error: %2</source>
         <translation>CAN 设备 %1 报告连接错误：%2</translation>
     </message>
@@ -4374,7 +4645,12 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CanRobotWorker</name>
     <message>
-        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+116"/>
+        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+110"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -4385,12 +4661,22 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+16"/>
-        <location line="+27"/>
+        <location line="+57"/>
         <source>stopped by the operator before the drives moved</source>
         <translation>在驱动器运动前被操作员停止</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-52"/>
+        <source>refused before any motion: %1</source>
+        <translation>在任何运动之前被拒绝：%1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>reading the drives&apos; identity failed: %1</source>
+        <translation>读取驱动器标识失败：%1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>configuring the drives failed, nothing moved: %1</source>
         <translation>配置驱动器失败，未发生任何运动：%1</translation>
     </message>
@@ -4405,7 +4691,12 @@ stdout, and the next plan uses the new estimate.
         <translation>%1；已存储参数未改变</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
+        <source>%1; nothing was stored (0x2200, 0x2400 and 0x1010 not written)</source>
+        <translation>%1；未存储任何内容（未写入 0x2200、0x2400 和 0x1010）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1；未存储任何内容（未写入 0x1010）</translation>
     </message>
@@ -4418,7 +4709,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CandumpReplayDevice</name>
     <message>
-        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+38"/>
+        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+88"/>
         <source>Cannot write a frame: the replay is not connected.</source>
         <translation>无法写入帧：回放未连接。</translation>
     </message>
@@ -4428,7 +4719,7 @@ stdout, and the next plan uses the new estimate.
         <translation>主站在日志结束后写入了 %1。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
         <translation>主站写入了 %1，而日志此处为 %2（日志帧 %3）：回放的试验与记录的不同。</translation>
     </message>
@@ -5424,7 +5715,7 @@ ratio %</source>
         <translation>内存 CAN 设备 %1 写入帧失败。</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>CAN error frame, error classes 0x%1.</source>
         <translation>CAN 错误帧，错误类别 0x%1。</translation>
     </message>
@@ -6056,13 +6347,18 @@ ratio %</source>
 <context>
     <name>learnid::RobotPanel</name>
     <message>
-        <location filename="../ui/RobotPanel.cpp" line="+22"/>
-        <location line="+100"/>
+        <location filename="../ui/RobotPanel.cpp" line="+24"/>
+        <source>First commissioning: I confirmed each node&apos;s joint on the arm</source>
+        <translation>首次调试：我已在机械臂上确认每个节点对应的关节</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+109"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-91"/>
+        <location line="-99"/>
         <source>Simulated (the scenario&apos;s robot)</source>
         <translation>仿真（场景中的机器人）</translation>
     </message>
@@ -6088,6 +6384,11 @@ ratio %</source>
     </message>
     <message>
         <location line="+3"/>
+        <source>10 SYNC periods, at least 50 ms</source>
+        <translation>10 个 SYNC 周期，至少 50 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source> ms</source>
         <translation> 毫秒</translation>
     </message>
@@ -6097,7 +6398,12 @@ ratio %</source>
         <translation>若超过此时间未收到 SYNC，试验即停止</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Only for drives never commissioned (or taken from another robot): tick it after checking on the arm that the drive of each node (its serial number on the type plate) moves the joint the node is listed for. Apply then stores the joint identity in the drives, and later sessions check it without this (docs/can-protocol.md 2.4).</source>
+        <translation>仅用于从未调试过（或取自另一台机器人）的驱动器：请先在机械臂上确认每个节点的驱动器（铭牌上的序列号）驱动的正是该节点所列的关节，然后再勾选。应用时会将关节标识存入驱动器，之后的会话无需勾选即可检查（docs/can-protocol.md 2.4）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Plugin:</source>
         <translation>插件：</translation>
     </message>
@@ -6117,6 +6423,11 @@ ratio %</source>
         <translation>SYNC 超时：</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Drives:</source>
+        <translation>驱动器：</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Robot:</source>
         <translation>机器人：</translation>
@@ -6132,7 +6443,7 @@ ratio %</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>CAN nodes: %1</source>
         <translation>CAN 节点：%1</translation>
     </message>
@@ -6716,14 +7027,14 @@ ratio %</source>
     <name>learnid::TrialStreamer</name>
     <message>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
-        <location line="+90"/>
+        <location line="+91"/>
         <location line="+66"/>
         <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="-143"/>
+        <location line="-144"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 未在 %2 ms 内达到运行使能：报告为 %3（状态字 0x%4）</translation>
     </message>
@@ -6733,7 +7044,7 @@ ratio %</source>
         <translation>无 TPDO</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+76"/>
         <source>stopped by the operator %1</source>
         <translation>被操作员停止 %1</translation>
     </message>
@@ -6862,30 +7173,30 @@ ratio %</source>
 <context>
     <name>learnid::robotsim::SimProcess</name>
     <message>
-        <location filename="../app/robot-sim/SimProcess.cpp" line="+43"/>
+        <location filename="../app/robot-sim/SimProcess.cpp" line="+44"/>
         <source>learnid-robot-sim: stopping (%1)</source>
         <translation>learnid-robot-sim：正在停止（%1）</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+93"/>
+        <location line="+96"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>无法用插件 %2 连接 CAN 接口 %1：%3</translation>
     </message>
     <message>
-        <location line="-61"/>
-        <location line="+16"/>
+        <location line="-62"/>
+        <location line="+17"/>
         <location line="+75"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim：错误：%1</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-85"/>
         <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
         <translation>learnid-robot-sim：错误：无法用插件 %2 创建 CAN 设备 %1：%3</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <location line="+58"/>
         <source>learnid-robot-sim: error: --state: %1</source>
         <translation>learnid-robot-sim：错误：--state：%1</translation>
