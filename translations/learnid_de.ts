@@ -970,7 +970,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+147"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+148"/>
         <source>not physically consistent</source>
         <translation>physikalisch nicht konsistent</translation>
     </message>
@@ -3445,7 +3445,7 @@
         <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+110"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+104"/>
         <location line="+9"/>
         <location line="+6"/>
         <location line="+13"/>
@@ -3521,7 +3521,7 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-185"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-179"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
@@ -3876,7 +3876,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--nodes %1: %2 Knoten-IDs für einen Roboter mit %3 Gelenken: ein Knoten pro Gelenk ist nötig</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+60"/>
         <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
         <translation>--iterations: %1 Versuche brauchen %1 aufgezeichnete Versuche, die Logs enthalten %2</translation>
     </message>
@@ -5933,7 +5933,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RecordedDataDialog</name>
     <message>
-        <location filename="../ui/RecordedDataDialog.cpp" line="+51"/>
+        <location filename="../ui/RecordedDataDialog.cpp" line="+52"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -5983,7 +5983,7 @@ Verhältnis %</translation>
         <translation>Anpassung</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Validation on:</source>
         <translation>Validierung an:</translation>
     </message>
@@ -5993,7 +5993,7 @@ Verhältnis %</translation>
         <translation>Validierung</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>Predicted against measured torque (validation log)</source>
         <translation>Vorhergesagtes gegenüber gemessenem Moment (Validierungs-Log)</translation>
     </message>

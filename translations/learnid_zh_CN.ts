@@ -970,7 +970,7 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+147"/>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+148"/>
         <source>not physically consistent</source>
         <translation>物理不一致</translation>
     </message>
@@ -3433,7 +3433,7 @@
         <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+110"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+104"/>
         <location line="+9"/>
         <location line="+6"/>
         <location line="+13"/>
@@ -3509,7 +3509,7 @@
         <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-185"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-179"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1：%2</translation>
@@ -3862,7 +3862,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--nodes %1：%2 个节点 ID，而机器人有 %3 个关节：每个关节需要一个节点</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+60"/>
         <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
         <translation>--iterations：%1 次试验需要 %1 次已记录的试验，日志中有 %2 次</translation>
     </message>
@@ -5915,7 +5915,7 @@ ratio %</source>
 <context>
     <name>learnid::RecordedDataDialog</name>
     <message>
-        <location filename="../ui/RecordedDataDialog.cpp" line="+51"/>
+        <location filename="../ui/RecordedDataDialog.cpp" line="+52"/>
         <source>&amp;Identify</source>
         <translation>辨识(&amp;I)</translation>
     </message>
@@ -5965,7 +5965,7 @@ ratio %</source>
         <translation>拟合</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Validation on:</source>
         <translation>验证所用日志：</translation>
     </message>
@@ -5975,7 +5975,7 @@ ratio %</source>
         <translation>验证</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>Predicted against measured torque (validation log)</source>
         <translation>预测力矩与测量力矩对比（验证日志）</translation>
     </message>
