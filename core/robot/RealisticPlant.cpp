@@ -31,8 +31,8 @@ RealisticPlant::RealisticPlant(std::shared_ptr<const RobotModel> model, const Ve
         m_r.coulomb = Vector::Zero(n);
     if (m_r.damping.size() != n)
         m_r.damping = Vector::Zero(n);
-    for (Vector *v : {&m_q, &m_qd, &m_theta, &m_thetad, &m_bias, &m_rhs, &m_hold, &m_spring,
-                      &m_sq, &m_sqd, &m_st, &m_std, &m_lagged})
+    for (Vector *v : {&m_q, &m_qd, &m_theta, &m_thetad, &m_bias, &m_rhs, &m_hold, &m_spring, &m_sq,
+                      &m_sqd, &m_st, &m_std, &m_lagged})
         v->setZero(n);
     for (auto &stage : m_k)
         for (Vector &v : stage)
@@ -215,8 +215,7 @@ void RealisticPlant::advance(const Eigen::Ref<const Vector> &tauHeld)
     }
 }
 
-void RealisticPlant::measureTorque(const Eigen::Ref<const Vector> &command,
-                                   Eigen::Ref<Vector> out)
+void RealisticPlant::measureTorque(const Eigen::Ref<const Vector> &command, Eigen::Ref<Vector> out)
 {
     const Vector raw = m_r.elastic() ? springTorque() : Vector(command);
     if (m_r.sensorLag > 0.0) {

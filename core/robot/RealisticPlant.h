@@ -76,8 +76,8 @@ public:
     int substeps() const { return m_substeps; }
 
 private:
-    void accelerations(const Vector &q, const Vector &qd, const Vector &theta,
-                       const Vector &thetad, const Vector &tau, Vector &qdd, Vector &thetadd);
+    void accelerations(const Vector &q, const Vector &qd, const Vector &theta, const Vector &thetad,
+                       const Vector &tau, Vector &qdd, Vector &thetadd);
     bool constrained(int j) const { return m_stuck[size_t(j)] || m_held[size_t(j)]; }
     void updateStiction(const Vector &tau);
     void rk4Step(const Vector &tau, double h);

@@ -14,8 +14,8 @@ using namespace learnid;
 
 namespace {
 
-constexpr double kMass = 2.0;   // [kg]
-constexpr double kCom = 0.2;    // [m] along the link's x
+constexpr double kMass = 2.0;    // [kg]
+constexpr double kCom = 0.2;     // [m] along the link's x
 constexpr double kIzzCom = 0.05; // [kg m^2] about the centre of mass
 constexpr double kGravity = 9.81;
 
@@ -104,10 +104,10 @@ void TestRealisticPlant::staticFriction_holdsBelowFsAndLetsGoAbove()
         const double t = 0.02;
         const double expected = (tau[0] - 2.0) * t * t / (2.0 * mass(0, 0));
         QVERIFY(plant.stuck(1));
-        QVERIFY2(std::abs((plant.q()[0] - q0[0]) / expected - 1.0) < 0.02,
-                 qPrintable(QStringLiteral("moved %1, expected %2")
-                                .arg(plant.q()[0] - q0[0])
-                                .arg(expected)));
+        QVERIFY2(
+            std::abs((plant.q()[0] - q0[0]) / expected - 1.0) < 0.02,
+            qPrintable(
+                QStringLiteral("moved %1, expected %2").arg(plant.q()[0] - q0[0]).arg(expected)));
     }
 }
 
@@ -135,7 +135,10 @@ void TestRealisticPlant::slidingFriction_isTheStribeckCurve()
         const double friction = push[0] - kAxisInertia * a;
         const double x = v / r.stribeckVelocity;
         const double expected = 1.0 + 2.0 * std::exp(-x * x);
-        const int window = std::abs(x - 1.0) < 0.02 ? 0 : std::abs(x - 2.0) < 0.02 ? 1 : x > 5.0 ? 2 : -1;
+        const int window = std::abs(x - 1.0) < 0.02   ? 0
+                           : std::abs(x - 2.0) < 0.02 ? 1
+                           : x > 5.0                  ? 2
+                                                      : -1;
         if (window >= 0) {
             QVERIFY2(std::abs(friction - expected) < 2e-3,
                      qPrintable(QStringLiteral("v %1: friction %2, Stribeck %3")
@@ -171,8 +174,9 @@ void TestRealisticPlant::elasticJoint_springCarriesTheLinksGravityTorqueAtRest()
     const double gravityTorque = kMass * kGravity * kCom * std::cos(q);
     const double spring = plant.springTorque()[0];
     QVERIFY(std::abs(plant.qd()[0]) < 1e-9);
-    QVERIFY2(std::abs(spring - gravityTorque) < 1e-9 * gravityTorque,
-             qPrintable(QStringLiteral("spring %1, m g l cos q %2").arg(spring).arg(gravityTorque)));
+    QVERIFY2(
+        std::abs(spring - gravityTorque) < 1e-9 * gravityTorque,
+        qPrintable(QStringLiteral("spring %1, m g l cos q %2").arg(spring).arg(gravityTorque)));
     QVERIFY(std::abs(spring - tau) < 1e-9 * tau);
     QVERIFY(std::abs(plant.motorAngles()[0] - q - tau / 5000.0) < 1e-12);
     QVERIFY(std::abs(std::cos(q) - 0.6) < 1e-9);
@@ -217,7 +221,8 @@ void TestRealisticPlant::elasticJoint_oscillatesAtTheTwoMassFrequency()
 void TestRealisticPlant::sensorLag_stepResponseReachesOneMinusInverseEAtTau()
 {
     // Rigid joints: the raw reading is the command, held over each sample. A step of the
-    // command to 1 has, after it acted for t, the lagged reading 1 - exp(-t / T): at t = T, 1 - 1/e.
+    // command to 1 has, after it acted for t, the lagged reading 1 - exp(-t / T): at t = T, 1 -
+    // 1/e.
     const auto model = makeRobotModel(QStringLiteral("paper-2link"));
     JointRealism r;
     r.sensorLag = 0.01;
@@ -307,8 +312,9 @@ void TestRealisticPlant::armSimulation_motorEncoderReadsTheMotorAngle()
         QCOMPARE(measured[0], 0.0);
         const double sag = kMass * kGravity * kCom / 5000.0; // at q = 0 the full lever
         const double expectedLink = linkSide ? 0.0 : -sag;
-        QVERIFY2(std::abs(arm.q()[0] - expectedLink) < 1e-6 * sag,
-                 qPrintable(QStringLiteral("link %1, expected %2").arg(arm.q()[0]).arg(expectedLink)));
+        QVERIFY2(
+            std::abs(arm.q()[0] - expectedLink) < 1e-6 * sag,
+            qPrintable(QStringLiteral("link %1, expected %2").arg(arm.q()[0]).arg(expectedLink)));
     }
 }
 
