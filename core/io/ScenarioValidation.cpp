@@ -132,8 +132,8 @@ void validateJointRealism(const SimulationSettings &sim, int n, const QString &p
                       Bounds::LeftOpen);
     }
     optional("simulation.jointDamping", sim.jointDamping, EntryRule::NonNegative);
-    if (sim.jointStiffness.size() == 0 && (sim.jointDamping.size() > 0 || sim.linkSideEncoder)) {
-        throwAtKey(key(sim.linkSideEncoder ? "simulation.encoderSide" : "simulation.jointDamping"),
+    if (sim.jointStiffness.size() == 0 && (sim.jointDamping.size() > 0 || !sim.linkSideEncoder)) {
+        throwAtKey(key(sim.linkSideEncoder ? "simulation.jointDamping" : "simulation.encoderSide"),
                    Text::tr("applies to elastic joints only: give simulation.jointStiffness"));
     }
     optional("simulation.torqueSensorOffset", sim.torqueSensorOffset, EntryRule::Finite);

@@ -33,7 +33,7 @@ struct SimulationSettings
     Eigen::VectorXd armatureFactor;     ///< ... as a factor of the link's inertia about its axis
     Eigen::VectorXd jointStiffness;     ///< elastic joints: spring stiffness [N m/rad]
     Eigen::VectorXd jointDamping;       ///< elastic joints: spring damping [N m s/rad]
-    bool linkSideEncoder = false;       ///< elastic joints: the encoder on the link, not the motor
+    bool linkSideEncoder = true;        ///< elastic joints: the encoder on the link (else motor)
     Eigen::VectorXd torqueSensorOffset; ///< [N m]
     double torqueSensorLag = 0.0;       ///< first-order time constant [s]
 };

@@ -198,6 +198,7 @@ void TestCanArmSimulator::realisticJoints_busMeasuresWhatSimulatedRobotMeasures(
     scenario.simulation.jointDamping = Eigen::Vector2d(20, 10);
     scenario.simulation.torqueSensorOffset = Eigen::Vector2d(0.05, -0.02);
     scenario.simulation.torqueSensorLag = 0.001;
+    scenario.simulation.linkSideEncoder = false; // the collocated loop: PID on the motor angle
     const auto model = makeRobotModel(scenario.model, scenario.urdf);
     TrialPlan plan = TrialPlanner(scenario, model).plan(scenario.initialParameters);
     const double ca = 2.0 * M_PI / double(scenario.simulation.encoderCounts);

@@ -50,7 +50,7 @@ void TestScenarioJoints::allKeys_readAndWriteBackBitExactly()
     s.simulation.armatureFactor = Eigen::Vector2d(0.5, 2.0);
     s.simulation.jointStiffness = Eigen::Vector2d(5000, 15000);
     s.simulation.jointDamping = Eigen::Vector2d(2.5, 0.0);
-    s.simulation.linkSideEncoder = true;
+    s.simulation.linkSideEncoder = false;
     s.simulation.torqueSensorOffset = Eigen::Vector2d(-0.25, 0.1);
     s.simulation.torqueSensorLag = 0.001;
     const Scenario back = scenarioFromJson(scenarioToJson(s), source);
@@ -61,7 +61,7 @@ void TestScenarioJoints::allKeys_readAndWriteBackBitExactly()
     QVERIFY(bitEqual(a.armatureFactor, b.armatureFactor));
     QVERIFY(bitEqual(a.jointStiffness, b.jointStiffness));
     QVERIFY(bitEqual(a.jointDamping, b.jointDamping));
-    QCOMPARE(b.linkSideEncoder, true);
+    QCOMPARE(b.linkSideEncoder, false);
     QVERIFY(bitEqual(a.torqueSensorOffset, b.torqueSensorOffset));
     QVERIFY(bitEqual(a.torqueSensorLag, b.torqueSensorLag));
 
@@ -84,7 +84,7 @@ void TestScenarioJoints::defaults_areOffAndNotWritten()
     const Scenario s = scenarioFromJson(scenarioToJson(Scenario{}), source);
     QCOMPARE(s.simulation.staticFriction.size(), 0);
     QCOMPARE(s.simulation.jointStiffness.size(), 0);
-    QCOMPARE(s.simulation.linkSideEncoder, false);
+    QCOMPARE(s.simulation.linkSideEncoder, true);
     QCOMPARE(s.simulation.torqueSensorLag, 0.0);
 }
 
@@ -132,7 +132,7 @@ void TestScenarioJoints::badValue_isRejectedWithKeyPath_data()
         "simulation.jointStiffness");
     row("encoderSide unknown", "encoderSide", QStringLiteral("rotor"),
         "simulation.encoderSide: must be \"motor\" or \"link\", got \"rotor\"");
-    row("encoderSide link without stiffness", "encoderSide", QStringLiteral("link"),
+    row("encoderSide motor without stiffness", "encoderSide", QStringLiteral("motor"),
         "simulation.encoderSide: applies to elastic joints only: give "
         "simulation.jointStiffness");
     row("torqueSensorOffset length", "torqueSensorOffset", three,

@@ -51,21 +51,25 @@ QString robotA(const QTemporaryDir &dir, const QString &cadPath)
         const auto m = it.next();
         QString block = m.captured();
         const double massFactor = link++ % 2 == 0 ? 0.8 : 1.25;
-        static const QRegularExpression number(QStringLiteral("(mass value|ixx|iyy|izz)=\"([^\"]+)\""));
+        static const QRegularExpression number(
+            QStringLiteral("(mass value|ixx|iyy|izz)=\"([^\"]+)\""));
         QString scaled;
         qsizetype from = 0;
         for (auto n = number.globalMatch(block); n.hasNext();) {
             const auto v = n.next();
             const double factor = v.captured(1) == QLatin1String("mass value") ? massFactor : 1.4;
             scaled += block.mid(from, v.capturedStart() - from) +
-                      QStringLiteral("%1=\"%2\"").arg(v.captured(1)).arg(v.captured(2).toDouble() * factor, 0, 'g', 17);
+                      QStringLiteral("%1=\"%2\"")
+                          .arg(v.captured(1))
+                          .arg(v.captured(2).toDouble() * factor, 0, 'g', 17);
             from = v.capturedEnd();
         }
         scaled += block.mid(from);
         static const QRegularExpression com(QStringLiteral("xyz=\"([^ ]+) "));
         const auto c = com.match(scaled);
         if (c.hasMatch())
-            scaled.replace(c.capturedStart(1), c.capturedLength(1), QString::number(c.captured(1).toDouble() + 0.02, 'g', 17));
+            scaled.replace(c.capturedStart(1), c.capturedLength(1),
+                           QString::number(c.captured(1).toDouble() + 0.02, 'g', 17));
         out += text.mid(at, m.capturedStart() - at) + scaled;
         at = m.capturedEnd();
     }
@@ -134,9 +138,10 @@ void TestRealisticSession::staticFrictionBelowCoulomb_isRefusedWithKeyPath()
     const auto model = makeRobotModel(s.model, s.urdf);
     s = withRobotDefaults(s, *model);
     const QString message = test::errorOf([&] { makeSimulatedRobot(s, model); });
-    QVERIFY2(message.startsWith(QStringLiteral("simulation.staticFriction[1]: must be at least "
-                                               "the simulated robot's Coulomb friction of joint 2, ")),
-             qPrintable(message));
+    QVERIFY2(
+        message.startsWith(QStringLiteral("simulation.staticFriction[1]: must be at least "
+                                          "the simulated robot's Coulomb friction of joint 2, ")),
+        qPrintable(message));
     QVERIFY(message.endsWith(QStringLiteral(" N m, got 0")));
 }
 
@@ -179,9 +184,11 @@ void TestRealisticSession::armatureFactor_isTheLinksInertiaAboutItsAxis()
         const InertialParameters &p = joint.inertial;
         const double m = p[0];
         const Eigen::Vector3d c = p.segment<3>(1) / m;
-        const Eigen::Matrix3d ic = rotationalInertia(p) -
-                                   m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
-        const Eigen::Matrix3d io = ic + m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+        const Eigen::Matrix3d ic =
+            rotationalInertia(p) -
+            m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+        const Eigen::Matrix3d io =
+            ic + m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
         const double own = joint.axis.dot(io * joint.axis);
         QVERIFY(own > 0.0);
         const double expected = s.simulation.armature[j] + s.simulation.armatureFactor[j] * own;
@@ -249,10 +256,11 @@ void TestRealisticSession::lwr4AllOptions_sixTrialsRunAndCpuTimeIsPrinted()
             QVERIFY2(result.record.status != TrialStatus::Faulted, qPrintable(result.message));
             if (!result.record.completed() && firstStop.isEmpty())
                 firstStop = result.message;
-            rows << QStringLiteral("%1%2").arg(result.maxTrackingErrorDeg.size() > 0
-                                                   ? result.maxTrackingErrorDeg.maxCoeff()
-                                                   : qQNaN(),
-                                               0, 'g', 3)
+            rows << QStringLiteral("%1%2")
+                        .arg(result.maxTrackingErrorDeg.size() > 0
+                                 ? result.maxTrackingErrorDeg.maxCoeff()
+                                 : qQNaN(),
+                             0, 'g', 3)
                         .arg(result.record.completed() ? "" : " (stopped)");
         }
         const double cpu = double(std::clock() - start) / CLOCKS_PER_SEC;
