@@ -776,29 +776,19 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+129"/>
-        <source>link %1 (%2): mass %3 kg: not a real body</source>
-        <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+147"/>
+        <source>not physically consistent</source>
+        <translation>physikalisch nicht konsistent</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>link %1 (%2): its inertia cannot belong to a real body (pseudo-inertia eigenvalue %3)</source>
-        <translation>Glied %1 (%2): seine Trägheit kann zu keinem realen Körper gehören (Eigenwert der Pseudoträgheit %3)</translation>
+        <location line="+2"/>
+        <source>physically consistent (every link a real body) but not plausible</source>
+        <translation>physikalisch konsistent (jedes Glied ein realer Körper), aber nicht plausibel</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 is negative: friction and rotor inertia cannot be</source>
-        <translation>%1 ist negativ: Reibung und Rotorträgheit können das nicht sein</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>physically consistent: every link a real body</source>
-        <translation>physikalisch konsistent: jedes Glied ein realer Körper</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>link %1 (%2): not a plausible body: %3</source>
-        <translation>Glied %1 (%2): kein plausibler Körper: %3</translation>
+        <location line="+2"/>
+        <source>physically consistent and plausible: every link a real body that a robot&apos;s link could be</source>
+        <translation>physikalisch konsistent und plausibel: jedes Glied ein realer Körper, der das Glied eines Roboters sein könnte</translation>
     </message>
 </context>
 <context>
@@ -1157,6 +1147,59 @@
     </message>
 </context>
 <context>
+    <name>LinkVerdictTable</name>
+    <message>
+        <location filename="../core/session/LinkVerdictTable.cpp" line="+25"/>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Per link: physically consistent (a real body), and plausible (a body a robot&apos;s link could be: its smallest principal moment of inertia about the centre of mass I1 at least %1 % of the CAD link&apos;s, (I1 + I2) / I3 at least %2, the centre of mass inside the link&apos;s bounding volume).</source>
+        <translation>Je Glied: physikalisch konsistent (ein realer Körper) und plausibel (ein Körper, der das Glied eines Roboters sein könnte: sein kleinstes Hauptträgheitsmoment um den Schwerpunkt I1 mindestens %1 % des kleinsten des CAD-Glieds, (I1 + I2) / I3 mindestens %2, der Schwerpunkt innerhalb des Hüllvolumens des Glieds).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>link</source>
+        <translation>Glied</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>I1 [kg m^2]</source>
+        <translation>I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAD I1 [kg m^2]</source>
+        <translation>CAD-I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>(I1 + I2) / I3</source>
+        <translation>(I1 + I2) / I3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CoM in volume</source>
+        <translation>Schwerpunkt im Volumen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>consistent</source>
+        <translation>konsistent</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>plausible</source>
+        <translation>plausibel</translation>
+    </message>
+</context>
+<context>
     <name>LogFit</name>
     <message>
         <location filename="../core/identify/LogFit.cpp" line="+141"/>
@@ -1317,7 +1360,7 @@
 <context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+56"/>
         <source>Reading the robot %1…</source>
         <translation>Roboter %1 wird gelesen…</translation>
     </message>
@@ -1346,11 +1389,11 @@
     </message>
     <message>
         <location line="+16"/>
-        <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Konsistenz:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
+        <source>&lt;p&gt;&lt;b&gt;Identified parameters:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Identifizierte Parameter:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Trainingsresiduum&lt;/b&gt;, RMS pro Gelenk [N m]: %1&lt;/p&gt;</translation>
     </message>
@@ -1512,7 +1555,7 @@
 <context>
     <name>ModelCheck</name>
     <message>
-        <location filename="../core/model/ModelCheck.cpp" line="+25"/>
+        <location filename="../core/model/ModelCheck.cpp" line="+27"/>
         <source>link %1 (%2)</source>
         <translation>Glied %1 (%2)</translation>
     </message>
@@ -1522,44 +1565,24 @@
         <translation>Gelenk %1 (%2)</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>%1: its smallest principal moment of inertia about the centre of mass, %2 kg m^2, is below %3 % of the CAD link&apos;s smallest (%4 kg m^2): a point mass or a needle, not a link</source>
-        <translation>%1: sein kleinstes Hauptträgheitsmoment um den Schwerpunkt, %2 kg m^2, liegt unter %3 % des kleinsten des CAD-Glieds (%4 kg m^2): eine Punktmasse oder Nadel, kein Glied</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its principal moments %2, %3 and %4 kg m^2 give I1 + I2 = %5 I3, below %6 I3 (a flat plate at best)</source>
-        <translation>%1: seine Hauptträgheitsmomente %2, %3 und %4 kg m^2 ergeben I1 + I2 = %5 I3, unter %6 I3 (bestenfalls eine flache Platte)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its centre of mass lies outside its bounding volume (%2)</source>
-        <translation>%1: sein Schwerpunkt liegt außerhalb seines Hüllvolumens (%2)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the URDF&apos;s geometry: %1</source>
-        <translation>die Geometrie des URDF: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
-        <translation>das Trägheitsellipsoid des CAD-Körpers, %1-fach vergrößert</translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+8"/>
         <source>%1: its mass is %2 kg: not a real body</source>
         <translation>%1: seine Masse ist %2 kg: kein realer Körper</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>%1: no mass distribution has its inertia (its pseudo-inertia has the negative eigenvalue %2): not a real body</source>
         <translation>%1: keine Massenverteilung hat seine Trägheit (seine Pseudo-Trägheit hat den negativen Eigenwert %2): kein realer Körper</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>%1: %2 is %3, negative: friction and rotor inertia take energy, they do not give it</source>
         <translation>%1: %2 ist %3, negativ: Reibung und Rotorträgheit nehmen Energie auf, sie geben keine ab</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 is %3, between 0 and %4: the underflow of a positive parametrisation where 0 is meant</source>
+        <translation>%1: %2 ist %3, zwischen 0 und %4: der Unterlauf einer positiven Parametrisierung, wo 0 gemeint ist</translation>
     </message>
 </context>
 <context>
@@ -1987,27 +2010,42 @@
         <translation>Die zu prüfenden Parameter sind nicht endlich.</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <source>mass %1 kg</source>
-        <translation>Masse %1 kg</translation>
+        <location line="+38"/>
+        <source>its mass is %1 kg: not a real body</source>
+        <translation>seine Masse ist %1 kg: kein realer Körper</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
-        <translation>kleinstes Hauptträgheitsmoment %1 kg m², unter %2 % des kleinsten des CAD-Glieds (%3 kg m²)</translation>
+        <location line="+2"/>
+        <source>its smallest principal moment of inertia about the centre of mass, %1 kg m^2, is below %2 % of the CAD link&apos;s smallest (%3 kg m^2): a point mass or a needle, not a link</source>
+        <translation>sein kleinstes Hauptträgheitsmoment um den Schwerpunkt, %1 kg m^2, liegt unter %2 % des kleinsten des CAD-Glieds (%3 kg m^2): eine Punktmasse oder Nadel, kein Glied</translation>
     </message>
     <message>
         <location line="+7"/>
-        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
-        <translation>(I1 + I2) / I3 = %1, unter %2: eine Nadel oder eine Platte</translation>
+        <source>its principal moments %1, %2 and %3 kg m^2 give I1 + I2 = %4 I3, below %5 I3 (a flat plate at best)</source>
+        <translation>seine Hauptträgheitsmomente %1, %2 und %3 kg m^2 ergeben I1 + I2 = %4 I3, unter %5 I3 (bestenfalls eine flache Platte)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
-        <translation>Schwerpunkt außerhalb des Hüllvolumens des Glieds (das %1-Fache seiner Größe)</translation>
+        <location line="+7"/>
+        <source>its centre of mass lies outside its bounding volume (%1)</source>
+        <translation>sein Schwerpunkt liegt außerhalb seines Hüllvolumens (%1)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+2"/>
+        <source>the URDF&apos;s geometry: %1</source>
+        <translation>die Geometrie des URDF: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
+        <translation>das Trägheitsellipsoid des CAD-Körpers, %1-fach vergrößert</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>its centre of mass lies outside its bounding volume</source>
+        <translation>sein Schwerpunkt liegt außerhalb seines Hüllvolumens</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Index %1 is outside the %2 standard parameters.</source>
         <translation>Index %1 liegt außerhalb der %2 Standardparameter.</translation>
     </message>
@@ -2669,9 +2707,9 @@
         <translation>Daten</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>prior</source>
-        <translation>Prior</translation>
+        <location line="+4"/>
+        <source>undetermined (kept near the prior)</source>
+        <translation>unbestimmt (nahe am Prior gehalten)</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -3220,12 +3258,12 @@
         </translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>identifiziert von learnid-cli %1 identify am %2</translation>
     </message>
     <message>
-        <location line="-76"/>
+        <location line="-77"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1: vorhergesagtes und gemessenes Moment</translation>
     </message>
@@ -3235,7 +3273,7 @@
         <translation>learnid: %1 aus Logs identifiziert</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
         <location filename="../app/cli/RunCommand.cpp" line="+109"/>
@@ -3651,7 +3689,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: Warnung: das URDF als realer Roboter: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-74"/>
         <location filename="../app/cli/RunCommand.cpp" line="+8"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
@@ -3851,7 +3889,7 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>&apos;identify&apos; braucht mindestens ein --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+25"/>
         <location line="+16"/>
         <source>name</source>
         <translation>Name</translation>
@@ -3862,12 +3900,12 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>Gel.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+31"/>
         <source>Identified parameters: %1.</source>
         <translation>Identifizierte Parameter: %1.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+18"/>
         <source>training logs: residual of the fit</source>
         <translation>Trainings-Logs: Residuum der Anpassung</translation>
     </message>
@@ -3898,12 +3936,12 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>URDF wie gegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyParameters.cpp" line="+32"/>
-        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: data, below: kept from the prior)</source>
-        <translation>Standardparameter: die des URDF, die identifizierten und was die Daten bestimmt haben (Anteil der Richtung des Parameters; ab 0,5: Daten, darunter: vom Prior übernommen)</translation>
+        <location filename="../app/cli/IdentifyParameters.cpp" line="+33"/>
+        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: the data&apos;s, below: undetermined, kept near the prior, which the data still move a little)</source>
+        <translation>Standardparameter: die des URDF, die identifizierten und was die Daten bestimmt haben (Anteil der Richtung des Parameters; ab 0,5: der Daten, darunter: unbestimmt, nahe am Prior gehalten, den die Daten noch ein wenig verschieben)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>link or joint</source>
         <translation>Glied oder Gelenk</translation>
     </message>
@@ -3931,15 +3969,13 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
     </message>
     <message>
         <location line="+1"/>
-        <source>from</source>
-        <translation>aus</translation>
+        <source>source</source>
+        <translation>Quelle</translation>
     </message>
     <message>
         <location line="+23"/>
-        <source>warning: the URDF as a real robot: %1
-</source>
-        <translation>Warnung: das URDF als realer Roboter: %1
-</translation>
+        <source>warning: the URDF as a real robot: %1</source>
+        <translation>Warnung: das URDF als realer Roboter: %1</translation>
     </message>
     <message>
         <location filename="../app/cli/IdentifyTable.cpp" line="+2"/>

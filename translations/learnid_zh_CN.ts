@@ -776,29 +776,19 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+129"/>
-        <source>link %1 (%2): mass %3 kg: not a real body</source>
-        <translation>连杆 %1（%2）：质量 %3 kg：不是真实刚体</translation>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+147"/>
+        <source>not physically consistent</source>
+        <translation>物理不一致</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>link %1 (%2): its inertia cannot belong to a real body (pseudo-inertia eigenvalue %3)</source>
-        <translation>连杆 %1（%2）：其惯量不可能属于真实刚体（伪惯量特征值 %3）</translation>
+        <location line="+2"/>
+        <source>physically consistent (every link a real body) but not plausible</source>
+        <translation>物理一致（每个连杆都是真实刚体），但不合理</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 is negative: friction and rotor inertia cannot be</source>
-        <translation>%1 为负：摩擦和转子惯量不能为负</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>physically consistent: every link a real body</source>
-        <translation>物理一致：每个连杆都是真实刚体</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>link %1 (%2): not a plausible body: %3</source>
-        <translation>连杆 %1（%2）：不是合理的刚体：%3</translation>
+        <location line="+2"/>
+        <source>physically consistent and plausible: every link a real body that a robot&apos;s link could be</source>
+        <translation>物理一致且合理：每个连杆都是可以作为机器人连杆的真实刚体</translation>
     </message>
 </context>
 <context>
@@ -1157,6 +1147,59 @@
     </message>
 </context>
 <context>
+    <name>LinkVerdictTable</name>
+    <message>
+        <location filename="../core/session/LinkVerdictTable.cpp" line="+25"/>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Per link: physically consistent (a real body), and plausible (a body a robot&apos;s link could be: its smallest principal moment of inertia about the centre of mass I1 at least %1 % of the CAD link&apos;s, (I1 + I2) / I3 at least %2, the centre of mass inside the link&apos;s bounding volume).</source>
+        <translation>每个连杆：物理一致（真实刚体）且合理（可以作为机器人连杆的刚体：其绕质心的最小主惯性矩 I1 至少为 CAD 连杆的 %1 %，(I1 + I2) / I3 至少为 %2，质心位于连杆包围体之内）。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>link</source>
+        <translation>连杆</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>I1 [kg m^2]</source>
+        <translation>I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAD I1 [kg m^2]</source>
+        <translation>CAD I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>(I1 + I2) / I3</source>
+        <translation>(I1 + I2) / I3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CoM in volume</source>
+        <translation>质心在包围体内</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>consistent</source>
+        <translation>一致</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>plausible</source>
+        <translation>合理</translation>
+    </message>
+</context>
+<context>
     <name>LogFit</name>
     <message>
         <location filename="../core/identify/LogFit.cpp" line="+141"/>
@@ -1309,7 +1352,7 @@
 <context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+56"/>
         <source>Reading the robot %1…</source>
         <translation>正在读取机器人 %1…</translation>
     </message>
@@ -1337,11 +1380,11 @@
     </message>
     <message>
         <location line="+16"/>
-        <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;一致性：&lt;/b&gt;&lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
+        <source>&lt;p&gt;&lt;b&gt;Identified parameters:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;识别参数：&lt;/b&gt;&lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;训练残差&lt;/b&gt;，各关节 RMS [N m]：%1&lt;/p&gt;</translation>
     </message>
@@ -1503,7 +1546,7 @@
 <context>
     <name>ModelCheck</name>
     <message>
-        <location filename="../core/model/ModelCheck.cpp" line="+25"/>
+        <location filename="../core/model/ModelCheck.cpp" line="+27"/>
         <source>link %1 (%2)</source>
         <translation>连杆 %1（%2）</translation>
     </message>
@@ -1513,44 +1556,24 @@
         <translation>关节 %1（%2）</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>%1: its smallest principal moment of inertia about the centre of mass, %2 kg m^2, is below %3 % of the CAD link&apos;s smallest (%4 kg m^2): a point mass or a needle, not a link</source>
-        <translation>%1：其绕质心的最小主惯性矩 %2 kg m^2 低于 CAD 连杆最小主惯性矩（%4 kg m^2）的 %3 %：是质点或细针，不是连杆</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its principal moments %2, %3 and %4 kg m^2 give I1 + I2 = %5 I3, below %6 I3 (a flat plate at best)</source>
-        <translation>%1：其主惯性矩 %2、%3 和 %4 kg m^2 给出 I1 + I2 = %5 I3，低于 %6 I3（至多是一块薄板）</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its centre of mass lies outside its bounding volume (%2)</source>
-        <translation>%1：其质心位于包围体之外（%2）</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the URDF&apos;s geometry: %1</source>
-        <translation>URDF 的几何体：%1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
-        <translation>CAD 刚体的惯性椭球，放大 %1 倍</translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+8"/>
         <source>%1: its mass is %2 kg: not a real body</source>
         <translation>%1：其质量为 %2 kg：不是真实刚体</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>%1: no mass distribution has its inertia (its pseudo-inertia has the negative eigenvalue %2): not a real body</source>
         <translation>%1：没有任何质量分布具有其惯性（其伪惯性矩阵有负特征值 %2）：不是真实刚体</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>%1: %2 is %3, negative: friction and rotor inertia take energy, they do not give it</source>
         <translation>%1：%2 为 %3，是负值：摩擦和转子惯量只消耗能量，不会提供能量</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 is %3, between 0 and %4: the underflow of a positive parametrisation where 0 is meant</source>
+        <translation>%1：%2 为 %3，介于 0 和 %4 之间：这是本应为 0 的正参数化的下溢</translation>
     </message>
 </context>
 <context>
@@ -1978,27 +2001,42 @@
         <translation>待检查的参数不是有限值。</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <source>mass %1 kg</source>
-        <translation>质量 %1 kg</translation>
+        <location line="+38"/>
+        <source>its mass is %1 kg: not a real body</source>
+        <translation>其质量为 %1 kg：不是真实刚体</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
-        <translation>最小主惯量 %1 kg m²，低于 CAD 连杆最小主惯量（%3 kg m²）的 %2 %</translation>
+        <location line="+2"/>
+        <source>its smallest principal moment of inertia about the centre of mass, %1 kg m^2, is below %2 % of the CAD link&apos;s smallest (%3 kg m^2): a point mass or a needle, not a link</source>
+        <translation>其绕质心的最小主惯性矩 %1 kg m^2 低于 CAD 连杆最小主惯性矩（%3 kg m^2）的 %2 %：是质点或细针，不是连杆</translation>
     </message>
     <message>
         <location line="+7"/>
-        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
-        <translation>(I1 + I2) / I3 = %1，低于 %2：像针或薄板</translation>
+        <source>its principal moments %1, %2 and %3 kg m^2 give I1 + I2 = %4 I3, below %5 I3 (a flat plate at best)</source>
+        <translation>其主惯性矩 %1、%2 和 %3 kg m^2 给出 I1 + I2 = %4 I3，低于 %5 I3（至多是一块薄板）</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
-        <translation>质心位于连杆包围体之外（其尺寸的 %1 倍）</translation>
+        <location line="+7"/>
+        <source>its centre of mass lies outside its bounding volume (%1)</source>
+        <translation>其质心位于包围体之外（%1）</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+2"/>
+        <source>the URDF&apos;s geometry: %1</source>
+        <translation>URDF 的几何体：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
+        <translation>CAD 刚体的惯性椭球，放大 %1 倍</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>its centre of mass lies outside its bounding volume</source>
+        <translation>其质心位于包围体之外</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Index %1 is outside the %2 standard parameters.</source>
         <translation>索引 %1 超出了 %2 个标准参数的范围。</translation>
     </message>
@@ -2658,9 +2696,9 @@
         <translation>数据</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>prior</source>
-        <translation>先验</translation>
+        <location line="+4"/>
+        <source>undetermined (kept near the prior)</source>
+        <translation>未确定（保持在先验附近）</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -3208,12 +3246,12 @@
         </translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>由 learnid-cli %1 identify 于 %2 辨识</translation>
     </message>
     <message>
-        <location line="-76"/>
+        <location line="-77"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1：预测力矩与测量力矩</translation>
     </message>
@@ -3223,7 +3261,7 @@
         <translation>learnid：根据日志辨识 %1</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
         <location filename="../app/cli/RunCommand.cpp" line="+109"/>
@@ -3638,7 +3676,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：警告：该 URDF 作为真实机器人：%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-74"/>
         <location filename="../app/cli/RunCommand.cpp" line="+8"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
@@ -3838,7 +3876,7 @@ and compare the result with the URDF as given on --validate logs.
         <translation>&apos;identify&apos; 至少需要一个 --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+25"/>
         <location line="+16"/>
         <source>name</source>
         <translation>名称</translation>
@@ -3849,12 +3887,12 @@ and compare the result with the URDF as given on --validate logs.
         <translation>关节</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+31"/>
         <source>Identified parameters: %1.</source>
         <translation>辨识出的参数：%1。</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+18"/>
         <source>training logs: residual of the fit</source>
         <translation>训练日志：拟合残差</translation>
     </message>
@@ -3885,12 +3923,12 @@ and compare the result with the URDF as given on --validate logs.
         <translation>给定的 URDF</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyParameters.cpp" line="+32"/>
-        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: data, below: kept from the prior)</source>
-        <translation>标准参数：URDF 的值、识别值以及数据确定的程度（参数方向的份额；至少 0.5：来自数据，低于此值：保留先验值）</translation>
+        <location filename="../app/cli/IdentifyParameters.cpp" line="+33"/>
+        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: the data&apos;s, below: undetermined, kept near the prior, which the data still move a little)</source>
+        <translation>标准参数：URDF 的值、识别值以及数据确定的程度（参数方向的份额；至少 0.5：来自数据，低于此值：未确定，保持在先验附近，数据仍会使其略有变化）</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>link or joint</source>
         <translation>连杆或关节</translation>
     </message>
@@ -3918,15 +3956,13 @@ and compare the result with the URDF as given on --validate logs.
     </message>
     <message>
         <location line="+1"/>
-        <source>from</source>
+        <source>source</source>
         <translation>来源</translation>
     </message>
     <message>
         <location line="+23"/>
-        <source>warning: the URDF as a real robot: %1
-</source>
-        <translation>警告：该 URDF 作为真实机器人：%1
-</translation>
+        <source>warning: the URDF as a real robot: %1</source>
+        <translation>警告：将该 URDF 视为真实机器人：%1</translation>
     </message>
     <message>
         <location filename="../app/cli/IdentifyTable.cpp" line="+2"/>
