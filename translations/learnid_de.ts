@@ -2529,23 +2529,23 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+164"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+201"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+238"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+275"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-96"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-133"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
     <message>
         <location line="+24"/>
-        <location line="+21"/>
+        <location line="+60"/>
         <source>one per joint of %1</source>
         <translation>einer pro Gelenk von %1</translation>
     </message>
@@ -2560,7 +2560,7 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-206"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-243"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -2570,12 +2570,12 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+83"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-86"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-125"/>
         <source>one per joint</source>
         <translation>einer pro Gelenk</translation>
     </message>
@@ -2610,7 +2610,22 @@
         <translation>%1 hat %2 Gelenkspalten, %3 hat %4 Gelenke</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
+        <source>must be 0 (off) or at least 1 (static friction is not below Coulomb friction), got %1</source>
+        <translation>muss 0 (aus) oder mindestens 1 sein (Haftreibung liegt nicht unter der Coulomb-Reibung), ist %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>give static friction either as simulation.staticFriction or as this ratio, not both</source>
+        <translation>Haftreibung entweder als simulation.staticFriction oder als dieses Verhältnis angeben, nicht beides</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>applies to elastic joints only: give simulation.jointStiffness</source>
+        <translation>gilt nur für elastische Gelenke: simulation.jointStiffness angeben</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>must be 1 or -1, got %1</source>
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
@@ -2628,9 +2643,19 @@
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+70"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+71"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits: Gelenk %1 (%2) hat im URDF keine Momentengrenze (effort): die Momentengrenzen im Szenario angeben</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="+79"/>
+        <source>must be at least the simulated robot&apos;s Coulomb friction of joint %1, %2 N m, got %3</source>
+        <translation>muss mindestens die Coulomb-Reibung des simulierten Roboters in Gelenk %1 sein, %2 N m, ist %3</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>an elastic joint needs its motor&apos;s rotor inertia: give simulation.armature or simulation.armatureFactor above 0 for joint %1</source>
+        <translation>ein elastisches Gelenk braucht die Rotorträgheit seines Motors: simulation.armature oder simulation.armatureFactor über 0 für Gelenk %1 angeben</translation>
     </message>
 </context>
 <context>
@@ -2932,6 +2957,11 @@
         <location line="+10"/>
         <source>%1: %2: parameter %3 is &quot;%4&quot;, the robot&apos;s is &quot;%5&quot;</source>
         <translation>%1: %2: Parameter %3 ist „%4“, der des Roboters ist „%5“</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="-50"/>
+        <source>needs a URDF robot (the link&apos;s inertia about its axis); %1 has none: give simulation.armature in kg m^2</source>
+        <translation>braucht einen URDF-Roboter (die Trägheit des Glieds um seine Achse); %1 hat keinen: simulation.armature in kg m^2 angeben</translation>
     </message>
 </context>
 <context>

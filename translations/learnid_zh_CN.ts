@@ -2518,23 +2518,23 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+164"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+201"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+238"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+275"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-96"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-133"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
     <message>
         <location line="+24"/>
-        <location line="+21"/>
+        <location line="+60"/>
         <source>one per joint of %1</source>
         <translation>%1 的每个关节一个</translation>
     </message>
@@ -2549,7 +2549,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-206"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-243"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -2559,12 +2559,12 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+83"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-86"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-125"/>
         <source>one per joint</source>
         <translation>每个关节一个</translation>
     </message>
@@ -2599,7 +2599,22 @@
         <translation>%1 有 %2 个关节列，%3 有 %4 个关节</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
+        <source>must be 0 (off) or at least 1 (static friction is not below Coulomb friction), got %1</source>
+        <translation>必须为 0（关闭）或至少为 1（静摩擦不低于库仑摩擦），实际为 %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>give static friction either as simulation.staticFriction or as this ratio, not both</source>
+        <translation>静摩擦请用 simulation.staticFriction 或此比值之一给出，不可同时给出</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>applies to elastic joints only: give simulation.jointStiffness</source>
+        <translation>仅适用于弹性关节：请给出 simulation.jointStiffness</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>must be 1 or -1, got %1</source>
         <translation>必须是 1 或 -1，实际为 %1</translation>
     </message>
@@ -2617,9 +2632,19 @@
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+70"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+71"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits：关节 %1（%2）在 URDF 中没有 effort 限值：请在场景中给出力矩限值</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="+79"/>
+        <source>must be at least the simulated robot&apos;s Coulomb friction of joint %1, %2 N m, got %3</source>
+        <translation>必须至少等于仿真机器人关节 %1 的库仑摩擦 %2 N m，实际为 %3</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>an elastic joint needs its motor&apos;s rotor inertia: give simulation.armature or simulation.armatureFactor above 0 for joint %1</source>
+        <translation>弹性关节需要其电机的转子惯量：请为关节 %1 给出大于 0 的 simulation.armature 或 simulation.armatureFactor</translation>
     </message>
 </context>
 <context>
@@ -2921,6 +2946,11 @@
         <location line="+10"/>
         <source>%1: %2: parameter %3 is &quot;%4&quot;, the robot&apos;s is &quot;%5&quot;</source>
         <translation>%1：%2：参数 %3 为“%4”，而机器人的为“%5”</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="-50"/>
+        <source>needs a URDF robot (the link&apos;s inertia about its axis); %1 has none: give simulation.armature in kg m^2</source>
+        <translation>需要 URDF 机器人（连杆绕其轴的惯量）；%1 没有：请以 kg m^2 给出 simulation.armature</translation>
     </message>
 </context>
 <context>

@@ -71,7 +71,7 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
         pid.step(e, u);
         tauCommand = (plan.feedforward.col(k) + u).cwiseMax(-limit).cwiseMin(limit);
         record.q.col(k) = qMeasured;
-        record.tau.col(k) = tauCommand;
+        arm.measureTorques(tauCommand, record.tau.col(k));
         arm.addTorqueNoise(record.tau.col(k), limit);
         if (k == m_faults.nanTorqueAtSample)
             record.tau(0, k) = std::numeric_limits<double>::quiet_NaN();
