@@ -2518,17 +2518,17 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+201"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+203"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+275"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+279"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-133"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-135"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
@@ -2549,7 +2549,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-243"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-247"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -2559,7 +2559,7 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+85"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
