@@ -28,6 +28,11 @@ bool isAbort(const TrialResult &t)
     return t.record.stoppedAtTrackingLimit();
 }
 
+bool tracksWorse(const TrialResult &t, const TrialResult &than)
+{
+    return maxErrorDeg(t) > (1.0 + worseTrackingMargin) * maxErrorDeg(than);
+}
+
 bool progressOver(const TrialResult &later, const TrialResult &earlier)
 {
     return later.record.samples() > earlier.record.samples() ||
@@ -43,7 +48,8 @@ TrialPlan planUpTo(const TrialPlan &plan, int samples)
     out.desired.q = plan.desired.q.leftCols(samples);
     out.desired.qd = plan.desired.qd.leftCols(samples);
     out.desired.qdd = plan.desired.qdd.leftCols(samples);
-    out.feedforward = plan.feedforward.leftCols(std::min<Eigen::Index>(samples, plan.feedforward.cols()));
+    out.feedforward =
+        plan.feedforward.leftCols(std::min<Eigen::Index>(samples, plan.feedforward.cols()));
     return out;
 }
 
@@ -119,7 +125,7 @@ int proposedEstimate(const QVector<TrialResult> &history, int estimateCount)
         if (best && *best != estimate.at(i)) {
             for (qsizetype k = 0; k < history.size(); ++k)
                 if (estimate.at(k) == *best && history.at(k).record.completed() &&
-                    maxErrorDeg(history.at(k)) < maxErrorDeg(t))
+                    tracksWorse(t, history.at(k)))
                     return *best;
         }
         break;
@@ -135,7 +141,7 @@ QString worseTrackingNote(const QVector<TrialResult> &earlier, const TrialResult
         const TrialResult &before = earlier.at(i);
         if (!before.record.completed())
             continue;
-        if (maxErrorDeg(latest) <= maxErrorDeg(before))
+        if (!tracksWorse(latest, before))
             return {};
         QVector<TrialResult> all = earlier;
         all.append(latest);
