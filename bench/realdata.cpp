@@ -261,19 +261,24 @@ int main(int argc, char **argv)
         else {
             std::fprintf(
                 stderr, "usage: learnid-bench-realdata [--rho R] [--share S] [--geometric-share S] "
-                        "[--stride K] [--velocity-from-q] [--unweighted] "
-                        "[--inconsistent] [--no-volumes]\n");
+                        "[--stride K] [--velocity-from-q] [--nominal-times] [--armature] "
+                        "[--coulomb-velocity V] [--unweighted] [--inconsistent] [--no-volumes] "
+                        "[--no-rule]\n");
             return 2;
         }
     }
     try {
-        std::printf("Filter rho %.3g rad/s, stride %d, %s velocities; prior share %.3g, %s, %s\n\n",
+        std::printf("Filter rho %.3g rad/s, stride %d, %s velocities; prior share %.3g, geometric "
+                    "share %.3g, %s, %s%s%s\n\n",
                     o.filter.rho, o.filter.stride,
                     o.filter.velocity == LogFilterSettings::Velocity::FromPositions
                         ? "estimated from q"
                         : "measured (when logged)",
-                    o.fit.priorShare, o.fit.weighted ? "weighted" : "unweighted",
-                    o.fit.consistent ? "consistent" : "least squares");
+                    o.fit.priorShare, o.fit.geometricShare,
+                    o.fit.weighted ? "weighted" : "unweighted",
+                    o.fit.consistent ? "consistent" : "least squares",
+                    o.fit.volumes ? "" : ", no bounding volumes",
+                    o.fit.plausible ? "" : ", no plausibility floor");
         bench::kuka(o);
         bench::pendulum(o);
     } catch (const Error &e) {

@@ -113,6 +113,170 @@
     </message>
 </context>
 <context>
+    <name>CanBus</name>
+    <message>
+        <location filename="../core/can/CanBusErrors.cpp" line="+30"/>
+        <location line="+51"/>
+        <source>bus off</source>
+        <translation>Bus aus (bus off)</translation>
+    </message>
+    <message>
+        <location line="-47"/>
+        <source>controller error passive (%1)</source>
+        <translation>Controller fehlerpassiv (%1)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>controller buffer overflow: frames were lost</source>
+        <translation>Pufferüberlauf im Controller: Frames gingen verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller error warning level</source>
+        <translation>Controller an der Fehlerwarnschwelle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller back to error active</source>
+        <translation>Controller wieder fehleraktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller problem (unspecified)</source>
+        <translation>Controllerproblem (nicht näher bezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>transmit timeout</source>
+        <translation>Sende-Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>protocol violation (type 0x%1, location 0x%2)</source>
+        <translation>Protokollverletzung (Typ 0x%1, Ort 0x%2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>transceiver error (0x%1)</source>
+        <translation>Transceiverfehler (0x%1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no acknowledgement (no other node on the bus?)</source>
+        <translation>keine Bestätigung (kein anderer Knoten am Bus?)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bus error</source>
+        <translation>Busfehler</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lost arbitration</source>
+        <translation>Arbitrierung verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller restarted</source>
+        <translation>Controller neu gestartet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error class 0x%1</source>
+        <translation>Fehlerklasse 0x%1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>error active</source>
+        <translation>fehleraktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error warning</source>
+        <translation>Fehlerwarnung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error passive</source>
+        <translation>fehlerpassiv</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>stopped</source>
+        <translation>gestoppt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../core/can/SocketCanInterface.cpp" line="+142"/>
+        <source>the CAN interface %1 does not exist (ip link show: is the adapter plugged in, its driver loaded?)</source>
+        <translation>die CAN-Schnittstelle %1 existiert nicht (ip link show: ist der Adapter eingesteckt, sein Treiber geladen?)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a CAN interface</source>
+        <translation>%1 ist keine CAN-Schnittstelle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 is down (as root: ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up)</source>
+        <translation>die CAN-Schnittstelle %1 ist nicht aktiv (als root: ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the CAN controller of %1 is %2 (as root: ip link set %1 down &amp;&amp; ip link set %1 up; check wiring and termination)</source>
+        <translation>der CAN-Controller von %1 ist %2 (als root: ip link set %1 down &amp;&amp; ip link set %1 up; Verkabelung und Abschluss prüfen)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>CAN FD (mtu %1)</source>
+        <translation>CAN FD (MTU %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN (mtu %1)</source>
+        <translation>CAN (MTU %1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bitrate %1 kbit/s</source>
+        <translation>Bitrate %1 kbit/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bitrate not readable</source>
+        <translation>Bitrate nicht lesbar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2, %3, %4</source>
+        <translation>%1: %2, %3, %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up</source>
+        <translation>aktiv</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>down</source>
+        <translation>nicht aktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, driver %1</source>
+        <translation>, Treiber %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, controller %1</source>
+        <translation>, Controller %1</translation>
+    </message>
+</context>
+<context>
     <name>CanOpen</name>
     <message>
         <location filename="../core/can/CanOpen.cpp" line="+51"/>
@@ -149,7 +313,7 @@
 <context>
     <name>CanRobot</name>
     <message>
-        <location filename="../core/canrobot/ApplySteps.cpp" line="+23"/>
+        <location filename="../core/canrobot/ApplySteps.cpp" line="+24"/>
         <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
         <translation>Knoten %1, Objekt %2: nach dem Schreiben von %4 (%5 %6) %3 zurückgelesen: nichts wurde gespeichert</translation>
     </message>
@@ -159,7 +323,7 @@
         <translation>CAN %1/%2, Knoten %3</translation>
     </message>
     <message>
-        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+43"/>
         <source>cannot create the CAN device %1/%2: %3</source>
         <translation>das CAN-Gerät %1/%2 kann nicht angelegt werden: %3</translation>
     </message>
@@ -195,17 +359,17 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+54"/>
+        <location line="+64"/>
         <source>node %1 is listed twice</source>
         <translation>Knoten %1 ist zweimal aufgeführt</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-57"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN-Zeitoptionen müssen positiv sein (Heartbeat-Periode höchstens 65535 ms)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+52"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; ist keine CANopen-Knoten-ID (1 bis 127)</translation>
     </message>
@@ -263,6 +427,36 @@
         <location line="+5"/>
         <source>at SYNC %1 (counter %2), %3 s after NMT start</source>
         <translation>bei SYNC %1 (Zähler %2), %3 s nach NMT-Start</translation>
+    </message>
+    <message>
+        <location filename="../core/canrobot/JointIdentityCheck.cpp" line="+23"/>
+        <source>node %1, object %2: the answer holds %3 bytes, 1 to 4 expected</source>
+        <translation>Knoten %1, Objekt %2: die Antwort enthält %3 Bytes, erwartet 1 bis 4</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>; the drives say --nodes %1</source>
+        <translation>; die Antriebe sagen --nodes %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>node %1 is listed for joint %2 but is the drive of joint %3 of this robot (0x2400:02 = %3): the node list does not match the wiring%4</source>
+        <translation>Knoten %1 ist für Gelenk %2 angegeben, ist aber der Antrieb von Gelenk %3 dieses Roboters (0x2400:02 = %3): die Knotenliste passt nicht zur Verdrahtung%4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>node %1 (joint %2) is not the drive the parameter file records for joint %2: it reports %3 (0x1018), the file holds %4</source>
+        <translation>Knoten %1 (Gelenk %2) ist nicht der Antrieb, den die Parameterdatei für Gelenk %2 verzeichnet: er meldet %3 (0x1018), die Datei enthält %4</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>node %1 (joint %2) has never been commissioned (0x2400 is 0), so learnid cannot check which joint it moves: make sure it is the drive of joint %2 (its identity: %3), then run with --commission (in the window: First commissioning); apply stores the joint identity</source>
+        <translation>Knoten %1 (Gelenk %2) wurde nie in Betrieb genommen (0x2400 ist 0), daher kann learnid nicht prüfen, welches Gelenk er bewegt: stellen Sie sicher, dass er der Antrieb von Gelenk %2 ist (seine Identität: %3), und starten Sie dann mit --commission (im Fenster: Erstinbetriebnahme); Anwenden speichert die Gelenkidentität</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>node %1 (joint %2) was commissioned for another robot (0x2400:01 = %3, this robot is %4): make sure it is the drive of joint %2 (%5), then run with --commission (in the window: First commissioning)</source>
+        <translation>Knoten %1 (Gelenk %2) wurde für einen anderen Roboter in Betrieb genommen (0x2400:01 = %3, dieser Roboter ist %4): stellen Sie sicher, dass er der Antrieb von Gelenk %2 ist (%5), und starten Sie dann mit --commission (im Fenster: Erstinbetriebnahme)</translation>
     </message>
 </context>
 <context>
@@ -796,29 +990,19 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+129"/>
-        <source>link %1 (%2): mass %3 kg: not a real body</source>
-        <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+148"/>
+        <source>not physically consistent</source>
+        <translation>physikalisch nicht konsistent</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>link %1 (%2): its inertia cannot belong to a real body (pseudo-inertia eigenvalue %3)</source>
-        <translation>Glied %1 (%2): seine Trägheit kann zu keinem realen Körper gehören (Eigenwert der Pseudoträgheit %3)</translation>
+        <location line="+2"/>
+        <source>physically consistent (every link a real body) but not plausible</source>
+        <translation>physikalisch konsistent (jedes Glied ein realer Körper), aber nicht plausibel</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 is negative: friction and rotor inertia cannot be</source>
-        <translation>%1 ist negativ: Reibung und Rotorträgheit können das nicht sein</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>physically consistent: every link a real body</source>
-        <translation>physikalisch konsistent: jedes Glied ein realer Körper</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>link %1 (%2): not a plausible body: %3</source>
-        <translation>Glied %1 (%2): kein plausibler Körper: %3</translation>
+        <location line="+2"/>
+        <source>physically consistent and plausible: every link a real body that a robot&apos;s link could be</source>
+        <translation>physikalisch konsistent und plausibel: jedes Glied ein realer Körper, der das Glied eines Roboters sein könnte</translation>
     </message>
 </context>
 <context>
@@ -949,7 +1133,7 @@
         <translation>%1 ist nicht die Schätzung %2, die die Versuche des Verlaufs mit diesem Szenario ergeben: ist sein Schätzer der des Verlaufs?</translation>
     </message>
     <message>
-        <location filename="../core/service/FileLoopPlan.cpp" line="+32"/>
+        <location filename="../core/service/FileLoopPlan.cpp" line="+33"/>
         <source>initial estimate of a learning loop through files</source>
         <translation>Anfangsschätzung einer Lernschleife über Dateien</translation>
     </message>
@@ -1183,6 +1367,59 @@
     </message>
 </context>
 <context>
+    <name>LinkVerdictTable</name>
+    <message>
+        <location filename="../core/session/LinkVerdictTable.cpp" line="+25"/>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Per link: physically consistent (a real body), and plausible (a body a robot&apos;s link could be: its smallest principal moment of inertia about the centre of mass I1 at least %1 % of the CAD link&apos;s, (I1 + I2) / I3 at least %2, the centre of mass inside the link&apos;s bounding volume).</source>
+        <translation>Je Glied: physikalisch konsistent (ein realer Körper) und plausibel (ein Körper, der das Glied eines Roboters sein könnte: sein kleinstes Hauptträgheitsmoment um den Schwerpunkt I1 mindestens %1 % des kleinsten des CAD-Glieds, (I1 + I2) / I3 mindestens %2, der Schwerpunkt innerhalb des Hüllvolumens des Glieds).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>link</source>
+        <translation>Glied</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>I1 [kg m^2]</source>
+        <translation>I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CAD I1 [kg m^2]</source>
+        <translation>CAD-I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>(I1 + I2) / I3</source>
+        <translation>(I1 + I2) / I3</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CoM in volume</source>
+        <translation>Schwerpunkt im Volumen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>consistent</source>
+        <translation>konsistent</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>plausible</source>
+        <translation>plausibel</translation>
+    </message>
+</context>
+<context>
     <name>LogFit</name>
     <message>
         <location filename="../core/identify/LogFit.cpp" line="+141"/>
@@ -1343,7 +1580,7 @@
 <context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+56"/>
         <source>Reading the robot %1…</source>
         <translation>Roboter %1 wird gelesen…</translation>
     </message>
@@ -1372,11 +1609,11 @@
     </message>
     <message>
         <location line="+16"/>
-        <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Konsistenz:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
+        <source>&lt;p&gt;&lt;b&gt;Identified parameters:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Identifizierte Parameter:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Trainingsresiduum&lt;/b&gt;, RMS pro Gelenk [N m]: %1&lt;/p&gt;</translation>
     </message>
@@ -1466,7 +1703,7 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
-        <location filename="../core/can/ManufacturerObjects.cpp" line="+117"/>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+119"/>
         <source>No node to write the parameters to.</source>
         <translation>Kein Knoten, in den die Parameter geschrieben werden können.</translation>
     </message>
@@ -1538,7 +1775,7 @@
 <context>
     <name>ModelCheck</name>
     <message>
-        <location filename="../core/model/ModelCheck.cpp" line="+25"/>
+        <location filename="../core/model/ModelCheck.cpp" line="+27"/>
         <source>link %1 (%2)</source>
         <translation>Glied %1 (%2)</translation>
     </message>
@@ -1548,44 +1785,24 @@
         <translation>Gelenk %1 (%2)</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>%1: its smallest principal moment of inertia about the centre of mass, %2 kg m^2, is below %3 % of the CAD link&apos;s smallest (%4 kg m^2): a point mass or a needle, not a link</source>
-        <translation>%1: sein kleinstes Hauptträgheitsmoment um den Schwerpunkt, %2 kg m^2, liegt unter %3 % des kleinsten des CAD-Glieds (%4 kg m^2): eine Punktmasse oder Nadel, kein Glied</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its principal moments %2, %3 and %4 kg m^2 give I1 + I2 = %5 I3, below %6 I3 (a flat plate at best)</source>
-        <translation>%1: seine Hauptträgheitsmomente %2, %3 und %4 kg m^2 ergeben I1 + I2 = %5 I3, unter %6 I3 (bestenfalls eine flache Platte)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its centre of mass lies outside its bounding volume (%2)</source>
-        <translation>%1: sein Schwerpunkt liegt außerhalb seines Hüllvolumens (%2)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the URDF&apos;s geometry: %1</source>
-        <translation>die Geometrie des URDF: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
-        <translation>das Trägheitsellipsoid des CAD-Körpers, %1-fach vergrößert</translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+8"/>
         <source>%1: its mass is %2 kg: not a real body</source>
         <translation>%1: seine Masse ist %2 kg: kein realer Körper</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>%1: no mass distribution has its inertia (its pseudo-inertia has the negative eigenvalue %2): not a real body</source>
         <translation>%1: keine Massenverteilung hat seine Trägheit (seine Pseudo-Trägheit hat den negativen Eigenwert %2): kein realer Körper</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>%1: %2 is %3, negative: friction and rotor inertia take energy, they do not give it</source>
         <translation>%1: %2 ist %3, negativ: Reibung und Rotorträgheit nehmen Energie auf, sie geben keine ab</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 is %3, between 0 and %4: the underflow of a positive parametrisation where 0 is meant</source>
+        <translation>%1: %2 ist %3, zwischen 0 und %4: der Unterlauf einer positiven Parametrisierung, wo 0 gemeint ist</translation>
     </message>
 </context>
 <context>
@@ -1663,7 +1880,7 @@
         <translation>DCF-Fragment: Gelenk %1 existiert nicht; der Roboter hat %2 Gelenke</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+166"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+178"/>
         <source>must be given for every parameter or for none</source>
         <translation>muss für jeden Parameter oder für keinen angegeben sein</translation>
     </message>
@@ -1688,7 +1905,7 @@
         <translation>muss Datum und Uhrzeit wie 2024-05-01T12:00:00.000Z sein, gefunden: „%1“</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+71"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>fehlt; dies ist keine learnid-Parameterdatei</translation>
     </message>
@@ -1728,20 +1945,20 @@
         <translation>Knoten %1 ist zwei Gelenken zugeordnet</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>must be a valid date and time</source>
         <translation>muss ein gültiges Datum mit Uhrzeit sein</translation>
     </message>
     <message>
-        <location line="-71"/>
-        <location line="+73"/>
+        <location line="-73"/>
+        <location line="+75"/>
         <location line="+15"/>
         <location line="+5"/>
         <source>must not be empty</source>
         <translation>darf nicht leer sein</translation>
     </message>
     <message>
-        <location line="-103"/>
+        <location line="-105"/>
         <source>one per standard parameter</source>
         <translation>einer pro Standardparameter</translation>
     </message>
@@ -1761,7 +1978,7 @@
         <translation>muss den Knoten jedes Gelenks angeben, wenn die Datei keinen Regler festhält</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
@@ -1781,8 +1998,8 @@
         <translation>muss „%1“ sein (Parameter %2 von %3), gefunden: „%4“</translation>
     </message>
     <message>
-        <location line="-103"/>
-        <location line="+109"/>
+        <location line="-105"/>
+        <location line="+111"/>
         <source>values, %1</source>
         <translation>Werte, %1</translation>
     </message>
@@ -2013,27 +2230,42 @@
         <translation>Die zu prüfenden Parameter sind nicht endlich.</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <source>mass %1 kg</source>
-        <translation>Masse %1 kg</translation>
+        <location line="+38"/>
+        <source>its mass is %1 kg: not a real body</source>
+        <translation>seine Masse ist %1 kg: kein realer Körper</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
-        <translation>kleinstes Hauptträgheitsmoment %1 kg m², unter %2 % des kleinsten des CAD-Glieds (%3 kg m²)</translation>
+        <location line="+2"/>
+        <source>its smallest principal moment of inertia about the centre of mass, %1 kg m^2, is below %2 % of the CAD link&apos;s smallest (%3 kg m^2): a point mass or a needle, not a link</source>
+        <translation>sein kleinstes Hauptträgheitsmoment um den Schwerpunkt, %1 kg m^2, liegt unter %2 % des kleinsten des CAD-Glieds (%3 kg m^2): eine Punktmasse oder Nadel, kein Glied</translation>
     </message>
     <message>
         <location line="+7"/>
-        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
-        <translation>(I1 + I2) / I3 = %1, unter %2: eine Nadel oder eine Platte</translation>
+        <source>its principal moments %1, %2 and %3 kg m^2 give I1 + I2 = %4 I3, below %5 I3 (a flat plate at best)</source>
+        <translation>seine Hauptträgheitsmomente %1, %2 und %3 kg m^2 ergeben I1 + I2 = %4 I3, unter %5 I3 (bestenfalls eine flache Platte)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
-        <translation>Schwerpunkt außerhalb des Hüllvolumens des Glieds (das %1-Fache seiner Größe)</translation>
+        <location line="+7"/>
+        <source>its centre of mass lies outside its bounding volume (%1)</source>
+        <translation>sein Schwerpunkt liegt außerhalb seines Hüllvolumens (%1)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+2"/>
+        <source>the URDF&apos;s geometry: %1</source>
+        <translation>die Geometrie des URDF: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
+        <translation>das Trägheitsellipsoid des CAD-Körpers, %1-fach vergrößert</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>its centre of mass lies outside its bounding volume</source>
+        <translation>sein Schwerpunkt liegt außerhalb seines Hüllvolumens</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Index %1 is outside the %2 standard parameters.</source>
         <translation>Index %1 liegt außerhalb der %2 Standardparameter.</translation>
     </message>
@@ -2247,7 +2479,7 @@
 <context>
     <name>RobotScenario</name>
     <message>
-        <location filename="../core/session/RobotScenario.cpp" line="+44"/>
+        <location filename="../core/session/RobotScenario.cpp" line="+45"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -2262,7 +2494,12 @@
         <translation>robot.model: unbekanntes Modell „%1“</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+94"/>
+        <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
+        <translation>unbekannter Roboter „%1“; bekannt: %2 oder eine URDF-Datei (DATEI.urdf)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>path.waypoints[%1][%2]: %3 is %4 joint %5 (%6)&apos;s %7 limit %8</source>
         <translation>path.waypoints[%1][%2]: %3 liegt %4 der %7 Grenze %8 von Gelenk %5 (%6)</translation>
     </message>
@@ -2318,17 +2555,17 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+162"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+164"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+234"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+238"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-94"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-96"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
@@ -2339,17 +2576,17 @@
         <translation>einer pro Gelenk von %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-24"/>
         <source>one per parameter of %1</source>
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-202"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-206"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -2359,7 +2596,7 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+70"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
@@ -2404,7 +2641,7 @@
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>muss 0 (idealer Encoder) oder eine ganze Zahl von %1 bis %2 sein, gefunden: %3</translation>
     </message>
@@ -2624,7 +2861,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+128"/>
+        <location filename="../core/service/SessionReport.cpp" line="+129"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>Schätzung %1 existiert in dieser Sitzung nicht</translation>
     </message>
@@ -2670,9 +2907,9 @@
         <translation>Daten</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>prior</source>
-        <translation>Prior</translation>
+        <location line="+4"/>
+        <source>undetermined (kept near the prior)</source>
+        <translation>unbestimmt (nahe am Prior gehalten)</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -3234,12 +3471,12 @@
         </translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>identifiziert von learnid-cli %1 identify am %2</translation>
     </message>
     <message>
-        <location line="-76"/>
+        <location line="-77"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1: vorhergesagtes und gemessenes Moment</translation>
     </message>
@@ -3249,15 +3486,17 @@
         <translation>learnid: %1 aus Logs identifiziert</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+110"/>
-        <location line="+7"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+105"/>
+        <location line="+9"/>
+        <location line="+6"/>
+        <location line="+13"/>
         <location line="+12"/>
         <location line="+69"/>
         <location line="+62"/>
-        <location filename="../app/cli/main.cpp" line="+52"/>
+        <location filename="../app/cli/main.cpp" line="+53"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli: Fehler: %1</translation>
     </message>
@@ -3272,87 +3511,7 @@
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+19"/>
-        <source>Usage:
-  learnid-cli scenario --print
-      Print the default scenario (the paper scenario) as JSON.
-  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
-                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--consistent] [--workspace DIR] [--quiet]
-      Run a commissioning session on the simulated robot. The table goes to
-      stdout, progress to stderr. Relative output paths are taken from
-      --workspace (default: the current directory). Files are written only
-      when every trial completed.
-      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
-      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
-      --can-log writes every trial&apos;s frames as a candump log into DIR;
-      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
-  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
-                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
-                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
-      Re-identify from recorded trials: the session runs again with each log
-      (one per trial, in order) answering in place of the robot.
-  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
-                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
-                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
-      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
-      and compare the result with its URDF on the --validate logs.
-  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
-                   [--workspace DIR] [--quiet]
-      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
-      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
-  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
-                    [--workspace DIR] [--quiet]
-      Learn from the controller&apos;s log of a plan; the next plan uses the new
-      estimate.
-  learnid-cli COMMAND --help
-      The options of one command.
-</source>
-        <translation>Aufruf:
-  learnid-cli scenario --print
-      Gibt das Standardszenario (das Szenario des Artikels) als JSON aus.
-  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
-                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--consistent] [--workspace DIR] [--quiet]
-      Führt eine Inbetriebnahmesitzung am simulierten Roboter aus. Tabelle nach
-      stdout, Fortschritt nach stderr. Relative Ausgabepfade gelten ab
-      --workspace (Standard: aktuelles Verzeichnis). Dateien werden nur
-      geschrieben, wenn jeder Versuch abgeschlossen wurde.
-      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
-      führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);
-      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR;
-      --can-sync-timeout MS beendet einen Versuch, wenn MS lang kein SYNC kommt (Standard 20).
-  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
-                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
-                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
-      Identifiziert neu aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
-      und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.
-  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
-                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
-                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
-      Identifiziert Trägheit und Reibung eines realen Roboters aus seinen
-      aufgezeichneten Logs (CSV) und vergleicht das Ergebnis an den --validate-Logs
-      mit seinem URDF.
-  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
-                   [--workspace DIR] [--quiet]
-      Plant den nächsten Versuch für den eigenen Regler des Roboters: q_d(t) und
-      tau_f(t) (DIR/plan.csv) und die Prüfung vor dem Versuch (DIR/check.txt).
-  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
-                    [--workspace DIR] [--quiet]
-      Lernt aus dem Log des Reglers zu einem Plan; der nächste Plan verwendet
-      die neue Schätzung.
-  learnid-cli COMMAND --help
-      Die Optionen eines Befehls.
-</translation>
-    </message>
-    <message>
-        <location line="+46"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+68"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -3365,7 +3524,7 @@
 %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+24"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+25"/>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
         <translation>--robot: muss &apos;sim&apos; oder &apos;can&apos; sein, gefunden: &apos;%1&apos;</translation>
     </message>
@@ -3387,6 +3546,16 @@
     </message>
     <message>
         <location line="+10"/>
+        <source>--can-drives: %1</source>
+        <translation>--can-drives: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--can-drives: %1 records no drives (robot.drives): export it from a session on CAN drives</source>
+        <translation>--can-drives: %1 verzeichnet keine Antriebe (robot.drives): exportieren Sie sie aus einer Sitzung mit CAN-Antrieben</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes: %1 in &apos;%2&apos;</translation>
     </message>
@@ -3396,7 +3565,7 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-190"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-205"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
@@ -3408,12 +3577,12 @@
         <translation>--robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+65"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+73"/>
         <source>Show this command&apos;s options.</source>
         <translation>Die Optionen dieses Befehls anzeigen.</translation>
     </message>
     <message>
-        <location line="-41"/>
+        <location line="-49"/>
         <source>Print the default scenario.</source>
         <translation>Standardszenario ausgeben.</translation>
     </message>
@@ -3502,21 +3671,122 @@
     </message>
     <message>
         <location line="+5"/>
+        <source>First commissioning: you confirmed that each node is the drive of its joint (docs/can-protocol.md 2.4).</source>
+        <translation>Erstinbetriebnahme: Sie haben bestätigt, dass jeder Knoten der Antrieb seines Gelenks ist (docs/can-protocol.md 2.4).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A parameter file of this robot: its drives&apos; identities (0x1018) must match.</source>
+        <translation>Eine Parameterdatei dieses Roboters: die Identitäten seiner Antriebe (0x1018) müssen übereinstimmen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>A recorded trial (candump log); once per trial, in order.</source>
         <translation>Ein aufgezeichneter Versuch (candump-Log); einmal pro Versuch, der Reihe nach.</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+9"/>
-        <source>Print the default scenario as JSON.</source>
-        <translation>Das Standardszenario als JSON ausgeben.</translation>
+        <location filename="../app/cli/CliOptions.cpp" line="-73"/>
+        <source>Usage:
+  learnid-cli scenario --print [--robot ROBOT]
+      Print a complete scenario as JSON. ROBOT: paper (the default: the paper
+      scenario), panda, puma560, double-pendulum or a URDF file; for a robot
+      other than paper, the gains the window designs for it and a path of
+      joint waypoints inside its limits.
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--consistent] [--workspace DIR] [--quiet]
+      Run a commissioning session on the simulated robot. The table goes to
+      stdout, progress to stderr. Relative output paths are taken from
+      --workspace (default: the current directory). Files are written only
+      when every trial completed.
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
+      --can-log writes every trial&apos;s frames as a candump log into DIR;
+      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      Re-identify from recorded trials: the session runs again with each log
+      (one per trial, in order) answering in place of the robot.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
+      and compare the result with its URDF on the --validate logs.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
+      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Learn from the controller&apos;s log of a plan; the next plan uses the new
+      estimate.
+  learnid-cli COMMAND --help
+      The options of one command.
+</source>
+        <translation>Aufruf:
+  learnid-cli scenario --print [--robot ROBOT]
+      Gibt ein vollständiges Szenario als JSON aus. ROBOT: paper (Standard: das
+      Szenario des Artikels), panda, puma560, double-pendulum oder eine URDF-Datei;
+      für einen anderen Roboter als paper die Verstärkungen, die das Fenster für ihn
+      auslegt, und eine Bahn aus Gelenk-Stützpunkten innerhalb seiner Grenzen.
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--consistent] [--workspace DIR] [--quiet]
+      Führt eine Inbetriebnahmesitzung am simulierten Roboter aus. Tabelle nach
+      stdout, Fortschritt nach stderr. Relative Ausgabepfade gelten ab
+      --workspace (Standard: aktuelles Verzeichnis). Dateien werden nur
+      geschrieben, wenn jeder Versuch abgeschlossen wurde.
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);
+      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR;
+      --can-sync-timeout MS beendet einen Versuch, wenn MS lang kein SYNC kommt (Standard 20).
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      Identifiziert neu aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
+      und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identifiziert Trägheit und Reibung eines realen Roboters aus seinen
+      aufgezeichneten Logs (CSV) und vergleicht das Ergebnis an den --validate-Logs
+      mit seinem URDF.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plant den nächsten Versuch für den eigenen Regler des Roboters: q_d(t) und
+      tau_f(t) (DIR/plan.csv) und die Prüfung vor dem Versuch (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Lernt aus dem Log des Reglers zu einem Plan; der nächste Plan verwendet
+      die neue Schätzung.
+  learnid-cli COMMAND --help
+      Die Optionen eines Befehls.
+</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+76"/>
+        <source>The robot: paper (default), panda, puma560, double-pendulum, or a URDF file.</source>
+        <translation>Der Roboter: paper (Standard), panda, puma560, double-pendulum oder eine URDF-Datei.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Print a complete scenario for a robot as JSON.</source>
+        <translation>Ein vollständiges Szenario für einen Roboter als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&apos;scenario&apos; needs --print</source>
         <translation>&apos;scenario&apos; braucht --print</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
@@ -3526,7 +3796,7 @@
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+17"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+18"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>Neu identifizieren aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
@@ -3553,11 +3823,6 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <location line="+18"/>
         <source>&apos;replay&apos; needs at least one --candump FILE</source>
         <translation>&apos;replay&apos; braucht mindestens ein --candump FILE</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>--iterations: %1 trials need %1 logs, %2 given</source>
-        <translation>--iterations: %1 Versuche brauchen %1 Logs, %2 angegeben</translation>
     </message>
     <message>
         <location filename="../app/cli/ResultTable.cpp" line="+39"/>
@@ -3666,7 +3931,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--nodes %1: %2 Knoten-IDs für einen Roboter mit %3 Gelenken: ein Knoten pro Gelenk ist nötig</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+60"/>
+        <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
+        <translation>--iterations: %1 Versuche brauchen %1 aufgezeichnete Versuche, die Logs enthalten %2</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
@@ -3691,7 +3961,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 geschrieben (die Sitzung endete vorzeitig)</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-74"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -3892,7 +4162,7 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>&apos;identify&apos; braucht mindestens ein --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+25"/>
         <location line="+16"/>
         <source>name</source>
         <translation>Name</translation>
@@ -3903,12 +4173,12 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>Gel.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+31"/>
         <source>Identified parameters: %1.</source>
         <translation>Identifizierte Parameter: %1.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+18"/>
         <source>training logs: residual of the fit</source>
         <translation>Trainings-Logs: Residuum der Anpassung</translation>
     </message>
@@ -3939,12 +4209,12 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>URDF wie gegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyParameters.cpp" line="+32"/>
-        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: data, below: kept from the prior)</source>
-        <translation>Standardparameter: die des URDF, die identifizierten und was die Daten bestimmt haben (Anteil der Richtung des Parameters; ab 0,5: Daten, darunter: vom Prior übernommen)</translation>
+        <location filename="../app/cli/IdentifyParameters.cpp" line="+33"/>
+        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: the data&apos;s, below: undetermined, kept near the prior, which the data still move a little)</source>
+        <translation>Standardparameter: die des URDF, die identifizierten und was die Daten bestimmt haben (Anteil der Richtung des Parameters; ab 0,5: der Daten, darunter: unbestimmt, nahe am Prior gehalten, den die Daten noch ein wenig verschieben)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>link or joint</source>
         <translation>Glied oder Gelenk</translation>
     </message>
@@ -3972,15 +4242,13 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
     </message>
     <message>
         <location line="+1"/>
-        <source>from</source>
-        <translation>aus</translation>
+        <source>source</source>
+        <translation>Quelle</translation>
     </message>
     <message>
         <location line="+23"/>
-        <source>warning: the URDF as a real robot: %1
-</source>
-        <translation>Warnung: das URDF als realer Roboter: %1
-</translation>
+        <source>warning: the URDF as a real robot: %1</source>
+        <translation>Warnung: das URDF als realer Roboter: %1</translation>
     </message>
     <message>
         <location filename="../app/cli/IdentifyTable.cpp" line="+2"/>
@@ -4077,6 +4345,11 @@ neue Schätzung.
         <location line="+19"/>
         <source>t [s]</source>
         <translation>t [s]</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/ScenarioCommand.cpp" line="+20"/>
+        <source>learnid-cli: error: --robot %1: %2</source>
+        <translation>learnid-cli: Fehler: --robot %1: %2</translation>
     </message>
 </context>
 <context>
@@ -4230,11 +4503,16 @@ neue Schätzung.
     </message>
     <message>
         <location line="+3"/>
-        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default 3; raise it on a heavily loaded machine).</source>
-        <translation>SYNC-Perioden in Betrieb freigegeben ohne Sollwert, bevor ein Antrieb mit EMCY 0x8100 in Fehler geht (Standard 3; auf einem stark ausgelasteten Rechner erhöhen).</translation>
+        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default: 3 periods, at least 50 ms).</source>
+        <translation>SYNC-Perioden in Operation enabled ohne Sollwert, bevor ein Antrieb mit EMCY 0x8100 in Fehler geht (Standard: 3 Perioden, mindestens 50 ms).</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+7"/>
+        <source>Drives that were never commissioned: 0x2400 is 0 (by default joint j&apos;s drive holds the robot&apos;s identity and j).</source>
+        <translation>Antriebe, die nie in Betrieb genommen wurden: 0x2400 ist 0 (standardmäßig enthält der Antrieb von Gelenk j die Identität des Roboters und j).</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
@@ -4353,7 +4631,7 @@ neue Schätzung.
 <context>
     <name>learnid::CanConnection</name>
     <message>
-        <location filename="../core/canrobot/CanConnection.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanConnection.cpp" line="+34"/>
         <source>the CAN device %1 did not connect within %2 ms (is the bus or the robot side running?)</source>
         <translation>das CAN-Gerät %1 hat sich nicht innerhalb von %2 ms verbunden (läuft der Bus oder die Roboterseite?)</translation>
     </message>
@@ -4363,12 +4641,12 @@ neue Schätzung.
         <translation>kein CAN-Gerät für %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>cannot connect the CAN device %1: %2</source>
         <translation>das CAN-Gerät %1 kann nicht verbunden werden: %2</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+59"/>
         <source>no error reported (the other side may have exited)</source>
         <translation>kein Fehler gemeldet (die Gegenseite wurde vielleicht beendet)</translation>
     </message>
@@ -4378,7 +4656,57 @@ neue Schätzung.
         <translation>das CAN-Gerät %1 ist nicht mehr verbunden: %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
+        <source>the CAN device %1 reported an error frame: %2</source>
+        <translation>das CAN-Gerät %1 meldete einen Fehlerframe: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN device %1 reported %2 (error frame 0x%3 %4)</source>
+        <translation>das CAN-Gerät %1 meldete %2 (Fehlerframe 0x%3 %4)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the CAN interface %1 of %2 disappeared</source>
+        <translation>die CAN-Schnittstelle %1 von %2 ist verschwunden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 of %2 went down (ip link set %1 up brings it back)</source>
+        <translation>die CAN-Schnittstelle %1 von %2 wurde deaktiviert (ip link set %1 up aktiviert sie wieder)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN controller of %1 (%2) is %3</source>
+        <translation>der CAN-Controller von %1 (%2) ist %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>the CAN device %1 reports bus off</source>
+        <translation>das CAN-Gerät %1 meldet Bus aus (bus off)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN device %1 reports error passive</source>
+        <translation>das CAN-Gerät %1 meldet fehlerpassiv</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>the CAN device %1 reported a %2 error: %3</source>
+        <translation>das CAN-Gerät %1 meldete einen %2fehler: %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read</source>
+        <translation>Lese</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>write</source>
+        <translation>Schreib</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the CAN device %1 reported a connection error: %2</source>
         <translation>das CAN-Gerät %1 meldete einen Verbindungsfehler: %2</translation>
     </message>
@@ -4404,7 +4732,12 @@ neue Schätzung.
 <context>
     <name>learnid::CanRobotWorker</name>
     <message>
-        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+117"/>
+        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+111"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -4415,12 +4748,22 @@ neue Schätzung.
     </message>
     <message>
         <location line="+16"/>
-        <location line="+27"/>
+        <location line="+57"/>
         <source>stopped by the operator before the drives moved</source>
         <translation>vom Bediener gestoppt, bevor sich die Antriebe bewegten</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-52"/>
+        <source>refused before any motion: %1</source>
+        <translation>vor jeder Bewegung abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>reading the drives&apos; identity failed: %1</source>
+        <translation>das Lesen der Antriebsidentität schlug fehl: %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>configuring the drives failed, nothing moved: %1</source>
         <translation>Konfigurieren der Antriebe fehlgeschlagen, nichts hat sich bewegt: %1</translation>
     </message>
@@ -4435,7 +4778,12 @@ neue Schätzung.
         <translation>%1; die gespeicherten Parameter sind unverändert</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
+        <source>%1; nothing was stored (0x2200, 0x2400 and 0x1010 not written)</source>
+        <translation>%1; nichts wurde gespeichert (0x2200, 0x2400 und 0x1010 nicht geschrieben)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1; nichts wurde gespeichert (0x1010 nicht geschrieben)</translation>
     </message>
@@ -4448,7 +4796,7 @@ neue Schätzung.
 <context>
     <name>learnid::CandumpReplayDevice</name>
     <message>
-        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+38"/>
+        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+88"/>
         <source>Cannot write a frame: the replay is not connected.</source>
         <translation>Frame kann nicht geschrieben werden: die Wiedergabe ist nicht verbunden.</translation>
     </message>
@@ -4458,7 +4806,7 @@ neue Schätzung.
         <translation>Der Master schrieb %1 nach dem Ende des Logs.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
         <translation>Der Master schrieb %1, wo das Log %2 enthält (Log-Frame %3): der wiedergegebene Versuch weicht vom aufgezeichneten ab.</translation>
     </message>
@@ -4476,7 +4824,7 @@ neue Schätzung.
         <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+67"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
@@ -5471,7 +5819,7 @@ Verhältnis %</translation>
         <translation>Das Speicher-CAN-Gerät %1 konnte den Frame nicht schreiben.</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>CAN error frame, error classes 0x%1.</source>
         <translation>CAN-Fehlerframe, Fehlerklassen 0x%1.</translation>
     </message>
@@ -5588,7 +5936,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
-        <location filename="../ui/PreTrialCheckView.cpp" line="+35"/>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+36"/>
         <source>Joint</source>
         <translation>Gelenk</translation>
     </message>
@@ -5671,7 +6019,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RecordedDataDialog</name>
     <message>
-        <location filename="../ui/RecordedDataDialog.cpp" line="+51"/>
+        <location filename="../ui/RecordedDataDialog.cpp" line="+52"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -5721,7 +6069,7 @@ Verhältnis %</translation>
         <translation>Anpassung</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Validation on:</source>
         <translation>Validierung an:</translation>
     </message>
@@ -5731,7 +6079,7 @@ Verhältnis %</translation>
         <translation>Validierung</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>Predicted against measured torque (validation log)</source>
         <translation>Vorhergesagtes gegenüber gemessenem Moment (Validierungs-Log)</translation>
     </message>
@@ -6105,13 +6453,18 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RobotPanel</name>
     <message>
-        <location filename="../ui/RobotPanel.cpp" line="+22"/>
-        <location line="+100"/>
+        <location filename="../ui/RobotPanel.cpp" line="+24"/>
+        <source>First commissioning: I confirmed each node&apos;s joint on the arm</source>
+        <translation>Erstinbetriebnahme: Ich habe das Gelenk jedes Knotens am Arm geprüft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+109"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-91"/>
+        <location line="-99"/>
         <source>Simulated (the scenario&apos;s robot)</source>
         <translation>Simuliert (der Roboter des Szenarios)</translation>
     </message>
@@ -6137,6 +6490,11 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>10 SYNC periods, at least 50 ms</source>
+        <translation>10 SYNC-Perioden, mindestens 50 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
@@ -6146,7 +6504,12 @@ Verhältnis %</translation>
         <translation>Ein Versuch endet, wenn so lange kein SYNC eintrifft</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Only for drives never commissioned (or taken from another robot): tick it after checking on the arm that the drive of each node (its serial number on the type plate) moves the joint the node is listed for. Apply then stores the joint identity in the drives, and later sessions check it without this (docs/can-protocol.md 2.4).</source>
+        <translation>Nur für Antriebe, die nie in Betrieb genommen wurden (oder aus einem anderen Roboter stammen): erst ankreuzen, nachdem Sie am Arm geprüft haben, dass der Antrieb jedes Knotens (seine Seriennummer auf dem Typenschild) das Gelenk bewegt, für das der Knoten eingetragen ist. Anwenden speichert dann die Gelenkidentität in den Antrieben, und spätere Sitzungen prüfen sie ohne dieses Häkchen (docs/can-protocol.md 2.4).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Plugin:</source>
         <translation>Plugin:</translation>
     </message>
@@ -6166,6 +6529,11 @@ Verhältnis %</translation>
         <translation>SYNC-Zeitlimit:</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Drives:</source>
+        <translation>Antriebe:</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Robot:</source>
         <translation>Roboter:</translation>
@@ -6181,7 +6549,7 @@ Verhältnis %</translation>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>CAN nodes: %1</source>
         <translation>CAN-Knoten: %1</translation>
     </message>
@@ -6282,6 +6650,16 @@ Verhältnis %</translation>
         <translation>Planungsanteil</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Gentle first trials</source>
+        <translation>Sanfte erste Versuche</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gentle trials&apos; speed</source>
+        <translation>Geschwindigkeit sanfter Versuche</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>Controller</source>
         <translation>Regler</translation>
@@ -6312,12 +6690,12 @@ Verhältnis %</translation>
         <translation>Wiederholungen pro Versuch</translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-56"/>
         <source>Initial parameters</source>
         <translation>Anfangsparameter</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+59"/>
         <source>Safety</source>
         <translation>Sicherheit</translation>
     </message>
@@ -6337,12 +6715,12 @@ Verhältnis %</translation>
         <translation>Simulierter Roboter</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-63"/>
         <source>True parameters</source>
         <translation>Wahre Parameter</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+67"/>
         <source>CAD perturbation (URDF robots)</source>
         <translation>CAD-Abweichung (URDF-Roboter)</translation>
     </message>
@@ -6665,7 +7043,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::TrackingErrorPlot</name>
     <message>
-        <location filename="../ui/TrackingErrorPlot.cpp" line="+30"/>
+        <location filename="../ui/TrackingErrorPlot.cpp" line="+31"/>
         <source>Auto-scale</source>
         <translation>Automatisch skalieren</translation>
     </message>
@@ -6686,11 +7064,12 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="+94"/>
         <source>Tracking error [deg]</source>
         <translation>Folgefehler [°]</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
@@ -6736,28 +7115,39 @@ Verhältnis %</translation>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../ui/TrackingErrorStyle.cpp" line="+51"/>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="-41"/>
+        <location line="+18"/>
         <source>Joint %1</source>
         <translation>Gelenk %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-17"/>
         <source>Joint %1 (%2)</source>
         <translation>Gelenk %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Error [deg]</source>
+        <translation>Fehler [°]</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>[deg]</source>
+        <translation>[°]</translation>
     </message>
 </context>
 <context>
     <name>learnid::TrialStreamer</name>
     <message>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
-        <location line="+91"/>
+        <location line="+92"/>
         <location line="+68"/>
         <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="-146"/>
+        <location line="-147"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 erreichte Betrieb freigegeben nicht innerhalb von %2 ms: meldet %3 (Statuswort 0x%4)</translation>
     </message>
@@ -6767,7 +7157,7 @@ Verhältnis %</translation>
         <translation>kein TPDO</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+78"/>
         <source>stopped by the operator %1</source>
         <translation>vom Bediener gestoppt %1</translation>
     </message>
@@ -6896,30 +7286,30 @@ Verhältnis %</translation>
 <context>
     <name>learnid::robotsim::SimProcess</name>
     <message>
-        <location filename="../app/robot-sim/SimProcess.cpp" line="+43"/>
+        <location filename="../app/robot-sim/SimProcess.cpp" line="+44"/>
         <source>learnid-robot-sim: stopping (%1)</source>
         <translation>learnid-robot-sim: wird beendet (%1)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+93"/>
+        <location line="+96"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>die CAN-Schnittstelle %1 mit Plugin %2 kann nicht verbunden werden: %3</translation>
     </message>
     <message>
-        <location line="-61"/>
-        <location line="+16"/>
+        <location line="-62"/>
+        <location line="+17"/>
         <location line="+75"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim: Fehler: %1</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-85"/>
         <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
         <translation>learnid-robot-sim: Fehler: das CAN-Gerät %1 mit Plugin %2 kann nicht angelegt werden: %3</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <location line="+58"/>
         <source>learnid-robot-sim: error: --state: %1</source>
         <translation>learnid-robot-sim: Fehler: --state: %1</translation>
@@ -6948,9 +7338,14 @@ Verhältnis %</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+38"/>
+        <location filename="../app/gui/StartOptions.cpp" line="+67"/>
         <source>Commissioning tool: learning identification of robot dynamics.</source>
         <translation>Inbetriebnahmewerkzeug: lernende Identifikation der Roboterdynamik.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The window needs a display; learnid-cli works without one.</source>
+        <translation>Das Fenster braucht einen Bildschirm; learnid-cli arbeitet ohne.</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -6963,14 +7358,34 @@ Verhältnis %</translation>
         <translation>Sprache der Oberfläche, z. B. de oder zh_CN (Standard: wie in der Anwendung gewählt, sonst die des Systems).</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>What --screenshot shows: %1 (default: main).</source>
         <translation>Was --screenshot zeigt: %1 (Standard: main).</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+5"/>
+        <source>Open the scenario &lt;file&gt; at start.</source>
+        <translation>Das Szenario &lt;file&gt; beim Start öffnen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A scenario file to open at start (as --scenario).</source>
+        <translation>Eine Szenariodatei, die beim Start geöffnet wird (wie --scenario).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>learnid: unknown --screenshot-view &apos;%1&apos;; known: %2</source>
         <translation>learnid: unbekannte --screenshot-view &apos;%1&apos;; bekannt: %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>learnid: one scenario at a time, got %1: %2</source>
+        <translation>learnid: nur ein Szenario auf einmal, erhalten %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>learnid: the window needs a display, and none is set (DISPLAY, WAYLAND_DISPLAY); learnid --help lists the options, learnid-cli works without a display.</source>
+        <translation>learnid: Das Fenster braucht einen Bildschirm, und keiner ist gesetzt (DISPLAY, WAYLAND_DISPLAY); learnid --help listet die Optionen, learnid-cli arbeitet ohne Bildschirm.</translation>
     </message>
 </context>
 </TS>

@@ -113,6 +113,170 @@
     </message>
 </context>
 <context>
+    <name>CanBus</name>
+    <message>
+        <location filename="../core/can/CanBusErrors.cpp" line="+30"/>
+        <location line="+51"/>
+        <source>bus off</source>
+        <translation>总线关闭 (bus off)</translation>
+    </message>
+    <message>
+        <location line="-47"/>
+        <source>controller error passive (%1)</source>
+        <translation>控制器错误被动 (%1)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>controller buffer overflow: frames were lost</source>
+        <translation>控制器缓冲区溢出：帧已丢失</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller error warning level</source>
+        <translation>控制器达到错误警告级别</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller back to error active</source>
+        <translation>控制器恢复为错误主动</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller problem (unspecified)</source>
+        <translation>控制器问题（未指明）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>transmit timeout</source>
+        <translation>发送超时</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>protocol violation (type 0x%1, location 0x%2)</source>
+        <translation>协议违规（类型 0x%1，位置 0x%2）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>transceiver error (0x%1)</source>
+        <translation>收发器错误 (0x%1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no acknowledgement (no other node on the bus?)</source>
+        <translation>无应答（总线上没有其他节点？）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bus error</source>
+        <translation>总线错误</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lost arbitration</source>
+        <translation>仲裁丢失</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller restarted</source>
+        <translation>控制器已重启</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error class 0x%1</source>
+        <translation>错误类别 0x%1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>error active</source>
+        <translation>错误主动</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error warning</source>
+        <translation>错误警告</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error passive</source>
+        <translation>错误被动</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>stopped</source>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location filename="../core/can/SocketCanInterface.cpp" line="+142"/>
+        <source>the CAN interface %1 does not exist (ip link show: is the adapter plugged in, its driver loaded?)</source>
+        <translation>CAN 接口 %1 不存在（ip link show：适配器是否已插入、驱动是否已加载？）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a CAN interface</source>
+        <translation>%1 不是 CAN 接口</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 is down (as root: ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up)</source>
+        <translation>CAN 接口 %1 未启用（以 root 运行：ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the CAN controller of %1 is %2 (as root: ip link set %1 down &amp;&amp; ip link set %1 up; check wiring and termination)</source>
+        <translation>%1 的 CAN 控制器处于 %2（以 root 运行：ip link set %1 down &amp;&amp; ip link set %1 up；请检查接线和终端电阻）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>CAN FD (mtu %1)</source>
+        <translation>CAN FD (mtu %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN (mtu %1)</source>
+        <translation>CAN (mtu %1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bitrate %1 kbit/s</source>
+        <translation>比特率 %1 kbit/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bitrate not readable</source>
+        <translation>比特率不可读</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2, %3, %4</source>
+        <translation>%1：%2，%3，%4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up</source>
+        <translation>已启用</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>down</source>
+        <translation>未启用</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, driver %1</source>
+        <translation>，驱动 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, controller %1</source>
+        <translation>，控制器 %1</translation>
+    </message>
+</context>
+<context>
     <name>CanOpen</name>
     <message>
         <location filename="../core/can/CanOpen.cpp" line="+51"/>
@@ -149,7 +313,7 @@
 <context>
     <name>CanRobot</name>
     <message>
-        <location filename="../core/canrobot/ApplySteps.cpp" line="+23"/>
+        <location filename="../core/canrobot/ApplySteps.cpp" line="+24"/>
         <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
         <translation>节点 %1，对象 %2：写入 %4（%5 %6）后回读为 %3：未存储任何内容</translation>
     </message>
@@ -159,7 +323,7 @@
         <translation>CAN %1/%2，节点 %3</translation>
     </message>
     <message>
-        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+43"/>
         <source>cannot create the CAN device %1/%2: %3</source>
         <translation>无法创建 CAN 设备 %1/%2：%3</translation>
     </message>
@@ -195,17 +359,17 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+54"/>
+        <location line="+64"/>
         <source>node %1 is listed twice</source>
         <translation>节点 %1 被列出两次</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-57"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN 定时选项必须为正（心跳周期最多 65535 ms）</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+52"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; 不是 CANopen 节点 ID（1 到 127）</translation>
     </message>
@@ -263,6 +427,36 @@
         <location line="+5"/>
         <source>at SYNC %1 (counter %2), %3 s after NMT start</source>
         <translation>于 SYNC %1（计数器 %2），NMT 启动后 %3 s</translation>
+    </message>
+    <message>
+        <location filename="../core/canrobot/JointIdentityCheck.cpp" line="+23"/>
+        <source>node %1, object %2: the answer holds %3 bytes, 1 to 4 expected</source>
+        <translation>节点 %1，对象 %2：应答含 %3 字节，应为 1 至 4 字节</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>; the drives say --nodes %1</source>
+        <translation>；驱动器给出的是 --nodes %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>node %1 is listed for joint %2 but is the drive of joint %3 of this robot (0x2400:02 = %3): the node list does not match the wiring%4</source>
+        <translation>节点 %1 被列为关节 %2，但它是本机器人关节 %3 的驱动器（0x2400:02 = %3）：节点列表与接线不符%4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>node %1 (joint %2) is not the drive the parameter file records for joint %2: it reports %3 (0x1018), the file holds %4</source>
+        <translation>节点 %1（关节 %2）不是参数文件为关节 %2 记录的驱动器：它报告 %3 (0x1018)，文件中为 %4</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>node %1 (joint %2) has never been commissioned (0x2400 is 0), so learnid cannot check which joint it moves: make sure it is the drive of joint %2 (its identity: %3), then run with --commission (in the window: First commissioning); apply stores the joint identity</source>
+        <translation>节点 %1（关节 %2）从未调试过（0x2400 为 0），learnid 无法检查它驱动哪个关节：请确认它是关节 %2 的驱动器（其标识：%3），然后使用 --commission 运行（在窗口中：首次调试）；应用时会存储关节标识</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>node %1 (joint %2) was commissioned for another robot (0x2400:01 = %3, this robot is %4): make sure it is the drive of joint %2 (%5), then run with --commission (in the window: First commissioning)</source>
+        <translation>节点 %1（关节 %2）曾为另一台机器人调试（0x2400:01 = %3，本机器人为 %4）：请确认它是关节 %2 的驱动器（%5），然后使用 --commission 运行（在窗口中：首次调试）</translation>
     </message>
 </context>
 <context>
@@ -796,29 +990,19 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+129"/>
-        <source>link %1 (%2): mass %3 kg: not a real body</source>
-        <translation>连杆 %1（%2）：质量 %3 kg：不是真实刚体</translation>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+148"/>
+        <source>not physically consistent</source>
+        <translation>物理不一致</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>link %1 (%2): its inertia cannot belong to a real body (pseudo-inertia eigenvalue %3)</source>
-        <translation>连杆 %1（%2）：其惯量不可能属于真实刚体（伪惯量特征值 %3）</translation>
+        <location line="+2"/>
+        <source>physically consistent (every link a real body) but not plausible</source>
+        <translation>物理一致（每个连杆都是真实刚体），但不合理</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 is negative: friction and rotor inertia cannot be</source>
-        <translation>%1 为负：摩擦和转子惯量不能为负</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>physically consistent: every link a real body</source>
-        <translation>物理一致：每个连杆都是真实刚体</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>link %1 (%2): not a plausible body: %3</source>
-        <translation>连杆 %1（%2）：不是合理的刚体：%3</translation>
+        <location line="+2"/>
+        <source>physically consistent and plausible: every link a real body that a robot&apos;s link could be</source>
+        <translation>物理一致且合理：每个连杆都是可以作为机器人连杆的真实刚体</translation>
     </message>
 </context>
 <context>
@@ -949,7 +1133,7 @@
         <translation>%1 不是历史中的试验在此场景下得到的估计 %2：场景的估计器是否与历史的一致？</translation>
     </message>
     <message>
-        <location filename="../core/service/FileLoopPlan.cpp" line="+32"/>
+        <location filename="../core/service/FileLoopPlan.cpp" line="+33"/>
         <source>initial estimate of a learning loop through files</source>
         <translation>基于文件的学习循环的初始估计</translation>
     </message>
@@ -1183,6 +1367,59 @@
     </message>
 </context>
 <context>
+    <name>LinkVerdictTable</name>
+    <message>
+        <location filename="../core/session/LinkVerdictTable.cpp" line="+25"/>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Per link: physically consistent (a real body), and plausible (a body a robot&apos;s link could be: its smallest principal moment of inertia about the centre of mass I1 at least %1 % of the CAD link&apos;s, (I1 + I2) / I3 at least %2, the centre of mass inside the link&apos;s bounding volume).</source>
+        <translation>每个连杆：物理一致（真实刚体）且合理（可以作为机器人连杆的刚体：其绕质心的最小主惯性矩 I1 至少为 CAD 连杆的 %1 %，(I1 + I2) / I3 至少为 %2，质心位于连杆包围体之内）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>link</source>
+        <translation>连杆</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>I1 [kg m^2]</source>
+        <translation>I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CAD I1 [kg m^2]</source>
+        <translation>CAD I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>(I1 + I2) / I3</source>
+        <translation>(I1 + I2) / I3</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CoM in volume</source>
+        <translation>质心在包围体内</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>consistent</source>
+        <translation>一致</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>plausible</source>
+        <translation>合理</translation>
+    </message>
+</context>
+<context>
     <name>LogFit</name>
     <message>
         <location filename="../core/identify/LogFit.cpp" line="+141"/>
@@ -1335,7 +1572,7 @@
 <context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+56"/>
         <source>Reading the robot %1…</source>
         <translation>正在读取机器人 %1…</translation>
     </message>
@@ -1363,11 +1600,11 @@
     </message>
     <message>
         <location line="+16"/>
-        <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;一致性：&lt;/b&gt;&lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
+        <source>&lt;p&gt;&lt;b&gt;Identified parameters:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;识别参数：&lt;/b&gt;&lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;训练残差&lt;/b&gt;，各关节 RMS [N m]：%1&lt;/p&gt;</translation>
     </message>
@@ -1457,7 +1694,7 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
-        <location filename="../core/can/ManufacturerObjects.cpp" line="+117"/>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+119"/>
         <source>No node to write the parameters to.</source>
         <translation>没有可写入参数的节点。</translation>
     </message>
@@ -1529,7 +1766,7 @@
 <context>
     <name>ModelCheck</name>
     <message>
-        <location filename="../core/model/ModelCheck.cpp" line="+25"/>
+        <location filename="../core/model/ModelCheck.cpp" line="+27"/>
         <source>link %1 (%2)</source>
         <translation>连杆 %1（%2）</translation>
     </message>
@@ -1539,44 +1776,24 @@
         <translation>关节 %1（%2）</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>%1: its smallest principal moment of inertia about the centre of mass, %2 kg m^2, is below %3 % of the CAD link&apos;s smallest (%4 kg m^2): a point mass or a needle, not a link</source>
-        <translation>%1：其绕质心的最小主惯性矩 %2 kg m^2 低于 CAD 连杆最小主惯性矩（%4 kg m^2）的 %3 %：是质点或细针，不是连杆</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its principal moments %2, %3 and %4 kg m^2 give I1 + I2 = %5 I3, below %6 I3 (a flat plate at best)</source>
-        <translation>%1：其主惯性矩 %2、%3 和 %4 kg m^2 给出 I1 + I2 = %5 I3，低于 %6 I3（至多是一块薄板）</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its centre of mass lies outside its bounding volume (%2)</source>
-        <translation>%1：其质心位于包围体之外（%2）</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the URDF&apos;s geometry: %1</source>
-        <translation>URDF 的几何体：%1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
-        <translation>CAD 刚体的惯性椭球，放大 %1 倍</translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+8"/>
         <source>%1: its mass is %2 kg: not a real body</source>
         <translation>%1：其质量为 %2 kg：不是真实刚体</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>%1: no mass distribution has its inertia (its pseudo-inertia has the negative eigenvalue %2): not a real body</source>
         <translation>%1：没有任何质量分布具有其惯性（其伪惯性矩阵有负特征值 %2）：不是真实刚体</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>%1: %2 is %3, negative: friction and rotor inertia take energy, they do not give it</source>
         <translation>%1：%2 为 %3，是负值：摩擦和转子惯量只消耗能量，不会提供能量</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 is %3, between 0 and %4: the underflow of a positive parametrisation where 0 is meant</source>
+        <translation>%1：%2 为 %3，介于 0 和 %4 之间：这是本应为 0 的正参数化的下溢</translation>
     </message>
 </context>
 <context>
@@ -1654,7 +1871,7 @@
         <translation>DCF 片段：关节 %1 不存在；机器人有 %2 个关节</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+166"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+178"/>
         <source>must be given for every parameter or for none</source>
         <translation>必须为每个参数都给出，或都不给出</translation>
     </message>
@@ -1679,7 +1896,7 @@
         <translation>必须是形如 2024-05-01T12:00:00.000Z 的日期时间，实际为“%1”</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+71"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>缺失；这不是 learnid 参数文件</translation>
     </message>
@@ -1719,20 +1936,20 @@
         <translation>节点 %1 被分配给两个关节</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>must be a valid date and time</source>
         <translation>必须是有效的日期时间</translation>
     </message>
     <message>
-        <location line="-71"/>
-        <location line="+73"/>
+        <location line="-73"/>
+        <location line="+75"/>
         <location line="+15"/>
         <location line="+5"/>
         <source>must not be empty</source>
         <translation>不得为空</translation>
     </message>
     <message>
-        <location line="-103"/>
+        <location line="-105"/>
         <source>one per standard parameter</source>
         <translation>每个标准参数一个</translation>
     </message>
@@ -1752,7 +1969,7 @@
         <translation>文件未记录控制器时必须给出每个关节的节点</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>未知学习律“%1”；已知学习律：%2</translation>
     </message>
@@ -1772,8 +1989,8 @@
         <translation>必须是“%1”（%3 的参数 %2），实际为“%4”</translation>
     </message>
     <message>
-        <location line="-103"/>
-        <location line="+109"/>
+        <location line="-105"/>
+        <location line="+111"/>
         <source>values, %1</source>
         <translation>数值，%1</translation>
     </message>
@@ -2004,27 +2221,42 @@
         <translation>待检查的参数不是有限值。</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <source>mass %1 kg</source>
-        <translation>质量 %1 kg</translation>
+        <location line="+38"/>
+        <source>its mass is %1 kg: not a real body</source>
+        <translation>其质量为 %1 kg：不是真实刚体</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
-        <translation>最小主惯量 %1 kg m²，低于 CAD 连杆最小主惯量（%3 kg m²）的 %2 %</translation>
+        <location line="+2"/>
+        <source>its smallest principal moment of inertia about the centre of mass, %1 kg m^2, is below %2 % of the CAD link&apos;s smallest (%3 kg m^2): a point mass or a needle, not a link</source>
+        <translation>其绕质心的最小主惯性矩 %1 kg m^2 低于 CAD 连杆最小主惯性矩（%3 kg m^2）的 %2 %：是质点或细针，不是连杆</translation>
     </message>
     <message>
         <location line="+7"/>
-        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
-        <translation>(I1 + I2) / I3 = %1，低于 %2：像针或薄板</translation>
+        <source>its principal moments %1, %2 and %3 kg m^2 give I1 + I2 = %4 I3, below %5 I3 (a flat plate at best)</source>
+        <translation>其主惯性矩 %1、%2 和 %3 kg m^2 给出 I1 + I2 = %4 I3，低于 %5 I3（至多是一块薄板）</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
-        <translation>质心位于连杆包围体之外（其尺寸的 %1 倍）</translation>
+        <location line="+7"/>
+        <source>its centre of mass lies outside its bounding volume (%1)</source>
+        <translation>其质心位于包围体之外（%1）</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+2"/>
+        <source>the URDF&apos;s geometry: %1</source>
+        <translation>URDF 的几何体：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
+        <translation>CAD 刚体的惯性椭球，放大 %1 倍</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>its centre of mass lies outside its bounding volume</source>
+        <translation>其质心位于包围体之外</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Index %1 is outside the %2 standard parameters.</source>
         <translation>索引 %1 超出了 %2 个标准参数的范围。</translation>
     </message>
@@ -2236,7 +2468,7 @@
 <context>
     <name>RobotScenario</name>
     <message>
-        <location filename="../core/session/RobotScenario.cpp" line="+44"/>
+        <location filename="../core/session/RobotScenario.cpp" line="+45"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -2251,7 +2483,12 @@
         <translation>robot.model：未知模型“%1”</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+94"/>
+        <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
+        <translation>未知机器人“%1”；已知：%2，或一个 URDF 文件（FILE.urdf）</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>path.waypoints[%1][%2]: %3 is %4 joint %5 (%6)&apos;s %7 limit %8</source>
         <translation>path.waypoints[%1][%2]：%3 %4关节 %5（%6）的%7 %8</translation>
     </message>
@@ -2307,17 +2544,17 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+162"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+164"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+234"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+238"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-94"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-96"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
@@ -2328,17 +2565,17 @@
         <translation>%1 的每个关节一个</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>未知学习律“%1”；已知学习律：%2</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-24"/>
         <source>one per parameter of %1</source>
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-202"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-206"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -2348,7 +2585,7 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+70"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
@@ -2393,7 +2630,7 @@
         <translation>必须是 1 或 -1，实际为 %1</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>必须是 0（理想编码器）或 %1 到 %2 之间的整数，实际为 %3</translation>
     </message>
@@ -2613,7 +2850,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+128"/>
+        <location filename="../core/service/SessionReport.cpp" line="+129"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>本会话中不存在估计 %1</translation>
     </message>
@@ -2659,9 +2896,9 @@
         <translation>数据</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>prior</source>
-        <translation>先验</translation>
+        <location line="+4"/>
+        <source>undetermined (kept near the prior)</source>
+        <translation>未确定（保持在先验附近）</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -3222,12 +3459,12 @@
         </translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>由 learnid-cli %1 identify 于 %2 辨识</translation>
     </message>
     <message>
-        <location line="-76"/>
+        <location line="-77"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1：预测力矩与测量力矩</translation>
     </message>
@@ -3237,15 +3474,17 @@
         <translation>learnid：根据日志辨识 %1</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+110"/>
-        <location line="+7"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+105"/>
+        <location line="+9"/>
+        <location line="+6"/>
+        <location line="+13"/>
         <location line="+12"/>
         <location line="+69"/>
         <location line="+62"/>
-        <location filename="../app/cli/main.cpp" line="+52"/>
+        <location filename="../app/cli/main.cpp" line="+53"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli：错误：%1</translation>
     </message>
@@ -3260,86 +3499,7 @@
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+19"/>
-        <source>Usage:
-  learnid-cli scenario --print
-      Print the default scenario (the paper scenario) as JSON.
-  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
-                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--consistent] [--workspace DIR] [--quiet]
-      Run a commissioning session on the simulated robot. The table goes to
-      stdout, progress to stderr. Relative output paths are taken from
-      --workspace (default: the current directory). Files are written only
-      when every trial completed.
-      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
-      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
-      --can-log writes every trial&apos;s frames as a candump log into DIR;
-      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
-  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
-                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
-                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
-      Re-identify from recorded trials: the session runs again with each log
-      (one per trial, in order) answering in place of the robot.
-  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
-                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
-                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
-      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
-      and compare the result with its URDF on the --validate logs.
-  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
-                   [--workspace DIR] [--quiet]
-      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
-      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
-  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
-                    [--workspace DIR] [--quiet]
-      Learn from the controller&apos;s log of a plan; the next plan uses the new
-      estimate.
-  learnid-cli COMMAND --help
-      The options of one command.
-</source>
-        <translation>用法：
-  learnid-cli scenario --print
-      以 JSON 格式输出默认场景（论文场景）。
-  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
-                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--consistent] [--workspace DIR] [--quiet]
-      在仿真机器人上运行一次调试会话。表格输出到 stdout，
-      进度输出到 stderr。相对输出路径以 --workspace 为基准
-      （默认：当前目录）。只有当所有试验都完成时
-      才写入文件。
-      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
-      改为在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）；
-      --can-log 将每次试验的帧以 candump 日志写入 DIR；
-      --can-sync-timeout MS：MS 内无 SYNC 即停止试验（默认 20）。
-  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
-                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
-                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
-      根据记录的试验重新辨识：会话再次运行，由每个日志
-      （每次试验一个，按顺序）代替机器人应答。
-  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
-                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
-                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
-      根据真实机器人记录的日志（CSV）辨识其惯量和摩擦，
-      并在 --validate 日志上将结果与其 URDF 进行比较。
-  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
-                   [--workspace DIR] [--quiet]
-      为机器人自身的控制器规划下一次试验：q_d(t) 和 tau_f(t)
-      （DIR/plan.csv）以及试验前检查（DIR/check.txt）。
-  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
-                    [--workspace DIR] [--quiet]
-      从控制器按某个计划记录的日志中学习；下一个计划使用
-      新的估计。
-  learnid-cli COMMAND --help
-      某个命令的选项。
-</translation>
-    </message>
-    <message>
-        <location line="+46"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+68"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -3352,7 +3512,7 @@
 %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+24"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+25"/>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
         <translation>--robot：必须是 &apos;sim&apos; 或 &apos;can&apos;，实际为 &apos;%1&apos;</translation>
     </message>
@@ -3374,6 +3534,16 @@
     </message>
     <message>
         <location line="+10"/>
+        <source>--can-drives: %1</source>
+        <translation>--can-drives：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--can-drives: %1 records no drives (robot.drives): export it from a session on CAN drives</source>
+        <translation>--can-drives：%1 未记录驱动器 (robot.drives)：请从使用 CAN 驱动器的会话中导出</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes：&apos;%2&apos; 中 %1</translation>
     </message>
@@ -3383,7 +3553,7 @@
         <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-190"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-205"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1：%2</translation>
@@ -3395,12 +3565,12 @@
         <translation>--robot %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+65"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+73"/>
         <source>Show this command&apos;s options.</source>
         <translation>显示此命令的选项。</translation>
     </message>
     <message>
-        <location line="-41"/>
+        <location line="-49"/>
         <source>Print the default scenario.</source>
         <translation>输出默认场景。</translation>
     </message>
@@ -3489,21 +3659,120 @@
     </message>
     <message>
         <location line="+5"/>
+        <source>First commissioning: you confirmed that each node is the drive of its joint (docs/can-protocol.md 2.4).</source>
+        <translation>首次调试：您已确认每个节点都是其关节的驱动器（docs/can-protocol.md 2.4）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A parameter file of this robot: its drives&apos; identities (0x1018) must match.</source>
+        <translation>本机器人的参数文件：其驱动器标识 (0x1018) 必须一致。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>A recorded trial (candump log); once per trial, in order.</source>
         <translation>一次记录的试验（candump 日志）；每次试验一个，按顺序。</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+9"/>
-        <source>Print the default scenario as JSON.</source>
-        <translation>以 JSON 格式输出默认场景。</translation>
+        <location filename="../app/cli/CliOptions.cpp" line="-73"/>
+        <source>Usage:
+  learnid-cli scenario --print [--robot ROBOT]
+      Print a complete scenario as JSON. ROBOT: paper (the default: the paper
+      scenario), panda, puma560, double-pendulum or a URDF file; for a robot
+      other than paper, the gains the window designs for it and a path of
+      joint waypoints inside its limits.
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--consistent] [--workspace DIR] [--quiet]
+      Run a commissioning session on the simulated robot. The table goes to
+      stdout, progress to stderr. Relative output paths are taken from
+      --workspace (default: the current directory). Files are written only
+      when every trial completed.
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
+      --can-log writes every trial&apos;s frames as a candump log into DIR;
+      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      Re-identify from recorded trials: the session runs again with each log
+      (one per trial, in order) answering in place of the robot.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
+      and compare the result with its URDF on the --validate logs.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
+      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Learn from the controller&apos;s log of a plan; the next plan uses the new
+      estimate.
+  learnid-cli COMMAND --help
+      The options of one command.
+</source>
+        <translation>用法：
+  learnid-cli scenario --print [--robot ROBOT]
+      以 JSON 格式输出完整场景。ROBOT：paper（默认：论文场景）、panda、puma560、
+      double-pendulum 或一个 URDF 文件；对于 paper 以外的机器人，给出窗口为其设计的
+      增益，以及一条位于其关节限位内的关节路点路径。
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--consistent] [--workspace DIR] [--quiet]
+      在仿真机器人上运行一次调试会话。表格输出到 stdout，
+      进度输出到 stderr。相对输出路径以 --workspace 为基准
+      （默认：当前目录）。只有当所有试验都完成时
+      才写入文件。
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      改为在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）；
+      --can-log 将每次试验的帧以 candump 日志写入 DIR；
+      --can-sync-timeout MS：MS 内无 SYNC 即停止试验（默认 20）。
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      根据记录的试验重新辨识：会话再次运行，由每个日志
+      （每次试验一个，按顺序）代替机器人应答。
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      根据真实机器人记录的日志（CSV）辨识其惯量和摩擦，
+      并在 --validate 日志上将结果与其 URDF 进行比较。
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      为机器人自身的控制器规划下一次试验：q_d(t) 和 tau_f(t)
+      （DIR/plan.csv）以及试验前检查（DIR/check.txt）。
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      从控制器按某个计划记录的日志中学习；下一个计划使用
+      新的估计。
+  learnid-cli COMMAND --help
+      某个命令的选项。
+</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+76"/>
+        <source>The robot: paper (default), panda, puma560, double-pendulum, or a URDF file.</source>
+        <translation>机器人：paper（默认）、panda、puma560、double-pendulum 或一个 URDF 文件。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Print a complete scenario for a robot as JSON.</source>
+        <translation>以 JSON 格式输出某个机器人的完整场景。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&apos;scenario&apos; needs --print</source>
         <translation>&apos;scenario&apos; 需要 --print</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>no command given</source>
         <translation>未给出命令</translation>
     </message>
@@ -3513,7 +3782,7 @@
         <translation>未知命令 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+17"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+18"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>根据记录的试验重新辨识：会话再次运行，
@@ -3540,11 +3809,6 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <location line="+18"/>
         <source>&apos;replay&apos; needs at least one --candump FILE</source>
         <translation>&apos;replay&apos; 至少需要一个 --candump FILE</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>--iterations: %1 trials need %1 logs, %2 given</source>
-        <translation>--iterations：%1 次试验需要 %1 个日志，给出了 %2 个</translation>
     </message>
     <message>
         <location filename="../app/cli/ResultTable.cpp" line="+39"/>
@@ -3653,7 +3917,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--nodes %1：%2 个节点 ID，而机器人有 %3 个关节：每个关节需要一个节点</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+60"/>
+        <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
+        <translation>--iterations：%1 次试验需要 %1 次已记录的试验，日志中有 %2 次</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
@@ -3678,7 +3947,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已写入 %1（会话提前结束）</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-74"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -3879,7 +4148,7 @@ and compare the result with the URDF as given on --validate logs.
         <translation>&apos;identify&apos; 至少需要一个 --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+25"/>
         <location line="+16"/>
         <source>name</source>
         <translation>名称</translation>
@@ -3890,12 +4159,12 @@ and compare the result with the URDF as given on --validate logs.
         <translation>关节</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+31"/>
         <source>Identified parameters: %1.</source>
         <translation>辨识出的参数：%1。</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+18"/>
         <source>training logs: residual of the fit</source>
         <translation>训练日志：拟合残差</translation>
     </message>
@@ -3926,12 +4195,12 @@ and compare the result with the URDF as given on --validate logs.
         <translation>给定的 URDF</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyParameters.cpp" line="+32"/>
-        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: data, below: kept from the prior)</source>
-        <translation>标准参数：URDF 的值、识别值以及数据确定的程度（参数方向的份额；至少 0.5：来自数据，低于此值：保留先验值）</translation>
+        <location filename="../app/cli/IdentifyParameters.cpp" line="+33"/>
+        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: the data&apos;s, below: undetermined, kept near the prior, which the data still move a little)</source>
+        <translation>标准参数：URDF 的值、识别值以及数据确定的程度（参数方向的份额；至少 0.5：来自数据，低于此值：未确定，保持在先验附近，数据仍会使其略有变化）</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>link or joint</source>
         <translation>连杆或关节</translation>
     </message>
@@ -3959,15 +4228,13 @@ and compare the result with the URDF as given on --validate logs.
     </message>
     <message>
         <location line="+1"/>
-        <source>from</source>
+        <source>source</source>
         <translation>来源</translation>
     </message>
     <message>
         <location line="+23"/>
-        <source>warning: the URDF as a real robot: %1
-</source>
-        <translation>警告：该 URDF 作为真实机器人：%1
-</translation>
+        <source>warning: the URDF as a real robot: %1</source>
+        <translation>警告：将该 URDF 视为真实机器人：%1</translation>
     </message>
     <message>
         <location filename="../app/cli/IdentifyTable.cpp" line="+2"/>
@@ -4062,6 +4329,11 @@ stdout, and the next plan uses the new estimate.
         <location line="+19"/>
         <source>t [s]</source>
         <translation>t [s]</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/ScenarioCommand.cpp" line="+20"/>
+        <source>learnid-cli: error: --robot %1: %2</source>
+        <translation>learnid-cli：错误：--robot %1：%2</translation>
     </message>
 </context>
 <context>
@@ -4215,11 +4487,16 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+3"/>
-        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default 3; raise it on a heavily loaded machine).</source>
-        <translation>驱动器在运行使能状态下无设定值多少个 SYNC 周期后以 EMCY 0x8100 报故障（默认 3；在负载很重的机器上请调高）。</translation>
+        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default: 3 periods, at least 50 ms).</source>
+        <translation>驱动器在 Operation enabled 状态下无设定值多少个 SYNC 周期后以 EMCY 0x8100 报故障（默认：3 个周期，至少 50 ms）。</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+7"/>
+        <source>Drives that were never commissioned: 0x2400 is 0 (by default joint j&apos;s drive holds the robot&apos;s identity and j).</source>
+        <translation>从未调试过的驱动器：0x2400 为 0（默认情况下关节 j 的驱动器保存机器人标识和 j）。</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
@@ -4338,7 +4615,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CanConnection</name>
     <message>
-        <location filename="../core/canrobot/CanConnection.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanConnection.cpp" line="+34"/>
         <source>the CAN device %1 did not connect within %2 ms (is the bus or the robot side running?)</source>
         <translation>CAN 设备 %1 未在 %2 ms 内连接（总线或机器人端是否在运行？）</translation>
     </message>
@@ -4348,12 +4625,12 @@ stdout, and the next plan uses the new estimate.
         <translation>没有用于 %1 的 CAN 设备</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>cannot connect the CAN device %1: %2</source>
         <translation>无法连接 CAN 设备 %1：%2</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+59"/>
         <source>no error reported (the other side may have exited)</source>
         <translation>未报告错误（对端可能已退出）</translation>
     </message>
@@ -4363,7 +4640,57 @@ stdout, and the next plan uses the new estimate.
         <translation>CAN 设备 %1 已断开连接：%2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
+        <source>the CAN device %1 reported an error frame: %2</source>
+        <translation>CAN 设备 %1 报告了错误帧：%2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN device %1 reported %2 (error frame 0x%3 %4)</source>
+        <translation>CAN 设备 %1 报告 %2（错误帧 0x%3 %4）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the CAN interface %1 of %2 disappeared</source>
+        <translation>%2 的 CAN 接口 %1 已消失</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 of %2 went down (ip link set %1 up brings it back)</source>
+        <translation>%2 的 CAN 接口 %1 已停用（ip link set %1 up 可重新启用）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN controller of %1 (%2) is %3</source>
+        <translation>%1 (%2) 的 CAN 控制器处于 %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>the CAN device %1 reports bus off</source>
+        <translation>CAN 设备 %1 报告总线关闭 (bus off)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN device %1 reports error passive</source>
+        <translation>CAN 设备 %1 报告错误被动</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>the CAN device %1 reported a %2 error: %3</source>
+        <translation>CAN 设备 %1 报告了%2错误：%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read</source>
+        <translation>读取</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>write</source>
+        <translation>写入</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the CAN device %1 reported a connection error: %2</source>
         <translation>CAN 设备 %1 报告连接错误：%2</translation>
     </message>
@@ -4389,7 +4716,12 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CanRobotWorker</name>
     <message>
-        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+117"/>
+        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+111"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -4400,12 +4732,22 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+16"/>
-        <location line="+27"/>
+        <location line="+57"/>
         <source>stopped by the operator before the drives moved</source>
         <translation>在驱动器运动前被操作员停止</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-52"/>
+        <source>refused before any motion: %1</source>
+        <translation>在任何运动之前被拒绝：%1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>reading the drives&apos; identity failed: %1</source>
+        <translation>读取驱动器标识失败：%1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>configuring the drives failed, nothing moved: %1</source>
         <translation>配置驱动器失败，未发生任何运动：%1</translation>
     </message>
@@ -4420,7 +4762,12 @@ stdout, and the next plan uses the new estimate.
         <translation>%1；已存储参数未改变</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
+        <source>%1; nothing was stored (0x2200, 0x2400 and 0x1010 not written)</source>
+        <translation>%1；未存储任何内容（未写入 0x2200、0x2400 和 0x1010）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1；未存储任何内容（未写入 0x1010）</translation>
     </message>
@@ -4433,7 +4780,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CandumpReplayDevice</name>
     <message>
-        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+38"/>
+        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+88"/>
         <source>Cannot write a frame: the replay is not connected.</source>
         <translation>无法写入帧：回放未连接。</translation>
     </message>
@@ -4443,7 +4790,7 @@ stdout, and the next plan uses the new estimate.
         <translation>主站在日志结束后写入了 %1。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
         <translation>主站写入了 %1，而日志此处为 %2（日志帧 %3）：回放的试验与记录的不同。</translation>
     </message>
@@ -4461,7 +4808,7 @@ stdout, and the next plan uses the new estimate.
         <translation>场景不适合 %1 模型：它需要 %2 个参数以及 %3 个关节的限值和增益</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+67"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
@@ -5454,7 +5801,7 @@ ratio %</source>
         <translation>内存 CAN 设备 %1 写入帧失败。</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>CAN error frame, error classes 0x%1.</source>
         <translation>CAN 错误帧，错误类别 0x%1。</translation>
     </message>
@@ -5571,7 +5918,7 @@ ratio %</source>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
-        <location filename="../ui/PreTrialCheckView.cpp" line="+35"/>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+36"/>
         <source>Joint</source>
         <translation>关节</translation>
     </message>
@@ -5654,7 +6001,7 @@ ratio %</source>
 <context>
     <name>learnid::RecordedDataDialog</name>
     <message>
-        <location filename="../ui/RecordedDataDialog.cpp" line="+51"/>
+        <location filename="../ui/RecordedDataDialog.cpp" line="+52"/>
         <source>&amp;Identify</source>
         <translation>辨识(&amp;I)</translation>
     </message>
@@ -5704,7 +6051,7 @@ ratio %</source>
         <translation>拟合</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Validation on:</source>
         <translation>验证所用日志：</translation>
     </message>
@@ -5714,7 +6061,7 @@ ratio %</source>
         <translation>验证</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>Predicted against measured torque (validation log)</source>
         <translation>预测力矩与测量力矩对比（验证日志）</translation>
     </message>
@@ -6086,13 +6433,18 @@ ratio %</source>
 <context>
     <name>learnid::RobotPanel</name>
     <message>
-        <location filename="../ui/RobotPanel.cpp" line="+22"/>
-        <location line="+100"/>
+        <location filename="../ui/RobotPanel.cpp" line="+24"/>
+        <source>First commissioning: I confirmed each node&apos;s joint on the arm</source>
+        <translation>首次调试：我已在机械臂上确认每个节点对应的关节</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+109"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-91"/>
+        <location line="-99"/>
         <source>Simulated (the scenario&apos;s robot)</source>
         <translation>仿真（场景中的机器人）</translation>
     </message>
@@ -6118,6 +6470,11 @@ ratio %</source>
     </message>
     <message>
         <location line="+3"/>
+        <source>10 SYNC periods, at least 50 ms</source>
+        <translation>10 个 SYNC 周期，至少 50 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source> ms</source>
         <translation> 毫秒</translation>
     </message>
@@ -6127,7 +6484,12 @@ ratio %</source>
         <translation>若超过此时间未收到 SYNC，试验即停止</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Only for drives never commissioned (or taken from another robot): tick it after checking on the arm that the drive of each node (its serial number on the type plate) moves the joint the node is listed for. Apply then stores the joint identity in the drives, and later sessions check it without this (docs/can-protocol.md 2.4).</source>
+        <translation>仅用于从未调试过（或取自另一台机器人）的驱动器：请先在机械臂上确认每个节点的驱动器（铭牌上的序列号）驱动的正是该节点所列的关节，然后再勾选。应用时会将关节标识存入驱动器，之后的会话无需勾选即可检查（docs/can-protocol.md 2.4）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Plugin:</source>
         <translation>插件：</translation>
     </message>
@@ -6147,6 +6509,11 @@ ratio %</source>
         <translation>SYNC 超时：</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Drives:</source>
+        <translation>驱动器：</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Robot:</source>
         <translation>机器人：</translation>
@@ -6162,7 +6529,7 @@ ratio %</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>CAN nodes: %1</source>
         <translation>CAN 节点：%1</translation>
     </message>
@@ -6263,6 +6630,16 @@ ratio %</source>
         <translation>规划比例</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Gentle first trials</source>
+        <translation>温和的首批试验</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gentle trials&apos; speed</source>
+        <translation>温和试验的速度</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>Controller</source>
         <translation>控制器</translation>
@@ -6293,12 +6670,12 @@ ratio %</source>
         <translation>每次试验的重复次数</translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-56"/>
         <source>Initial parameters</source>
         <translation>初始参数</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+59"/>
         <source>Safety</source>
         <translation>安全</translation>
     </message>
@@ -6318,12 +6695,12 @@ ratio %</source>
         <translation>仿真机器人</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-63"/>
         <source>True parameters</source>
         <translation>真实参数</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+67"/>
         <source>CAD perturbation (URDF robots)</source>
         <translation>CAD 扰动（URDF 机器人）</translation>
     </message>
@@ -6644,7 +7021,7 @@ ratio %</source>
 <context>
     <name>learnid::TrackingErrorPlot</name>
     <message>
-        <location filename="../ui/TrackingErrorPlot.cpp" line="+30"/>
+        <location filename="../ui/TrackingErrorPlot.cpp" line="+31"/>
         <source>Auto-scale</source>
         <translation>自动缩放</translation>
     </message>
@@ -6665,11 +7042,12 @@ ratio %</source>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="+94"/>
         <source>Tracking error [deg]</source>
         <translation>跟踪误差 [度]</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Show:</source>
         <translation>显示：</translation>
     </message>
@@ -6715,28 +7093,39 @@ ratio %</source>
         <translation>%1，%2</translation>
     </message>
     <message>
-        <location filename="../ui/TrackingErrorStyle.cpp" line="+51"/>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="-41"/>
+        <location line="+18"/>
         <source>Joint %1</source>
         <translation>关节 %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-17"/>
         <source>Joint %1 (%2)</source>
         <translation>关节 %1（%2）</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Error [deg]</source>
+        <translation>误差 [deg]</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>[deg]</source>
+        <translation>[deg]</translation>
     </message>
 </context>
 <context>
     <name>learnid::TrialStreamer</name>
     <message>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
-        <location line="+91"/>
+        <location line="+92"/>
         <location line="+68"/>
         <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="-146"/>
+        <location line="-147"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 未在 %2 ms 内达到运行使能：报告为 %3（状态字 0x%4）</translation>
     </message>
@@ -6746,7 +7135,7 @@ ratio %</source>
         <translation>无 TPDO</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+78"/>
         <source>stopped by the operator %1</source>
         <translation>被操作员停止 %1</translation>
     </message>
@@ -6875,30 +7264,30 @@ ratio %</source>
 <context>
     <name>learnid::robotsim::SimProcess</name>
     <message>
-        <location filename="../app/robot-sim/SimProcess.cpp" line="+43"/>
+        <location filename="../app/robot-sim/SimProcess.cpp" line="+44"/>
         <source>learnid-robot-sim: stopping (%1)</source>
         <translation>learnid-robot-sim：正在停止（%1）</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+93"/>
+        <location line="+96"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>无法用插件 %2 连接 CAN 接口 %1：%3</translation>
     </message>
     <message>
-        <location line="-61"/>
-        <location line="+16"/>
+        <location line="-62"/>
+        <location line="+17"/>
         <location line="+75"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim：错误：%1</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-85"/>
         <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
         <translation>learnid-robot-sim：错误：无法用插件 %2 创建 CAN 设备 %1：%3</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <location line="+58"/>
         <source>learnid-robot-sim: error: --state: %1</source>
         <translation>learnid-robot-sim：错误：--state：%1</translation>
@@ -6927,9 +7316,14 @@ ratio %</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+38"/>
+        <location filename="../app/gui/StartOptions.cpp" line="+67"/>
         <source>Commissioning tool: learning identification of robot dynamics.</source>
         <translation>调试工具：机器人动力学的学习辨识。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The window needs a display; learnid-cli works without one.</source>
+        <translation>窗口需要显示器；learnid-cli 无需显示器即可使用。</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -6942,14 +7336,34 @@ ratio %</source>
         <translation>界面语言，例如 de 或 zh_CN（默认：应用中选择的语言，否则为系统语言）。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>What --screenshot shows: %1 (default: main).</source>
         <translation>--screenshot 显示的内容：%1（默认：main）。</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+5"/>
+        <source>Open the scenario &lt;file&gt; at start.</source>
+        <translation>启动时打开场景 &lt;file&gt;。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A scenario file to open at start (as --scenario).</source>
+        <translation>启动时打开的场景文件（同 --scenario）。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>learnid: unknown --screenshot-view &apos;%1&apos;; known: %2</source>
         <translation>learnid：未知的 --screenshot-view &apos;%1&apos;；已知：%2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>learnid: one scenario at a time, got %1: %2</source>
+        <translation>learnid：一次只能打开一个场景，收到 %1 个：%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>learnid: the window needs a display, and none is set (DISPLAY, WAYLAND_DISPLAY); learnid --help lists the options, learnid-cli works without a display.</source>
+        <translation>learnid：窗口需要显示器，但未设置（DISPLAY、WAYLAND_DISPLAY）；learnid --help 列出选项，learnid-cli 无需显示器即可使用。</translation>
     </message>
 </context>
 </TS>

@@ -5,6 +5,7 @@
 #include "model/ChainModel.h"
 #include "model/Error.h"
 #include "model/ModelCheck.h"
+#include "service/RobotFactory.h"
 #include "service/SessionWorker.h"
 #include "session/TrialSeries.h"
 
@@ -88,12 +89,6 @@ RobotRequest robotRequest(const RunOptions &options)
 
 } // namespace
 
-ExitCode printScenarioCommand(QTextStream &out)
-{
-    out << QString::fromUtf8(scenarioToJson(Scenario{}));
-    return ExitOk;
-}
-
 ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
 {
     RunOptions options = given;
@@ -111,8 +106,29 @@ ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
             << Qt::endl;
         return ExitBadInput;
     }
-    if (options.robot == QLatin1String("replay") && !options.iterations)
-        scenario.iterations = int(options.candumpFiles.size());
+    if (options.robot == QLatin1String("replay")) {
+        int recorded = 0;
+        try {
+            recorded = recordedTrialCount(options.candumpFiles);
+        } catch (const Error &e) {
+            err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1")
+                       .arg(e.message())
+                << Qt::endl;
+            return ExitBadInput;
+        }
+        if (options.iterations && *options.iterations > recorded) {
+            err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1")
+                       .arg(QCoreApplication::translate(
+                                "learnid-cli",
+                                "--iterations: %1 trials need %1 recorded trials, the logs hold %2")
+                                .arg(*options.iterations)
+                                .arg(recorded))
+                << Qt::endl;
+            return ExitBadInput;
+        }
+        if (!options.iterations)
+            scenario.iterations = recorded;
+    }
     if (const QString canError = checkCanAgainstScenario(options, scenario); !canError.isEmpty()) {
         err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(canError)
             << Qt::endl;

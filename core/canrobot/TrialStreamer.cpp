@@ -3,6 +3,7 @@
 #include "can/CanLink.h"
 #include "can/CanLogging.h"
 #include "can/CanOpen.h"
+#include "can/CanTimeouts.h"
 #include "can/Cia402.h"
 #include "can/Nmt.h"
 
@@ -15,7 +16,6 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr quint16 statusSetpointFollowed = 0x1000; // bit 12 in cyclic synchronous position
-constexpr int stoppingDeadlineMs = 100;
 
 } // namespace
 
@@ -83,8 +83,9 @@ void TrialStreamer::start(const RobotModel &model, const TrialPlan &plan, const 
     m_phase = Phase::Enabling;
 
     m_connections << connect(m_link, &CanLink::frameReceived, this, &TrialStreamer::onFrame);
-    m_watchdog.start(nodes, m_options.heartbeatPeriodMs * m_options.heartbeatTimeoutFactor,
-                     int(std::lround(options.syncGapPeriods * plan.desired.samplePeriod * 1000)));
+    // The options' SYNC period is the plan's (CanRobotWorker::runTrial).
+    m_watchdog.start(nodes, effectiveHeartbeatPeriodMs(options) * cantimeouts::heartbeatLossFactor,
+                     effectiveSyncTimeoutMs(options));
     m_deadline.start(options.enableTimeoutMs);
     if (!m_nmt->startNode(0))
         QMetaObject::invokeMethod(
@@ -222,7 +223,7 @@ void TrialStreamer::abort(TrialStatus status, const QString &message,
     m_phase = Phase::Stopping;
     m_phaseSyncs = 0;
     sendQuickStop();
-    m_deadline.start(stoppingDeadlineMs); // also when the bus went silent
+    m_deadline.start(cantimeouts::stopBoundMs(m_options.syncPeriod)); // also on a silent bus
 }
 
 void TrialStreamer::finish()

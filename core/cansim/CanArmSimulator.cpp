@@ -82,6 +82,9 @@ CanArmSimulator::CanArmSimulator(CanLink *link, const CanArmSettings &settings,
         d.parameterCount = settings.model->parameterCount();
         d.syncPeriodUs = m_syncPeriodUs;
         d.setPointTimeoutSyncs = settings.setPointTimeoutSyncs;
+        d.identity = cansim::driveIdentityOfJoint(j + 1);
+        d.robotIdentity = settings.robotIdentity;
+        d.commissionedJoint = settings.robotIdentity != 0 ? j + 1 : 0;
         auto *node = new DriveNode(link, d, this);
         connect(node, &DriveNode::parametersStored, this, &CanArmSimulator::parametersStored);
         if (faults.refusedWrite) {

@@ -1,5 +1,7 @@
 #include "cansim/ScenarioCanArm.h"
 
+#include "can/CanTimeouts.h"
+#include "can/JointIdentity.h"
 #include "session/ScenarioRobot.h"
 #include "session/TrialPlanner.h"
 
@@ -27,6 +29,9 @@ CanArmSettings canArmSettings(const Scenario &given, std::shared_ptr<const Robot
     } else {
         s.initialPose = planner.kinematics().inverse(scenario.line.start, Eigen::VectorXd());
     }
+    // The drives come commissioned for this robot, joint j's drive as joint j (--uncommissioned
+    // of learnid-robot-sim clears it).
+    s.robotIdentity = objects::robotIdentityOf(model->id());
     s.model = std::move(model);
     s.trueParameters = scenario.simulation.trueParameters;
     s.measurement.encoderCounts = scenario.simulation.encoderCounts;
@@ -36,6 +41,7 @@ CanArmSettings canArmSettings(const Scenario &given, std::shared_ptr<const Robot
     s.controller = scenario.controller;
     s.torqueLimits = scenario.torqueLimits;
     s.nodes = nodes;
+    s.setPointTimeoutSyncs = cantimeouts::setpointTimeoutSyncs(scenario.controller.samplePeriod);
     return s;
 }
 

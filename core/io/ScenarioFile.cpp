@@ -54,6 +54,8 @@ void readPath(JsonObjectReader r, Scenario &s)
     r.read(key("restBefore"), s.restBefore);
     r.read(key("restAfter"), s.restAfter);
     r.read(key("planningFraction"), s.planningFraction);
+    r.readInteger(key("gentleTrials"), s.gentleTrials, 0, scenarioLimits::maxIterations);
+    r.read(key("gentleSpeed"), s.gentleSpeed);
     r.rejectUnknownKeys();
 }
 
@@ -180,7 +182,9 @@ QByteArray scenarioToJson(const Scenario &s)
     }
     path.insert(key("restBefore"), s.restBefore)
         .insert(key("restAfter"), s.restAfter)
-        .insert(key("planningFraction"), s.planningFraction);
+        .insert(key("planningFraction"), s.planningFraction)
+        .insert(key("gentleTrials"), s.gentleTrials)
+        .insert(key("gentleSpeed"), s.gentleSpeed);
     JsonTree controller = JsonTree::object();
     controller.insert(key("samplePeriod"), s.controller.samplePeriod)
         .insert(key("kp"), JsonTree::numbers(s.controller.kp))

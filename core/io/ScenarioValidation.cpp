@@ -128,6 +128,8 @@ void validateScenario(const Scenario &s)
                   Bounds::Closed);
     checkInterval(key("path.restAfter"), s.restAfter, 0.0, scenarioLimits::maxRest, Bounds::Closed);
     checkInterval(key("path.planningFraction"), s.planningFraction, 0.0, 1.0, Bounds::LeftOpen);
+    checkIntegerRange(key("path.gentleTrials"), s.gentleTrials, 0, scenarioLimits::maxIterations);
+    checkInterval(key("path.gentleSpeed"), s.gentleSpeed, 0.0, 1.0, Bounds::LeftOpen);
 
     validateControllerSettings(s.controller, n, key("controller"));
 

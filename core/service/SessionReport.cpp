@@ -1,5 +1,6 @@
 #include "service/SessionReport.h"
 
+#include "can/JointIdentity.h"
 #include "can/ManufacturerObjects.h"
 #include "model/CadPrior.h"
 #include "model/ChainModel.h"
@@ -156,6 +157,7 @@ ParameterFileContent parameterFileContent(const CommissioningSession &session, i
         c.rmsTrackingErrorDeg = tracking->rmsTrackingErrorDeg;
     }
     c.canWrites = canWrites;
+    c.drives = session.robot().driveIdentities();
     return c;
 }
 
@@ -168,9 +170,13 @@ ParameterFileContent parameterFileContent(const CommissioningSession &session, i
     const Eigen::VectorXd phi = estimateIndex >= 0 && estimateIndex < estimates.size()
                                     ? estimates.at(estimateIndex)
                                     : Eigen::VectorXd();
-    return parameterFileContent(session, estimateIndex,
-                                phi.size() > 0 ? objects::parameterWriteSequence(nodes, phi)
-                                               : QList<SdoWrite>());
+    // A robot on CAN (its drives known) gets the joint identity with the parameters.
+    const quint32 identity = session.robot().driveIdentities().isEmpty()
+                                 ? 0
+                                 : objects::robotIdentityOf(session.model().id());
+    return parameterFileContent(
+        session, estimateIndex,
+        phi.size() > 0 ? objects::parameterWriteSequence(nodes, phi, identity) : QList<SdoWrite>());
 }
 
 } // namespace learnid

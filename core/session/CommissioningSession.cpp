@@ -55,7 +55,9 @@ PreTrialCheck CommissioningSession::checkNextTrial() const
 {
     PreTrialCheck check;
     try {
-        check.plan = m_planner.plan(currentEstimate(), &check.rule);
+        // Gentle until the estimate has been learned path.gentleTrials times.
+        const bool gentle = int(m_estimates.size()) - 1 < m_scenario.gentleTrials;
+        check.plan = m_planner.plan(currentEstimate(), &check.rule, gentle);
         // The check linearises the robot as the estimate describes it. An estimate that is not
         // a set of real bodies (URDF robots: what the path does not see is filled in from the
         // CAD model) can describe a plant no robot is; its nearest consistent estimate has the

@@ -50,6 +50,12 @@ struct Scenario
     double restBefore = 0.1;       ///< [s]
     double restAfter = 0.5;        ///< [s]
     double planningFraction = 0.8; ///< planned peak torque / limit
+    /// Trials planned gently, slower than the torque rule allows, until the estimate has been
+    /// learned this many times (docs/scenario.md, path.gentleTrials).
+    int gentleTrials = 0;
+    /// A gentle trial's speed as a fraction of the planned one: its motion duration is the torque
+    /// rule's divided by this, so its inertial torque is gentleSpeed^2 of the planned one.
+    double gentleSpeed = 0.5;
     // controller
     ControllerSettings controller;
     // estimator

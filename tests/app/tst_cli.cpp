@@ -367,8 +367,8 @@ void TestCli::commandHelp_listsThatCommandsOptions_data()
                                << QStringList{QStringLiteral("--robot"), QStringLiteral("--print")};
     QTest::newRow("scenario --help")
         << QStringList{QStringLiteral("scenario"), QStringLiteral("--help")}
-        << QStringList{QStringLiteral("--print")}
-        << QStringList{QStringLiteral("--scenario"), QStringLiteral("--robot")};
+        << QStringList{QStringLiteral("--print"), QStringLiteral("--robot")}
+        << QStringList{QStringLiteral("--scenario"), QStringLiteral("--estimator")};
 }
 
 void TestCli::commandHelp_listsThatCommandsOptions()

@@ -28,8 +28,8 @@ namespace {
 QString scaleAttribute(const QString &xml, const QString &element, const QString &name,
                        const std::function<QString(int, const QString &)> &f)
 {
-    const QRegularExpression re(QStringLiteral("(<%1\\b[^>]*\\b%2=\")([^\"]*)(\")")
-                                    .arg(element, name));
+    const QRegularExpression re(
+        QStringLiteral("(<%1\\b[^>]*\\b%2=\")([^\"]*)(\")").arg(element, name));
     QString out;
     qsizetype from = 0;
     int i = 0;
@@ -51,8 +51,9 @@ QString robotA(const QString &cad)
                                      return QString::number(v.toDouble() * (i % 2 ? 1.25 : 0.8));
                                  });
     for (const char *c : {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"})
-        xml = scaleAttribute(xml, QStringLiteral("inertia"), QString::fromLatin1(c),
-                             [](int, const QString &v) { return QString::number(v.toDouble() * 1.4); });
+        xml = scaleAttribute(
+            xml, QStringLiteral("inertia"), QString::fromLatin1(c),
+            [](int, const QString &v) { return QString::number(v.toDouble() * 1.4); });
     // Centres of mass 2 cm off along x: the <origin> inside each <inertial>.
     const QRegularExpression inertialOrigin(
         QStringLiteral("(<inertial>\\s*<mass[^>]*>\\s*<origin[^>]*xyz=\")([^\"]*)(\")"));
@@ -140,13 +141,14 @@ void TestLearnFromAbort::robotA_learnsFromTheAbortedFirstTrialAndCompletesLater(
     const QVector<TrialResult> &h = session.history();
     QString figures;
     for (const TrialResult &t : h)
-        figures += QStringLiteral(" %1%2 %3 deg")
-                       .arg(t.index)
-                       .arg(t.record.completed() ? QString() : QStringLiteral(" (aborted at t = %1 s)")
-                                                                   .arg((t.record.samples() - 1) *
-                                                                            t.record.samplePeriod,
-                                                                        0, 'f', 3))
-                       .arg(maxErrorDeg(t), 0, 'f', 4);
+        figures +=
+            QStringLiteral(" %1%2 %3 deg")
+                .arg(t.index)
+                .arg(t.record.completed()
+                         ? QString()
+                         : QStringLiteral(" (aborted at t = %1 s)")
+                               .arg((t.record.samples() - 1) * t.record.samplePeriod, 0, 'f', 3))
+                .arg(maxErrorDeg(t), 0, 'f', 4);
     qInfo("robot (a), 5 deg limit, max tracking error per trial:%s", qPrintable(figures));
 
     // Trial 0 stops at the limit and is learned from, up to the stop.
@@ -187,11 +189,13 @@ void TestLearnFromAbort::robotA_learnsFromTheAbortedFirstTrialAndCompletesLater(
 
     // The report marks the partial trial and, as Accept would, the estimate to propose.
     const QJsonObject report =
-        QJsonDocument::fromJson(exportFiles(session, [&] {
-                                    ExportRequest r;
-                                    r.reportPath = dir.filePath(QStringLiteral("r.json"));
-                                    return r;
-                                }())
+        QJsonDocument::fromJson(exportFiles(session,
+                                            [&] {
+                                                ExportRequest r;
+                                                r.reportPath =
+                                                    dir.filePath(QStringLiteral("r.json"));
+                                                return r;
+                                            }())
                                     .constFirst()
                                     .second)
             .object();
