@@ -1,0 +1,41 @@
+#pragma once
+
+#include "types/Scenario.h"
+
+#include <QString>
+
+namespace learnid::bench {
+
+struct ZooOptions
+{
+    int seeds = 8;
+    bool docsGains = false; ///< docs/scenario.md's KUKA gains and path; else scenario --print's
+    double limitDeg = 5.0;  ///< safety.maxTrackingErrorDeg
+    int trials = 6;         ///< trials of a session (Run all)
+    int floorTrials = 12;   ///< trials of the ideal-measurement session
+    QString robots = QStringLiteral("abcd");
+    bool verbose = false; ///< per trial: the joint and time of the largest error
+    // Experiments on the floor (docs/benchmarks.md): the model's (and so the simulated robot's)
+    // Coulomb velocity scale (0: the scenario's); the first estimate the true robot's.
+    double coulombVelocity = 0.0;
+    bool startAtTruth = false;
+    bool accumulate = true; ///< estimator.accumulate
+    double rankTolerance = 0.0; ///< estimator.rankTolerance (0: the scenario's)
+};
+
+/// Joint Coulomb friction of the zoo robots [N m] (tst_learnfromabort's; joint 5's 0.93 N m is
+/// what the recorded logs of ../shared/data/kuka-lwr4 show, issue 23).
+extern const double kZooCoulomb[7];
+
+/// Robot (a) of issue 23 from the CAD URDF's text: link masses x0.8 or x1.25 and centres of
+/// mass moved 2 cm in a direction drawn with `seed`, inertia x1.4, kZooCoulomb, viscous x1.5.
+QString zooRobotUrdf(const QString &cad, quint64 seed);
+
+/// The session's scenario for robot 'a'..'d' (realistic joints drawn with `seed`): 2^20 counts
+/// and 1 % torque noise, or an ideal encoder and no noise (`ideal`, the floor).
+Scenario zooScenario(const ZooOptions &o, const QString &cadPath, const QString &realPath,
+                     char robot, quint64 seed, bool ideal);
+
+QString readText(const QString &path);
+
+} // namespace learnid::bench

@@ -1,0 +1,148 @@
+// learnid-bench-zoo: the simulated real KUKA LWR4+ robots of issue 23 (robot (a) and its
+// realistic-joint variants), built from the CAD URDF's text with a seed.
+#include "zoo.h"
+
+#include "io/ScenarioFile.h"
+#include "session/RobotScenario.h"
+
+#include <QFile>
+#include <QRegularExpression>
+#include <cmath>
+#include <functional>
+#include <random>
+#include <stdexcept>
+
+namespace learnid::bench {
+
+namespace {
+
+// Every number of attribute `name` of `element` in `xml` replaced by f(i, value), i counting
+// the matches (as tests/service/tst_learnfromabort does).
+QString replaceAttribute(const QString &xml, const QString &element, const QString &name,
+                         const std::function<QString(int, const QString &)> &f)
+{
+    const QRegularExpression re(
+        QStringLiteral("(<%1\\b[^>]*\\b%2=\")([^\"]*)(\")").arg(element, name));
+    QString out;
+    qsizetype from = 0;
+    int i = 0;
+    for (auto it = re.globalMatch(xml); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        out += xml.mid(from, m.capturedStart(2) - from);
+        out += f(i++, m.captured(2));
+        from = m.capturedEnd(2);
+    }
+    return out + xml.mid(from);
+}
+
+QString number(double v)
+{
+    return QString::number(v, 'g', 12);
+}
+
+// docs/scenario.md's KUKA LWR4+ scenario (the one tst_learnfromabort runs).
+const char *const kDocsScenario = R"({
+    "schema": "learnid-scenario/2",
+    "robot": { "model": "urdf", "urdf": { "file": "%1" },
+               "jointTerms": { "viscous": true, "coulomb": true } },
+    "path": { "kind": "waypoints",
+              "waypoints": [[0, 0.3, 0, -1.2, 0, 0.5, 0],
+                            [0.8, 0.8, 0.5, -0.6, 0.6, -0.4, 0.9],
+                            [-0.4, 0.5, -0.5, -1.4, -0.5, 0.6, -0.7]],
+              "planningFraction": 0.3 },
+    "controller": { "kp": [340, 600, 100, 140, 15, 14, 11],
+                    "ki": [34, 60, 10, 14, 1.5, 1.4, 1.1],
+                    "kd": [45, 80, 14, 19, 2, 1.9, 1.5], "lambda": 1000 },
+    "safety": { "maxTrackingErrorDeg": 5 }
+})";
+
+} // namespace
+
+const double kZooCoulomb[7] = {0.94, 1.2, 0.6, 0.9, 0.93, 0.8, 0.3};
+
+QString zooRobotUrdf(const QString &cad, quint64 seed)
+{
+    std::mt19937_64 rng(seed * 7919u + 17u);
+    std::bernoulli_distribution heavier(0.5);
+    std::normal_distribution<double> gauss;
+    // Link masses x0.8 or x1.25, drawn per link (the base's block too, which never moves).
+    QString xml = replaceAttribute(cad, QStringLiteral("mass"), QStringLiteral("value"),
+                                   [&](int, const QString &v) {
+                                       return number(v.toDouble() * (heavier(rng) ? 1.25 : 0.8));
+                                   });
+    for (const char *c : {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"})
+        xml = replaceAttribute(xml, QStringLiteral("inertia"), QString::fromLatin1(c),
+                               [](int, const QString &v) { return number(v.toDouble() * 1.4); });
+    // Centres of mass moved 2 cm in a direction drawn uniformly on the sphere.
+    const QRegularExpression inertialOrigin(
+        QStringLiteral("(<inertial>\\s*<mass[^>]*>\\s*<origin[^>]*xyz=\")([^\"]*)(\")"));
+    QString moved;
+    qsizetype from = 0;
+    for (auto it = inertialOrigin.globalMatch(xml); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        QStringList xyz = m.captured(2).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+        double d[3] = {gauss(rng), gauss(rng), gauss(rng)};
+        const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (int k = 0; k < 3; ++k)
+            xyz[k] = number(xyz[k].toDouble() + 0.02 * d[k] / norm);
+        moved += xml.mid(from, m.capturedStart(2) - from) + xyz.join(QLatin1Char(' '));
+        from = m.capturedEnd(2);
+    }
+    xml = moved + xml.mid(from);
+    // Joint friction as tst_learnfromabort gives it: Coulomb kZooCoulomb, viscous CAD x1.5.
+    xml = replaceAttribute(xml, QStringLiteral("dynamics"), QStringLiteral("friction"),
+                           [&](int i, const QString &) { return number(kZooCoulomb[i % 7]); });
+    xml = replaceAttribute(xml, QStringLiteral("dynamics"), QStringLiteral("damping"),
+                           [](int, const QString &v) { return number(v.toDouble() * 1.5); });
+    return xml;
+}
+
+Scenario zooScenario(const ZooOptions &o, const QString &cadPath, const QString &realPath,
+                     char robot, quint64 seed, bool ideal)
+{
+    Scenario s = o.docsGains
+                     ? scenarioFromJson(QString::fromLatin1(kDocsScenario).arg(cadPath).toUtf8(),
+                                        QStringLiteral("docs/scenario.md"))
+                     : scenarioForRobotName(cadPath);
+    s.maxTrackingErrorDeg = o.limitDeg;
+    s.estimator.accumulate = o.accumulate;
+    if (o.rankTolerance > 0)
+        s.estimator.rankTolerance = o.rankTolerance;
+    if (o.coulombVelocity > 0)
+        s.urdf.jointTerms.coulombVelocity = o.coulombVelocity;
+    SimulationSettings &sim = s.simulation;
+    sim = SimulationSettings{};
+    sim.trueParameters.resize(0);
+    sim.realUrdf = realPath;
+    sim.encoderCounts = ideal ? 0 : (qint64(1) << 20);
+    sim.torqueNoise = ideal ? 0.0 : 0.01;
+    sim.seed = seed;
+    std::mt19937_64 rng(seed * 104729u + quint64(robot));
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const int n = 7;
+    if (robot == 'b')
+        sim.staticFrictionRatio = 1.5;
+    if (robot == 'c') {
+        sim.armatureFactor.resize(n);
+        for (int j = 0; j < n; ++j)
+            sim.armatureFactor[j] = 0.5 + 1.5 * unit(rng);
+    }
+    if (robot == 'd') {
+        sim.armatureFactor = Eigen::VectorXd::Constant(n, 1.0);
+        sim.jointStiffness.resize(n);
+        for (int j = 0; j < n; ++j)
+            sim.jointStiffness[j] = 5000.0 + 10000.0 * unit(rng);
+        sim.torqueSensorLag = 0.001;
+    }
+    return s;
+}
+
+QString readText(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        throw std::runtime_error(qPrintable(QStringLiteral("cannot read %1").arg(path)));
+    return QString::fromUtf8(f.readAll());
+}
+
+} // namespace learnid::bench
