@@ -90,9 +90,9 @@ SessionFigures runSession(const Scenario &requested, int trials, bool verbose, b
                         t.record.completed() ? "" : " (aborted)", maxError(t),
                         qPrintable(whereLargest(t)));
     }
-    f.pathTorque = pathTorqueErrorPercent(*model, h.constLast().plan().desired,
-                                          session.estimates().constLast(),
-                                          s.simulation.trueParameters);
+    f.pathTorque =
+        pathTorqueErrorPercent(*model, h.constLast().plan().desired,
+                               session.estimates().constLast(), s.simulation.trueParameters);
     if (f.best > 1e8) { // no trial completed
         f.best = NAN;
         f.pathTorque = NAN;
@@ -103,8 +103,9 @@ SessionFigures runSession(const Scenario &requested, int trials, bool verbose, b
 
 double worst(std::vector<double> v, bool larger = true)
 {
-    return v.empty() ? 0.0 : larger ? *std::max_element(v.begin(), v.end())
-                                    : *std::min_element(v.begin(), v.end());
+    return v.empty() ? 0.0
+           : larger  ? *std::max_element(v.begin(), v.end())
+                     : *std::min_element(v.begin(), v.end());
 }
 
 QString trialsText(double v, int limit)
@@ -184,7 +185,8 @@ int main(int argc, char **argv)
         std::vector<double> needed, aborted, ratio, torque, floorRatio, cpu;
         QStringList stops;
         for (int seed = 1; seed <= o.seeds; ++seed) {
-            const QString realPath = dir.filePath(QStringLiteral("lwr-%1-%2.urdf").arg(r).arg(seed));
+            const QString realPath =
+                dir.filePath(QStringLiteral("lwr-%1-%2.urdf").arg(r).arg(seed));
             QFile f(realPath);
             if (!f.open(QIODevice::WriteOnly))
                 return 1;
@@ -193,16 +195,18 @@ int main(int argc, char **argv)
             try {
                 if (o.verbose)
                     std::printf("robot (%c) seed %d:\n", robot, seed);
-                const SessionFigures s = runSession(
-                    zooScenario(o, cadPath, realPath, robot, quint64(seed), false), o.trials,
-                    o.verbose, o.startAtTruth);
+                const SessionFigures s =
+                    runSession(zooScenario(o, cadPath, realPath, robot, quint64(seed), false),
+                               o.trials, o.verbose, o.startAtTruth);
                 if (o.verbose)
                     std::printf("  floor:\n");
-                const SessionFigures ideal = runSession(
-                    zooScenario(o, cadPath, realPath, robot, quint64(seed), true), o.floorTrials,
-                    o.verbose, o.startAtTruth);
+                const SessionFigures ideal =
+                    runSession(zooScenario(o, cadPath, realPath, robot, quint64(seed), true),
+                               o.floorTrials, o.verbose, o.startAtTruth);
                 // A session without a completed trial counts as infinitely far off.
-                const auto orInf = [](double v) { return std::isnan(v) ? INFINITY : v; };
+                const auto orInf = [](double v) {
+                    return std::isnan(v) ? INFINITY : v;
+                };
                 needed.push_back(s.needed < 0 ? 99 : s.needed);
                 aborted.push_back(s.aborted);
                 ratio.push_back(orInf(s.bestRatio));
@@ -211,7 +215,8 @@ int main(int argc, char **argv)
                 cpu.push_back(s.cpu);
                 if (!s.stop.isEmpty())
                     stops << QStringLiteral("seed %1: %2").arg(seed).arg(s.stop);
-                std::fprintf(stderr, "(%c) seed %d: trial 0 %.3f deg, best %.3f deg (%.1f %%), "
+                std::fprintf(stderr,
+                             "(%c) seed %d: trial 0 %.3f deg, best %.3f deg (%.1f %%), "
                              "needed %d, aborted %d, path torque %.2f %%, floor %.3f deg, "
                              "CPU %.2f s; floor path torque %.3f %%\n",
                              robot, seed, s.first, s.best, s.bestRatio, s.needed, s.aborted,

@@ -19,7 +19,7 @@ struct ZooOptions
     // Coulomb velocity scale (0: the scenario's); the first estimate the true robot's.
     double coulombVelocity = 0.0;
     bool startAtTruth = false;
-    bool accumulate = true; ///< estimator.accumulate
+    bool accumulate = true;     ///< estimator.accumulate
     double rankTolerance = 0.0; ///< estimator.rankTolerance (0: the scenario's)
 };
 

@@ -66,10 +66,9 @@ QString zooRobotUrdf(const QString &cad, quint64 seed)
     std::bernoulli_distribution heavier(0.5);
     std::normal_distribution<double> gauss;
     // Link masses x0.8 or x1.25, drawn per link (the base's block too, which never moves).
-    QString xml = replaceAttribute(cad, QStringLiteral("mass"), QStringLiteral("value"),
-                                   [&](int, const QString &v) {
-                                       return number(v.toDouble() * (heavier(rng) ? 1.25 : 0.8));
-                                   });
+    QString xml = replaceAttribute(
+        cad, QStringLiteral("mass"), QStringLiteral("value"),
+        [&](int, const QString &v) { return number(v.toDouble() * (heavier(rng) ? 1.25 : 0.8)); });
     for (const char *c : {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"})
         xml = replaceAttribute(xml, QStringLiteral("inertia"), QString::fromLatin1(c),
                                [](int, const QString &v) { return number(v.toDouble() * 1.4); });
