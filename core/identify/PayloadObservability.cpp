@@ -35,9 +35,9 @@ bool PayloadObservability::inertiaIdentified() const
 
 QStringList PayloadObservability::parameterNames()
 {
-    return {QStringLiteral("m"),   QStringLiteral("m·cx"), QStringLiteral("m·cy"),
+    return {QStringLiteral("m"),    QStringLiteral("m·cx"), QStringLiteral("m·cy"),
             QStringLiteral("m·cz"), QStringLiteral("Ixx"),  QStringLiteral("Ixy"),
-            QStringLiteral("Iyy"), QStringLiteral("Ixz"),  QStringLiteral("Iyz"),
+            QStringLiteral("Iyy"),  QStringLiteral("Ixz"),  QStringLiteral("Iyz"),
             QStringLiteral("Izz")};
 }
 
@@ -117,8 +117,8 @@ PayloadObservability payloadPathObservability(const PayloadModel &model, const E
     const int n = model.dof();
     if (q.rows() != n || qd.rows() != n || qdd.rows() != n || qd.cols() != q.cols() ||
         qdd.cols() != q.cols()) {
-        throw Error(Text::tr("the path must give q, qd and qdd for the %1 joints at every sample")
-                        .arg(n));
+        throw Error(
+            Text::tr("the path must give q, qd and qdd for the %1 joints at every sample").arg(n));
     }
     if (q.cols() == 0)
         throw Error(Text::tr("the path has no samples"));

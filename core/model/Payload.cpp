@@ -26,9 +26,9 @@ PayloadBody payloadBody(const InertialParameters &pi)
     body.mass = pi[0];
     body.com = pi.segment<3>(1) / pi[0];
     const Eigen::Vector3d &c = body.com;
-    body.inertiaAtCom = rotationalInertia(pi) - body.mass * (c.squaredNorm() *
-                                                                 Eigen::Matrix3d::Identity() -
-                                                             c * c.transpose());
+    body.inertiaAtCom =
+        rotationalInertia(pi) -
+        body.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
     return body;
 }
 

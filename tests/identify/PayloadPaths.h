@@ -22,9 +22,8 @@ inline std::shared_ptr<const ChainModel> kukaArm()
     const QString urdf = sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
     if (urdf.isEmpty())
         return {};
-    return std::make_shared<const ChainModel>(readUrdfChain(urdf),
-                                              JointTerms{false, true, true, true},
-                                              QStringLiteral("lwr4"));
+    return std::make_shared<const ChainModel>(
+        readUrdfChain(urdf), JointTerms{false, true, true, true}, QStringLiteral("lwr4"));
 }
 
 /// The bent pose with joint 7's axis vertical: joints 2, 4 and 6 turn about parallel
@@ -32,7 +31,9 @@ inline std::shared_ptr<const ChainModel> kukaArm()
 inline Eigen::VectorXd holdWristVertical(const ChainModel &arm)
 {
     Eigen::VectorXd q = Eigen::VectorXd::Zero(7);
-    const auto sign = [&](int j) { return arm.chain().joints[size_t(j)].axis.y(); };
+    const auto sign = [&](int j) {
+        return arm.chain().joints[size_t(j)].axis.y();
+    };
     q[1] = 0.6;
     q[3] = 1.2;
     q[5] = -(sign(1) * q[1] + sign(3) * q[3]) / sign(5);

@@ -90,14 +90,16 @@ void TestPayloadObservability::pathTiltingTheWrist_seesMassAndCentreOfMass()
 
 void TestPayloadObservability::badRows_areRefused()
 {
-    QVERIFY(test::errorOf([] { payloadObservability(Eigen::MatrixXd::Zero(5, 9)); })
-                .contains(QStringLiteral("10 columns")));
+    QVERIFY(test::errorOf([] {
+                payloadObservability(Eigen::MatrixXd::Zero(5, 9));
+            }).contains(QStringLiteral("10 columns")));
     Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(10, 10);
     rows(3, 3) = NAN;
-    QVERIFY(test::errorOf([&] { payloadObservability(rows); })
-                .contains(QStringLiteral("not finite")));
-    QVERIFY(test::errorOf([] { payloadObservability(Eigen::MatrixXd::Identity(10, 10), 1.5); })
-                .contains(QStringLiteral("between 0 and 1")));
+    QVERIFY(
+        test::errorOf([&] { payloadObservability(rows); }).contains(QStringLiteral("not finite")));
+    QVERIFY(test::errorOf([] {
+                payloadObservability(Eigen::MatrixXd::Identity(10, 10), 1.5);
+            }).contains(QStringLiteral("between 0 and 1")));
 }
 
 QTEST_GUILESS_MAIN(TestPayloadObservability)

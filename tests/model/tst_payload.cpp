@@ -169,8 +169,7 @@ void TestPayload::badInput_namesTheLinkAndTheMass()
     QVERIFY2(mass.contains(QStringLiteral("mass")), qPrintable(mass));
     pi[0] = NAN;
     QVERIFY(test::errorOf([&] { payloadBody(pi); }).contains(QStringLiteral("not finite")));
-    const QString size = test::errorOf(
-        [&] { PayloadModel(armModel, Eigen::VectorXd::Zero(3)); });
+    const QString size = test::errorOf([&] { PayloadModel(armModel, Eigen::VectorXd::Zero(3)); });
     QVERIFY2(size.contains(QStringLiteral("91")), qPrintable(size));
 }
 
