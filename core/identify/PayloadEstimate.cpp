@@ -90,7 +90,8 @@ PayloadEstimate estimatePayload(const Eigen::MatrixXd &rows, const Eigen::Vector
     // prior), its inertia about the centre of mass the prior's (scaled with the mass). Kept in
     // the body's own terms, an unseen direction keeps the prior's geometry: with the centre of
     // mass moved sideways, the prior's Iyy about the flange would no longer be a real body.
-    const InertialParameters first = e.prior + o.truncatedInverse * a.transpose() * (b - a * e.prior);
+    const InertialParameters first =
+        e.prior + o.truncatedInverse * a.transpose() * (b - a * e.prior);
     const PayloadBody priorBody = payloadBody(e.prior);
     InertialParameters anchor = e.prior;
     if (o.massIdentified() && first[0] > 0.0) {
@@ -103,7 +104,7 @@ PayloadEstimate estimatePayload(const Eigen::MatrixXd &rows, const Eigen::Vector
         if (!(prior.bound.ellipsoid().fitShare(anchor) > 0.0))
             anchor = e.prior * (m / priorBody.mass); // moved outside the bound: only the mass
     }
-    e.prior = anchor;
+    e.anchor = anchor;
     // The truncated least squares about it: pi = prior + (A^T A)^+ A^T (b - A prior).
     e.leastSquares = anchor + o.truncatedInverse * a.transpose() * (b - a * anchor);
 
@@ -113,9 +114,8 @@ PayloadEstimate estimatePayload(const Eigen::MatrixXd &rows, const Eigen::Vector
     // column is about 0, and would hold it by nothing).
     Eigen::Matrix<double, 10, 1> d = a.colwise().norm().transpose();
     d = d.cwiseMax(1e-3 * d.maxCoeff() + 1e-300);
-    const Eigen::JacobiSVD<Eigen::Matrix<double, 10, 10>> svd(a * d.cwiseInverse().asDiagonal(),
-                                                              Eigen::ComputeFullU |
-                                                                  Eigen::ComputeFullV);
+    const Eigen::JacobiSVD<Eigen::Matrix<double, 10, 10>> svd(
+        a * d.cwiseInverse().asDiagonal(), Eigen::ComputeFullU | Eigen::ComputeFullV);
     const int k = o.rank;
     const Eigen::Matrix<double, 10, 10> vt = svd.matrixV().transpose();
     const double strongest = svd.singularValues()[0];
@@ -129,7 +129,10 @@ PayloadEstimate estimatePayload(const Eigen::MatrixXd &rows, const Eigen::Vector
     problem.links = 1;
     problem.volumes = {prior.bound.ellipsoid()};
     problem.priorShare = settings.geometricShare;
-    if (k == 0) { // nothing seen: the prior as it is
+    if (!settings.plausible) {
+        e.parameters = e.leastSquares;
+        e.converged = true;
+    } else if (k == 0) { // nothing seen: the prior as it is
         e.parameters = e.prior;
         e.converged = true;
         e.solverReport = Text::tr("no direction determined: the prior");
@@ -139,8 +142,10 @@ PayloadEstimate estimatePayload(const Eigen::MatrixXd &rows, const Eigen::Vector
         e.converged = plausible.converged;
         e.solverReport = plausible.report;
     }
-    e.body = payloadBody(e.parameters);
-    e.comInsideBound = prior.bound.contains(e.body.com);
+    if (e.parameters[0] > 0.0) {
+        e.body = payloadBody(e.parameters);
+        e.comInsideBound = prior.bound.contains(e.body.com);
+    }
 
     // Residual per row of the least-squares fit: ||R [pi; -1]||^2 = ||A pi - b||^2.
     Eigen::Matrix<double, 11, 1> x;

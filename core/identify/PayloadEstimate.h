@@ -22,18 +22,21 @@ struct PayloadEstimateSettings
     /// rows filtered by a filter of noise gain g (sum of its squared impulse response) and kept
     /// every s-th sample carry correlated residuals: 1 / (g s) (payloadVarianceFactor()).
     double varianceFactor = 1.0;
+    /// The nearest real body (else parameters = leastSquares, which may not be one).
+    bool plausible = true;
 };
 
 /// The payload as the data and the prior determine it.
 struct PayloadEstimate
 {
-    InertialParameters parameters = InertialParameters::Zero(); ///< plausible: a real body
-    PayloadBody body;                                            ///< the same as m, c, I_c
+    InertialParameters parameters = InertialParameters::Zero();   ///< plausible: a real body
+    PayloadBody body;                                             ///< the same as m, c, I_c
     InertialParameters leastSquares = InertialParameters::Zero(); ///< the fit, prior where unseen
-    /// What unseen directions keep: the prior body (PayloadPrior::parameters()) moved to the
-    /// mass and the components of the centre of mass the data identify, its inertia about the
-    /// centre of mass the prior's scaled with the mass.
-    InertialParameters prior = InertialParameters::Zero();
+    InertialParameters prior = InertialParameters::Zero();        ///< PayloadPrior::parameters()
+    /// What unseen directions keep: the prior body moved to the mass and the components of the
+    /// centre of mass the data identify, its inertia about the centre of mass the prior's
+    /// scaled with the mass.
+    InertialParameters anchor = InertialParameters::Zero();
     PayloadObservability observability;
     /// Covariance of the least-squares parameters (10 x 10): varianceFactor sigma^2 (A^T A)^+,
     /// sigma^2 the residual variance per row, (A^T A)^+ over the determined directions only.
@@ -57,11 +60,11 @@ struct PayloadEstimate
 /// The payload fitted to rows A (r x 10, the payload's regressor, weighted) against targets b
 /// (r, the measured torque minus the arm's): the least-squares fit about the prior in the
 /// directions the rows determine (PayloadObservability), the rest at the prior body (moved to the
-/// fitted mass and seen centre of mass), then the nearest real body to it (plausibleEstimate() for one link: the
-/// data's determined directions as they are, the unseen ones held at the prior with the
-/// strongest direction's weight, the log-det divergence from the prior body, the mass inside
-/// the prior's bounding ellipsoid): what the data do not see stays the prior's. Throws Error for sizes that do not match,
-/// values that are not finite, or a prior validatePayloadPrior() refuses.
+/// fitted mass and seen centre of mass), then the nearest real body to it (plausibleEstimate() for
+/// one link: the data's determined directions as they are, the unseen ones held at the prior with
+/// the strongest direction's weight, the log-det divergence from the prior body, the mass inside
+/// the prior's bounding ellipsoid): what the data do not see stays the prior's. Throws Error for
+/// sizes that do not match, values that are not finite, or a prior validatePayloadPrior() refuses.
 PayloadEstimate estimatePayload(const Eigen::MatrixXd &rows, const Eigen::VectorXd &targets,
                                 const PayloadPrior &prior,
                                 const PayloadEstimateSettings &settings = {});

@@ -58,8 +58,7 @@ InertialParameters PayloadPrior::parameters() const
 {
     if (inertiaAtCom)
         return inertialParameters(mass, com, *inertiaAtCom);
-    const double size =
-        bound.box ? 0.5 * (bound.upper - bound.lower).minCoeff() : bound.radius;
+    const double size = bound.box ? 0.5 * (bound.upper - bound.lower).minCoeff() : bound.radius;
     const double r = std::min(payloadPriorShare * size, clearance(bound, com) / 3.0);
     // A solid sphere: I = 2/5 m r^2 about each axis.
     return inertialParameters(mass, com, 0.4 * mass * r * r * Eigen::Matrix3d::Identity());
@@ -87,16 +86,18 @@ void validatePayloadPrior(const PayloadPrior &p, const PayloadFieldNames &names)
                         .arg(p.bound.radius));
     }
     if (!p.bound.contains(p.com)) {
-        throw Error(Text::tr("%1: the prior centre of mass %2 m is not inside the bound (%3): "
-                             "give a bound that contains it")
-                        .arg(p.bound.box ? names.box : names.radius, vector(p.com),
-                             p.bound.describe()));
+        throw Error(
+            Text::tr("%1: the prior centre of mass %2 m is not inside the bound (%3): "
+                     "give a bound that contains it")
+                .arg(p.bound.box ? names.box : names.radius, vector(p.com), p.bound.describe()));
     }
     if (p.inertiaAtCom) {
         const Eigen::Matrix3d &i = *p.inertiaAtCom;
         if (!i.allFinite() || (i - i.transpose()).cwiseAbs().maxCoeff() > 1e-12 * i.norm())
-            throw Error(Text::tr("%1: the inertia must be finite and symmetric").arg(names.inertia));
-        const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(i).eigenvalues();
+            throw Error(
+                Text::tr("%1: the inertia must be finite and symmetric").arg(names.inertia));
+        const Eigen::Vector3d moments =
+            Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(i).eigenvalues();
         if (!(moments[0] > 0.0) || !(moments[0] + moments[1] >= moments[2]))
             throw Error(Text::tr("%1: the inertia is not a real body's (principal moments %2 "
                                  "kg m^2 must be positive and each at most the sum of the others)")

@@ -46,9 +46,9 @@ struct PayloadBound
 /// centre; all in the link frame. Directions the data do not see keep this body.
 struct PayloadPrior
 {
-    double mass = 0.0;                                   ///< [kg] > 0
-    Eigen::Vector3d com = Eigen::Vector3d::Zero();       ///< [m]
-    std::optional<Eigen::Matrix3d> inertiaAtCom;         ///< [kg m^2]; none: a point mass
+    double mass = 0.0;                             ///< [kg] > 0
+    Eigen::Vector3d com = Eigen::Vector3d::Zero(); ///< [m]
+    std::optional<Eigen::Matrix3d> inertiaAtCom;   ///< [kg m^2]; none: a point mass
     PayloadBound bound;
 
     /// The prior's 10 parameters, a real body inside the bound: the given inertia, or a solid
@@ -65,6 +65,7 @@ struct PayloadFieldNames
     QString inertia = QStringLiteral("payload.prior.inertia");
     QString radius = QStringLiteral("payload.bound.radius");
     QString box = QStringLiteral("payload.bound.box");
+    QString link = QStringLiteral("payload.link");
 };
 
 /// Throws Error naming the field when the prior is not usable: a mass that is not positive, a

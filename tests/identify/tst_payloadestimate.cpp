@@ -155,8 +155,8 @@ void TestPayloadEstimate::verticalWristPath_keepsTheUnseenCentreOfMassAtThePrior
     // Unseen: the least-squares fit keeps m cz at the prior body's (carried at the fitted mass:
     // cz0 m), the plausible body keeps its centre of mass along the wrist axis where the
     // technician put it.
-    LEARNID_COMPARE_NEAR(e.prior[3] / e.prior[0], prior.com.z(), 1e-12);
-    LEARNID_COMPARE_NEAR(e.leastSquares[3], e.prior[3], 1e-9);
+    LEARNID_COMPARE_NEAR(e.anchor[3] / e.anchor[0], prior.com.z(), 1e-12);
+    LEARNID_COMPARE_NEAR(e.leastSquares[3], e.anchor[3], 1e-9);
     QVERIFY2(std::abs(e.body.com.z() - prior.com.z()) < 0.0005,
              qPrintable(QStringLiteral("cz %1, prior %2").arg(e.body.com.z()).arg(prior.com.z())));
 }
@@ -167,12 +167,14 @@ void TestPayloadEstimate::badPrior_namesTheField()
     const Eigen::VectorXd b = Eigen::VectorXd::Zero(10);
     PayloadPrior p = technicianPrior();
     p.mass = 0.0;
-    QVERIFY(test::errorOf([&] { estimatePayload(a, b, p); })
-                .startsWith(QStringLiteral("payload.prior.mass:")));
+    QVERIFY(test::errorOf([&] {
+                estimatePayload(a, b, p);
+            }).startsWith(QStringLiteral("payload.prior.mass:")));
     p = technicianPrior();
     p.com.y() = NAN;
-    QVERIFY(test::errorOf([&] { estimatePayload(a, b, p); })
-                .startsWith(QStringLiteral("payload.prior.com:")));
+    QVERIFY(test::errorOf([&] {
+                estimatePayload(a, b, p);
+            }).startsWith(QStringLiteral("payload.prior.com:")));
     p = technicianPrior();
     p.bound.radius = 0.04; // the prior at 5 cm lies outside
     const QString outside = test::errorOf([&] { estimatePayload(a, b, p); });
@@ -183,16 +185,19 @@ void TestPayloadEstimate::badPrior_namesTheField()
     p.bound.box = true;
     p.bound.lower = Eigen::Vector3d(-0.1, -0.1, 0.0);
     p.bound.upper = Eigen::Vector3d(0.1, 0.1, 0.04);
-    QVERIFY(test::errorOf([&] { estimatePayload(a, b, p); })
-                .startsWith(QStringLiteral("payload.bound.box:")));
+    QVERIFY(test::errorOf([&] {
+                estimatePayload(a, b, p);
+            }).startsWith(QStringLiteral("payload.bound.box:")));
     p.bound.upper.z() = -0.1;
     QVERIFY(test::errorOf([&] { estimatePayload(a, b, p); }).contains(QStringLiteral("above")));
     p = technicianPrior();
     p.inertiaAtCom = Eigen::Vector3d(0.01, 0.01, 0.05).asDiagonal(); // 0.01 + 0.01 < 0.05
-    QVERIFY(test::errorOf([&] { estimatePayload(a, b, p); })
-                .startsWith(QStringLiteral("payload.prior.inertia:")));
-    QVERIFY(test::errorOf([&] { estimatePayload(a, Eigen::VectorXd::Zero(3), technicianPrior()); })
-                .contains(QStringLiteral("do not match")));
+    QVERIFY(test::errorOf([&] {
+                estimatePayload(a, b, p);
+            }).startsWith(QStringLiteral("payload.prior.inertia:")));
+    QVERIFY(test::errorOf([&] {
+                estimatePayload(a, Eigen::VectorXd::Zero(3), technicianPrior());
+            }).contains(QStringLiteral("do not match")));
 }
 
 QTEST_GUILESS_MAIN(TestPayloadEstimate)
