@@ -17,11 +17,6 @@ namespace learnid::cli {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("learnid-cli", text);
-}
-
 QString number(double v, int precision, int width)
 {
     if (std::abs(v) < 1e-12) // rounding of a zero, not a value
@@ -46,18 +41,24 @@ QString payloadTable(const PayloadIdentificationResult &r)
                                     prior.inertiaAtCom(1, 2),
                                     prior.inertiaAtCom(2, 2)};
     const QStringList names = PayloadEstimate::bodyNames();
-    QString t = tr("value").leftJustified(16) + tr("estimate").rightJustified(12) +
-                tr("std. error").rightJustified(12) + tr("prior").rightJustified(12) +
-                QStringLiteral("  ") + tr("from") + QLatin1Char('\n');
+    QString t = QCoreApplication::translate("learnid-cli", "value").leftJustified(16) +
+                QCoreApplication::translate("learnid-cli", "estimate").rightJustified(12) +
+                QCoreApplication::translate("learnid-cli", "std. error").rightJustified(12) +
+                QCoreApplication::translate("learnid-cli", "prior").rightJustified(12) +
+                QStringLiteral("  ") + QCoreApplication::translate("learnid-cli", "from") +
+                QLatin1Char('\n');
     for (int i = 0; i < 10; ++i) {
         const QString unit = i == 0 ? QStringLiteral("kg")
                                     : (i < 4 ? QStringLiteral("m") : QStringLiteral("kg m^2"));
         const bool seen = e.bodyIdentified[size_t(i)];
         t += (names[i] + QStringLiteral(" [") + unit + QLatin1Char(']')).leftJustified(16) +
              number(e.bodyValue[size_t(i)], 5, 12) +
-             (seen ? number(e.bodyStandardError[size_t(i)], 2, 12) : QStringLiteral("-").rightJustified(12)) +
+             (seen ? number(e.bodyStandardError[size_t(i)], 2, 12)
+                   : QStringLiteral("-").rightJustified(12)) +
              number(priorValues[i], 5, 12) + QStringLiteral("  ") +
-             (seen ? tr("the logs") : tr("the prior (not identified)")) + QLatin1Char('\n');
+             (seen ? QCoreApplication::translate("learnid-cli", "the logs")
+                   : QCoreApplication::translate("learnid-cli", "the prior (not identified)")) +
+             QLatin1Char('\n');
     }
     return t;
 }
@@ -66,27 +67,36 @@ QString payloadText(const PayloadIdentificationResult &r, const QString &bound)
 {
     const PayloadEstimate &e = r.fit.estimate;
     const PayloadObservability &o = e.observability;
-    QString t = tr("Payload on %1 of %2; the arm's model (%3) held fixed.\n")
+    QString t = QCoreApplication::translate(
+                    "learnid-cli", "Payload on %1 of %2; the arm's model (%3) held fixed.\n")
                     .arg(r.model->link(), logRobotName(r.robot), r.robot.source);
-    t += QCoreApplication::translate("learnid-cli", "Fitted to %n log(s), %1 samples: %2 of 10 "
-                                                    "directions determined (condition %3).\n",
+    t += QCoreApplication::translate("learnid-cli",
+                                     "Fitted to %n log(s), %1 samples: %2 of 10 "
+                                     "directions determined (condition %3).\n",
                                      nullptr, int(r.trainingLogs.size()))
              .arg(r.fit.samples)
              .arg(o.rank)
              .arg(o.condition, 0, 'f', 1);
     t += QLatin1Char('\n') + payloadTable(r) + QLatin1Char('\n');
     if (!e.converged)
-        t += tr("Warning: the plausible estimate did not converge (%1).\n").arg(e.solverReport);
+        t += QCoreApplication::translate("learnid-cli",
+                                         "Warning: the plausible estimate did not converge (%1).\n")
+                 .arg(e.solverReport);
     t += e.comInsideBound
-             ? tr("A real body whose mass lies in the bound (%1).\n").arg(bound)
-             : tr("Warning: the centre of mass lies outside the bound (%1).\n").arg(bound);
+             ? QCoreApplication::translate("learnid-cli",
+                                           "A real body whose mass lies in the bound (%1).\n")
+                   .arg(bound)
+             : QCoreApplication::translate(
+                   "learnid-cli", "Warning: the centre of mass lies outside the bound (%1).\n")
+                   .arg(bound);
     const QStringList advice = o.advice(r.model->link());
     if (!advice.isEmpty()) {
-        t += tr("What the logs did not show (kept from the prior):\n");
+        t += QCoreApplication::translate("learnid-cli",
+                                         "What the logs did not show (kept from the prior):\n");
         for (const QString &line : advice)
             t += QStringLiteral("  - ") + line + QLatin1Char('\n');
     }
-    t += tr("Torque residual per joint on the logs [N m]:");
+    t += QCoreApplication::translate("learnid-cli", "Torque residual per joint on the logs [N m]:");
     for (Eigen::Index j = 0; j < r.fit.trainingRms.size(); ++j)
         t += QLatin1Char(' ') + QString::number(r.fit.trainingRms[j], 'f', 3);
     t += QLatin1Char('\n');
@@ -121,15 +131,19 @@ ExitCode payloadIdentifyCommand(const IdentifyOptions &o, QTextStream &out, QTex
         request.prior = o.payload->prior;
         request.fit.estimate.priorShare = o.fit.priorShare;
         if (!o.quiet)
-            err << tr("learnid-cli: fitting the payload to %1").arg(o.logs.join(QStringLiteral(", ")))
+            err << QCoreApplication::translate("learnid-cli",
+                                               "learnid-cli: fitting the payload to %1")
+                       .arg(o.logs.join(QStringLiteral(", ")))
                 << Qt::endl;
         const PayloadIdentificationResult r =
             identifyPayloadFromLogs(request, payloadOptionNames());
         QString text = payloadText(r, o.payload->prior.bound.describe());
         if (!r.validation.empty())
             text += QLatin1Char('\n') +
-                    tr("On the --validate logs: \"URDF as given\" is the arm without the payload, "
-                       "\"identified\" the arm with it.\n");
+                    QCoreApplication::translate(
+                        "learnid-cli",
+                        "On the --validate logs: \"URDF as given\" is the arm without the payload, "
+                        "\"identified\" the arm with it.\n");
         for (const LogValidation &v : r.validation)
             text += QLatin1Char('\n') + validationTable(*r.robot.model, v.source,
                                                         static_cast<long long>(v.samples()),
@@ -145,35 +159,44 @@ ExitCode payloadIdentifyCommand(const IdentifyOptions &o, QTextStream &out, QTex
                 break;
             const QFileInfo log(v.source);
             const QByteArray png = torquePlotPng(
-                {tr("%1: torque of the arm alone and with the payload").arg(log.fileName()), names,
-                 v.time, v.measured, v.predictedGiven, v.predictedIdentified});
+                {QCoreApplication::translate("learnid-cli",
+                                             "%1: torque of the arm alone and with the payload")
+                     .arg(log.fileName()),
+                 names, v.time, v.measured, v.predictedGiven, v.predictedIdentified});
             pngs << png;
             if (!o.plotsDir.isEmpty())
-                files.append({QDir(o.plotsDir).filePath(log.completeBaseName() +
-                                                        QStringLiteral("-payload-torque.png")),
-                              png});
+                files.append(
+                    {QDir(o.plotsDir)
+                         .filePath(log.completeBaseName() + QStringLiteral("-payload-torque.png")),
+                     png});
         }
         if (!o.reportPath.isEmpty())
-            files.append({o.reportPath,
-                          identifyReportPdf(tr("learnid: payload on %1 identified from logs")
-                                                .arg(r.model->link()),
-                                            text, pngs)});
+            files.append(
+                {o.reportPath,
+                 identifyReportPdf(QCoreApplication::translate(
+                                       "learnid-cli", "learnid: payload on %1 identified from logs")
+                                       .arg(r.model->link()),
+                                   text, pngs)});
     } catch (const Error &e) {
         out.flush();
-        err << tr("learnid-cli: error: %1").arg(e.message()) << Qt::endl;
+        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(e.message())
+            << Qt::endl;
         return ExitBadInput;
     }
     try {
         if (!o.plotsDir.isEmpty() && !QDir().mkpath(o.plotsDir))
-            throw Error(tr("--plots: cannot create %1").arg(QDir::toNativeSeparators(o.plotsDir)));
+            throw Error(QCoreApplication::translate("learnid-cli", "--plots: cannot create %1")
+                            .arg(QDir::toNativeSeparators(o.plotsDir)));
         writeFilesAtomically(files);
     } catch (const Error &e) {
-        err << tr("learnid-cli: error: %1").arg(e.message()) << Qt::endl;
+        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(e.message())
+            << Qt::endl;
         return ExitWriteFailed;
     }
     for (const auto &file : files)
         if (!o.quiet)
-            err << tr("learnid-cli: wrote %1").arg(QDir::toNativeSeparators(file.first))
+            err << QCoreApplication::translate("learnid-cli", "learnid-cli: wrote %1")
+                       .arg(QDir::toNativeSeparators(file.first))
                 << Qt::endl;
     return ExitOk;
 }

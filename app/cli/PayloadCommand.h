@@ -11,7 +11,6 @@ namespace learnid::cli {
 /// standard error and whether the logs identified it, what the path did not show, and per
 /// --validate log the torque of the arm alone and with the payload. Writes the tables to out,
 /// progress and errors to err, the --plots and --report files (all or none) only on success.
-ExitCode payloadIdentifyCommand(const IdentifyOptions &options, QTextStream &out,
-                                QTextStream &err);
+ExitCode payloadIdentifyCommand(const IdentifyOptions &options, QTextStream &out, QTextStream &err);
 
 } // namespace learnid::cli

@@ -11,11 +11,6 @@ namespace learnid::cli {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("learnid-cli", text);
-}
-
 // "a,b,c": exactly `count` numbers (NaN is read as a number and refused by the checks later).
 std::optional<std::vector<double>> numbers(const QString &text, int count)
 {
@@ -32,7 +27,7 @@ std::optional<std::vector<double>> numbers(const QString &text, int count)
     return out;
 }
 
-const char *const payloadOptions[] = {"payload-link",   "payload-mass",   "payload-com",
+const char *const payloadOptions[] = {"payload-link",    "payload-mass",   "payload-com",
                                       "payload-inertia", "payload-radius", "payload-box"};
 
 } // namespace
@@ -97,31 +92,41 @@ QString readPayloadOptions(const QCommandLineParser &parser, std::optional<Paylo
     if (!isSet("payload")) {
         for (const char *name : payloadOptions)
             if (isSet(name))
-                return tr("--%1: needs --payload").arg(QLatin1String(name));
+                return QCoreApplication::translate("learnid-cli", "--%1: needs --payload")
+                    .arg(QLatin1String(name));
         return {};
     }
     if (!isSet("payload-mass"))
-        return tr("--payload: needs --payload-mass KG, your estimate of the payload's mass");
+        return QCoreApplication::translate(
+            "learnid-cli",
+            "--payload: needs --payload-mass KG, your estimate of the payload's mass");
     if (isSet("payload-radius") && isSet("payload-box"))
-        return tr("--payload-box: give either a bounding box or --payload-radius, not both");
+        return QCoreApplication::translate(
+            "learnid-cli",
+            "--payload-box: give either a bounding box or --payload-radius, not both");
     PayloadOptions o;
     o.link = value("payload-link");
     bool ok = false;
     o.prior.mass = value("payload-mass").trimmed().toDouble(&ok);
     if (!ok)
-        return tr("--payload-mass: must be a number of kg, got '%1'").arg(value("payload-mass"));
+        return QCoreApplication::translate("learnid-cli",
+                                           "--payload-mass: must be a number of kg, got '%1'")
+            .arg(value("payload-mass"));
     if (isSet("payload-com")) {
         const auto c = numbers(value("payload-com"), 3);
         if (!c)
-            return tr("--payload-com: must be three numbers X,Y,Z [m], got '%1'")
+            return QCoreApplication::translate(
+                       "learnid-cli", "--payload-com: must be three numbers X,Y,Z [m], got '%1'")
                 .arg(value("payload-com"));
         o.prior.com = Eigen::Vector3d((*c)[0], (*c)[1], (*c)[2]);
     }
     if (isSet("payload-inertia")) {
         const auto i = numbers(value("payload-inertia"), 6);
         if (!i)
-            return tr("--payload-inertia: must be six numbers IXX,IXY,IYY,IXZ,IYZ,IZZ [kg m^2], "
-                      "got '%1'")
+            return QCoreApplication::translate(
+                       "learnid-cli",
+                       "--payload-inertia: must be six numbers IXX,IXY,IYY,IXZ,IYZ,IZZ [kg m^2], "
+                       "got '%1'")
                 .arg(value("payload-inertia"));
         Eigen::Matrix3d m;
         m << (*i)[0], (*i)[1], (*i)[3], (*i)[1], (*i)[2], (*i)[4], (*i)[3], (*i)[4], (*i)[5];
@@ -130,13 +135,16 @@ QString readPayloadOptions(const QCommandLineParser &parser, std::optional<Paylo
     if (isSet("payload-radius")) {
         o.prior.bound.radius = value("payload-radius").trimmed().toDouble(&ok);
         if (!ok)
-            return tr("--payload-radius: must be a number of m, got '%1'")
+            return QCoreApplication::translate("learnid-cli",
+                                               "--payload-radius: must be a number of m, got '%1'")
                 .arg(value("payload-radius"));
     }
     if (isSet("payload-box")) {
         const auto b = numbers(value("payload-box"), 6);
         if (!b)
-            return tr("--payload-box: must be six numbers X0,Y0,Z0,X1,Y1,Z1 [m], got '%1'")
+            return QCoreApplication::translate(
+                       "learnid-cli",
+                       "--payload-box: must be six numbers X0,Y0,Z0,X1,Y1,Z1 [m], got '%1'")
                 .arg(value("payload-box"));
         o.prior.bound.box = true;
         o.prior.bound.lower = Eigen::Vector3d((*b)[0], (*b)[1], (*b)[2]);

@@ -59,7 +59,8 @@ Eigen::VectorXd residualRms(const std::vector<Eigen::MatrixXd> &rows, const Iner
     Eigen::VectorXd rms(Eigen::Index(rows.size()));
     for (size_t j = 0; j < rows.size(); ++j) {
         const Eigen::VectorXd e = rows[j].leftCols(10) * pi - rows[j].col(10);
-        rms[Eigen::Index(j)] = std::sqrt(e.squaredNorm() / double(std::max<Eigen::Index>(1, e.size())));
+        rms[Eigen::Index(j)] =
+            std::sqrt(e.squaredNorm() / double(std::max<Eigen::Index>(1, e.size())));
     }
     return rms;
 }

@@ -54,11 +54,15 @@ QStringList PayloadObservability::advice(const QString &link) const
     for (int a = 0; a < 3; ++a)
         if (!identified(1 + a))
             axes << QLatin1String(names[a]);
-    if (!axes.isEmpty()) {
+    if (axes.size() == 1) {
         lines << Text::tr("the centre of mass along the %1 axis of %2 is not seen: the mass and "
                           "the centre of mass need changes of the wrist's orientation; tilt the "
-                          "wrist so that this axis turns away from the vertical",
-                          nullptr, int(axes.size()))
+                          "wrist so that this axis turns away from the vertical")
+                     .arg(axes.front(), link);
+    } else if (!axes.isEmpty()) {
+        lines << Text::tr("the centre of mass along the %1 axes of %2 is not seen: the mass and "
+                          "the centre of mass need changes of the wrist's orientation; tilt the "
+                          "wrist so that these axes turn away from the vertical")
                      .arg(axes.join(QStringLiteral(", ")), link);
     }
     QStringList inertia;

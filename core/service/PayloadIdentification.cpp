@@ -34,8 +34,8 @@ PayloadIdentificationResult identifyPayloadFromLogs(const PayloadIdentificationR
     PayloadIdentificationResult r;
     r.robot = loadLogRobot(request.logs);
     try {
-        r.model = std::make_shared<const PayloadModel>(r.robot.model,
-                                                       r.robot.model->cadStandard(), request.link);
+        r.model = std::make_shared<const PayloadModel>(r.robot.model, r.robot.model->cadStandard(),
+                                                       request.link);
     } catch (const Error &e) {
         throw Error(QStringLiteral("%1: %2").arg(names.link, e.message()));
     }

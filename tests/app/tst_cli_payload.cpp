@@ -72,9 +72,9 @@ bool write(const QString &path, const QByteArray &data)
 // The estimate on the table row whose name starts the line ("m [kg]", "cx [m]").
 double tableValue(const QString &out, const QString &name)
 {
-    const QRegularExpression row(QStringLiteral("^%1 \\[[^\\]]*\\]\\s+(\\S+)")
-                                     .arg(QRegularExpression::escape(name)),
-                                 QRegularExpression::MultilineOption);
+    const QRegularExpression row(
+        QStringLiteral("^%1 \\[[^\\]]*\\]\\s+(\\S+)").arg(QRegularExpression::escape(name)),
+        QRegularExpression::MultilineOption);
     const QRegularExpressionMatch m = row.match(out);
     return m.hasMatch() ? m.captured(1).toDouble() : NAN;
 }
@@ -147,17 +147,18 @@ void TestCliPayload::wristTurningPath_massWithinOnePercentAndComWithinThreeMilli
 
 void TestCliPayload::verticalWristPath_reportsTheUnseenAndKeepsThePrior()
 {
-    const test::ToolRun run = test::runTool(
-        cli, {QStringLiteral("identify"), QStringLiteral("--robot"), m_urdf,
-              QStringLiteral("--log"), m_vertical, QStringLiteral("--payload"),
-              QStringLiteral("--payload-mass"), QStringLiteral("2.5"),
-              QStringLiteral("--payload-com"), QStringLiteral("0,0,0.05")});
+    const test::ToolRun run =
+        test::runTool(cli, {QStringLiteral("identify"), QStringLiteral("--robot"), m_urdf,
+                            QStringLiteral("--log"), m_vertical, QStringLiteral("--payload"),
+                            QStringLiteral("--payload-mass"), QStringLiteral("2.5"),
+                            QStringLiteral("--payload-com"), QStringLiteral("0,0,0.05")});
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     qInfo("%s", qPrintable(run.out));
     QVERIFY(tableRow(run.out, QStringLiteral("m")).endsWith(QStringLiteral("the logs")));
     QVERIFY(tableRow(run.out, QStringLiteral("cx")).endsWith(QStringLiteral("the logs")));
     QVERIFY(tableRow(run.out, QStringLiteral("cz")).endsWith(QStringLiteral("(not identified)")));
-    QVERIFY(tableRow(run.out, QStringLiteral("Ic xx")).endsWith(QStringLiteral("(not identified)")));
+    QVERIFY(
+        tableRow(run.out, QStringLiteral("Ic xx")).endsWith(QStringLiteral("(not identified)")));
     QVERIFY(std::abs(tableValue(run.out, QStringLiteral("m")) - 3.0) < 0.03);
     QVERIFY(std::abs(tableValue(run.out, QStringLiteral("cx")) - 0.05) < 0.003);
     // Kept: the prior's 5 cm along the wrist axis, not the true 8 cm.
@@ -181,8 +182,8 @@ void TestCliPayload::badInput_namesTheOptionAndWritesNothing_data()
     QTest::newRow("zero mass") << l({"--payload", "--payload-mass", "0"})
                                << QStringLiteral("--payload-mass: the payload's mass must be a "
                                                  "positive number");
-    QTest::newRow("negative mass") << l({"--payload", "--payload-mass", "-2"})
-                                   << QStringLiteral("--payload-mass:");
+    QTest::newRow("negative mass")
+        << l({"--payload", "--payload-mass", "-2"}) << QStringLiteral("--payload-mass:");
     QTest::newRow("nan mass") << l({"--payload", "--payload-mass", "nan"})
                               << QStringLiteral("--payload-mass:");
     QTest::newRow("nan com") << l({"--payload", "--payload-mass", "3", "--payload-com",
@@ -201,7 +202,8 @@ void TestCliPayload::badInput_namesTheOptionAndWritesNothing_data()
                                         "gripper"})
                                   << QStringLiteral("--payload-link: payload link 'gripper' is "
                                                     "not a moving link");
-    QTest::newRow("no mass") << l({"--payload"}) << QStringLiteral("--payload: needs --payload-mass");
+    QTest::newRow("no mass") << l({"--payload"})
+                             << QStringLiteral("--payload: needs --payload-mass");
     QTest::newRow("no --payload") << l({"--payload-mass", "3"})
                                   << QStringLiteral("--payload-mass: needs --payload");
     QTest::newRow("export") << l({"--payload", "--payload-mass", "3", "--export", "p.json"})
@@ -215,10 +217,11 @@ void TestCliPayload::badInput_namesTheOptionAndWritesNothing()
     QTemporaryDir work;
     const QString plots = work.filePath(QStringLiteral("plots"));
     const test::ToolRun run = test::runTool(
-        cli, QStringList{QStringLiteral("identify"), QStringLiteral("--robot"), m_urdf,
-                         QStringLiteral("--log"), m_rich, QStringLiteral("--plots"), plots,
-                         QStringLiteral("--report"), work.filePath(QStringLiteral("r.pdf"))} +
-                 options,
+        cli,
+        QStringList{QStringLiteral("identify"), QStringLiteral("--robot"), m_urdf,
+                    QStringLiteral("--log"), m_rich, QStringLiteral("--plots"), plots,
+                    QStringLiteral("--report"), work.filePath(QStringLiteral("r.pdf"))} +
+            options,
         work.path());
     QCOMPARE(run.exitCode, 2);
     QVERIFY2(run.err.contains(message), qPrintable(run.err));
