@@ -17,6 +17,8 @@ LEARNID_PACKAGES=(
     liburdfdom-dev  # URDF robots (core/model/UrdfChain)
     libassimp-dev  # URDF mesh files' bounding boxes (core/model/MeshBounds)
     liborocos-kdl-dev  # tests only: Orocos KDL, the dynamics oracle of tst_chaindynamics
+    can-utils  # scripts/test-socketcan: cansend, candump, canplayer inside the VM (CI)
+    libsocketcan2  # Qt's socketcan plugin loads it: bus state and bitrate of a real controller
 )
 
 learnid_install_deps() {

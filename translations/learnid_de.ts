@@ -113,6 +113,170 @@
     </message>
 </context>
 <context>
+    <name>CanBus</name>
+    <message>
+        <location filename="../core/can/CanBusErrors.cpp" line="+30"/>
+        <location line="+51"/>
+        <source>bus off</source>
+        <translation>Bus aus (bus off)</translation>
+    </message>
+    <message>
+        <location line="-47"/>
+        <source>controller error passive (%1)</source>
+        <translation>Controller fehlerpassiv (%1)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>controller buffer overflow: frames were lost</source>
+        <translation>Pufferüberlauf im Controller: Frames gingen verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller error warning level</source>
+        <translation>Controller an der Fehlerwarnschwelle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller back to error active</source>
+        <translation>Controller wieder fehleraktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller problem (unspecified)</source>
+        <translation>Controllerproblem (nicht näher bezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>transmit timeout</source>
+        <translation>Sende-Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>protocol violation (type 0x%1, location 0x%2)</source>
+        <translation>Protokollverletzung (Typ 0x%1, Ort 0x%2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>transceiver error (0x%1)</source>
+        <translation>Transceiverfehler (0x%1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no acknowledgement (no other node on the bus?)</source>
+        <translation>keine Bestätigung (kein anderer Knoten am Bus?)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bus error</source>
+        <translation>Busfehler</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lost arbitration</source>
+        <translation>Arbitrierung verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller restarted</source>
+        <translation>Controller neu gestartet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error class 0x%1</source>
+        <translation>Fehlerklasse 0x%1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>error active</source>
+        <translation>fehleraktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error warning</source>
+        <translation>Fehlerwarnung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error passive</source>
+        <translation>fehlerpassiv</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>stopped</source>
+        <translation>gestoppt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../core/can/SocketCanInterface.cpp" line="+142"/>
+        <source>the CAN interface %1 does not exist (ip link show: is the adapter plugged in, its driver loaded?)</source>
+        <translation>die CAN-Schnittstelle %1 existiert nicht (ip link show: ist der Adapter eingesteckt, sein Treiber geladen?)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a CAN interface</source>
+        <translation>%1 ist keine CAN-Schnittstelle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 is down (as root: ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up)</source>
+        <translation>die CAN-Schnittstelle %1 ist nicht aktiv (als root: ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the CAN controller of %1 is %2 (as root: ip link set %1 down &amp;&amp; ip link set %1 up; check wiring and termination)</source>
+        <translation>der CAN-Controller von %1 ist %2 (als root: ip link set %1 down &amp;&amp; ip link set %1 up; Verkabelung und Abschluss prüfen)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>CAN FD (mtu %1)</source>
+        <translation>CAN FD (MTU %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN (mtu %1)</source>
+        <translation>CAN (MTU %1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bitrate %1 kbit/s</source>
+        <translation>Bitrate %1 kbit/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bitrate not readable</source>
+        <translation>Bitrate nicht lesbar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2, %3, %4</source>
+        <translation>%1: %2, %3, %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up</source>
+        <translation>aktiv</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>down</source>
+        <translation>nicht aktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, driver %1</source>
+        <translation>, Treiber %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, controller %1</source>
+        <translation>, Controller %1</translation>
+    </message>
+</context>
+<context>
     <name>CanOpen</name>
     <message>
         <location filename="../core/can/CanOpen.cpp" line="+51"/>
@@ -149,7 +313,7 @@
 <context>
     <name>CanRobot</name>
     <message>
-        <location filename="../core/canrobot/ApplySteps.cpp" line="+23"/>
+        <location filename="../core/canrobot/ApplySteps.cpp" line="+24"/>
         <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
         <translation>Knoten %1, Objekt %2: nach dem Schreiben von %4 (%5 %6) %3 zurückgelesen: nichts wurde gespeichert</translation>
     </message>
@@ -159,7 +323,7 @@
         <translation>CAN %1/%2, Knoten %3</translation>
     </message>
     <message>
-        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+43"/>
         <source>cannot create the CAN device %1/%2: %3</source>
         <translation>das CAN-Gerät %1/%2 kann nicht angelegt werden: %3</translation>
     </message>
@@ -195,17 +359,17 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+54"/>
+        <location line="+64"/>
         <source>node %1 is listed twice</source>
         <translation>Knoten %1 ist zweimal aufgeführt</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-57"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN-Zeitoptionen müssen positiv sein (Heartbeat-Periode höchstens 65535 ms)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+52"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; ist keine CANopen-Knoten-ID (1 bis 127)</translation>
     </message>
@@ -263,6 +427,36 @@
         <location line="+5"/>
         <source>at SYNC %1 (counter %2), %3 s after NMT start</source>
         <translation>bei SYNC %1 (Zähler %2), %3 s nach NMT-Start</translation>
+    </message>
+    <message>
+        <location filename="../core/canrobot/JointIdentityCheck.cpp" line="+23"/>
+        <source>node %1, object %2: the answer holds %3 bytes, 1 to 4 expected</source>
+        <translation>Knoten %1, Objekt %2: die Antwort enthält %3 Bytes, erwartet 1 bis 4</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>; the drives say --nodes %1</source>
+        <translation>; die Antriebe sagen --nodes %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>node %1 is listed for joint %2 but is the drive of joint %3 of this robot (0x2400:02 = %3): the node list does not match the wiring%4</source>
+        <translation>Knoten %1 ist für Gelenk %2 angegeben, ist aber der Antrieb von Gelenk %3 dieses Roboters (0x2400:02 = %3): die Knotenliste passt nicht zur Verdrahtung%4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>node %1 (joint %2) is not the drive the parameter file records for joint %2: it reports %3 (0x1018), the file holds %4</source>
+        <translation>Knoten %1 (Gelenk %2) ist nicht der Antrieb, den die Parameterdatei für Gelenk %2 verzeichnet: er meldet %3 (0x1018), die Datei enthält %4</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>node %1 (joint %2) has never been commissioned (0x2400 is 0), so learnid cannot check which joint it moves: make sure it is the drive of joint %2 (its identity: %3), then run with --commission (in the window: First commissioning); apply stores the joint identity</source>
+        <translation>Knoten %1 (Gelenk %2) wurde nie in Betrieb genommen (0x2400 ist 0), daher kann learnid nicht prüfen, welches Gelenk er bewegt: stellen Sie sicher, dass er der Antrieb von Gelenk %2 ist (seine Identität: %3), und starten Sie dann mit --commission (im Fenster: Erstinbetriebnahme); Anwenden speichert die Gelenkidentität</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>node %1 (joint %2) was commissioned for another robot (0x2400:01 = %3, this robot is %4): make sure it is the drive of joint %2 (%5), then run with --commission (in the window: First commissioning)</source>
+        <translation>Knoten %1 (Gelenk %2) wurde für einen anderen Roboter in Betrieb genommen (0x2400:01 = %3, dieser Roboter ist %4): stellen Sie sicher, dass er der Antrieb von Gelenk %2 ist (%5), und starten Sie dann mit --commission (im Fenster: Erstinbetriebnahme)</translation>
     </message>
 </context>
 <context>
@@ -478,7 +672,17 @@
 <context>
     <name>ControllerLogCsv</name>
     <message>
-        <location filename="../core/io/ControllerLogCsv.cpp" line="+37"/>
+        <location filename="../core/io/ControllerLogCsv.cpp" line="+56"/>
+        <source>&quot;# stopped-by:&quot; says %1; known: %2</source>
+        <translation>&quot;# stopped-by:&quot; sagt %1; bekannt: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing</source>
+        <translation>nichts</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s line &quot;# plan-id: %2&quot; into its log</source>
         <translation>%1: keine Kommentarzeile „# plan-id:“; der Regler übernimmt die Zeile „# plan-id: %2“ des Plans in sein Log</translation>
     </message>
@@ -498,9 +702,19 @@
         <translation>t = %1 s liegt nicht im Zeitraster des Plans: Abtastwert %2 ist bei t = %3 s (+-%4 s) geplant; ein Log enthält jeden Abtastwert des Plans, zu den Zeiten des Plans</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
+        <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the controller stopped the trial at its tracking limit</source>
+        <translation>das Protokoll endet nach %1 der %2 Abtastwerte des Plans (t = %3 s von %4 s): die Steuerung hat den Versuch an ihrer Grenze des Folgefehlers angehalten</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the trial ended early</source>
         <translation>das Log endet nach %1 der %2 Abtastwerte des Plans (t = %3 s von %4 s): der Versuch endete vorzeitig</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&quot;# stopped-by:&quot; in a log of all the plan&apos;s %1 samples: a trial that ran to its end was not stopped</source>
+        <translation>&quot;# stopped-by:&quot; in einem Protokoll aller %1 Abtastwerte des Plans: ein Versuch, der bis zum Ende lief, wurde nicht angehalten</translation>
     </message>
 </context>
 <context>
@@ -776,29 +990,19 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+129"/>
-        <source>link %1 (%2): mass %3 kg: not a real body</source>
-        <translation>Glied %1 (%2): Masse %3 kg: kein realer Körper</translation>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+148"/>
+        <source>not physically consistent</source>
+        <translation>physikalisch nicht konsistent</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>link %1 (%2): its inertia cannot belong to a real body (pseudo-inertia eigenvalue %3)</source>
-        <translation>Glied %1 (%2): seine Trägheit kann zu keinem realen Körper gehören (Eigenwert der Pseudoträgheit %3)</translation>
+        <location line="+2"/>
+        <source>physically consistent (every link a real body) but not plausible</source>
+        <translation>physikalisch konsistent (jedes Glied ein realer Körper), aber nicht plausibel</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 is negative: friction and rotor inertia cannot be</source>
-        <translation>%1 ist negativ: Reibung und Rotorträgheit können das nicht sein</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>physically consistent: every link a real body</source>
-        <translation>physikalisch konsistent: jedes Glied ein realer Körper</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>link %1 (%2): not a plausible body: %3</source>
-        <translation>Glied %1 (%2): kein plausibler Körper: %3</translation>
+        <location line="+2"/>
+        <source>physically consistent and plausible: every link a real body that a robot&apos;s link could be</source>
+        <translation>physikalisch konsistent und plausibel: jedes Glied ein realer Körper, der das Glied eines Roboters sein könnte</translation>
     </message>
 </context>
 <context>
@@ -914,12 +1118,12 @@
         <translation>%1 wurde mit einer anderen Schätzung als der neuesten des Verlaufs (Schätzung %2) erstellt: den nächsten Versuch neu planen</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>%1: %2; nothing learned</source>
         <translation>%1: %2; nichts gelernt</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>the history %1 does not replay: trial %2: %3</source>
         <translation>der Verlauf %1 lässt sich nicht wiedergeben: Versuch %2: %3</translation>
     </message>
@@ -929,7 +1133,7 @@
         <translation>%1 ist nicht die Schätzung %2, die die Versuche des Verlaufs mit diesem Szenario ergeben: ist sein Schätzer der des Verlaufs?</translation>
     </message>
     <message>
-        <location filename="../core/service/FileLoopPlan.cpp" line="+32"/>
+        <location filename="../core/service/FileLoopPlan.cpp" line="+33"/>
         <source>initial estimate of a learning loop through files</source>
         <translation>Anfangsschätzung einer Lernschleife über Dateien</translation>
     </message>
@@ -1125,13 +1329,19 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+119"/>
-        <location filename="../core/identify/PaperLaw.cpp" line="+18"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+57"/>
+        <location filename="../core/identify/PaperLaw.cpp" line="+44"/>
+        <source>trial record has only %1 samples to learn from</source>
+        <translation>die Versuchsaufzeichnung hat nur %1 Abtastwerte zum Lernen</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <location filename="../core/identify/PaperLaw.cpp" line="-26"/>
         <source>no completed trial to learn from</source>
         <translation>kein abgeschlossener Versuch, aus dem gelernt werden kann</translation>
     </message>
     <message>
-        <location filename="../core/identify/LearningLaw.cpp" line="+61"/>
+        <location filename="../core/identify/LearningLaw.cpp" line="+75"/>
         <source>trial record does not match its plan: %1 of %2 samples, %3 joints recorded for a %4-joint model</source>
         <translation>Versuchsaufzeichnung passt nicht zu ihrem Plan: %1 von %2 Abtastwerten, %3 Gelenke aufgezeichnet für ein Modell mit %4 Gelenken</translation>
     </message>
@@ -1154,6 +1364,59 @@
         <location line="+0"/>
         <source>angle</source>
         <translation>Winkel</translation>
+    </message>
+</context>
+<context>
+    <name>LinkVerdictTable</name>
+    <message>
+        <location filename="../core/session/LinkVerdictTable.cpp" line="+25"/>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Per link: physically consistent (a real body), and plausible (a body a robot&apos;s link could be: its smallest principal moment of inertia about the centre of mass I1 at least %1 % of the CAD link&apos;s, (I1 + I2) / I3 at least %2, the centre of mass inside the link&apos;s bounding volume).</source>
+        <translation>Je Glied: physikalisch konsistent (ein realer Körper) und plausibel (ein Körper, der das Glied eines Roboters sein könnte: sein kleinstes Hauptträgheitsmoment um den Schwerpunkt I1 mindestens %1 % des kleinsten des CAD-Glieds, (I1 + I2) / I3 mindestens %2, der Schwerpunkt innerhalb des Hüllvolumens des Glieds).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>link</source>
+        <translation>Glied</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>I1 [kg m^2]</source>
+        <translation>I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CAD I1 [kg m^2]</source>
+        <translation>CAD-I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>(I1 + I2) / I3</source>
+        <translation>(I1 + I2) / I3</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CoM in volume</source>
+        <translation>Schwerpunkt im Volumen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>consistent</source>
+        <translation>konsistent</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>plausible</source>
+        <translation>plausibel</translation>
     </message>
 </context>
 <context>
@@ -1317,7 +1580,7 @@
 <context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+56"/>
         <source>Reading the robot %1…</source>
         <translation>Roboter %1 wird gelesen…</translation>
     </message>
@@ -1346,11 +1609,11 @@
     </message>
     <message>
         <location line="+16"/>
-        <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Konsistenz:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
+        <source>&lt;p&gt;&lt;b&gt;Identified parameters:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Identifizierte Parameter:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Trainingsresiduum&lt;/b&gt;, RMS pro Gelenk [N m]: %1&lt;/p&gt;</translation>
     </message>
@@ -1440,7 +1703,7 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
-        <location filename="../core/can/ManufacturerObjects.cpp" line="+117"/>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+119"/>
         <source>No node to write the parameters to.</source>
         <translation>Kein Knoten, in den die Parameter geschrieben werden können.</translation>
     </message>
@@ -1512,7 +1775,7 @@
 <context>
     <name>ModelCheck</name>
     <message>
-        <location filename="../core/model/ModelCheck.cpp" line="+25"/>
+        <location filename="../core/model/ModelCheck.cpp" line="+27"/>
         <source>link %1 (%2)</source>
         <translation>Glied %1 (%2)</translation>
     </message>
@@ -1522,44 +1785,24 @@
         <translation>Gelenk %1 (%2)</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>%1: its smallest principal moment of inertia about the centre of mass, %2 kg m^2, is below %3 % of the CAD link&apos;s smallest (%4 kg m^2): a point mass or a needle, not a link</source>
-        <translation>%1: sein kleinstes Hauptträgheitsmoment um den Schwerpunkt, %2 kg m^2, liegt unter %3 % des kleinsten des CAD-Glieds (%4 kg m^2): eine Punktmasse oder Nadel, kein Glied</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its principal moments %2, %3 and %4 kg m^2 give I1 + I2 = %5 I3, below %6 I3 (a flat plate at best)</source>
-        <translation>%1: seine Hauptträgheitsmomente %2, %3 und %4 kg m^2 ergeben I1 + I2 = %5 I3, unter %6 I3 (bestenfalls eine flache Platte)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its centre of mass lies outside its bounding volume (%2)</source>
-        <translation>%1: sein Schwerpunkt liegt außerhalb seines Hüllvolumens (%2)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the URDF&apos;s geometry: %1</source>
-        <translation>die Geometrie des URDF: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
-        <translation>das Trägheitsellipsoid des CAD-Körpers, %1-fach vergrößert</translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+8"/>
         <source>%1: its mass is %2 kg: not a real body</source>
         <translation>%1: seine Masse ist %2 kg: kein realer Körper</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>%1: no mass distribution has its inertia (its pseudo-inertia has the negative eigenvalue %2): not a real body</source>
         <translation>%1: keine Massenverteilung hat seine Trägheit (seine Pseudo-Trägheit hat den negativen Eigenwert %2): kein realer Körper</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>%1: %2 is %3, negative: friction and rotor inertia take energy, they do not give it</source>
         <translation>%1: %2 ist %3, negativ: Reibung und Rotorträgheit nehmen Energie auf, sie geben keine ab</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 is %3, between 0 and %4: the underflow of a positive parametrisation where 0 is meant</source>
+        <translation>%1: %2 ist %3, zwischen 0 und %4: der Unterlauf einer positiven Parametrisierung, wo 0 gemeint ist</translation>
     </message>
 </context>
 <context>
@@ -1637,7 +1880,7 @@
         <translation>DCF-Fragment: Gelenk %1 existiert nicht; der Roboter hat %2 Gelenke</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+166"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+178"/>
         <source>must be given for every parameter or for none</source>
         <translation>muss für jeden Parameter oder für keinen angegeben sein</translation>
     </message>
@@ -1662,7 +1905,7 @@
         <translation>muss Datum und Uhrzeit wie 2024-05-01T12:00:00.000Z sein, gefunden: „%1“</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+71"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>fehlt; dies ist keine learnid-Parameterdatei</translation>
     </message>
@@ -1702,20 +1945,20 @@
         <translation>Knoten %1 ist zwei Gelenken zugeordnet</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>must be a valid date and time</source>
         <translation>muss ein gültiges Datum mit Uhrzeit sein</translation>
     </message>
     <message>
-        <location line="-71"/>
-        <location line="+73"/>
+        <location line="-73"/>
+        <location line="+75"/>
         <location line="+15"/>
         <location line="+5"/>
         <source>must not be empty</source>
         <translation>darf nicht leer sein</translation>
     </message>
     <message>
-        <location line="-103"/>
+        <location line="-105"/>
         <source>one per standard parameter</source>
         <translation>einer pro Standardparameter</translation>
     </message>
@@ -1735,7 +1978,7 @@
         <translation>muss den Knoten jedes Gelenks angeben, wenn die Datei keinen Regler festhält</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
@@ -1755,8 +1998,8 @@
         <translation>muss „%1“ sein (Parameter %2 von %3), gefunden: „%4“</translation>
     </message>
     <message>
-        <location line="-103"/>
-        <location line="+109"/>
+        <location line="-105"/>
+        <location line="+111"/>
         <source>values, %1</source>
         <translation>Werte, %1</translation>
     </message>
@@ -1840,189 +2083,6 @@
         <location line="+10"/>
         <source>it cannot see, and the trials keep: %1</source>
         <translation>sie sieht nicht, und die Versuche behalten: %1</translation>
-    </message>
-</context>
-<context>
-    <name>Payload</name>
-    <message>
-        <location filename="../core/model/Payload.cpp" line="+22"/>
-        <source>the payload&apos;s inertial parameters are not finite</source>
-        <translation>die Trägheitsparameter der Nutzlast sind nicht endlich</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the payload&apos;s mass must be positive (it is %1 kg)</source>
-        <translation>die Masse der Nutzlast muss positiv sein (sie ist %1 kg)</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>%1 has no moving link to carry a payload</source>
-        <translation>%1 hat kein bewegtes Glied, das eine Nutzlast tragen kann</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>payload link &apos;%1&apos; is not a moving link of %2 (its links: %3)</source>
-        <translation>Nutzlast-Glied „%1“ ist kein bewegtes Glied von %2 (seine Glieder: %3)</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>a payload needs the arm&apos;s model</source>
-        <translation>eine Nutzlast braucht das Modell des Arms</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the arm&apos;s parameters for %1 must be %2 finite numbers</source>
-        <translation>die Parameter des Arms für %1 müssen %2 endliche Zahlen sein</translation>
-    </message>
-</context>
-<context>
-    <name>PayloadEstimate</name>
-    <message>
-        <location filename="../core/identify/PayloadEstimate.cpp" line="+61"/>
-        <source>the payload&apos;s rows (%1 x %2) and targets (%3) do not match</source>
-        <translation>die Zeilen der Nutzlast (%1 x %2) und die Zielwerte (%3) passen nicht zusammen</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the payload&apos;s rows or targets are not finite</source>
-        <translation>die Zeilen oder Zielwerte der Nutzlast sind nicht endlich</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the variance factor must be positive</source>
-        <translation>der Varianzfaktor muss positiv sein</translation>
-    </message>
-    <message>
-        <location line="+70"/>
-        <source>no direction determined: the prior</source>
-        <translation>keine Richtung bestimmt: die Vorgabe</translation>
-    </message>
-</context>
-<context>
-    <name>PayloadFit</name>
-    <message>
-        <location filename="../core/identify/PayloadFit.cpp" line="+87"/>
-        <source>%1 has %2 joints, the robot %3</source>
-        <translation>%1 hat %2 Gelenke, der Roboter %3</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1: the filtered signals are not finite</source>
-        <translation>%1: die gefilterten Signale sind nicht endlich</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>no samples to fit the payload to</source>
-        <translation>keine Abtastwerte, an die die Nutzlast angepasst werden kann</translation>
-    </message>
-</context>
-<context>
-    <name>PayloadIdentification</name>
-    <message>
-        <location filename="../core/service/PayloadIdentification.cpp" line="+31"/>
-        <source>no log to identify the payload from</source>
-        <translation>kein Log, aus dem die Nutzlast identifiziert werden kann</translation>
-    </message>
-</context>
-<context>
-    <name>PayloadObservability</name>
-    <message>
-        <location filename="../core/identify/PayloadObservability.cpp" line="+48"/>
-        <source>the mass is not seen: the path must hold the payload against gravity in several orientations of %1, or accelerate it</source>
-        <translation>die Masse ist nicht sichtbar: die Bahn muss die Nutzlast in mehreren Orientierungen von %1 gegen die Schwerkraft halten oder sie beschleunigen</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>the centre of mass along the %1 axis of %2 is not seen: the mass and the centre of mass need changes of the wrist&apos;s orientation; tilt the wrist so that this axis turns away from the vertical</source>
-        <translation>der Schwerpunkt entlang der %1-Achse von %2 ist nicht sichtbar: Masse und Schwerpunkt brauchen Änderungen der Orientierung des Handgelenks; neigen Sie das Handgelenk, sodass sich diese Achse aus der Senkrechten dreht</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the centre of mass along the %1 axes of %2 is not seen: the mass and the centre of mass need changes of the wrist&apos;s orientation; tilt the wrist so that these axes turn away from the vertical</source>
-        <translation>der Schwerpunkt entlang der Achsen %1 von %2 ist nicht sichtbar: Masse und Schwerpunkt brauchen Änderungen der Orientierung des Handgelenks; neigen Sie das Handgelenk, sodass sich diese Achsen aus der Senkrechten drehen</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>the inertia %1 is not seen: the full inertia needs rotations of the wrist about several axes, with accelerations</source>
-        <translation>die Trägheit %1 ist nicht sichtbar: die volle Trägheit braucht Drehungen des Handgelenks um mehrere Achsen, mit Beschleunigungen</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>the payload&apos;s regressor has 10 columns, not %1</source>
-        <translation>der Regressor der Nutzlast hat 10 Spalten, nicht %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the share of the strongest direction must lie between 0 and 1</source>
-        <translation>der Anteil der stärksten Richtung muss zwischen 0 und 1 liegen</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the payload&apos;s regressor is not finite</source>
-        <translation>der Regressor der Nutzlast ist nicht endlich</translation>
-    </message>
-    <message>
-        <location line="+38"/>
-        <source>the path must give q, qd and qdd for the %1 joints at every sample</source>
-        <translation>die Bahn muss q, qd und qdd für die %1 Gelenke bei jedem Abtastwert angeben</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>the path has no samples</source>
-        <translation>die Bahn hat keine Abtastwerte</translation>
-    </message>
-</context>
-<context>
-    <name>PayloadPrior</name>
-    <message>
-        <location filename="../core/model/PayloadPrior.cpp" line="+53"/>
-        <source>box %1 to %2 m</source>
-        <translation>Quader %1 bis %2 m</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>sphere of radius %1 m around %2 m</source>
-        <translation>Kugel mit Radius %1 m um %2 m</translation>
-    </message>
-    <message>
-        <location line="+16"/>
-        <source>%1: the payload&apos;s mass must be a positive number of kg, not %2</source>
-        <translation>%1: die Masse der Nutzlast muss eine positive Zahl in kg sein, nicht %2</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1: the centre of mass must be finite, not %2</source>
-        <translation>%1: der Schwerpunkt muss endlich sein, nicht %2</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1: the box&apos;s upper corner %2 must lie above its lower corner %3 in x, y and z</source>
-        <translation>%1: die obere Ecke %2 des Quaders muss in x, y und z über seiner unteren Ecke %3 liegen</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1: the bounding sphere needs a positive radius [m], not %2</source>
-        <translation>%1: die Hüllkugel braucht einen positiven Radius [m], nicht %2</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1: the prior centre of mass %2 m is not inside the bound (%3): give a bound that contains it</source>
-        <translation>%1: der vorgegebene Schwerpunkt %2 m liegt nicht innerhalb der Grenze (%3): geben Sie eine Grenze an, die ihn enthält</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>%1: the inertia must be finite and symmetric</source>
-        <translation>%1: die Trägheit muss endlich und symmetrisch sein</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1: the inertia is not a real body&apos;s (principal moments %2 kg m^2 must be positive and each at most the sum of the others)</source>
-        <translation>%1: die Trägheit ist nicht die eines realen Körpers (die Hauptmomente %2 kg m^2 müssen positiv und jedes höchstens die Summe der anderen sein)</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1: a body with this inertia does not fit in the bound (%2)</source>
-        <translation>%1: ein Körper mit dieser Trägheit passt nicht in die Grenze (%2)</translation>
     </message>
 </context>
 <context>
@@ -2170,27 +2230,42 @@
         <translation>Die zu prüfenden Parameter sind nicht endlich.</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <source>mass %1 kg</source>
-        <translation>Masse %1 kg</translation>
+        <location line="+38"/>
+        <source>its mass is %1 kg: not a real body</source>
+        <translation>seine Masse ist %1 kg: kein realer Körper</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
-        <translation>kleinstes Hauptträgheitsmoment %1 kg m², unter %2 % des kleinsten des CAD-Glieds (%3 kg m²)</translation>
+        <location line="+2"/>
+        <source>its smallest principal moment of inertia about the centre of mass, %1 kg m^2, is below %2 % of the CAD link&apos;s smallest (%3 kg m^2): a point mass or a needle, not a link</source>
+        <translation>sein kleinstes Hauptträgheitsmoment um den Schwerpunkt, %1 kg m^2, liegt unter %2 % des kleinsten des CAD-Glieds (%3 kg m^2): eine Punktmasse oder Nadel, kein Glied</translation>
     </message>
     <message>
         <location line="+7"/>
-        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
-        <translation>(I1 + I2) / I3 = %1, unter %2: eine Nadel oder eine Platte</translation>
+        <source>its principal moments %1, %2 and %3 kg m^2 give I1 + I2 = %4 I3, below %5 I3 (a flat plate at best)</source>
+        <translation>seine Hauptträgheitsmomente %1, %2 und %3 kg m^2 ergeben I1 + I2 = %4 I3, unter %5 I3 (bestenfalls eine flache Platte)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
-        <translation>Schwerpunkt außerhalb des Hüllvolumens des Glieds (das %1-Fache seiner Größe)</translation>
+        <location line="+7"/>
+        <source>its centre of mass lies outside its bounding volume (%1)</source>
+        <translation>sein Schwerpunkt liegt außerhalb seines Hüllvolumens (%1)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+2"/>
+        <source>the URDF&apos;s geometry: %1</source>
+        <translation>die Geometrie des URDF: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
+        <translation>das Trägheitsellipsoid des CAD-Körpers, %1-fach vergrößert</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>its centre of mass lies outside its bounding volume</source>
+        <translation>sein Schwerpunkt liegt außerhalb seines Hüllvolumens</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Index %1 is outside the %2 standard parameters.</source>
         <translation>Index %1 liegt außerhalb der %2 Standardparameter.</translation>
     </message>
@@ -2255,7 +2330,7 @@
         <translation>der eigene Regler des Roboters (Plan- und Log-Dateien)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>no logged trial is left for trial run %1</source>
         <translation>für Versuchslauf %1 ist kein aufgezeichneter Versuch mehr übrig</translation>
     </message>
@@ -2404,7 +2479,7 @@
 <context>
     <name>RobotScenario</name>
     <message>
-        <location filename="../core/session/RobotScenario.cpp" line="+44"/>
+        <location filename="../core/session/RobotScenario.cpp" line="+45"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -2419,7 +2494,12 @@
         <translation>robot.model: unbekanntes Modell „%1“</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+94"/>
+        <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
+        <translation>unbekannter Roboter „%1“; bekannt: %2 oder eine URDF-Datei (DATEI.urdf)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>path.waypoints[%1][%2]: %3 is %4 joint %5 (%6)&apos;s %7 limit %8</source>
         <translation>path.waypoints[%1][%2]: %3 liegt %4 der %7 Grenze %8 von Gelenk %5 (%6)</translation>
     </message>
@@ -2475,38 +2555,38 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+162"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+203"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+234"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+279"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-94"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-135"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
     <message>
         <location line="+24"/>
-        <location line="+21"/>
+        <location line="+60"/>
         <source>one per joint of %1</source>
         <translation>einer pro Gelenk von %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-24"/>
         <source>one per parameter of %1</source>
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-202"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-247"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -2516,12 +2596,12 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+85"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-86"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-125"/>
         <source>one per joint</source>
         <translation>einer pro Gelenk</translation>
     </message>
@@ -2556,12 +2636,27 @@
         <translation>%1 hat %2 Gelenkspalten, %3 hat %4 Gelenke</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
+        <source>must be 0 (off) or at least 1 (static friction is not below Coulomb friction), got %1</source>
+        <translation>muss 0 (aus) oder mindestens 1 sein (Haftreibung liegt nicht unter der Coulomb-Reibung), ist %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>give static friction either as simulation.staticFriction or as this ratio, not both</source>
+        <translation>Haftreibung entweder als simulation.staticFriction oder als dieses Verhältnis angeben, nicht beides</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>applies to elastic joints only: give simulation.jointStiffness</source>
+        <translation>gilt nur für elastische Gelenke: simulation.jointStiffness angeben</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>must be 1 or -1, got %1</source>
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>muss 0 (idealer Encoder) oder eine ganze Zahl von %1 bis %2 sein, gefunden: %3</translation>
     </message>
@@ -2574,9 +2669,19 @@
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+70"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+71"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits: Gelenk %1 (%2) hat im URDF keine Momentengrenze (effort): die Momentengrenzen im Szenario angeben</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="+79"/>
+        <source>must be at least the simulated robot&apos;s Coulomb friction of joint %1, %2 N m, got %3</source>
+        <translation>muss mindestens die Coulomb-Reibung des simulierten Roboters in Gelenk %1 sein, %2 N m, ist %3</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>an elastic joint needs its motor&apos;s rotor inertia: give simulation.armature or simulation.armatureFactor above 0 for joint %1</source>
+        <translation>ein elastisches Gelenk braucht die Rotorträgheit seines Motors: simulation.armature oder simulation.armatureFactor über 0 für Gelenk %1 angeben</translation>
     </message>
 </context>
 <context>
@@ -2781,7 +2886,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+115"/>
+        <location filename="../core/service/SessionReport.cpp" line="+129"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>Schätzung %1 existiert in dieser Sitzung nicht</translation>
     </message>
@@ -2794,17 +2899,17 @@
         <translation>Simulation %1</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>tracking error of joint %1 reached %2 deg at t = %3 s (limit %4 deg): quick stop</source>
         <translation>Folgefehler von Gelenk %1 erreichte %2° bei t = %3 s (Grenze %4°): Schnellhalt</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>drive of joint 1 reported a fault at t = %1 s (injected)</source>
         <translation>Antrieb von Gelenk 1 meldete bei t = %1 s einen Fehler (eingespeist)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>stopped by the operator at t = %1 s</source>
         <translation>vom Bediener gestoppt bei t = %1 s</translation>
     </message>
@@ -2827,9 +2932,9 @@
         <translation>Daten</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>prior</source>
-        <translation>Prior</translation>
+        <location line="+4"/>
+        <source>undetermined (kept near the prior)</source>
+        <translation>unbestimmt (nahe am Prior gehalten)</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -2878,6 +2983,11 @@
         <location line="+10"/>
         <source>%1: %2: parameter %3 is &quot;%4&quot;, the robot&apos;s is &quot;%5&quot;</source>
         <translation>%1: %2: Parameter %3 ist „%4“, der des Roboters ist „%5“</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="-50"/>
+        <source>needs a URDF robot (the link&apos;s inertia about its axis); %1 has none: give simulation.armature in kg m^2</source>
+        <translation>braucht einen URDF-Roboter (die Trägheit des Glieds um seine Achse); %1 hat keinen: simulation.armature in kg m^2 angeben</translation>
     </message>
 </context>
 <context>
@@ -2952,6 +3062,24 @@
         <location line="+24"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>nur ebene Zweigelenkarme haben eine kartesische Geradenkinematik</translation>
+    </message>
+</context>
+<context>
+    <name>TrialSeries</name>
+    <message>
+        <location filename="../core/session/TrialSeries.cpp" line="+70"/>
+        <source>Run all stops: %1 trials in a row stopped at the tracking limit, and trial %2 was no progress over trial %3 (stopped at t = %4 s with %5 deg, against t = %6 s with %7 deg)</source>
+        <translation>„Alle starten“ hält an: %1 Versuche hintereinander stoppten an der Grenze des Folgefehlers, und Versuch %2 war kein Fortschritt gegenüber Versuch %3 (gestoppt bei t = %4 s mit %5 Grad, gegenüber t = %6 s mit %7 Grad)</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>trial %1 tracked worse than trial %2 (max %3 deg against %4 deg)</source>
+        <translation>Versuch %1 folgte schlechter als Versuch %2 (max. %3 Grad gegenüber %4 Grad)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1; Accept proposes estimate %2, which tracked best</source>
+        <translation>%1; „Akzeptieren“ schlägt Schätzung %2 vor, die am besten folgte</translation>
     </message>
 </context>
 <context>
@@ -3350,12 +3478,12 @@
 <context>
     <name>learnid-cli</name>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+44"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+43"/>
         <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
         <translation>--robot: &apos;%1&apos; ist weder eine URDF-Datei noch ein eingebauter Roboter (%2)</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+73"/>
         <source>robot %1: %2, %3 moving joints</source>
         <translation>Roboter %1: %2, %3 bewegliche Gelenke</translation>
     </message>
@@ -3373,12 +3501,12 @@
         </translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>identifiziert von learnid-cli %1 identify am %2</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-77"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1: vorhergesagtes und gemessenes Moment</translation>
     </message>
@@ -3388,23 +3516,22 @@
         <translation>learnid: %1 aus Logs identifiziert</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+182"/>
-        <location line="+10"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+109"/>
-        <location line="+7"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+105"/>
+        <location line="+9"/>
+        <location line="+6"/>
+        <location line="+13"/>
         <location line="+12"/>
-        <location line="+61"/>
-        <location line="+44"/>
-        <location filename="../app/cli/main.cpp" line="+52"/>
+        <location line="+69"/>
+        <location line="+62"/>
+        <location filename="../app/cli/main.cpp" line="+53"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli: Fehler: %1</translation>
     </message>
     <message>
         <location line="-4"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-4"/>
         <source>--plots: cannot create %1</source>
         <translation>--plots: %1 kann nicht angelegt werden</translation>
     </message>
@@ -3414,87 +3541,7 @@
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+19"/>
-        <source>Usage:
-  learnid-cli scenario --print
-      Print the default scenario (the paper scenario) as JSON.
-  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
-                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--consistent] [--workspace DIR] [--quiet]
-      Run a commissioning session on the simulated robot. The table goes to
-      stdout, progress to stderr. Relative output paths are taken from
-      --workspace (default: the current directory). Files are written only
-      when every trial completed.
-      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
-      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
-      --can-log writes every trial&apos;s frames as a candump log into DIR;
-      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
-  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
-                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
-                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
-      Re-identify from recorded trials: the session runs again with each log
-      (one per trial, in order) answering in place of the robot.
-  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
-                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
-                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
-      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
-      and compare the result with its URDF on the --validate logs.
-  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
-                   [--workspace DIR] [--quiet]
-      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
-      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
-  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
-                    [--workspace DIR] [--quiet]
-      Learn from the controller&apos;s log of a plan; the next plan uses the new
-      estimate.
-  learnid-cli COMMAND --help
-      The options of one command.
-</source>
-        <translation>Aufruf:
-  learnid-cli scenario --print
-      Gibt das Standardszenario (das Szenario des Artikels) als JSON aus.
-  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
-                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--consistent] [--workspace DIR] [--quiet]
-      Führt eine Inbetriebnahmesitzung am simulierten Roboter aus. Tabelle nach
-      stdout, Fortschritt nach stderr. Relative Ausgabepfade gelten ab
-      --workspace (Standard: aktuelles Verzeichnis). Dateien werden nur
-      geschrieben, wenn jeder Versuch abgeschlossen wurde.
-      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
-      führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);
-      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR;
-      --can-sync-timeout MS beendet einen Versuch, wenn MS lang kein SYNC kommt (Standard 20).
-  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
-                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
-                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
-      Identifiziert neu aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
-      und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.
-  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
-                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
-                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
-      Identifiziert Trägheit und Reibung eines realen Roboters aus seinen
-      aufgezeichneten Logs (CSV) und vergleicht das Ergebnis an den --validate-Logs
-      mit seinem URDF.
-  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
-                   [--workspace DIR] [--quiet]
-      Plant den nächsten Versuch für den eigenen Regler des Roboters: q_d(t) und
-      tau_f(t) (DIR/plan.csv) und die Prüfung vor dem Versuch (DIR/check.txt).
-  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
-                    [--workspace DIR] [--quiet]
-      Lernt aus dem Log des Reglers zu einem Plan; der nächste Plan verwendet
-      die neue Schätzung.
-  learnid-cli COMMAND --help
-      Die Optionen eines Befehls.
-</translation>
-    </message>
-    <message>
-        <location line="+46"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+68"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -3507,7 +3554,7 @@
 %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+24"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+25"/>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
         <translation>--robot: muss &apos;sim&apos; oder &apos;can&apos; sein, gefunden: &apos;%1&apos;</translation>
     </message>
@@ -3529,6 +3576,16 @@
     </message>
     <message>
         <location line="+10"/>
+        <source>--can-drives: %1</source>
+        <translation>--can-drives: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--can-drives: %1 records no drives (robot.drives): export it from a session on CAN drives</source>
+        <translation>--can-drives: %1 verzeichnet keine Antriebe (robot.drives): exportieren Sie sie aus einer Sitzung mit CAN-Antrieben</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes: %1 in &apos;%2&apos;</translation>
     </message>
@@ -3538,7 +3595,7 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-164"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-205"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
@@ -3550,12 +3607,12 @@
         <translation>--robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+65"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+73"/>
         <source>Show this command&apos;s options.</source>
         <translation>Die Optionen dieses Befehls anzeigen.</translation>
     </message>
     <message>
-        <location line="-41"/>
+        <location line="-49"/>
         <source>Print the default scenario.</source>
         <translation>Standardszenario ausgeben.</translation>
     </message>
@@ -3606,7 +3663,7 @@
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+218"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -3644,21 +3701,122 @@
     </message>
     <message>
         <location line="+5"/>
+        <source>First commissioning: you confirmed that each node is the drive of its joint (docs/can-protocol.md 2.4).</source>
+        <translation>Erstinbetriebnahme: Sie haben bestätigt, dass jeder Knoten der Antrieb seines Gelenks ist (docs/can-protocol.md 2.4).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A parameter file of this robot: its drives&apos; identities (0x1018) must match.</source>
+        <translation>Eine Parameterdatei dieses Roboters: die Identitäten seiner Antriebe (0x1018) müssen übereinstimmen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>A recorded trial (candump log); once per trial, in order.</source>
         <translation>Ein aufgezeichneter Versuch (candump-Log); einmal pro Versuch, der Reihe nach.</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+9"/>
-        <source>Print the default scenario as JSON.</source>
-        <translation>Das Standardszenario als JSON ausgeben.</translation>
+        <location filename="../app/cli/CliOptions.cpp" line="-73"/>
+        <source>Usage:
+  learnid-cli scenario --print [--robot ROBOT]
+      Print a complete scenario as JSON. ROBOT: paper (the default: the paper
+      scenario), panda, puma560, double-pendulum or a URDF file; for a robot
+      other than paper, the gains the window designs for it and a path of
+      joint waypoints inside its limits.
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--consistent] [--workspace DIR] [--quiet]
+      Run a commissioning session on the simulated robot. The table goes to
+      stdout, progress to stderr. Relative output paths are taken from
+      --workspace (default: the current directory). Files are written only
+      when every trial completed.
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
+      --can-log writes every trial&apos;s frames as a candump log into DIR;
+      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      Re-identify from recorded trials: the session runs again with each log
+      (one per trial, in order) answering in place of the robot.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
+      and compare the result with its URDF on the --validate logs.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
+      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Learn from the controller&apos;s log of a plan; the next plan uses the new
+      estimate.
+  learnid-cli COMMAND --help
+      The options of one command.
+</source>
+        <translation>Aufruf:
+  learnid-cli scenario --print [--robot ROBOT]
+      Gibt ein vollständiges Szenario als JSON aus. ROBOT: paper (Standard: das
+      Szenario des Artikels), panda, puma560, double-pendulum oder eine URDF-Datei;
+      für einen anderen Roboter als paper die Verstärkungen, die das Fenster für ihn
+      auslegt, und eine Bahn aus Gelenk-Stützpunkten innerhalb seiner Grenzen.
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--consistent] [--workspace DIR] [--quiet]
+      Führt eine Inbetriebnahmesitzung am simulierten Roboter aus. Tabelle nach
+      stdout, Fortschritt nach stderr. Relative Ausgabepfade gelten ab
+      --workspace (Standard: aktuelles Verzeichnis). Dateien werden nur
+      geschrieben, wenn jeder Versuch abgeschlossen wurde.
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      führt sie stattdessen an CiA-402-Antrieben am CAN-Bus aus (docs/can-protocol.md);
+      --can-log schreibt die Frames jedes Versuchs als candump-Log nach DIR;
+      --can-sync-timeout MS beendet einen Versuch, wenn MS lang kein SYNC kommt (Standard 20).
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      Identifiziert neu aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
+      und jedes Log (eines pro Versuch, der Reihe nach) antwortet statt des Roboters.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identifiziert Trägheit und Reibung eines realen Roboters aus seinen
+      aufgezeichneten Logs (CSV) und vergleicht das Ergebnis an den --validate-Logs
+      mit seinem URDF.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plant den nächsten Versuch für den eigenen Regler des Roboters: q_d(t) und
+      tau_f(t) (DIR/plan.csv) und die Prüfung vor dem Versuch (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Lernt aus dem Log des Reglers zu einem Plan; der nächste Plan verwendet
+      die neue Schätzung.
+  learnid-cli COMMAND --help
+      Die Optionen eines Befehls.
+</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+76"/>
+        <source>The robot: paper (default), panda, puma560, double-pendulum, or a URDF file.</source>
+        <translation>Der Roboter: paper (Standard), panda, puma560, double-pendulum oder eine URDF-Datei.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Print a complete scenario for a robot as JSON.</source>
+        <translation>Ein vollständiges Szenario für einen Roboter als JSON ausgeben.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&apos;scenario&apos; needs --print</source>
         <translation>&apos;scenario&apos; braucht --print</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
@@ -3668,7 +3826,7 @@
         <translation>unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+17"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+18"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>Neu identifizieren aus aufgezeichneten Versuchen: die Sitzung läuft erneut,
@@ -3697,42 +3855,37 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>&apos;replay&apos; braucht mindestens ein --candump FILE</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>--iterations: %1 trials need %1 logs, %2 given</source>
-        <translation>--iterations: %1 Versuche brauchen %1 Logs, %2 angegeben</translation>
-    </message>
-    <message>
         <location filename="../app/cli/ResultTable.cpp" line="+39"/>
-        <location line="+73"/>
+        <location line="+76"/>
         <source>trial</source>
         <translation>Vers.</translation>
     </message>
     <message>
-        <location line="-72"/>
-        <location line="+75"/>
+        <location line="-75"/>
+        <location line="+78"/>
         <source>change %</source>
         <translation>Änd. %</translation>
     </message>
     <message>
-        <location line="-73"/>
-        <location line="+75"/>
+        <location line="-76"/>
+        <location line="+78"/>
         <source>max|e|%1 deg</source>
         <translation>max|e|%1 °</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+75"/>
+        <location line="-77"/>
+        <location line="+78"/>
         <source>T s</source>
         <translation>T s</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+75"/>
+        <location line="-77"/>
+        <location line="+78"/>
         <source>cond</source>
         <translation>cond</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-77"/>
         <source>rank</source>
         <translation>Rang</translation>
     </message>
@@ -3742,7 +3895,13 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Bahnmom.-Fehler %</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+29"/>
+        <location line="+73"/>
+        <source>learned from a partial trial</source>
+        <translation>aus einem abgebrochenen Versuch gelernt</translation>
+    </message>
+    <message>
+        <location line="-65"/>
         <source>unit</source>
         <translation>Einheit</translation>
     </message>
@@ -3767,7 +3926,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>vs. wahr %</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>(rank %1: unobservable kept)</source>
         <translation>(Rang %1: nicht beobachtbare beibehalten)</translation>
     </message>
@@ -3787,6 +3946,11 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Versuch %1: %2, T = %3 s, %4 Abtastwerte, max. Folgefehler %5°</translation>
     </message>
     <message>
+        <location line="+13"/>
+        <source>; learned from its first %1 s (a partial trial)</source>
+        <translation>; aus seinen ersten %1 s gelernt (ein abgebrochener Versuch)</translation>
+    </message>
+    <message>
         <location filename="../app/cli/RunCommand.cpp" line="-33"/>
         <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
         <translation>--estimator: unbekanntes Gesetz &apos;%1&apos; (bekannt: %2)</translation>
@@ -3797,7 +3961,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--nodes %1: %2 Knoten-IDs für einen Roboter mit %3 Gelenken: ein Knoten pro Gelenk ist nötig</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+60"/>
+        <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
+        <translation>--iterations: %1 Versuche brauchen %1 aufgezeichnete Versuche, die Logs enthalten %2</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
@@ -3807,8 +3976,24 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: Warnung: das URDF als realer Roboter: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+8"/>
+        <location line="+54"/>
+        <source>learnid-cli: estimate %1 tracked best: it is the one accepted, applied and exported</source>
+        <translation>learnid-cli: Schätzung %1 folgte am besten: sie wird akzeptiert, angewendet und exportiert</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>learnid-cli: %1 not written: nothing was learned</source>
+        <translation>learnid-cli: %1 nicht geschrieben: nichts wurde gelernt</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>learnid-cli: wrote %1 (the session ended early)</source>
+        <translation>learnid-cli: %1 geschrieben (die Sitzung endete vorzeitig)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-74"/>
+        <location filename="../app/cli/ResultTable.cpp" line="+7"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
     </message>
@@ -3835,7 +4020,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     <message>
         <location line="+5"/>
         <location line="+35"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+12"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+66"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli: keine Dateien geschrieben</translation>
     </message>
@@ -3850,7 +4035,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: aus Versuch %1 (Plan %2) gelernt; der nächste Plan verwendet Schätzung %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="+14"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-30"/>
         <source>learnid-cli: error: apply failed: %1</source>
         <translation>learnid-cli: Fehler: Übertragen fehlgeschlagen: %1</translation>
     </message>
@@ -3861,13 +4046,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+10"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+26"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-173"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-166"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms: unbekannter Term &apos;%1&apos;; die Terme sind armature, viscous, coulomb und offset, oder none</translation>
     </message>
@@ -3897,12 +4081,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--urdf-out: nach %1 schreibt schon --export</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--%1: a payload&apos;s result is not exported yet; leave it out</source>
-        <translation>--%1: das Ergebnis einer Nutzlast wird noch nicht exportiert; lassen Sie die Option weg</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>A built-in URDF robot (e.g. double-pendulum) or a URDF file.</source>
         <translation>Ein eingebauter URDF-Roboter (z. B. double-pendulum) oder eine URDF-Datei.</translation>
     </message>
@@ -3988,7 +4167,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Ordner, ab dem relative Ausgabepfade gelten.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
 
 Identify a robot&apos;s inertia and joint friction from its recorded logs,
@@ -4013,7 +4192,7 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>&apos;identify&apos; braucht mindestens ein --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+25"/>
         <location line="+16"/>
         <source>name</source>
         <translation>Name</translation>
@@ -4024,12 +4203,12 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>Gel.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+31"/>
         <source>Identified parameters: %1.</source>
         <translation>Identifizierte Parameter: %1.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+18"/>
         <source>training logs: residual of the fit</source>
         <translation>Trainings-Logs: Residuum der Anpassung</translation>
     </message>
@@ -4060,12 +4239,12 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
         <translation>URDF wie gegeben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyParameters.cpp" line="+32"/>
-        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: data, below: kept from the prior)</source>
-        <translation>Standardparameter: die des URDF, die identifizierten und was die Daten bestimmt haben (Anteil der Richtung des Parameters; ab 0,5: Daten, darunter: vom Prior übernommen)</translation>
+        <location filename="../app/cli/IdentifyParameters.cpp" line="+33"/>
+        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: the data&apos;s, below: undetermined, kept near the prior, which the data still move a little)</source>
+        <translation>Standardparameter: die des URDF, die identifizierten und was die Daten bestimmt haben (Anteil der Richtung des Parameters; ab 0,5: der Daten, darunter: unbestimmt, nahe am Prior gehalten, den die Daten noch ein wenig verschieben)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>link or joint</source>
         <translation>Glied oder Gelenk</translation>
     </message>
@@ -4093,16 +4272,13 @@ und das Ergebnis an --validate-Logs mit dem gegebenen URDF vergleichen.
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-150"/>
-        <source>from</source>
-        <translation>aus</translation>
+        <source>source</source>
+        <translation>Quelle</translation>
     </message>
     <message>
         <location line="+23"/>
-        <source>warning: the URDF as a real robot: %1
-</source>
-        <translation>Warnung: das URDF als realer Roboter: %1
-</translation>
+        <source>warning: the URDF as a real robot: %1</source>
+        <translation>Warnung: das URDF als realer Roboter: %1</translation>
     </message>
     <message>
         <location filename="../app/cli/IdentifyTable.cpp" line="+2"/>
@@ -4201,182 +4377,9 @@ neue Schätzung.
         <translation>t [s]</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-4"/>
-        <source>value</source>
-        <translation>Größe</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>estimate</source>
-        <translation>Schätzung</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>std. error</source>
-        <translation>Std.-Fehler</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>prior</source>
-        <translation>Vorgabe</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>the logs</source>
-        <translation>die Logs</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the prior (not identified)</source>
-        <translation>die Vorgabe (nicht identifiziert)</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Payload on %1 of %2; the arm&apos;s model (%3) held fixed.
-</source>
-        <translation>Nutzlast an %1 von %2; das Modell des Arms (%3) bleibt fest.
-</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+3"/>
-        <source>Fitted to %n log(s), %1 samples: %2 of 10 directions determined (condition %3).
-</source>
-        <translation>
-            <numerusform>An %n Log angepasst, %1 Abtastwerte: %2 von 10 Richtungen bestimmt (Kondition %3).
-</numerusform>
-            <numerusform>An %n Logs angepasst, %1 Abtastwerte: %2 von 10 Richtungen bestimmt (Kondition %3).
-</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Warning: the plausible estimate did not converge (%1).
-</source>
-        <translation>Warnung: die plausible Schätzung ist nicht konvergiert (%1).
-</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>A real body whose mass lies in the bound (%1).
-</source>
-        <translation>Ein realer Körper, dessen Masse in der Grenze liegt (%1).
-</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Warning: the centre of mass lies outside the bound (%1).
-</source>
-        <translation>Warnung: der Schwerpunkt liegt außerhalb der Grenze (%1).
-</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>What the logs did not show (kept from the prior):
-</source>
-        <translation>Was die Logs nicht zeigten (aus der Vorgabe übernommen):
-</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Torque residual per joint on the logs [N m]:</source>
-        <translation>Drehmoment-Residuum je Gelenk auf den Logs [N m]:</translation>
-    </message>
-    <message>
-        <location line="+35"/>
-        <source>learnid-cli: fitting the payload to %1</source>
-        <translation>learnid-cli: passe die Nutzlast an %1 an</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>On the --validate logs: &quot;URDF as given&quot; is the arm without the payload, &quot;identified&quot; the arm with it.
-</source>
-        <translation>Auf den --validate-Logs: „URDF wie gegeben“ ist der Arm ohne die Nutzlast, „identifiziert“ der Arm mit ihr.
-</translation>
-    </message>
-    <message>
-        <location line="+19"/>
-        <source>%1: torque of the arm alone and with the payload</source>
-        <translation>%1: Drehmoment des Arms allein und mit der Nutzlast</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>learnid: payload on %1 identified from logs</source>
-        <translation>learnid: Nutzlast an %1 aus Logs identifiziert</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/PayloadOptions.cpp" line="+39"/>
-        <source>Identify only a payload fixed to the arm, the --robot URDF held fixed as the arm&apos;s model; needs --payload-mass.</source>
-        <translation>Nur eine am Arm befestigte Nutzlast identifizieren, die --robot-URDF bleibt als Modell des Arms fest; braucht --payload-mass.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>The link the payload is fixed to; default: the tip link.</source>
-        <translation>Das Glied, an dem die Nutzlast befestigt ist; Standard: das Endglied.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Your estimate of the payload&apos;s mass [kg].</source>
-        <translation>Ihre Schätzung der Masse der Nutzlast [kg].</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Your estimate of its centre of mass in the link frame [m]; default 0,0,0 (the flange).</source>
-        <translation>Ihre Schätzung ihres Schwerpunkts im Gliedkoordinatensystem [m]; Standard 0,0,0 (der Flansch).</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Your estimate of its inertia about the centre of mass [kg m^2]; default: a uniform sphere.</source>
-        <translation>Ihre Schätzung ihrer Trägheit um den Schwerpunkt [kg m^2]; Standard: eine homogene Kugel.</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>The payload lies within this distance of the flange [m]; default 0.3.</source>
-        <translation>Die Nutzlast liegt innerhalb dieses Abstands vom Flansch [m]; Standard 0,3.</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Or within this box in the link frame [m], instead of the sphere.</source>
-        <translation>Oder innerhalb dieses Quaders im Gliedkoordinatensystem [m], statt der Kugel.</translation>
-    </message>
-    <message>
-        <location line="+30"/>
-        <source>--%1: needs --payload</source>
-        <translation>--%1: braucht --payload</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>--payload: needs --payload-mass KG, your estimate of the payload&apos;s mass</source>
-        <translation>--payload: braucht --payload-mass KG, Ihre Schätzung der Masse der Nutzlast</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>--payload-box: give either a bounding box or --payload-radius, not both</source>
-        <translation>--payload-box: geben Sie entweder einen Hüllquader oder --payload-radius an, nicht beides</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
-        <translation>--payload-mass: muss eine Zahl in kg sein, erhalten: „%1“</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>--payload-com: must be three numbers X,Y,Z [m], got &apos;%1&apos;</source>
-        <translation>--payload-com: muss aus drei Zahlen X,Y,Z [m] bestehen, erhalten: „%1“</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>--payload-inertia: must be six numbers IXX,IXY,IYY,IXZ,IYZ,IZZ [kg m^2], got &apos;%1&apos;</source>
-        <translation>--payload-inertia: muss aus sechs Zahlen IXX,IXY,IYY,IXZ,IYZ,IZZ [kg m^2] bestehen, erhalten: „%1“</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>--payload-radius: must be a number of m, got &apos;%1&apos;</source>
-        <translation>--payload-radius: muss eine Zahl in m sein, erhalten: „%1“</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>--payload-box: must be six numbers X0,Y0,Z0,X1,Y1,Z1 [m], got &apos;%1&apos;</source>
-        <translation>--payload-box: muss aus sechs Zahlen X0,Y0,Z0,X1,Y1,Z1 [m] bestehen, erhalten: „%1“</translation>
+        <location filename="../app/cli/ScenarioCommand.cpp" line="+20"/>
+        <source>learnid-cli: error: --robot %1: %2</source>
+        <translation>learnid-cli: Fehler: --robot %1: %2</translation>
     </message>
 </context>
 <context>
@@ -4530,11 +4533,16 @@ neue Schätzung.
     </message>
     <message>
         <location line="+3"/>
-        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default 3; raise it on a heavily loaded machine).</source>
-        <translation>SYNC-Perioden in Betrieb freigegeben ohne Sollwert, bevor ein Antrieb mit EMCY 0x8100 in Fehler geht (Standard 3; auf einem stark ausgelasteten Rechner erhöhen).</translation>
+        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default: 3 periods, at least 50 ms).</source>
+        <translation>SYNC-Perioden in Operation enabled ohne Sollwert, bevor ein Antrieb mit EMCY 0x8100 in Fehler geht (Standard: 3 Perioden, mindestens 50 ms).</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+7"/>
+        <source>Drives that were never commissioned: 0x2400 is 0 (by default joint j&apos;s drive holds the robot&apos;s identity and j).</source>
+        <translation>Antriebe, die nie in Betrieb genommen wurden: 0x2400 ist 0 (standardmäßig enthält der Antrieb von Gelenk j die Identität des Roboters und j).</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
@@ -4615,7 +4623,7 @@ neue Schätzung.
 <context>
     <name>learnid::ApplyPanel</name>
     <message>
-        <location filename="../ui/ApplyPanel.cpp" line="+22"/>
+        <location filename="../ui/ApplyPanel.cpp" line="+23"/>
         <source>estimate </source>
         <translation>Schätzung </translation>
     </message>
@@ -4640,7 +4648,7 @@ neue Schätzung.
         <translation>noch nichts übertragen</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>estimate %1</source>
         <translation>Schätzung %1</translation>
     </message>
@@ -4653,7 +4661,7 @@ neue Schätzung.
 <context>
     <name>learnid::CanConnection</name>
     <message>
-        <location filename="../core/canrobot/CanConnection.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanConnection.cpp" line="+34"/>
         <source>the CAN device %1 did not connect within %2 ms (is the bus or the robot side running?)</source>
         <translation>das CAN-Gerät %1 hat sich nicht innerhalb von %2 ms verbunden (läuft der Bus oder die Roboterseite?)</translation>
     </message>
@@ -4663,12 +4671,12 @@ neue Schätzung.
         <translation>kein CAN-Gerät für %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>cannot connect the CAN device %1: %2</source>
         <translation>das CAN-Gerät %1 kann nicht verbunden werden: %2</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+59"/>
         <source>no error reported (the other side may have exited)</source>
         <translation>kein Fehler gemeldet (die Gegenseite wurde vielleicht beendet)</translation>
     </message>
@@ -4678,7 +4686,57 @@ neue Schätzung.
         <translation>das CAN-Gerät %1 ist nicht mehr verbunden: %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
+        <source>the CAN device %1 reported an error frame: %2</source>
+        <translation>das CAN-Gerät %1 meldete einen Fehlerframe: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN device %1 reported %2 (error frame 0x%3 %4)</source>
+        <translation>das CAN-Gerät %1 meldete %2 (Fehlerframe 0x%3 %4)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the CAN interface %1 of %2 disappeared</source>
+        <translation>die CAN-Schnittstelle %1 von %2 ist verschwunden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 of %2 went down (ip link set %1 up brings it back)</source>
+        <translation>die CAN-Schnittstelle %1 von %2 wurde deaktiviert (ip link set %1 up aktiviert sie wieder)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN controller of %1 (%2) is %3</source>
+        <translation>der CAN-Controller von %1 (%2) ist %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>the CAN device %1 reports bus off</source>
+        <translation>das CAN-Gerät %1 meldet Bus aus (bus off)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN device %1 reports error passive</source>
+        <translation>das CAN-Gerät %1 meldet fehlerpassiv</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>the CAN device %1 reported a %2 error: %3</source>
+        <translation>das CAN-Gerät %1 meldete einen %2fehler: %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read</source>
+        <translation>Lese</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>write</source>
+        <translation>Schreib</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the CAN device %1 reported a connection error: %2</source>
         <translation>das CAN-Gerät %1 meldete einen Verbindungsfehler: %2</translation>
     </message>
@@ -4704,7 +4762,12 @@ neue Schätzung.
 <context>
     <name>learnid::CanRobotWorker</name>
     <message>
-        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+116"/>
+        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+111"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -4715,17 +4778,27 @@ neue Schätzung.
     </message>
     <message>
         <location line="+16"/>
-        <location line="+27"/>
+        <location line="+57"/>
         <source>stopped by the operator before the drives moved</source>
         <translation>vom Bediener gestoppt, bevor sich die Antriebe bewegten</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-52"/>
+        <source>refused before any motion: %1</source>
+        <translation>vor jeder Bewegung abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>reading the drives&apos; identity failed: %1</source>
+        <translation>das Lesen der Antriebsidentität schlug fehl: %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>configuring the drives failed, nothing moved: %1</source>
         <translation>Konfigurieren der Antriebe fehlgeschlagen, nichts hat sich bewegt: %1</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>the trial&apos;s candump log could not be written: %1</source>
         <translation>das candump-Log des Versuchs konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -4735,7 +4808,12 @@ neue Schätzung.
         <translation>%1; die gespeicherten Parameter sind unverändert</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
+        <source>%1; nothing was stored (0x2200, 0x2400 and 0x1010 not written)</source>
+        <translation>%1; nichts wurde gespeichert (0x2200, 0x2400 und 0x1010 nicht geschrieben)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1; nichts wurde gespeichert (0x1010 nicht geschrieben)</translation>
     </message>
@@ -4748,7 +4826,7 @@ neue Schätzung.
 <context>
     <name>learnid::CandumpReplayDevice</name>
     <message>
-        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+38"/>
+        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+88"/>
         <source>Cannot write a frame: the replay is not connected.</source>
         <translation>Frame kann nicht geschrieben werden: die Wiedergabe ist nicht verbunden.</translation>
     </message>
@@ -4758,7 +4836,7 @@ neue Schätzung.
         <translation>Der Master schrieb %1 nach dem Ende des Logs.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
         <translation>Der Master schrieb %1, wo das Log %2 enthält (Log-Frame %3): der wiedergegebene Versuch weicht vom aufgezeichneten ab.</translation>
     </message>
@@ -4766,7 +4844,7 @@ neue Schätzung.
 <context>
     <name>learnid::CommissioningSession</name>
     <message>
-        <location filename="../core/session/CommissioningSession.cpp" line="+22"/>
+        <location filename="../core/session/CommissioningSession.cpp" line="+23"/>
         <source>unknown estimator law &apos;%1&apos; (known: %2)</source>
         <translation>unbekanntes Schätzgesetz &apos;%1&apos; (bekannt: %2)</translation>
     </message>
@@ -4776,17 +4854,27 @@ neue Schätzung.
         <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+67"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+37"/>
         <source>repetition %1 of %2: %3</source>
         <translation>Wiederholung %1 von %2: %3</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+26"/>
+        <source>trial %1 stopped at the tracking limit after %2 s: too short to learn from once the filter has settled (%3 s); the estimate is unchanged</source>
+        <translation>Versuch %1 stoppte nach %2 s an der Grenze des Folgefehlers: zu kurz, um nach dem Einschwingen des Filters (%3 s) daraus zu lernen; die Schätzung bleibt unverändert</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>trial %1 stopped at the tracking limit: its %2 s before the stop observe no parameter; the estimate is unchanged</source>
+        <translation>Versuch %1 stoppte an der Grenze des Folgefehlers: seine %2 s vor dem Halt beobachten keinen Parameter; die Schätzung bleibt unverändert</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>the update produced non-finite parameters</source>
         <translation>die Aktualisierung ergab nicht endliche Parameter</translation>
     </message>
@@ -4796,7 +4884,7 @@ neue Schätzung.
         <translation>aus Versuch %1 nicht gelernt: %2</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>there is no learned estimate to accept yet: run a trial first</source>
         <translation>es gibt noch keine gelernte Schätzung zum Akzeptieren: zuerst einen Versuch ausführen</translation>
     </message>
@@ -4906,6 +4994,11 @@ neue Schätzung.
     </message>
     <message>
         <location line="+12"/>
+        <source>%1 (learned from a partial trial)</source>
+        <translation>%1 (aus einem abgebrochenen Versuch gelernt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -5756,7 +5849,7 @@ Verhältnis %</translation>
         <translation>Das Speicher-CAN-Gerät %1 konnte den Frame nicht schreiben.</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>CAN error frame, error classes 0x%1.</source>
         <translation>CAN-Fehlerframe, Fehlerklassen 0x%1.</translation>
     </message>
@@ -5873,7 +5966,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
-        <location filename="../ui/PreTrialCheckView.cpp" line="+35"/>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+36"/>
         <source>Joint</source>
         <translation>Gelenk</translation>
     </message>
@@ -5956,7 +6049,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RecordedDataDialog</name>
     <message>
-        <location filename="../ui/RecordedDataDialog.cpp" line="+51"/>
+        <location filename="../ui/RecordedDataDialog.cpp" line="+52"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -6006,7 +6099,7 @@ Verhältnis %</translation>
         <translation>Anpassung</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Validation on:</source>
         <translation>Validierung an:</translation>
     </message>
@@ -6016,7 +6109,7 @@ Verhältnis %</translation>
         <translation>Validierung</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>Predicted against measured torque (validation log)</source>
         <translation>Vorhergesagtes gegenüber gemessenem Moment (Validierungs-Log)</translation>
     </message>
@@ -6390,13 +6483,18 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RobotPanel</name>
     <message>
-        <location filename="../ui/RobotPanel.cpp" line="+22"/>
-        <location line="+100"/>
+        <location filename="../ui/RobotPanel.cpp" line="+24"/>
+        <source>First commissioning: I confirmed each node&apos;s joint on the arm</source>
+        <translation>Erstinbetriebnahme: Ich habe das Gelenk jedes Knotens am Arm geprüft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+109"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-91"/>
+        <location line="-99"/>
         <source>Simulated (the scenario&apos;s robot)</source>
         <translation>Simuliert (der Roboter des Szenarios)</translation>
     </message>
@@ -6422,6 +6520,11 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>10 SYNC periods, at least 50 ms</source>
+        <translation>10 SYNC-Perioden, mindestens 50 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
@@ -6431,7 +6534,12 @@ Verhältnis %</translation>
         <translation>Ein Versuch endet, wenn so lange kein SYNC eintrifft</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Only for drives never commissioned (or taken from another robot): tick it after checking on the arm that the drive of each node (its serial number on the type plate) moves the joint the node is listed for. Apply then stores the joint identity in the drives, and later sessions check it without this (docs/can-protocol.md 2.4).</source>
+        <translation>Nur für Antriebe, die nie in Betrieb genommen wurden (oder aus einem anderen Roboter stammen): erst ankreuzen, nachdem Sie am Arm geprüft haben, dass der Antrieb jedes Knotens (seine Seriennummer auf dem Typenschild) das Gelenk bewegt, für das der Knoten eingetragen ist. Anwenden speichert dann die Gelenkidentität in den Antrieben, und spätere Sitzungen prüfen sie ohne dieses Häkchen (docs/can-protocol.md 2.4).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Plugin:</source>
         <translation>Plugin:</translation>
     </message>
@@ -6451,6 +6559,11 @@ Verhältnis %</translation>
         <translation>SYNC-Zeitlimit:</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Drives:</source>
+        <translation>Antriebe:</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Robot:</source>
         <translation>Roboter:</translation>
@@ -6466,7 +6579,7 @@ Verhältnis %</translation>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>CAN nodes: %1</source>
         <translation>CAN-Knoten: %1</translation>
     </message>
@@ -6567,6 +6680,16 @@ Verhältnis %</translation>
         <translation>Planungsanteil</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Gentle first trials</source>
+        <translation>Sanfte erste Versuche</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gentle trials&apos; speed</source>
+        <translation>Geschwindigkeit sanfter Versuche</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>Controller</source>
         <translation>Regler</translation>
@@ -6597,12 +6720,12 @@ Verhältnis %</translation>
         <translation>Wiederholungen pro Versuch</translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-56"/>
         <source>Initial parameters</source>
         <translation>Anfangsparameter</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+59"/>
         <source>Safety</source>
         <translation>Sicherheit</translation>
     </message>
@@ -6622,12 +6745,12 @@ Verhältnis %</translation>
         <translation>Simulierter Roboter</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-63"/>
         <source>True parameters</source>
         <translation>Wahre Parameter</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+67"/>
         <source>CAD perturbation (URDF robots)</source>
         <translation>CAD-Abweichung (URDF-Roboter)</translation>
     </message>
@@ -6811,7 +6934,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::SessionPresenter</name>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+34"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+35"/>
         <source>connected: %1</source>
         <translation>verbunden: %1</translation>
     </message>
@@ -6837,12 +6960,17 @@ Verhältnis %</translation>
         <translation>Versuch %1 läuft…</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+12"/>
+        <source>Trial %1 stopped: %2. Learned from its first %3 s (a partial trial); the next trial runs with the new estimate.</source>
+        <translation>Versuch %1 gestoppt: %2. Aus seinen ersten %3 s gelernt (ein abgebrochener Versuch); der nächste Versuch läuft mit der neuen Schätzung.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Trial %1 %2: %3. Its data are kept.</source>
         <translation>Versuch %1 %2: %3. Seine Daten bleiben erhalten.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
         <source>Finished; %1 estimate(s) learned.</source>
         <translation>Fertig; %1 Schätzung(en) gelernt.</translation>
     </message>
@@ -6870,7 +6998,7 @@ Verhältnis %</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+25"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+26"/>
         <source>nothing applied yet</source>
         <translation>noch nichts übertragen</translation>
     </message>
@@ -6945,7 +7073,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::TrackingErrorPlot</name>
     <message>
-        <location filename="../ui/TrackingErrorPlot.cpp" line="+30"/>
+        <location filename="../ui/TrackingErrorPlot.cpp" line="+31"/>
         <source>Auto-scale</source>
         <translation>Automatisch skalieren</translation>
     </message>
@@ -6966,11 +7094,12 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="+94"/>
         <source>Tracking error [deg]</source>
         <translation>Folgefehler [°]</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
@@ -7016,28 +7145,39 @@ Verhältnis %</translation>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../ui/TrackingErrorStyle.cpp" line="+51"/>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="-41"/>
+        <location line="+18"/>
         <source>Joint %1</source>
         <translation>Gelenk %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-17"/>
         <source>Joint %1 (%2)</source>
         <translation>Gelenk %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Error [deg]</source>
+        <translation>Fehler [°]</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>[deg]</source>
+        <translation>[°]</translation>
     </message>
 </context>
 <context>
     <name>learnid::TrialStreamer</name>
     <message>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
-        <location line="+90"/>
-        <location line="+66"/>
+        <location line="+92"/>
+        <location line="+68"/>
         <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="-143"/>
+        <location line="-147"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 erreichte Betrieb freigegeben nicht innerhalb von %2 ms: meldet %3 (Statuswort 0x%4)</translation>
     </message>
@@ -7047,7 +7187,7 @@ Verhältnis %</translation>
         <translation>kein TPDO</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+78"/>
         <source>stopped by the operator %1</source>
         <translation>vom Bediener gestoppt %1</translation>
     </message>
@@ -7067,12 +7207,12 @@ Verhältnis %</translation>
         <translation>Folgefehler von %1 erreichte %2° (Grenze %3°) %4: Schnellhalt</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+71"/>
         <source>only %1 of %2 samples were recorded</source>
         <translation>nur %1 von %2 Abtastwerten wurden aufgezeichnet</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>an unknown node</source>
         <translation>ein unbekannter Knoten</translation>
     </message>
@@ -7176,30 +7316,30 @@ Verhältnis %</translation>
 <context>
     <name>learnid::robotsim::SimProcess</name>
     <message>
-        <location filename="../app/robot-sim/SimProcess.cpp" line="+43"/>
+        <location filename="../app/robot-sim/SimProcess.cpp" line="+44"/>
         <source>learnid-robot-sim: stopping (%1)</source>
         <translation>learnid-robot-sim: wird beendet (%1)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+93"/>
+        <location line="+96"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>die CAN-Schnittstelle %1 mit Plugin %2 kann nicht verbunden werden: %3</translation>
     </message>
     <message>
-        <location line="-61"/>
-        <location line="+16"/>
+        <location line="-62"/>
+        <location line="+17"/>
         <location line="+75"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim: Fehler: %1</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-85"/>
         <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
         <translation>learnid-robot-sim: Fehler: das CAN-Gerät %1 mit Plugin %2 kann nicht angelegt werden: %3</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <location line="+58"/>
         <source>learnid-robot-sim: error: --state: %1</source>
         <translation>learnid-robot-sim: Fehler: --state: %1</translation>
@@ -7228,9 +7368,14 @@ Verhältnis %</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+38"/>
+        <location filename="../app/gui/StartOptions.cpp" line="+67"/>
         <source>Commissioning tool: learning identification of robot dynamics.</source>
         <translation>Inbetriebnahmewerkzeug: lernende Identifikation der Roboterdynamik.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The window needs a display; learnid-cli works without one.</source>
+        <translation>Das Fenster braucht einen Bildschirm; learnid-cli arbeitet ohne.</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -7243,14 +7388,34 @@ Verhältnis %</translation>
         <translation>Sprache der Oberfläche, z. B. de oder zh_CN (Standard: wie in der Anwendung gewählt, sonst die des Systems).</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>What --screenshot shows: %1 (default: main).</source>
         <translation>Was --screenshot zeigt: %1 (Standard: main).</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+5"/>
+        <source>Open the scenario &lt;file&gt; at start.</source>
+        <translation>Das Szenario &lt;file&gt; beim Start öffnen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A scenario file to open at start (as --scenario).</source>
+        <translation>Eine Szenariodatei, die beim Start geöffnet wird (wie --scenario).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>learnid: unknown --screenshot-view &apos;%1&apos;; known: %2</source>
         <translation>learnid: unbekannte --screenshot-view &apos;%1&apos;; bekannt: %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>learnid: one scenario at a time, got %1: %2</source>
+        <translation>learnid: nur ein Szenario auf einmal, erhalten %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>learnid: the window needs a display, and none is set (DISPLAY, WAYLAND_DISPLAY); learnid --help lists the options, learnid-cli works without a display.</source>
+        <translation>learnid: Das Fenster braucht einen Bildschirm, und keiner ist gesetzt (DISPLAY, WAYLAND_DISPLAY); learnid --help listet die Optionen, learnid-cli arbeitet ohne Bildschirm.</translation>
     </message>
 </context>
 </TS>

@@ -71,7 +71,7 @@
 <context>
     <name>LogIdentificationText</name>
     <message numerus="yes">
-        <location filename="../ui/LogIdentificationText.cpp" line="+36"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+62"/>
         <source>Fitting the parameters to %n log(s)…</source>
         <translation>
             <numerusform>Fitting the parameters to %n log…</numerusform>

@@ -113,6 +113,170 @@
     </message>
 </context>
 <context>
+    <name>CanBus</name>
+    <message>
+        <location filename="../core/can/CanBusErrors.cpp" line="+30"/>
+        <location line="+51"/>
+        <source>bus off</source>
+        <translation>总线关闭 (bus off)</translation>
+    </message>
+    <message>
+        <location line="-47"/>
+        <source>controller error passive (%1)</source>
+        <translation>控制器错误被动 (%1)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>controller buffer overflow: frames were lost</source>
+        <translation>控制器缓冲区溢出：帧已丢失</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller error warning level</source>
+        <translation>控制器达到错误警告级别</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller back to error active</source>
+        <translation>控制器恢复为错误主动</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller problem (unspecified)</source>
+        <translation>控制器问题（未指明）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>transmit timeout</source>
+        <translation>发送超时</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>protocol violation (type 0x%1, location 0x%2)</source>
+        <translation>协议违规（类型 0x%1，位置 0x%2）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>transceiver error (0x%1)</source>
+        <translation>收发器错误 (0x%1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no acknowledgement (no other node on the bus?)</source>
+        <translation>无应答（总线上没有其他节点？）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bus error</source>
+        <translation>总线错误</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lost arbitration</source>
+        <translation>仲裁丢失</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>controller restarted</source>
+        <translation>控制器已重启</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error class 0x%1</source>
+        <translation>错误类别 0x%1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>error active</source>
+        <translation>错误主动</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error warning</source>
+        <translation>错误警告</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>error passive</source>
+        <translation>错误被动</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>stopped</source>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location filename="../core/can/SocketCanInterface.cpp" line="+142"/>
+        <source>the CAN interface %1 does not exist (ip link show: is the adapter plugged in, its driver loaded?)</source>
+        <translation>CAN 接口 %1 不存在（ip link show：适配器是否已插入、驱动是否已加载？）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a CAN interface</source>
+        <translation>%1 不是 CAN 接口</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 is down (as root: ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up)</source>
+        <translation>CAN 接口 %1 未启用（以 root 运行：ip link set %1 type can bitrate 1000000 &amp;&amp; ip link set %1 up）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the CAN controller of %1 is %2 (as root: ip link set %1 down &amp;&amp; ip link set %1 up; check wiring and termination)</source>
+        <translation>%1 的 CAN 控制器处于 %2（以 root 运行：ip link set %1 down &amp;&amp; ip link set %1 up；请检查接线和终端电阻）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>CAN FD (mtu %1)</source>
+        <translation>CAN FD (mtu %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN (mtu %1)</source>
+        <translation>CAN (mtu %1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bitrate %1 kbit/s</source>
+        <translation>比特率 %1 kbit/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bitrate not readable</source>
+        <translation>比特率不可读</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2, %3, %4</source>
+        <translation>%1：%2，%3，%4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up</source>
+        <translation>已启用</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>down</source>
+        <translation>未启用</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, driver %1</source>
+        <translation>，驱动 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, controller %1</source>
+        <translation>，控制器 %1</translation>
+    </message>
+</context>
+<context>
     <name>CanOpen</name>
     <message>
         <location filename="../core/can/CanOpen.cpp" line="+51"/>
@@ -149,7 +313,7 @@
 <context>
     <name>CanRobot</name>
     <message>
-        <location filename="../core/canrobot/ApplySteps.cpp" line="+23"/>
+        <location filename="../core/canrobot/ApplySteps.cpp" line="+24"/>
         <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
         <translation>节点 %1，对象 %2：写入 %4（%5 %6）后回读为 %3：未存储任何内容</translation>
     </message>
@@ -159,7 +323,7 @@
         <translation>CAN %1/%2，节点 %3</translation>
     </message>
     <message>
-        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanRobotOptions.cpp" line="+43"/>
         <source>cannot create the CAN device %1/%2: %3</source>
         <translation>无法创建 CAN 设备 %1/%2：%3</translation>
     </message>
@@ -195,17 +359,17 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+54"/>
+        <location line="+64"/>
         <source>node %1 is listed twice</source>
         <translation>节点 %1 被列出两次</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-57"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN 定时选项必须为正（心跳周期最多 65535 ms）</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+52"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; 不是 CANopen 节点 ID（1 到 127）</translation>
     </message>
@@ -263,6 +427,36 @@
         <location line="+5"/>
         <source>at SYNC %1 (counter %2), %3 s after NMT start</source>
         <translation>于 SYNC %1（计数器 %2），NMT 启动后 %3 s</translation>
+    </message>
+    <message>
+        <location filename="../core/canrobot/JointIdentityCheck.cpp" line="+23"/>
+        <source>node %1, object %2: the answer holds %3 bytes, 1 to 4 expected</source>
+        <translation>节点 %1，对象 %2：应答含 %3 字节，应为 1 至 4 字节</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>; the drives say --nodes %1</source>
+        <translation>；驱动器给出的是 --nodes %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>node %1 is listed for joint %2 but is the drive of joint %3 of this robot (0x2400:02 = %3): the node list does not match the wiring%4</source>
+        <translation>节点 %1 被列为关节 %2，但它是本机器人关节 %3 的驱动器（0x2400:02 = %3）：节点列表与接线不符%4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>node %1 (joint %2) is not the drive the parameter file records for joint %2: it reports %3 (0x1018), the file holds %4</source>
+        <translation>节点 %1（关节 %2）不是参数文件为关节 %2 记录的驱动器：它报告 %3 (0x1018)，文件中为 %4</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>node %1 (joint %2) has never been commissioned (0x2400 is 0), so learnid cannot check which joint it moves: make sure it is the drive of joint %2 (its identity: %3), then run with --commission (in the window: First commissioning); apply stores the joint identity</source>
+        <translation>节点 %1（关节 %2）从未调试过（0x2400 为 0），learnid 无法检查它驱动哪个关节：请确认它是关节 %2 的驱动器（其标识：%3），然后使用 --commission 运行（在窗口中：首次调试）；应用时会存储关节标识</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>node %1 (joint %2) was commissioned for another robot (0x2400:01 = %3, this robot is %4): make sure it is the drive of joint %2 (%5), then run with --commission (in the window: First commissioning)</source>
+        <translation>节点 %1（关节 %2）曾为另一台机器人调试（0x2400:01 = %3，本机器人为 %4）：请确认它是关节 %2 的驱动器（%5），然后使用 --commission 运行（在窗口中：首次调试）</translation>
     </message>
 </context>
 <context>
@@ -478,7 +672,17 @@
 <context>
     <name>ControllerLogCsv</name>
     <message>
-        <location filename="../core/io/ControllerLogCsv.cpp" line="+37"/>
+        <location filename="../core/io/ControllerLogCsv.cpp" line="+56"/>
+        <source>&quot;# stopped-by:&quot; says %1; known: %2</source>
+        <translation>&quot;# stopped-by:&quot; 的值为 %1；已知值：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing</source>
+        <translation>空</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s line &quot;# plan-id: %2&quot; into its log</source>
         <translation>%1：没有“# plan-id:”注释行；控制器会把计划中的“# plan-id: %2”行复制到其日志中</translation>
     </message>
@@ -498,9 +702,19 @@
         <translation>t = %1 s 不在计划的时间网格上：采样点 %2 计划位于 t = %3 s（+-%4 s）；日志应包含计划的每个采样点，且时刻与计划一致</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
+        <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the controller stopped the trial at its tracking limit</source>
+        <translation>日志在计划的 %2 个采样中的第 %1 个之后结束（t = %3 s，共 %4 s）：控制器在其跟踪误差限值处停止了试验</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the trial ended early</source>
         <translation>日志在计划的 %2 个采样点中的 %1 个之后结束（t = %3 s，共 %4 s）：试验提前结束</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&quot;# stopped-by:&quot; in a log of all the plan&apos;s %1 samples: a trial that ran to its end was not stopped</source>
+        <translation>包含计划全部 %1 个采样的日志中出现 &quot;# stopped-by:&quot;：运行到结束的试验并未被停止</translation>
     </message>
 </context>
 <context>
@@ -776,29 +990,19 @@
 <context>
     <name>EstimateConsistency</name>
     <message>
-        <location filename="../core/session/EstimateConsistency.cpp" line="+129"/>
-        <source>link %1 (%2): mass %3 kg: not a real body</source>
-        <translation>连杆 %1（%2）：质量 %3 kg：不是真实刚体</translation>
+        <location filename="../core/session/EstimateConsistency.cpp" line="+148"/>
+        <source>not physically consistent</source>
+        <translation>物理不一致</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>link %1 (%2): its inertia cannot belong to a real body (pseudo-inertia eigenvalue %3)</source>
-        <translation>连杆 %1（%2）：其惯量不可能属于真实刚体（伪惯量特征值 %3）</translation>
+        <location line="+2"/>
+        <source>physically consistent (every link a real body) but not plausible</source>
+        <translation>物理一致（每个连杆都是真实刚体），但不合理</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 is negative: friction and rotor inertia cannot be</source>
-        <translation>%1 为负：摩擦和转子惯量不能为负</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>physically consistent: every link a real body</source>
-        <translation>物理一致：每个连杆都是真实刚体</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>link %1 (%2): not a plausible body: %3</source>
-        <translation>连杆 %1（%2）：不是合理的刚体：%3</translation>
+        <location line="+2"/>
+        <source>physically consistent and plausible: every link a real body that a robot&apos;s link could be</source>
+        <translation>物理一致且合理：每个连杆都是可以作为机器人连杆的真实刚体</translation>
     </message>
 </context>
 <context>
@@ -914,12 +1118,12 @@
         <translation>%1 所用的估计不是历史中最新的估计（估计 %2）：请重新规划下一次试验</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>%1: %2; nothing learned</source>
         <translation>%1：%2；未学习任何内容</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>the history %1 does not replay: trial %2: %3</source>
         <translation>历史 %1 无法回放：试验 %2：%3</translation>
     </message>
@@ -929,7 +1133,7 @@
         <translation>%1 不是历史中的试验在此场景下得到的估计 %2：场景的估计器是否与历史的一致？</translation>
     </message>
     <message>
-        <location filename="../core/service/FileLoopPlan.cpp" line="+32"/>
+        <location filename="../core/service/FileLoopPlan.cpp" line="+33"/>
         <source>initial estimate of a learning loop through files</source>
         <translation>基于文件的学习循环的初始估计</translation>
     </message>
@@ -1125,13 +1329,19 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+119"/>
-        <location filename="../core/identify/PaperLaw.cpp" line="+18"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+57"/>
+        <location filename="../core/identify/PaperLaw.cpp" line="+44"/>
+        <source>trial record has only %1 samples to learn from</source>
+        <translation>试验记录只有 %1 个可用于学习的采样</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <location filename="../core/identify/PaperLaw.cpp" line="-26"/>
         <source>no completed trial to learn from</source>
         <translation>没有可供学习的已完成试验</translation>
     </message>
     <message>
-        <location filename="../core/identify/LearningLaw.cpp" line="+61"/>
+        <location filename="../core/identify/LearningLaw.cpp" line="+75"/>
         <source>trial record does not match its plan: %1 of %2 samples, %3 joints recorded for a %4-joint model</source>
         <translation>试验记录与其计划不符：%2 个采样点中记录了 %1 个，%4 关节模型记录了 %3 个关节</translation>
     </message>
@@ -1154,6 +1364,59 @@
         <location line="+0"/>
         <source>angle</source>
         <translation>角度</translation>
+    </message>
+</context>
+<context>
+    <name>LinkVerdictTable</name>
+    <message>
+        <location filename="../core/session/LinkVerdictTable.cpp" line="+25"/>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Per link: physically consistent (a real body), and plausible (a body a robot&apos;s link could be: its smallest principal moment of inertia about the centre of mass I1 at least %1 % of the CAD link&apos;s, (I1 + I2) / I3 at least %2, the centre of mass inside the link&apos;s bounding volume).</source>
+        <translation>每个连杆：物理一致（真实刚体）且合理（可以作为机器人连杆的刚体：其绕质心的最小主惯性矩 I1 至少为 CAD 连杆的 %1 %，(I1 + I2) / I3 至少为 %2，质心位于连杆包围体之内）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>link</source>
+        <translation>连杆</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>I1 [kg m^2]</source>
+        <translation>I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CAD I1 [kg m^2]</source>
+        <translation>CAD I1 [kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>(I1 + I2) / I3</source>
+        <translation>(I1 + I2) / I3</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CoM in volume</source>
+        <translation>质心在包围体内</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>consistent</source>
+        <translation>一致</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>plausible</source>
+        <translation>合理</translation>
     </message>
 </context>
 <context>
@@ -1309,7 +1572,7 @@
 <context>
     <name>LogIdentificationText</name>
     <message>
-        <location filename="../ui/LogIdentificationText.cpp" line="+30"/>
+        <location filename="../ui/LogIdentificationText.cpp" line="+56"/>
         <source>Reading the robot %1…</source>
         <translation>正在读取机器人 %1…</translation>
     </message>
@@ -1337,11 +1600,11 @@
     </message>
     <message>
         <location line="+16"/>
-        <source>&lt;p&gt;&lt;b&gt;Consistency:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;一致性：&lt;/b&gt;&lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
+        <source>&lt;p&gt;&lt;b&gt;Identified parameters:&lt;/b&gt; &lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;识别参数：&lt;/b&gt;&lt;span style=&quot;color:%1&quot;&gt;%2&lt;/span&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&lt;p&gt;&lt;b&gt;Training residual&lt;/b&gt;, RMS per joint [N m]: %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;训练残差&lt;/b&gt;，各关节 RMS [N m]：%1&lt;/p&gt;</translation>
     </message>
@@ -1431,7 +1694,7 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
-        <location filename="../core/can/ManufacturerObjects.cpp" line="+117"/>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+119"/>
         <source>No node to write the parameters to.</source>
         <translation>没有可写入参数的节点。</translation>
     </message>
@@ -1503,7 +1766,7 @@
 <context>
     <name>ModelCheck</name>
     <message>
-        <location filename="../core/model/ModelCheck.cpp" line="+25"/>
+        <location filename="../core/model/ModelCheck.cpp" line="+27"/>
         <source>link %1 (%2)</source>
         <translation>连杆 %1（%2）</translation>
     </message>
@@ -1513,44 +1776,24 @@
         <translation>关节 %1（%2）</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>%1: its smallest principal moment of inertia about the centre of mass, %2 kg m^2, is below %3 % of the CAD link&apos;s smallest (%4 kg m^2): a point mass or a needle, not a link</source>
-        <translation>%1：其绕质心的最小主惯性矩 %2 kg m^2 低于 CAD 连杆最小主惯性矩（%4 kg m^2）的 %3 %：是质点或细针，不是连杆</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its principal moments %2, %3 and %4 kg m^2 give I1 + I2 = %5 I3, below %6 I3 (a flat plate at best)</source>
-        <translation>%1：其主惯性矩 %2、%3 和 %4 kg m^2 给出 I1 + I2 = %5 I3，低于 %6 I3（至多是一块薄板）</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>%1: its centre of mass lies outside its bounding volume (%2)</source>
-        <translation>%1：其质心位于包围体之外（%2）</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the URDF&apos;s geometry: %1</source>
-        <translation>URDF 的几何体：%1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
-        <translation>CAD 刚体的惯性椭球，放大 %1 倍</translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+8"/>
         <source>%1: its mass is %2 kg: not a real body</source>
         <translation>%1：其质量为 %2 kg：不是真实刚体</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>%1: no mass distribution has its inertia (its pseudo-inertia has the negative eigenvalue %2): not a real body</source>
         <translation>%1：没有任何质量分布具有其惯性（其伪惯性矩阵有负特征值 %2）：不是真实刚体</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>%1: %2 is %3, negative: friction and rotor inertia take energy, they do not give it</source>
         <translation>%1：%2 为 %3，是负值：摩擦和转子惯量只消耗能量，不会提供能量</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 is %3, between 0 and %4: the underflow of a positive parametrisation where 0 is meant</source>
+        <translation>%1：%2 为 %3，介于 0 和 %4 之间：这是本应为 0 的正参数化的下溢</translation>
     </message>
 </context>
 <context>
@@ -1628,7 +1871,7 @@
         <translation>DCF 片段：关节 %1 不存在；机器人有 %2 个关节</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+166"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+178"/>
         <source>must be given for every parameter or for none</source>
         <translation>必须为每个参数都给出，或都不给出</translation>
     </message>
@@ -1653,7 +1896,7 @@
         <translation>必须是形如 2024-05-01T12:00:00.000Z 的日期时间，实际为“%1”</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+71"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>缺失；这不是 learnid 参数文件</translation>
     </message>
@@ -1693,20 +1936,20 @@
         <translation>节点 %1 被分配给两个关节</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>must be a valid date and time</source>
         <translation>必须是有效的日期时间</translation>
     </message>
     <message>
-        <location line="-71"/>
-        <location line="+73"/>
+        <location line="-73"/>
+        <location line="+75"/>
         <location line="+15"/>
         <location line="+5"/>
         <source>must not be empty</source>
         <translation>不得为空</translation>
     </message>
     <message>
-        <location line="-103"/>
+        <location line="-105"/>
         <source>one per standard parameter</source>
         <translation>每个标准参数一个</translation>
     </message>
@@ -1726,7 +1969,7 @@
         <translation>文件未记录控制器时必须给出每个关节的节点</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>未知学习律“%1”；已知学习律：%2</translation>
     </message>
@@ -1746,8 +1989,8 @@
         <translation>必须是“%1”（%3 的参数 %2），实际为“%4”</translation>
     </message>
     <message>
-        <location line="-103"/>
-        <location line="+109"/>
+        <location line="-105"/>
+        <location line="+111"/>
         <source>values, %1</source>
         <translation>数值，%1</translation>
     </message>
@@ -1831,189 +2074,6 @@
         <location line="+10"/>
         <source>it cannot see, and the trials keep: %1</source>
         <translation>它无法观测、试验将保持不变的参数：%1</translation>
-    </message>
-</context>
-<context>
-    <name>Payload</name>
-    <message>
-        <location filename="../core/model/Payload.cpp" line="+22"/>
-        <source>the payload&apos;s inertial parameters are not finite</source>
-        <translation>负载的惯性参数不是有限值</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the payload&apos;s mass must be positive (it is %1 kg)</source>
-        <translation>负载质量必须为正（当前为 %1 kg）</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>%1 has no moving link to carry a payload</source>
-        <translation>%1 没有可承载负载的运动连杆</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>payload link &apos;%1&apos; is not a moving link of %2 (its links: %3)</source>
-        <translation>负载连杆“%1”不是 %2 的运动连杆（其连杆：%3）</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>a payload needs the arm&apos;s model</source>
-        <translation>负载需要机械臂的模型</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the arm&apos;s parameters for %1 must be %2 finite numbers</source>
-        <translation>%1 的机械臂参数必须是 %2 个有限数</translation>
-    </message>
-</context>
-<context>
-    <name>PayloadEstimate</name>
-    <message>
-        <location filename="../core/identify/PayloadEstimate.cpp" line="+61"/>
-        <source>the payload&apos;s rows (%1 x %2) and targets (%3) do not match</source>
-        <translation>负载的行（%1 x %2）与目标值（%3）不匹配</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the payload&apos;s rows or targets are not finite</source>
-        <translation>负载的行或目标值不是有限值</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the variance factor must be positive</source>
-        <translation>方差因子必须为正</translation>
-    </message>
-    <message>
-        <location line="+70"/>
-        <source>no direction determined: the prior</source>
-        <translation>没有确定的方向：采用先验</translation>
-    </message>
-</context>
-<context>
-    <name>PayloadFit</name>
-    <message>
-        <location filename="../core/identify/PayloadFit.cpp" line="+87"/>
-        <source>%1 has %2 joints, the robot %3</source>
-        <translation>%1 有 %2 个关节，机器人有 %3 个</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1: the filtered signals are not finite</source>
-        <translation>%1：滤波后的信号不是有限值</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>no samples to fit the payload to</source>
-        <translation>没有可用于拟合负载的采样</translation>
-    </message>
-</context>
-<context>
-    <name>PayloadIdentification</name>
-    <message>
-        <location filename="../core/service/PayloadIdentification.cpp" line="+31"/>
-        <source>no log to identify the payload from</source>
-        <translation>没有用于辨识负载的日志</translation>
-    </message>
-</context>
-<context>
-    <name>PayloadObservability</name>
-    <message>
-        <location filename="../core/identify/PayloadObservability.cpp" line="+48"/>
-        <source>the mass is not seen: the path must hold the payload against gravity in several orientations of %1, or accelerate it</source>
-        <translation>质量不可见：路径必须在 %1 的多个姿态下抵抗重力保持负载，或使其加速</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>the centre of mass along the %1 axis of %2 is not seen: the mass and the centre of mass need changes of the wrist&apos;s orientation; tilt the wrist so that this axis turns away from the vertical</source>
-        <translation>沿 %2 的 %1 轴的质心不可见：质量和质心需要改变手腕的姿态；倾斜手腕，使该轴偏离竖直方向</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the centre of mass along the %1 axes of %2 is not seen: the mass and the centre of mass need changes of the wrist&apos;s orientation; tilt the wrist so that these axes turn away from the vertical</source>
-        <translation>沿 %2 的 %1 轴的质心不可见：质量和质心需要改变手腕的姿态；倾斜手腕，使这些轴偏离竖直方向</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>the inertia %1 is not seen: the full inertia needs rotations of the wrist about several axes, with accelerations</source>
-        <translation>惯量 %1 不可见：完整的惯量需要手腕绕多个轴加速转动</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>the payload&apos;s regressor has 10 columns, not %1</source>
-        <translation>负载回归矩阵有 10 列，而不是 %1 列</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the share of the strongest direction must lie between 0 and 1</source>
-        <translation>最强方向的比例必须在 0 和 1 之间</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the payload&apos;s regressor is not finite</source>
-        <translation>负载回归矩阵不是有限值</translation>
-    </message>
-    <message>
-        <location line="+38"/>
-        <source>the path must give q, qd and qdd for the %1 joints at every sample</source>
-        <translation>路径必须在每个采样点给出 %1 个关节的 q、qd 和 qdd</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>the path has no samples</source>
-        <translation>路径没有采样</translation>
-    </message>
-</context>
-<context>
-    <name>PayloadPrior</name>
-    <message>
-        <location filename="../core/model/PayloadPrior.cpp" line="+53"/>
-        <source>box %1 to %2 m</source>
-        <translation>长方体 %1 至 %2 m</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>sphere of radius %1 m around %2 m</source>
-        <translation>以 %2 m 为中心、半径 %1 m 的球</translation>
-    </message>
-    <message>
-        <location line="+16"/>
-        <source>%1: the payload&apos;s mass must be a positive number of kg, not %2</source>
-        <translation>%1：负载质量必须是正的千克数，而不是 %2</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1: the centre of mass must be finite, not %2</source>
-        <translation>%1：质心必须是有限值，而不是 %2</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1: the box&apos;s upper corner %2 must lie above its lower corner %3 in x, y and z</source>
-        <translation>%1：长方体的上角 %2 必须在 x、y 和 z 上都高于下角 %3</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1: the bounding sphere needs a positive radius [m], not %2</source>
-        <translation>%1：包围球需要正的半径 [m]，而不是 %2</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1: the prior centre of mass %2 m is not inside the bound (%3): give a bound that contains it</source>
-        <translation>%1：先验质心 %2 m 不在边界内（%3）：请给出包含它的边界</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>%1: the inertia must be finite and symmetric</source>
-        <translation>%1：惯量必须是有限且对称的</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1: the inertia is not a real body&apos;s (principal moments %2 kg m^2 must be positive and each at most the sum of the others)</source>
-        <translation>%1：该惯量不属于真实物体（主惯量 %2 kg m^2 必须为正，且每个不超过其余两者之和）</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1: a body with this inertia does not fit in the bound (%2)</source>
-        <translation>%1：具有该惯量的物体无法放入边界（%2）</translation>
     </message>
 </context>
 <context>
@@ -2161,27 +2221,42 @@
         <translation>待检查的参数不是有限值。</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <source>mass %1 kg</source>
-        <translation>质量 %1 kg</translation>
+        <location line="+38"/>
+        <source>its mass is %1 kg: not a real body</source>
+        <translation>其质量为 %1 kg：不是真实刚体</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>smallest principal moment %1 kg m², below %2 % of the CAD link&apos;s smallest (%3 kg m²)</source>
-        <translation>最小主惯量 %1 kg m²，低于 CAD 连杆最小主惯量（%3 kg m²）的 %2 %</translation>
+        <location line="+2"/>
+        <source>its smallest principal moment of inertia about the centre of mass, %1 kg m^2, is below %2 % of the CAD link&apos;s smallest (%3 kg m^2): a point mass or a needle, not a link</source>
+        <translation>其绕质心的最小主惯性矩 %1 kg m^2 低于 CAD 连杆最小主惯性矩（%3 kg m^2）的 %2 %：是质点或细针，不是连杆</translation>
     </message>
     <message>
         <location line="+7"/>
-        <source>(I1 + I2) / I3 = %1, below %2: a needle or a plate</source>
-        <translation>(I1 + I2) / I3 = %1，低于 %2：像针或薄板</translation>
+        <source>its principal moments %1, %2 and %3 kg m^2 give I1 + I2 = %4 I3, below %5 I3 (a flat plate at best)</source>
+        <translation>其主惯性矩 %1、%2 和 %3 kg m^2 给出 I1 + I2 = %4 I3，低于 %5 I3（至多是一块薄板）</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>centre of mass outside the link&apos;s bounding volume (%1 times its size)</source>
-        <translation>质心位于连杆包围体之外（其尺寸的 %1 倍）</translation>
+        <location line="+7"/>
+        <source>its centre of mass lies outside its bounding volume (%1)</source>
+        <translation>其质心位于包围体之外（%1）</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+2"/>
+        <source>the URDF&apos;s geometry: %1</source>
+        <translation>URDF 的几何体：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the CAD body&apos;s inertia ellipsoid, enlarged %1 times</source>
+        <translation>CAD 刚体的惯性椭球，放大 %1 倍</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>its centre of mass lies outside its bounding volume</source>
+        <translation>其质心位于包围体之外</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Index %1 is outside the %2 standard parameters.</source>
         <translation>索引 %1 超出了 %2 个标准参数的范围。</translation>
     </message>
@@ -2245,7 +2320,7 @@
         <translation>机器人自身的控制器（计划和日志文件）</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>no logged trial is left for trial run %1</source>
         <translation>试验运行 %1 已没有剩余的记录试验</translation>
     </message>
@@ -2393,7 +2468,7 @@
 <context>
     <name>RobotScenario</name>
     <message>
-        <location filename="../core/session/RobotScenario.cpp" line="+44"/>
+        <location filename="../core/session/RobotScenario.cpp" line="+45"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -2408,7 +2483,12 @@
         <translation>robot.model：未知模型“%1”</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+94"/>
+        <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
+        <translation>未知机器人“%1”；已知：%2，或一个 URDF 文件（FILE.urdf）</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>path.waypoints[%1][%2]: %3 is %4 joint %5 (%6)&apos;s %7 limit %8</source>
         <translation>path.waypoints[%1][%2]：%3 %4关节 %5（%6）的%7 %8</translation>
     </message>
@@ -2464,38 +2544,38 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+162"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+203"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+234"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+279"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-94"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-135"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
     <message>
         <location line="+24"/>
-        <location line="+21"/>
+        <location line="+60"/>
         <source>one per joint of %1</source>
         <translation>%1 的每个关节一个</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>未知学习律“%1”；已知学习律：%2</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-24"/>
         <source>one per parameter of %1</source>
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-202"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-247"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -2505,12 +2585,12 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+85"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-86"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-125"/>
         <source>one per joint</source>
         <translation>每个关节一个</translation>
     </message>
@@ -2545,12 +2625,27 @@
         <translation>%1 有 %2 个关节列，%3 有 %4 个关节</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
+        <source>must be 0 (off) or at least 1 (static friction is not below Coulomb friction), got %1</source>
+        <translation>必须为 0（关闭）或至少为 1（静摩擦不低于库仑摩擦），实际为 %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>give static friction either as simulation.staticFriction or as this ratio, not both</source>
+        <translation>静摩擦请用 simulation.staticFriction 或此比值之一给出，不可同时给出</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>applies to elastic joints only: give simulation.jointStiffness</source>
+        <translation>仅适用于弹性关节：请给出 simulation.jointStiffness</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>must be 1 or -1, got %1</source>
         <translation>必须是 1 或 -1，实际为 %1</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>必须是 0（理想编码器）或 %1 到 %2 之间的整数，实际为 %3</translation>
     </message>
@@ -2563,9 +2658,19 @@
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+70"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+71"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits：关节 %1（%2）在 URDF 中没有 effort 限值：请在场景中给出力矩限值</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="+79"/>
+        <source>must be at least the simulated robot&apos;s Coulomb friction of joint %1, %2 N m, got %3</source>
+        <translation>必须至少等于仿真机器人关节 %1 的库仑摩擦 %2 N m，实际为 %3</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>an elastic joint needs its motor&apos;s rotor inertia: give simulation.armature or simulation.armatureFactor above 0 for joint %1</source>
+        <translation>弹性关节需要其电机的转子惯量：请为关节 %1 给出大于 0 的 simulation.armature 或 simulation.armatureFactor</translation>
     </message>
 </context>
 <context>
@@ -2770,7 +2875,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+115"/>
+        <location filename="../core/service/SessionReport.cpp" line="+129"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>本会话中不存在估计 %1</translation>
     </message>
@@ -2783,17 +2888,17 @@
         <translation>仿真 %1</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>tracking error of joint %1 reached %2 deg at t = %3 s (limit %4 deg): quick stop</source>
         <translation>关节 %1 的跟踪误差在 t = %3 s 时达到 %2 度（限值 %4 度）：快速停止</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>drive of joint 1 reported a fault at t = %1 s (injected)</source>
         <translation>关节 1 的驱动器在 t = %1 s 时报告故障（注入）</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>stopped by the operator at t = %1 s</source>
         <translation>操作员在 t = %1 s 时停止</translation>
     </message>
@@ -2816,9 +2921,9 @@
         <translation>数据</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>prior</source>
-        <translation>先验</translation>
+        <location line="+4"/>
+        <source>undetermined (kept near the prior)</source>
+        <translation>未确定（保持在先验附近）</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -2867,6 +2972,11 @@
         <location line="+10"/>
         <source>%1: %2: parameter %3 is &quot;%4&quot;, the robot&apos;s is &quot;%5&quot;</source>
         <translation>%1：%2：参数 %3 为“%4”，而机器人的为“%5”</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="-50"/>
+        <source>needs a URDF robot (the link&apos;s inertia about its axis); %1 has none: give simulation.armature in kg m^2</source>
+        <translation>需要 URDF 机器人（连杆绕其轴的惯量）；%1 没有：请以 kg m^2 给出 simulation.armature</translation>
     </message>
 </context>
 <context>
@@ -2941,6 +3051,24 @@
         <location line="+24"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>只有平面二连杆机械臂具有笛卡尔直线运动学</translation>
+    </message>
+</context>
+<context>
+    <name>TrialSeries</name>
+    <message>
+        <location filename="../core/session/TrialSeries.cpp" line="+70"/>
+        <source>Run all stops: %1 trials in a row stopped at the tracking limit, and trial %2 was no progress over trial %3 (stopped at t = %4 s with %5 deg, against t = %6 s with %7 deg)</source>
+        <translation>全部运行停止：连续 %1 次试验在跟踪误差限值处停止，且试验 %2 相比试验 %3 没有进展（在 t = %4 s 以 %5 度停止，对比 t = %6 s 以 %7 度）</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>trial %1 tracked worse than trial %2 (max %3 deg against %4 deg)</source>
+        <translation>试验 %1 的跟踪比试验 %2 差（最大 %3 度，对比 %4 度）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1; Accept proposes estimate %2, which tracked best</source>
+        <translation>%1；“接受”建议跟踪最好的估计 %2</translation>
     </message>
 </context>
 <context>
@@ -3339,12 +3467,12 @@
 <context>
     <name>learnid-cli</name>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+44"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+43"/>
         <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
         <translation>--robot：&apos;%1&apos; 既不是 URDF 文件，也不是内置机器人（%2）</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+73"/>
         <source>robot %1: %2, %3 moving joints</source>
         <translation>机器人 %1：%2，%3 个可动关节</translation>
     </message>
@@ -3361,12 +3489,12 @@
         </translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>由 learnid-cli %1 identify 于 %2 辨识</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-77"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1：预测力矩与测量力矩</translation>
     </message>
@@ -3376,23 +3504,22 @@
         <translation>learnid：根据日志辨识 %1</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+182"/>
-        <location line="+10"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+109"/>
-        <location line="+7"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+105"/>
+        <location line="+9"/>
+        <location line="+6"/>
+        <location line="+13"/>
         <location line="+12"/>
-        <location line="+61"/>
-        <location line="+44"/>
-        <location filename="../app/cli/main.cpp" line="+52"/>
+        <location line="+69"/>
+        <location line="+62"/>
+        <location filename="../app/cli/main.cpp" line="+53"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli：错误：%1</translation>
     </message>
     <message>
         <location line="-4"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-4"/>
         <source>--plots: cannot create %1</source>
         <translation>--plots：无法创建 %1</translation>
     </message>
@@ -3402,86 +3529,7 @@
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+19"/>
-        <source>Usage:
-  learnid-cli scenario --print
-      Print the default scenario (the paper scenario) as JSON.
-  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
-                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--consistent] [--workspace DIR] [--quiet]
-      Run a commissioning session on the simulated robot. The table goes to
-      stdout, progress to stderr. Relative output paths are taken from
-      --workspace (default: the current directory). Files are written only
-      when every trial completed.
-      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
-      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
-      --can-log writes every trial&apos;s frames as a candump log into DIR;
-      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
-  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
-                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
-                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
-      Re-identify from recorded trials: the session runs again with each log
-      (one per trial, in order) answering in place of the robot.
-  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
-                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
-                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
-      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
-      and compare the result with its URDF on the --validate logs.
-  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
-                   [--workspace DIR] [--quiet]
-      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
-      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
-  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
-                    [--workspace DIR] [--quiet]
-      Learn from the controller&apos;s log of a plan; the next plan uses the new
-      estimate.
-  learnid-cli COMMAND --help
-      The options of one command.
-</source>
-        <translation>用法：
-  learnid-cli scenario --print
-      以 JSON 格式输出默认场景（论文场景）。
-  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
-                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
-                  [--consistent] [--workspace DIR] [--quiet]
-      在仿真机器人上运行一次调试会话。表格输出到 stdout，
-      进度输出到 stderr。相对输出路径以 --workspace 为基准
-      （默认：当前目录）。只有当所有试验都完成时
-      才写入文件。
-      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
-      改为在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）；
-      --can-log 将每次试验的帧以 candump 日志写入 DIR；
-      --can-sync-timeout MS：MS 内无 SYNC 即停止试验（默认 20）。
-  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
-                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
-                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
-      根据记录的试验重新辨识：会话再次运行，由每个日志
-      （每次试验一个，按顺序）代替机器人应答。
-  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
-                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
-                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
-      根据真实机器人记录的日志（CSV）辨识其惯量和摩擦，
-      并在 --validate 日志上将结果与其 URDF 进行比较。
-  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
-                   [--workspace DIR] [--quiet]
-      为机器人自身的控制器规划下一次试验：q_d(t) 和 tau_f(t)
-      （DIR/plan.csv）以及试验前检查（DIR/check.txt）。
-  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
-                    [--workspace DIR] [--quiet]
-      从控制器按某个计划记录的日志中学习；下一个计划使用
-      新的估计。
-  learnid-cli COMMAND --help
-      某个命令的选项。
-</translation>
-    </message>
-    <message>
-        <location line="+46"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+68"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -3494,7 +3542,7 @@
 %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+24"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+25"/>
         <source>--robot: must be &apos;sim&apos; or &apos;can&apos;, got &apos;%1&apos;</source>
         <translation>--robot：必须是 &apos;sim&apos; 或 &apos;can&apos;，实际为 &apos;%1&apos;</translation>
     </message>
@@ -3516,6 +3564,16 @@
     </message>
     <message>
         <location line="+10"/>
+        <source>--can-drives: %1</source>
+        <translation>--can-drives：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--can-drives: %1 records no drives (robot.drives): export it from a session on CAN drives</source>
+        <translation>--can-drives：%1 未记录驱动器 (robot.drives)：请从使用 CAN 驱动器的会话中导出</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>--nodes: %1 in &apos;%2&apos;</source>
         <translation>--nodes：&apos;%2&apos; 中 %1</translation>
     </message>
@@ -3525,7 +3583,7 @@
         <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-164"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-205"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1：%2</translation>
@@ -3537,12 +3595,12 @@
         <translation>--robot %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+65"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+73"/>
         <source>Show this command&apos;s options.</source>
         <translation>显示此命令的选项。</translation>
     </message>
     <message>
-        <location line="-41"/>
+        <location line="-49"/>
         <source>Print the default scenario.</source>
         <translation>输出默认场景。</translation>
     </message>
@@ -3593,7 +3651,7 @@
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+218"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -3631,21 +3689,120 @@
     </message>
     <message>
         <location line="+5"/>
+        <source>First commissioning: you confirmed that each node is the drive of its joint (docs/can-protocol.md 2.4).</source>
+        <translation>首次调试：您已确认每个节点都是其关节的驱动器（docs/can-protocol.md 2.4）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A parameter file of this robot: its drives&apos; identities (0x1018) must match.</source>
+        <translation>本机器人的参数文件：其驱动器标识 (0x1018) 必须一致。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>A recorded trial (candump log); once per trial, in order.</source>
         <translation>一次记录的试验（candump 日志）；每次试验一个，按顺序。</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+9"/>
-        <source>Print the default scenario as JSON.</source>
-        <translation>以 JSON 格式输出默认场景。</translation>
+        <location filename="../app/cli/CliOptions.cpp" line="-73"/>
+        <source>Usage:
+  learnid-cli scenario --print [--robot ROBOT]
+      Print a complete scenario as JSON. ROBOT: paper (the default: the paper
+      scenario), panda, puma560, double-pendulum or a URDF file; for a robot
+      other than paper, the gains the window designs for it and a path of
+      joint waypoints inside its limits.
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--consistent] [--workspace DIR] [--quiet]
+      Run a commissioning session on the simulated robot. The table goes to
+      stdout, progress to stderr. Relative output paths are taken from
+      --workspace (default: the current directory). Files are written only
+      when every trial completed.
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      runs it on CiA 402 drives on a CAN bus instead (docs/can-protocol.md);
+      --can-log writes every trial&apos;s frames as a candump log into DIR;
+      --can-sync-timeout MS stops a trial when no SYNC comes for MS (default 20).
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      Re-identify from recorded trials: the session runs again with each log
+      (one per trial, in order) answering in place of the robot.
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
+      and compare the result with its URDF on the --validate logs.
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      Plan the next trial for the robot&apos;s own controller: q_d(t) and tau_f(t)
+      (DIR/plan.csv) and the pre-trial check (DIR/check.txt).
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      Learn from the controller&apos;s log of a plan; the next plan uses the new
+      estimate.
+  learnid-cli COMMAND --help
+      The options of one command.
+</source>
+        <translation>用法：
+  learnid-cli scenario --print [--robot ROBOT]
+      以 JSON 格式输出完整场景。ROBOT：paper（默认：论文场景）、panda、puma560、
+      double-pendulum 或一个 URDF 文件；对于 paper 以外的机器人，给出窗口为其设计的
+      增益，以及一条位于其关节限位内的关节路点路径。
+  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
+                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
+                  [--consistent] [--workspace DIR] [--quiet]
+      在仿真机器人上运行一次调试会话。表格输出到 stdout，
+      进度输出到 stderr。相对输出路径以 --workspace 为基准
+      （默认：当前目录）。只有当所有试验都完成时
+      才写入文件。
+      --robot can --can-plugin P --can-interface I [--nodes 1,2] [--can-log DIR]
+      改为在 CAN 总线上的 CiA 402 驱动器上运行（docs/can-protocol.md）；
+      --can-log 将每次试验的帧以 candump 日志写入 DIR；
+      --can-sync-timeout MS：MS 内无 SYNC 即停止试验（默认 20）。
+  learnid-cli replay --candump FILE [--candump FILE2 ...] [--scenario FILE]
+                     [--estimator paper|improved] [--nodes 1,2] [--report FILE]
+                     [--export FILE] [--trial-csv DIR] [--workspace DIR] [--quiet]
+      根据记录的试验重新辨识：会话再次运行，由每个日志
+      （每次试验一个，按顺序）代替机器人应答。
+  learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
+                       [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
+                       [--rho R] [--prior-share S] [--velocity auto|measured|q]
+                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
+                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
+                       [--workspace DIR] [--quiet]
+      根据真实机器人记录的日志（CSV）辨识其惯量和摩擦，
+      并在 --validate 日志上将结果与其 URDF 进行比较。
+  learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
+                   [--workspace DIR] [--quiet]
+      为机器人自身的控制器规划下一次试验：q_d(t) 和 tau_f(t)
+      （DIR/plan.csv）以及试验前检查（DIR/check.txt）。
+  learnid-cli learn --trial-log FILE [--scenario FILE] [--history DIR]
+                    [--workspace DIR] [--quiet]
+      从控制器按某个计划记录的日志中学习；下一个计划使用
+      新的估计。
+  learnid-cli COMMAND --help
+      某个命令的选项。
+</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+76"/>
+        <source>The robot: paper (default), panda, puma560, double-pendulum, or a URDF file.</source>
+        <translation>机器人：paper（默认）、panda、puma560、double-pendulum 或一个 URDF 文件。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Print a complete scenario for a robot as JSON.</source>
+        <translation>以 JSON 格式输出某个机器人的完整场景。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&apos;scenario&apos; needs --print</source>
         <translation>&apos;scenario&apos; 需要 --print</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>no command given</source>
         <translation>未给出命令</translation>
     </message>
@@ -3655,7 +3812,7 @@
         <translation>未知命令 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommandLine.cpp" line="+17"/>
+        <location filename="../app/cli/RunCommandLine.cpp" line="+18"/>
         <source>Re-identify from recorded trials: the session runs again with each log
 answering in place of the robot.</source>
         <translation>根据记录的试验重新辨识：会话再次运行，
@@ -3684,42 +3841,37 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>&apos;replay&apos; 至少需要一个 --candump FILE</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>--iterations: %1 trials need %1 logs, %2 given</source>
-        <translation>--iterations：%1 次试验需要 %1 个日志，给出了 %2 个</translation>
-    </message>
-    <message>
         <location filename="../app/cli/ResultTable.cpp" line="+39"/>
-        <location line="+73"/>
+        <location line="+76"/>
         <source>trial</source>
         <translation>试验</translation>
     </message>
     <message>
-        <location line="-72"/>
-        <location line="+75"/>
+        <location line="-75"/>
+        <location line="+78"/>
         <source>change %</source>
         <translation>变化 %</translation>
     </message>
     <message>
-        <location line="-73"/>
-        <location line="+75"/>
+        <location line="-76"/>
+        <location line="+78"/>
         <source>max|e|%1 deg</source>
         <translation>最大|e|%1 度</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+75"/>
+        <location line="-77"/>
+        <location line="+78"/>
         <source>T s</source>
         <translation>T s</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+75"/>
+        <location line="-77"/>
+        <location line="+78"/>
         <source>cond</source>
         <translation>cond</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-77"/>
         <source>rank</source>
         <translation>秩</translation>
     </message>
@@ -3729,7 +3881,13 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>路径力矩误差 %</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+29"/>
+        <location line="+73"/>
+        <source>learned from a partial trial</source>
+        <translation>从部分试验中学习</translation>
+    </message>
+    <message>
+        <location line="-65"/>
         <source>unit</source>
         <translation>单位</translation>
     </message>
@@ -3754,7 +3912,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>相对真值 %</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>(rank %1: unobservable kept)</source>
         <translation>（秩 %1：保留不可观测参数）</translation>
     </message>
@@ -3774,6 +3932,11 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>试验 %1：%2，T = %3 s，%4 个采样点，最大跟踪误差 %5 度</translation>
     </message>
     <message>
+        <location line="+13"/>
+        <source>; learned from its first %1 s (a partial trial)</source>
+        <translation>；从其前 %1 s 学习（部分试验）</translation>
+    </message>
+    <message>
         <location filename="../app/cli/RunCommand.cpp" line="-33"/>
         <source>--estimator: unknown law &apos;%1&apos; (known: %2)</source>
         <translation>--estimator：未知学习律 &apos;%1&apos;（已知：%2）</translation>
@@ -3784,7 +3947,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--nodes %1：%2 个节点 ID，而机器人有 %3 个关节：每个关节需要一个节点</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+60"/>
+        <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
+        <translation>--iterations：%1 次试验需要 %1 次已记录的试验，日志中有 %2 次</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
@@ -3794,8 +3962,24 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：警告：该 URDF 作为真实机器人：%1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-73"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+8"/>
+        <location line="+54"/>
+        <source>learnid-cli: estimate %1 tracked best: it is the one accepted, applied and exported</source>
+        <translation>learnid-cli：估计 %1 跟踪最好：接受、应用和导出的是它</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>learnid-cli: %1 not written: nothing was learned</source>
+        <translation>learnid-cli：未写入 %1：没有学到任何内容</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>learnid-cli: wrote %1 (the session ended early)</source>
+        <translation>learnid-cli：已写入 %1（会话提前结束）</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-74"/>
+        <location filename="../app/cli/ResultTable.cpp" line="+7"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
     </message>
@@ -3822,7 +4006,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     <message>
         <location line="+5"/>
         <location line="+35"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+12"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+66"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli：未写入文件</translation>
     </message>
@@ -3837,7 +4021,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已从试验 %1（计划 %2）学习；下一个计划使用估计 %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="+14"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-30"/>
         <source>learnid-cli: error: apply failed: %1</source>
         <translation>learnid-cli：错误：写入失败：%1</translation>
     </message>
@@ -3848,13 +4032,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+10"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+26"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-173"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-166"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms：未知项 &apos;%1&apos;；可用的项为 armature、viscous、coulomb 和 offset，或 none</translation>
     </message>
@@ -3884,12 +4067,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--urdf-out：%1 已是 --export 的写入位置</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--%1: a payload&apos;s result is not exported yet; leave it out</source>
-        <translation>--%1：负载结果暂不支持导出；请省略该选项</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>A built-in URDF robot (e.g. double-pendulum) or a URDF file.</source>
         <translation>内置 URDF 机器人（例如 double-pendulum）或 URDF 文件。</translation>
     </message>
@@ -3975,7 +4153,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>相对输出路径的基准文件夹。</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
 
 Identify a robot&apos;s inertia and joint friction from its recorded logs,
@@ -4000,7 +4178,7 @@ and compare the result with the URDF as given on --validate logs.
         <translation>&apos;identify&apos; 至少需要一个 --log FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyTable.cpp" line="+24"/>
+        <location filename="../app/cli/IdentifyTable.cpp" line="+25"/>
         <location line="+16"/>
         <source>name</source>
         <translation>名称</translation>
@@ -4011,12 +4189,12 @@ and compare the result with the URDF as given on --validate logs.
         <translation>关节</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+31"/>
         <source>Identified parameters: %1.</source>
         <translation>辨识出的参数：%1。</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+18"/>
         <source>training logs: residual of the fit</source>
         <translation>训练日志：拟合残差</translation>
     </message>
@@ -4047,12 +4225,12 @@ and compare the result with the URDF as given on --validate logs.
         <translation>给定的 URDF</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyParameters.cpp" line="+32"/>
-        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: data, below: kept from the prior)</source>
-        <translation>标准参数：URDF 的值、识别值以及数据确定的程度（参数方向的份额；至少 0.5：来自数据，低于此值：保留先验值）</translation>
+        <location filename="../app/cli/IdentifyParameters.cpp" line="+33"/>
+        <source>standard parameters: the URDF&apos;s, the identified, and what the data determined (share of the parameter&apos;s direction; at least 0.5: the data&apos;s, below: undetermined, kept near the prior, which the data still move a little)</source>
+        <translation>标准参数：URDF 的值、识别值以及数据确定的程度（参数方向的份额；至少 0.5：来自数据，低于此值：未确定，保持在先验附近，数据仍会使其略有变化）</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>link or joint</source>
         <translation>连杆或关节</translation>
     </message>
@@ -4080,16 +4258,13 @@ and compare the result with the URDF as given on --validate logs.
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-150"/>
-        <source>from</source>
+        <source>source</source>
         <translation>来源</translation>
     </message>
     <message>
         <location line="+23"/>
-        <source>warning: the URDF as a real robot: %1
-</source>
-        <translation>警告：该 URDF 作为真实机器人：%1
-</translation>
+        <source>warning: the URDF as a real robot: %1</source>
+        <translation>警告：将该 URDF 视为真实机器人：%1</translation>
     </message>
     <message>
         <location filename="../app/cli/IdentifyTable.cpp" line="+2"/>
@@ -4186,180 +4361,9 @@ stdout, and the next plan uses the new estimate.
         <translation>t [s]</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-4"/>
-        <source>value</source>
-        <translation>量</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>estimate</source>
-        <translation>估计值</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>std. error</source>
-        <translation>标准误差</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>prior</source>
-        <translation>先验</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>the logs</source>
-        <translation>日志</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the prior (not identified)</source>
-        <translation>先验（未辨识）</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Payload on %1 of %2; the arm&apos;s model (%3) held fixed.
-</source>
-        <translation>%2 的 %1 上的负载；机械臂模型（%3）保持固定。
-</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+3"/>
-        <source>Fitted to %n log(s), %1 samples: %2 of 10 directions determined (condition %3).
-</source>
-        <translation>
-            <numerusform>已拟合 %n 个日志，%1 个采样：10 个方向中确定了 %2 个（条件数 %3）。
-</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Warning: the plausible estimate did not converge (%1).
-</source>
-        <translation>警告：合理估计未收敛（%1）。
-</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>A real body whose mass lies in the bound (%1).
-</source>
-        <translation>一个质量位于边界内的真实物体（%1）。
-</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Warning: the centre of mass lies outside the bound (%1).
-</source>
-        <translation>警告：质心位于边界之外（%1）。
-</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>What the logs did not show (kept from the prior):
-</source>
-        <translation>日志未显示的部分（保留先验）：
-</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Torque residual per joint on the logs [N m]:</source>
-        <translation>各关节在日志上的力矩残差 [N m]：</translation>
-    </message>
-    <message>
-        <location line="+35"/>
-        <source>learnid-cli: fitting the payload to %1</source>
-        <translation>learnid-cli：正在将负载拟合到 %1</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>On the --validate logs: &quot;URDF as given&quot; is the arm without the payload, &quot;identified&quot; the arm with it.
-</source>
-        <translation>在 --validate 日志上：“给定的 URDF”是不带负载的机械臂，“已辨识”是带负载的机械臂。
-</translation>
-    </message>
-    <message>
-        <location line="+19"/>
-        <source>%1: torque of the arm alone and with the payload</source>
-        <translation>%1：机械臂单独及带负载时的力矩</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>learnid: payload on %1 identified from logs</source>
-        <translation>learnid：根据日志辨识的 %1 上的负载</translation>
-    </message>
-    <message>
-        <location filename="../app/cli/PayloadOptions.cpp" line="+39"/>
-        <source>Identify only a payload fixed to the arm, the --robot URDF held fixed as the arm&apos;s model; needs --payload-mass.</source>
-        <translation>仅辨识固定在机械臂上的负载，--robot 的 URDF 作为机械臂模型保持固定；需要 --payload-mass。</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>The link the payload is fixed to; default: the tip link.</source>
-        <translation>负载所固定的连杆；默认：末端连杆。</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Your estimate of the payload&apos;s mass [kg].</source>
-        <translation>您对负载质量的估计 [kg]。</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Your estimate of its centre of mass in the link frame [m]; default 0,0,0 (the flange).</source>
-        <translation>您对其在连杆坐标系中质心的估计 [m]；默认 0,0,0（法兰）。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Your estimate of its inertia about the centre of mass [kg m^2]; default: a uniform sphere.</source>
-        <translation>您对其绕质心惯量的估计 [kg m^2]；默认：均匀球体。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>The payload lies within this distance of the flange [m]; default 0.3.</source>
-        <translation>负载位于距法兰此距离之内 [m]；默认 0.3。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Or within this box in the link frame [m], instead of the sphere.</source>
-        <translation>或位于连杆坐标系中的此长方体内 [m]，代替球。</translation>
-    </message>
-    <message>
-        <location line="+30"/>
-        <source>--%1: needs --payload</source>
-        <translation>--%1：需要 --payload</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>--payload: needs --payload-mass KG, your estimate of the payload&apos;s mass</source>
-        <translation>--payload：需要 --payload-mass KG，即您对负载质量的估计</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>--payload-box: give either a bounding box or --payload-radius, not both</source>
-        <translation>--payload-box：请给出包围长方体或 --payload-radius，不要同时给出</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
-        <translation>--payload-mass：必须是千克数，收到“%1”</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>--payload-com: must be three numbers X,Y,Z [m], got &apos;%1&apos;</source>
-        <translation>--payload-com：必须是三个数 X,Y,Z [m]，收到“%1”</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>--payload-inertia: must be six numbers IXX,IXY,IYY,IXZ,IYZ,IZZ [kg m^2], got &apos;%1&apos;</source>
-        <translation>--payload-inertia：必须是六个数 IXX,IXY,IYY,IXZ,IYZ,IZZ [kg m^2]，收到“%1”</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>--payload-radius: must be a number of m, got &apos;%1&apos;</source>
-        <translation>--payload-radius：必须是米数，收到“%1”</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>--payload-box: must be six numbers X0,Y0,Z0,X1,Y1,Z1 [m], got &apos;%1&apos;</source>
-        <translation>--payload-box：必须是六个数 X0,Y0,Z0,X1,Y1,Z1 [m]，收到“%1”</translation>
+        <location filename="../app/cli/ScenarioCommand.cpp" line="+20"/>
+        <source>learnid-cli: error: --robot %1: %2</source>
+        <translation>learnid-cli：错误：--robot %1：%2</translation>
     </message>
 </context>
 <context>
@@ -4513,11 +4517,16 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+3"/>
-        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default 3; raise it on a heavily loaded machine).</source>
-        <translation>驱动器在运行使能状态下无设定值多少个 SYNC 周期后以 EMCY 0x8100 报故障（默认 3；在负载很重的机器上请调高）。</translation>
+        <source>SYNC periods in Operation enabled without a set-point before a drive faults with EMCY 0x8100 (default: 3 periods, at least 50 ms).</source>
+        <translation>驱动器在 Operation enabled 状态下无设定值多少个 SYNC 周期后以 EMCY 0x8100 报故障（默认：3 个周期，至少 50 ms）。</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+7"/>
+        <source>Drives that were never commissioned: 0x2400 is 0 (by default joint j&apos;s drive holds the robot&apos;s identity and j).</source>
+        <translation>从未调试过的驱动器：0x2400 为 0（默认情况下关节 j 的驱动器保存机器人标识和 j）。</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
@@ -4598,7 +4607,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::ApplyPanel</name>
     <message>
-        <location filename="../ui/ApplyPanel.cpp" line="+22"/>
+        <location filename="../ui/ApplyPanel.cpp" line="+23"/>
         <source>estimate </source>
         <translation>估计 </translation>
     </message>
@@ -4623,7 +4632,7 @@ stdout, and the next plan uses the new estimate.
         <translation>尚未写入</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>estimate %1</source>
         <translation>估计 %1</translation>
     </message>
@@ -4636,7 +4645,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CanConnection</name>
     <message>
-        <location filename="../core/canrobot/CanConnection.cpp" line="+29"/>
+        <location filename="../core/canrobot/CanConnection.cpp" line="+34"/>
         <source>the CAN device %1 did not connect within %2 ms (is the bus or the robot side running?)</source>
         <translation>CAN 设备 %1 未在 %2 ms 内连接（总线或机器人端是否在运行？）</translation>
     </message>
@@ -4646,12 +4655,12 @@ stdout, and the next plan uses the new estimate.
         <translation>没有用于 %1 的 CAN 设备</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>cannot connect the CAN device %1: %2</source>
         <translation>无法连接 CAN 设备 %1：%2</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+59"/>
         <source>no error reported (the other side may have exited)</source>
         <translation>未报告错误（对端可能已退出）</translation>
     </message>
@@ -4661,7 +4670,57 @@ stdout, and the next plan uses the new estimate.
         <translation>CAN 设备 %1 已断开连接：%2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
+        <source>the CAN device %1 reported an error frame: %2</source>
+        <translation>CAN 设备 %1 报告了错误帧：%2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN device %1 reported %2 (error frame 0x%3 %4)</source>
+        <translation>CAN 设备 %1 报告 %2（错误帧 0x%3 %4）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the CAN interface %1 of %2 disappeared</source>
+        <translation>%2 的 CAN 接口 %1 已消失</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN interface %1 of %2 went down (ip link set %1 up brings it back)</source>
+        <translation>%2 的 CAN 接口 %1 已停用（ip link set %1 up 可重新启用）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the CAN controller of %1 (%2) is %3</source>
+        <translation>%1 (%2) 的 CAN 控制器处于 %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>the CAN device %1 reports bus off</source>
+        <translation>CAN 设备 %1 报告总线关闭 (bus off)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the CAN device %1 reports error passive</source>
+        <translation>CAN 设备 %1 报告错误被动</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>the CAN device %1 reported a %2 error: %3</source>
+        <translation>CAN 设备 %1 报告了%2错误：%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read</source>
+        <translation>读取</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>write</source>
+        <translation>写入</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the CAN device %1 reported a connection error: %2</source>
         <translation>CAN 设备 %1 报告连接错误：%2</translation>
     </message>
@@ -4687,7 +4746,12 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CanRobotWorker</name>
     <message>
-        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+116"/>
+        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+111"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -4698,17 +4762,27 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+16"/>
-        <location line="+27"/>
+        <location line="+57"/>
         <source>stopped by the operator before the drives moved</source>
         <translation>在驱动器运动前被操作员停止</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-52"/>
+        <source>refused before any motion: %1</source>
+        <translation>在任何运动之前被拒绝：%1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>reading the drives&apos; identity failed: %1</source>
+        <translation>读取驱动器标识失败：%1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>configuring the drives failed, nothing moved: %1</source>
         <translation>配置驱动器失败，未发生任何运动：%1</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>the trial&apos;s candump log could not be written: %1</source>
         <translation>无法写入该试验的 candump 日志：%1</translation>
     </message>
@@ -4718,7 +4792,12 @@ stdout, and the next plan uses the new estimate.
         <translation>%1；已存储参数未改变</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
+        <source>%1; nothing was stored (0x2200, 0x2400 and 0x1010 not written)</source>
+        <translation>%1；未存储任何内容（未写入 0x2200、0x2400 和 0x1010）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1；未存储任何内容（未写入 0x1010）</translation>
     </message>
@@ -4731,7 +4810,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CandumpReplayDevice</name>
     <message>
-        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+38"/>
+        <location filename="../core/canrobot/CandumpReplayDevice.cpp" line="+88"/>
         <source>Cannot write a frame: the replay is not connected.</source>
         <translation>无法写入帧：回放未连接。</translation>
     </message>
@@ -4741,7 +4820,7 @@ stdout, and the next plan uses the new estimate.
         <translation>主站在日志结束后写入了 %1。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>The master wrote %1 where the log holds %2 (log frame %3): the replayed trial differs from the recorded one.</source>
         <translation>主站写入了 %1，而日志此处为 %2（日志帧 %3）：回放的试验与记录的不同。</translation>
     </message>
@@ -4749,7 +4828,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CommissioningSession</name>
     <message>
-        <location filename="../core/session/CommissioningSession.cpp" line="+22"/>
+        <location filename="../core/session/CommissioningSession.cpp" line="+23"/>
         <source>unknown estimator law &apos;%1&apos; (known: %2)</source>
         <translation>未知估计律 &apos;%1&apos;（已知：%2）</translation>
     </message>
@@ -4759,17 +4838,27 @@ stdout, and the next plan uses the new estimate.
         <translation>场景不适合 %1 模型：它需要 %2 个参数以及 %3 个关节的限值和增益</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+67"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+37"/>
         <source>repetition %1 of %2: %3</source>
         <translation>第 %1 次重复（共 %2 次）：%3</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+26"/>
+        <source>trial %1 stopped at the tracking limit after %2 s: too short to learn from once the filter has settled (%3 s); the estimate is unchanged</source>
+        <translation>试验 %1 在 %2 s 后于跟踪误差限值处停止：除去滤波器的稳定时间（%3 s）后太短，无法学习；估计保持不变</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>trial %1 stopped at the tracking limit: its %2 s before the stop observe no parameter; the estimate is unchanged</source>
+        <translation>试验 %1 在跟踪误差限值处停止：停止前的 %2 s 观测不到任何参数；估计保持不变</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>the update produced non-finite parameters</source>
         <translation>更新产生了非有限参数</translation>
     </message>
@@ -4779,7 +4868,7 @@ stdout, and the next plan uses the new estimate.
         <translation>未从试验 %1 学习：%2</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>there is no learned estimate to accept yet: run a trial first</source>
         <translation>尚无可接受的学习估计：请先运行一次试验</translation>
     </message>
@@ -4889,6 +4978,11 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+12"/>
+        <source>%1 (learned from a partial trial)</source>
+        <translation>%1（从部分试验中学习）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
@@ -5737,7 +5831,7 @@ ratio %</source>
         <translation>内存 CAN 设备 %1 写入帧失败。</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>CAN error frame, error classes 0x%1.</source>
         <translation>CAN 错误帧，错误类别 0x%1。</translation>
     </message>
@@ -5854,7 +5948,7 @@ ratio %</source>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
-        <location filename="../ui/PreTrialCheckView.cpp" line="+35"/>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+36"/>
         <source>Joint</source>
         <translation>关节</translation>
     </message>
@@ -5937,7 +6031,7 @@ ratio %</source>
 <context>
     <name>learnid::RecordedDataDialog</name>
     <message>
-        <location filename="../ui/RecordedDataDialog.cpp" line="+51"/>
+        <location filename="../ui/RecordedDataDialog.cpp" line="+52"/>
         <source>&amp;Identify</source>
         <translation>辨识(&amp;I)</translation>
     </message>
@@ -5987,7 +6081,7 @@ ratio %</source>
         <translation>拟合</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Validation on:</source>
         <translation>验证所用日志：</translation>
     </message>
@@ -5997,7 +6091,7 @@ ratio %</source>
         <translation>验证</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>Predicted against measured torque (validation log)</source>
         <translation>预测力矩与测量力矩对比（验证日志）</translation>
     </message>
@@ -6369,13 +6463,18 @@ ratio %</source>
 <context>
     <name>learnid::RobotPanel</name>
     <message>
-        <location filename="../ui/RobotPanel.cpp" line="+22"/>
-        <location line="+100"/>
+        <location filename="../ui/RobotPanel.cpp" line="+24"/>
+        <source>First commissioning: I confirmed each node&apos;s joint on the arm</source>
+        <translation>首次调试：我已在机械臂上确认每个节点对应的关节</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+109"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-91"/>
+        <location line="-99"/>
         <source>Simulated (the scenario&apos;s robot)</source>
         <translation>仿真（场景中的机器人）</translation>
     </message>
@@ -6401,6 +6500,11 @@ ratio %</source>
     </message>
     <message>
         <location line="+3"/>
+        <source>10 SYNC periods, at least 50 ms</source>
+        <translation>10 个 SYNC 周期，至少 50 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source> ms</source>
         <translation> 毫秒</translation>
     </message>
@@ -6410,7 +6514,12 @@ ratio %</source>
         <translation>若超过此时间未收到 SYNC，试验即停止</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Only for drives never commissioned (or taken from another robot): tick it after checking on the arm that the drive of each node (its serial number on the type plate) moves the joint the node is listed for. Apply then stores the joint identity in the drives, and later sessions check it without this (docs/can-protocol.md 2.4).</source>
+        <translation>仅用于从未调试过（或取自另一台机器人）的驱动器：请先在机械臂上确认每个节点的驱动器（铭牌上的序列号）驱动的正是该节点所列的关节，然后再勾选。应用时会将关节标识存入驱动器，之后的会话无需勾选即可检查（docs/can-protocol.md 2.4）。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Plugin:</source>
         <translation>插件：</translation>
     </message>
@@ -6430,6 +6539,11 @@ ratio %</source>
         <translation>SYNC 超时：</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Drives:</source>
+        <translation>驱动器：</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Robot:</source>
         <translation>机器人：</translation>
@@ -6445,7 +6559,7 @@ ratio %</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>CAN nodes: %1</source>
         <translation>CAN 节点：%1</translation>
     </message>
@@ -6546,6 +6660,16 @@ ratio %</source>
         <translation>规划比例</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Gentle first trials</source>
+        <translation>温和的首批试验</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gentle trials&apos; speed</source>
+        <translation>温和试验的速度</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>Controller</source>
         <translation>控制器</translation>
@@ -6576,12 +6700,12 @@ ratio %</source>
         <translation>每次试验的重复次数</translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-56"/>
         <source>Initial parameters</source>
         <translation>初始参数</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+59"/>
         <source>Safety</source>
         <translation>安全</translation>
     </message>
@@ -6601,12 +6725,12 @@ ratio %</source>
         <translation>仿真机器人</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-63"/>
         <source>True parameters</source>
         <translation>真实参数</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+67"/>
         <source>CAD perturbation (URDF robots)</source>
         <translation>CAD 扰动（URDF 机器人）</translation>
     </message>
@@ -6789,7 +6913,7 @@ ratio %</source>
 <context>
     <name>learnid::SessionPresenter</name>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+34"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+35"/>
         <source>connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
@@ -6815,12 +6939,17 @@ ratio %</source>
         <translation>试验 %1 运行中…</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+12"/>
+        <source>Trial %1 stopped: %2. Learned from its first %3 s (a partial trial); the next trial runs with the new estimate.</source>
+        <translation>试验 %1 已停止：%2。已从其前 %3 s 学习（部分试验）；下一次试验使用新的估计运行。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Trial %1 %2: %3. Its data are kept.</source>
         <translation>试验 %1 %2：%3。其数据已保留。</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
         <source>Finished; %1 estimate(s) learned.</source>
         <translation>完成；已学习 %1 个估计。</translation>
     </message>
@@ -6847,7 +6976,7 @@ ratio %</source>
         </translation>
     </message>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+25"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+26"/>
         <source>nothing applied yet</source>
         <translation>尚未写入</translation>
     </message>
@@ -6922,7 +7051,7 @@ ratio %</source>
 <context>
     <name>learnid::TrackingErrorPlot</name>
     <message>
-        <location filename="../ui/TrackingErrorPlot.cpp" line="+30"/>
+        <location filename="../ui/TrackingErrorPlot.cpp" line="+31"/>
         <source>Auto-scale</source>
         <translation>自动缩放</translation>
     </message>
@@ -6943,11 +7072,12 @@ ratio %</source>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="+94"/>
         <source>Tracking error [deg]</source>
         <translation>跟踪误差 [度]</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Show:</source>
         <translation>显示：</translation>
     </message>
@@ -6993,28 +7123,39 @@ ratio %</source>
         <translation>%1，%2</translation>
     </message>
     <message>
-        <location filename="../ui/TrackingErrorStyle.cpp" line="+51"/>
+        <location filename="../ui/TrackingErrorStyle.cpp" line="-41"/>
+        <location line="+18"/>
         <source>Joint %1</source>
         <translation>关节 %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-17"/>
         <source>Joint %1 (%2)</source>
         <translation>关节 %1（%2）</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Error [deg]</source>
+        <translation>误差 [deg]</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>[deg]</source>
+        <translation>[deg]</translation>
     </message>
 </context>
 <context>
     <name>learnid::TrialStreamer</name>
     <message>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
-        <location line="+90"/>
-        <location line="+66"/>
+        <location line="+92"/>
+        <location line="+68"/>
         <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="-143"/>
+        <location line="-147"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 未在 %2 ms 内达到运行使能：报告为 %3（状态字 0x%4）</translation>
     </message>
@@ -7024,7 +7165,7 @@ ratio %</source>
         <translation>无 TPDO</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+78"/>
         <source>stopped by the operator %1</source>
         <translation>被操作员停止 %1</translation>
     </message>
@@ -7044,12 +7185,12 @@ ratio %</source>
         <translation>%1 的跟踪误差达到 %2 度（限值 %3 度）%4：快速停止</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+71"/>
         <source>only %1 of %2 samples were recorded</source>
         <translation>%2 个采样点中只记录了 %1 个</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>an unknown node</source>
         <translation>未知节点</translation>
     </message>
@@ -7153,30 +7294,30 @@ ratio %</source>
 <context>
     <name>learnid::robotsim::SimProcess</name>
     <message>
-        <location filename="../app/robot-sim/SimProcess.cpp" line="+43"/>
+        <location filename="../app/robot-sim/SimProcess.cpp" line="+44"/>
         <source>learnid-robot-sim: stopping (%1)</source>
         <translation>learnid-robot-sim：正在停止（%1）</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+93"/>
+        <location line="+96"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>无法用插件 %2 连接 CAN 接口 %1：%3</translation>
     </message>
     <message>
-        <location line="-61"/>
-        <location line="+16"/>
+        <location line="-62"/>
+        <location line="+17"/>
         <location line="+75"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim：错误：%1</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-85"/>
         <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
         <translation>learnid-robot-sim：错误：无法用插件 %2 创建 CAN 设备 %1：%3</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <location line="+58"/>
         <source>learnid-robot-sim: error: --state: %1</source>
         <translation>learnid-robot-sim：错误：--state：%1</translation>
@@ -7205,9 +7346,14 @@ ratio %</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="+38"/>
+        <location filename="../app/gui/StartOptions.cpp" line="+67"/>
         <source>Commissioning tool: learning identification of robot dynamics.</source>
         <translation>调试工具：机器人动力学的学习辨识。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The window needs a display; learnid-cli works without one.</source>
+        <translation>窗口需要显示器；learnid-cli 无需显示器即可使用。</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -7220,14 +7366,34 @@ ratio %</source>
         <translation>界面语言，例如 de 或 zh_CN（默认：应用中选择的语言，否则为系统语言）。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>What --screenshot shows: %1 (default: main).</source>
         <translation>--screenshot 显示的内容：%1（默认：main）。</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+5"/>
+        <source>Open the scenario &lt;file&gt; at start.</source>
+        <translation>启动时打开场景 &lt;file&gt;。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A scenario file to open at start (as --scenario).</source>
+        <translation>启动时打开的场景文件（同 --scenario）。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>learnid: unknown --screenshot-view &apos;%1&apos;; known: %2</source>
         <translation>learnid：未知的 --screenshot-view &apos;%1&apos;；已知：%2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>learnid: one scenario at a time, got %1: %2</source>
+        <translation>learnid：一次只能打开一个场景，收到 %1 个：%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>learnid: the window needs a display, and none is set (DISPLAY, WAYLAND_DISPLAY); learnid --help lists the options, learnid-cli works without a display.</source>
+        <translation>learnid：窗口需要显示器，但未设置（DISPLAY、WAYLAND_DISPLAY）；learnid --help 列出选项，learnid-cli 无需显示器即可使用。</translation>
     </message>
 </context>
 </TS>

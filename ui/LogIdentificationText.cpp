@@ -1,6 +1,7 @@
 #include "ui/LogIdentificationText.h"
 
 #include "service/LogIdentificationSummary.h"
+#include "session/LinkVerdictTable.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -17,6 +18,31 @@ struct Text
 QString number(double v, char format, int precision)
 {
     return QString::number(v, format, precision);
+}
+
+// The per-link verdict (LinkVerdictTable, the words of the CLI and its report) as an HTML table,
+// the rows of links that are not plausible in the consistency paragraph's warning colour.
+QString verdictHtml(const LogIdentificationResult &r)
+{
+    const LinkVerdictTable table = linkVerdictTable(r.model(), r.verdict);
+    if (table.rows.isEmpty())
+        return {};
+    const auto row = [](const QStringList &cells, const QString &tag, const QString &style) {
+        QString html = style.isEmpty() ? QStringLiteral("<tr>")
+                                       : QStringLiteral("<tr style=\"%1\">").arg(style);
+        for (int c = 0; c < cells.size(); ++c)
+            html += QStringLiteral("<%1 align=\"%2\">%3</%1>")
+                        .arg(tag, c == 0 ? QStringLiteral("left") : QStringLiteral("right"),
+                             cells[c].toHtmlEscaped());
+        return html + QStringLiteral("</tr>");
+    };
+    QString html = QStringLiteral("<p>%1</p><table cellspacing=\"0\" cellpadding=\"3\">")
+                       .arg(table.title.toHtmlEscaped()) +
+                   row(table.header, QStringLiteral("th"), {});
+    for (int i = 0; i < table.rows.size(); ++i)
+        html += row(table.rows[i], QStringLiteral("td"),
+                    table.plausible[i] ? QString() : QStringLiteral("color:#b06000"));
+    return html + QStringLiteral("</table>");
 }
 
 } // namespace
@@ -51,8 +77,9 @@ QString logIdentificationSummaryHtml(const LogIdentificationResult &r)
     for (int j = 0; j < model.dof(); ++j)
         residual << QStringLiteral("%1: %2").arg(j + 1).arg(number(r.fit.trainingRms[j], 'f', 4));
     const QString consistency =
-        Text::tr("<p><b>Consistency:</b> <span style=\"color:%1\">%2</span></p>")
-            .arg(r.consistent ? QStringLiteral("#1e7b34") : QStringLiteral("#b06000"),
+        Text::tr("<p><b>Identified parameters:</b> <span style=\"color:%1\">%2</span></p>")
+            .arg(r.consistent && r.verdict.plausible ? QStringLiteral("#1e7b34")
+                                                     : QStringLiteral("#b06000"),
                  r.consistency.join(QStringLiteral("; ")).toHtmlEscaped());
     const QString training = Text::tr("<p><b>Training residual</b>, RMS per joint [N m]: %1</p>")
                                  .arg(residual.join(QStringLiteral(", ")));
@@ -66,7 +93,7 @@ QString logIdentificationSummaryHtml(const LogIdentificationResult &r)
                              "robot: %1</p>")
                         .arg(w.toHtmlEscaped());
     return paragraph(s.robot) + warnings + paragraph(s.logs) + readings + paragraph(s.directions) +
-           paragraph(s.undetermined) + consistency + training;
+           paragraph(s.undetermined) + consistency + verdictHtml(r) + training;
 }
 
 QString logIdentificationMessage(const LogIdentificationResult &r)

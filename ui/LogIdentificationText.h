@@ -13,7 +13,8 @@ QString logIdentificationStageText(const LogIdentificationProgress &progress);
 /// The fit in a few paragraphs (rich text): the sentences `learnid-cli identify` prints
 /// (LogIdentificationSummary: the robot, logs and samples, how the determined directions relate
 /// to the standard and base parameters, the base parameters left mostly undetermined by name,
-/// the rows dropped from each log), the consistency verdict and the training residual per joint.
+/// the rows dropped from each log), the verdict on the identified parameters with its table per
+/// link (LinkVerdictTable) and the training residual per joint.
 QString logIdentificationSummaryHtml(const LogIdentificationResult &result);
 
 /// One line for the message bar: identified, and the first validation log's overall figure

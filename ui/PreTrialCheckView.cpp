@@ -31,6 +31,7 @@ PreTrialCheckView::PreTrialCheckView(QWidget *parent)
     m_verdict->setWordWrap(true);
     m_verdict->setMargin(6);
     m_stability->setWordWrap(true);
+    m_duration->setWordWrap(true); // a long line (German) must not widen the window
     m_torques->setHorizontalHeaderLabels(
         {tr("Joint"), tr("Peak [N m]"), tr("Limit [N m]"), tr("Use"), tr("Gravity")});
     m_torques->horizontalHeaderItem(4)->setToolTip(

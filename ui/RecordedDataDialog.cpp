@@ -18,6 +18,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -137,7 +138,12 @@ void RecordedDataDialog::buildLayout()
     inputLayout->addWidget(m_stage);
     auto *fit = new QGroupBox(tr("Fit"));
     auto *fitLayout = new QVBoxLayout(fit);
-    fitLayout->addWidget(m_summary);
+    // The fit's text grows with the robot (a row per link): it scrolls rather than being cut.
+    auto *summaryScroll = new QScrollArea;
+    summaryScroll->setWidget(m_summary);
+    summaryScroll->setWidgetResizable(true);
+    summaryScroll->setFrameShape(QFrame::NoFrame);
+    fitLayout->addWidget(summaryScroll);
     auto *logRow = new QHBoxLayout;
     logRow->addWidget(new QLabel(tr("Validation on:")));
     logRow->addWidget(m_validationLog, 1);
@@ -149,8 +155,16 @@ void RecordedDataDialog::buildLayout()
     auto *leftLayout = new QVBoxLayout(left);
     leftLayout->setContentsMargins(0, 0, 0, 0);
     leftLayout->addWidget(inputs);
-    leftLayout->addWidget(fit);
-    leftLayout->addWidget(validation, 1);
+    // The fit's text (with its per-link table) and the validation table share what is left, and
+    // the technician can drag between them: neither squeezes the other to a row.
+    auto *results = new QSplitter(Qt::Vertical);
+    results->setChildrenCollapsible(false);
+    results->addWidget(fit);
+    results->addWidget(validation);
+    results->setStretchFactor(0, 1);
+    results->setStretchFactor(1, 1);
+    results->setSizes({1, 1});
+    leftLayout->addWidget(results, 1);
     left->setMinimumWidth(480);
 
     auto *plots = new QGroupBox(tr("Predicted against measured torque (validation log)"));

@@ -1,6 +1,7 @@
 #include "ui/RobotPanel.h"
 
 #include <QCanBus>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QIcon>
@@ -19,6 +20,8 @@ RobotPanel::RobotPanel(QWidget *parent)
     , m_interface(new QLineEdit(QStringLiteral("can0"), m_canFields))
     , m_nodes(new QLineEdit(QStringLiteral("1,2"), m_canFields))
     , m_syncTimeout(new QSpinBox(m_canFields))
+    , m_commission(new QCheckBox(
+          tr("First commissioning: I confirmed each node's joint on the arm"), m_canFields))
     , m_connect(new QPushButton(QIcon(QStringLiteral(":/icons/connect.svg")), tr("Connect"), this))
     , m_state(new QLabel(this))
 {
@@ -27,6 +30,7 @@ RobotPanel::RobotPanel(QWidget *parent)
     m_interface->setObjectName(QStringLiteral("canInterface"));
     m_nodes->setObjectName(QStringLiteral("canNodes"));
     m_syncTimeout->setObjectName(QStringLiteral("canSyncTimeout"));
+    m_commission->setObjectName(QStringLiteral("canCommission"));
     m_connect->setObjectName(QStringLiteral("connectButton"));
     m_kind->addItem(tr("Simulated (the scenario's robot)"), int(RobotKind::Simulated));
     m_kind->addItem(tr("CAN (CANopen / CiA 402)"), int(RobotKind::Can));
@@ -36,10 +40,16 @@ RobotPanel::RobotPanel(QWidget *parent)
                             "to try learnid-robot-sim first"));
     m_interface->setToolTip(tr("e.g. can0 (socketcan) or tcp://127.0.0.1:35468/can0 (virtualcan)"));
     m_nodes->setToolTip(tr("CANopen node id of joint 1, 2, ... (docs/can-protocol.md)"));
-    m_syncTimeout->setRange(4, 60000);
-    m_syncTimeout->setValue(20);
+    m_syncTimeout->setRange(0, 60000);
+    m_syncTimeout->setValue(0);
+    m_syncTimeout->setSpecialValueText(tr("10 SYNC periods, at least 50 ms"));
     m_syncTimeout->setSuffix(tr(" ms"));
     m_syncTimeout->setToolTip(tr("A trial stops when no SYNC arrives for this long"));
+    m_commission->setToolTip(
+        tr("Only for drives never commissioned (or taken from another robot): tick it after "
+           "checking on the arm that the drive of each node (its serial number on the type "
+           "plate) moves the joint the node is listed for. Apply then stores the joint identity "
+           "in the drives, and later sessions check it without this (docs/can-protocol.md 2.4)."));
 
     auto *can = new QFormLayout(m_canFields);
     can->setContentsMargins(0, 0, 0, 0);
@@ -47,6 +57,7 @@ RobotPanel::RobotPanel(QWidget *parent)
     can->addRow(tr("Interface:"), m_interface);
     can->addRow(tr("Nodes:"), m_nodes);
     can->addRow(tr("SYNC timeout:"), m_syncTimeout);
+    can->addRow(tr("Drives:"), m_commission);
 
     auto *layout = new QFormLayout(this);
     layout->addRow(tr("Robot:"), m_kind);
@@ -94,6 +105,7 @@ std::optional<RobotRequest> RobotPanel::choice(QString *error, double samplePeri
     c.can.interface = m_interface->text().trimmed();
     setSyncPeriod(c.can, samplePeriod);
     setSyncTimeoutMs(c.can, m_syncTimeout->value());
+    c.can.commissioning = m_commission->isChecked();
     QString why;
     c.can.nodes = parseNodeList(m_nodes->text(), &why);
     if (c.can.nodes.isEmpty())

@@ -5,6 +5,7 @@
 #include <QWidget>
 #include <optional>
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -15,7 +16,8 @@ class QWidget;
 namespace learnid {
 
 /// Robot choice and connection: Simulated (the default) or CAN (plugin, interface, the node
-/// of each joint, the SYNC timeout), the Connect button and the robot's state.
+/// of each joint, the SYNC timeout, first commissioning: learnid-cli's --commission), the
+/// Connect button and the robot's state.
 class RobotPanel : public QWidget
 {
     Q_OBJECT
@@ -52,6 +54,7 @@ private:
     QLineEdit *m_interface;
     QLineEdit *m_nodes;
     QSpinBox *m_syncTimeout;
+    QCheckBox *m_commission;
     QPushButton *m_connect;
     QLabel *m_state;
     bool m_connected = false;

@@ -3,6 +3,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QFontMetricsF>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSet>
@@ -52,6 +53,9 @@ TrackingErrorPlot::TrackingErrorPlot(QWidget *parent)
     delete placeholder;
     m_view->setRenderHint(QPainter::Antialiasing);
     m_view->setMinimumSize(360, 240);
+    // After the layout: what fits depends on the plot's size.
+    connect(m_chart, &QChart::plotAreaChanged, this, &TrackingErrorPlot::fitLabels,
+            Qt::QueuedConnection);
 
     auto *controls = new QHBoxLayout;
     controls->addWidget(new QLabel(tr("Show:"), this));
@@ -241,6 +245,7 @@ void TrackingErrorPlot::redraw()
     double maxAbs = 0.0, tMax = 0.0, yMin = 0.0, yMax = 0.0;
     int used = 0;
     QSet<QAbstractSeries *> inLegend;
+    m_jointEntries.clear();
     for (int order = 0; order < shown.size(); ++order) {
         for (const TrackingErrorCurve &curve : m_trials.at(shown.at(order))) {
             if (!drawn(curve))
@@ -254,8 +259,10 @@ void TrackingErrorPlot::redraw()
             const bool last = order == shown.size() - 1;
             if (!overlay || joint < 0) {
                 series->setName(jointLabel(curve.joint, m_jointNames));
-                if (!overlay || last)
+                if (!overlay || last) {
                     inLegend.insert(series);
+                    m_jointEntries.append({series, curve.joint});
+                }
             } else {
                 series->setName(trialLabel(shown.at(order)));
                 if (order == 0 || last)
@@ -283,6 +290,27 @@ void TrackingErrorPlot::redraw()
     const int ticks =
         m_view->isVisible() ? std::clamp(int(0.6 * m_view->height() / 30.0), 4, 12) : 12;
     setErrorAxis(m_error, m_autoScale->isChecked(), maxAbs, yMin, yMax, ticks);
+    fitLabels();
+}
+
+void TrackingErrorPlot::fitLabels()
+{
+    const QRectF plot = m_chart->plotArea();
+    const QString title =
+        fittedErrorAxisTitle(QFontMetricsF(m_error->titleFont()),
+                             plot.height() > 0 ? plot.height() : m_chart->size().height());
+    if (m_error->titleText() != title)
+        m_error->setTitleText(title);
+    QList<int> joints;
+    for (const auto &entry : std::as_const(m_jointEntries))
+        joints.append(entry.second);
+    const QRectF legend = m_chart->legend()->geometry();
+    const qreal width = legend.width() > 0 ? legend.width() : m_chart->size().width();
+    const QStringList labels =
+        fittedJointLabels(joints, m_jointNames, QFontMetricsF(m_chart->legend()->font()), width);
+    for (int i = 0; i < m_jointEntries.size(); ++i)
+        if (m_jointEntries.at(i).first->name() != labels.at(i))
+            m_jointEntries.at(i).first->setName(labels.at(i));
 }
 
 } // namespace learnid

@@ -2,6 +2,7 @@
 
 #include "service/TrackingErrorData.h"
 
+#include <QPair>
 #include <QStringList>
 #include <QWidget>
 
@@ -65,6 +66,9 @@ private:
     QString trialLabel(int trial) const;
     /// Rebuilds the joint selector for `count` joints, keeping the selected joint if it remains.
     void setJointCount(int count);
+    /// Shortens the error axis's title and the joints' legend entries to what the chart's size
+    /// shows in full (fittedErrorAxisTitle, fittedJointLabels).
+    void fitLabels();
 
     QComboBox *m_selection;
     QComboBox *m_joint;
@@ -73,8 +77,9 @@ private:
     QChart *m_chart;
     QValueAxis *m_time;
     QValueAxis *m_error;
-    QList<QList<TrackingErrorCurve>> m_trials; ///< by trial index
-    QList<QLineSeries *> m_series;             ///< in the chart, in drawing order
+    QList<QList<TrackingErrorCurve>> m_trials;       ///< by trial index
+    QList<QLineSeries *> m_series;                   ///< in the chart, in drawing order
+    QList<QPair<QLineSeries *, int>> m_jointEntries; ///< legend entries named by joint
     QStringList m_jointNames;
     int m_jointCount = 0;
     bool m_followNewest = true;

@@ -3,8 +3,10 @@
 #include "service/TrackingErrorData.h"
 
 #include <QCoreApplication>
+#include <QFontMetricsF>
 #include <QtCharts/QValueAxis>
 #include <algorithm>
+#include <functional>
 
 namespace learnid {
 
@@ -52,6 +54,49 @@ QString jointLabel(int joint, const QStringList &names)
     return QCoreApplication::translate("learnid::TrackingErrorPlot", "Joint %1 (%2)")
         .arg(joint + 1)
         .arg(name);
+}
+
+QStringList fittedJointLabels(const QList<int> &joints, const QStringList &names,
+                              const QFontMetricsF &metrics, qreal width)
+{
+    bool allNamed = true;
+    for (const int j : joints)
+        allNamed = allNamed && j >= 0 && j < names.size() && !names.at(j).isEmpty();
+    QList<std::function<QString(int)>> forms{[&names](int j) {
+        return jointLabel(j, names);
+    }};
+    if (allNamed)
+        forms.append([&names](int j) { return names.at(j); });
+    forms.append([](int j) {
+        return QCoreApplication::translate("learnid::TrackingErrorPlot", "Joint %1").arg(j + 1);
+    });
+    forms.append([](int j) { return QString::number(j + 1); });
+    // Each entry: its marker (a square of the font's height) and spacing around it and the text.
+    const qreal share = width / qreal(std::max<qsizetype>(1, joints.size()));
+    const qreal textWidth = share - 2.0 * metrics.height() - 8.0;
+    QStringList labels;
+    for (const auto &form : std::as_const(forms)) {
+        labels.clear();
+        bool fits = true;
+        for (const int j : joints) {
+            labels.append(form(j));
+            fits = fits && metrics.horizontalAdvance(labels.constLast()) <= textWidth;
+        }
+        if (fits)
+            break;
+    }
+    return labels; // the shortest form when none fits
+}
+
+QString fittedErrorAxisTitle(const QFontMetricsF &metrics, qreal height)
+{
+    const QString titles[] = {
+        QCoreApplication::translate("learnid::TrackingErrorPlot", "Tracking error [deg]"),
+        QCoreApplication::translate("learnid::TrackingErrorPlot", "Error [deg]")};
+    for (const QString &title : titles)
+        if (metrics.horizontalAdvance(title) + metrics.height() <= height)
+            return title;
+    return QCoreApplication::translate("learnid::TrackingErrorPlot", "[deg]");
 }
 
 void setTimeAxis(QValueAxis *axis, double tMax)

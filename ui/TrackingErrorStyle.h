@@ -4,6 +4,7 @@
 #include <QString>
 #include <QStringList>
 
+class QFontMetricsF;
 class QValueAxis;
 
 namespace learnid {
@@ -18,6 +19,15 @@ Qt::PenStyle jointPenStyle(int joint);
 QColor trialShade(const QColor &base, int order, int count);
 /// "Joint 3" or, with a name, "Joint 3 (panda_joint3)" (joint: 0-based).
 QString jointLabel(int joint, const QStringList &names);
+/// The legend's labels of joints (0-based) side by side in width [px], each at most its share
+/// less the marker (metrics: the legend's font): the longest form that fits them all, of
+/// "Joint 3 (panda_joint3)", the names alone ("panda_joint3", when every joint has one),
+/// "Joint 3", "3". QtCharts elides what does not fit ("Joint 1 (panda_join...").
+QStringList fittedJointLabels(const QList<int> &joints, const QStringList &names,
+                              const QFontMetricsF &metrics, qreal width);
+/// The error axis's title in a plot height [px] high (metrics: the title's font): "Tracking
+/// error [deg]", else "Error [deg]", else "[deg]".
+QString fittedErrorAxisTitle(const QFontMetricsF &metrics, qreal height);
 
 /// The time axis [s] over [0, tMax] with ticks at round steps.
 void setTimeAxis(QValueAxis *axis, double tMax);

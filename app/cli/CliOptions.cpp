@@ -19,8 +19,11 @@ QString usageText()
     return QCoreApplication::translate(
         "learnid-cli",
         "Usage:\n"
-        "  learnid-cli scenario --print\n"
-        "      Print the default scenario (the paper scenario) as JSON.\n"
+        "  learnid-cli scenario --print [--robot ROBOT]\n"
+        "      Print a complete scenario as JSON. ROBOT: paper (the default: the paper\n"
+        "      scenario), panda, puma560, double-pendulum or a URDF file; for a robot\n"
+        "      other than paper, the gains the window designs for it and a path of\n"
+        "      joint waypoints inside its limits.\n"
         "  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]\n"
         "                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]\n"
         "                  [--consistent] [--workspace DIR] [--quiet]\n"
@@ -87,20 +90,28 @@ CommandLine parseCommandLine(const QStringList &args)
     const QCommandLineOption print(
         QStringLiteral("print"),
         QCoreApplication::translate("learnid-cli", "Print the default scenario."));
+    const QCommandLineOption robot(
+        QStringLiteral("robot"),
+        QCoreApplication::translate("learnid-cli",
+                                    "The robot: paper (default), panda, puma560, double-pendulum, "
+                                    "or a URDF file."),
+        QStringLiteral("robot"));
     if (command == QLatin1String("scenario")) {
-        parser.addOptions({print, help});
+        parser.addOptions({print, robot, help});
         if (!parser.parse(args.mid(1))) {
             cl.error = parser.errorText();
         } else if (parser.isSet(help)) {
             cl.command = CommandLine::Command::Help;
-            cl.usage = commandHelp(
-                command,
-                QCoreApplication::translate("learnid-cli", "Print the default scenario as JSON."),
-                parser);
+            cl.usage =
+                commandHelp(command,
+                            QCoreApplication::translate(
+                                "learnid-cli", "Print a complete scenario for a robot as JSON."),
+                            parser);
         } else if (!parser.isSet(print) || !parser.positionalArguments().isEmpty()) {
             cl.error = QCoreApplication::translate("learnid-cli", "'scenario' needs --print");
         } else {
             cl.command = CommandLine::Command::PrintScenario;
+            cl.scenarioRobot = parser.value(robot);
         }
         return cl;
     }

@@ -57,6 +57,9 @@ struct CommandLine
     RunOptions run;
     IdentifyOptions identify;
     LoopOptions loop; ///< `plan` and `learn`
+    /// `scenario --print --robot R`: paper, panda, puma560, double-pendulum or a URDF file;
+    /// empty: the paper scenario.
+    QString scenarioRobot;
     QString error;
     ExitCode errorCode = ExitUsage; ///< ExitUsage for syntax, ExitBadInput for a bad value
     QString usage;

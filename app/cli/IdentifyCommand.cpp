@@ -142,7 +142,8 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
         };
         const LogIdentificationResult result = identifyFromLogs(robot, request, stage);
         QString text = identifySummary(result) + modelWarningText(result.robot.warnings) +
-                       QLatin1Char('\n') + trainingTable(model, result.fit) + QLatin1Char('\n') +
+                       QLatin1Char('\n') + verdictTable(result) + QLatin1Char('\n') +
+                       trainingTable(model, result.fit) + QLatin1Char('\n') +
                        parameterTable(model, result.fit);
         for (const LogValidation &v : result.validation) {
             text += QLatin1Char('\n') + validationTable(model, v.source,

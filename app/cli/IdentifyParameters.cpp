@@ -1,5 +1,7 @@
 #include "cli/IdentifyParameters.h"
 
+#include "cli/IdentifyTable.h"
+
 #include "model/ChainModel.h"
 #include "service/StandardExport.h"
 
@@ -28,11 +30,14 @@ QString parameterTable(const ChainModel &model, const LogFit &fit)
         groupWidth = std::max(groupWidth, int(p.group.size()));
         nameWidth = std::max(nameWidth, int(p.name.size() + p.unit.size() + 3));
     }
+    QString title = wrapText(QCoreApplication::translate(
+        "learnid-cli",
+        "standard parameters: the URDF's, the identified, and what the data determined (share of "
+        "the parameter's direction; at least 0.5: the data's, below: undetermined, kept near the "
+        "prior, which the data still move a little)"));
+    title.chop(1);
     QStringList lines{
-        QCoreApplication::translate(
-            "learnid-cli",
-            "standard parameters: the URDF's, the identified, and what the data determined "
-            "(share of the parameter's direction; at least 0.5: data, below: kept from the prior)"),
+        title,
         QCoreApplication::translate("learnid-cli", "link or joint").leftJustified(groupWidth) +
             QLatin1Char(' ') +
             QCoreApplication::translate("learnid-cli", "parameter").leftJustified(nameWidth) +
@@ -42,7 +47,7 @@ QString parameterTable(const ChainModel &model, const LogFit &fit)
             QCoreApplication::translate("learnid-cli", "identified").rightJustified(12) +
             QLatin1Char(' ') +
             QCoreApplication::translate("learnid-cli", "determined").rightJustified(10) +
-            QLatin1Char(' ') + QCoreApplication::translate("learnid-cli", "from")};
+            QLatin1Char(' ') + QCoreApplication::translate("learnid-cli", "source")};
     for (int i = 0; i < int(info.size()); ++i) {
         const ParameterInfo &p = info.at(i);
         const double share = size_t(i) < fit.standardDetermined.size()
@@ -60,13 +65,14 @@ QString parameterTable(const ChainModel &model, const LogFit &fit)
     return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }
 
-QString modelWarningText(const QStringList &warnings)
+QString modelWarningText(const QStringList &warnings, int width)
 {
     QString text;
     for (const QString &w : warnings)
-        text +=
-            QCoreApplication::translate("learnid-cli", "warning: the URDF as a real robot: %1\n")
-                .arg(w);
+        text += wrapText(
+            QCoreApplication::translate("learnid-cli", "warning: the URDF as a real robot: %1")
+                .arg(w),
+            width);
     return text;
 }
 

@@ -2,12 +2,42 @@
 
 #include <QBuffer>
 #include <QFontDatabase>
+#include <QFontMetrics>
 #include <QImage>
 #include <QPageSize>
 #include <QPainter>
 #include <QPdfWriter>
 
 namespace learnid::cli {
+
+namespace {
+
+// row as lines no wider than width on the page: broken at the last space that fits (or, without
+// one, at the last character that fits), each continuation indented two spaces more than row.
+QStringList fittingLines(const QString &row, const QFontMetrics &metrics, int width)
+{
+    QStringList lines;
+    QString rest = row;
+    int indent = 0;
+    while (indent < rest.size() && rest[indent] == QLatin1Char(' '))
+        ++indent;
+    const QString continuation(indent + 2, QLatin1Char(' '));
+    while (metrics.horizontalAdvance(rest) > width) {
+        int fit = rest.size() - 1;
+        while (fit > 1 && metrics.horizontalAdvance(rest.left(fit)) > width)
+            --fit;
+        const int space = rest.lastIndexOf(QLatin1Char(' '), fit);
+        const int cut = space > continuation.size() ? space : fit;
+        if (cut <= continuation.size())
+            break; // nothing left to break at: draw the rest as it is
+        lines << rest.left(cut);
+        rest = continuation + rest.mid(cut).trimmed();
+    }
+    lines << rest;
+    return lines;
+}
+
+} // namespace
 
 QByteArray identifyReportPdf(const QString &title, const QString &text,
                              const QList<QByteArray> &plots)
@@ -37,12 +67,14 @@ QByteArray identifyReportPdf(const QString &title, const QString &text,
     p.setFont(mono);
     const int line = p.fontMetrics().lineSpacing();
     for (const QString &row : text.split(QLatin1Char('\n'))) {
-        if (y + line > page.height()) {
-            writer.newPage();
-            y = 0;
+        for (const QString &part : fittingLines(row, p.fontMetrics(), page.width())) {
+            if (y + line > page.height()) {
+                writer.newPage();
+                y = 0;
+            }
+            y += line;
+            p.drawText(0, y, part);
         }
-        y += line;
-        p.drawText(0, y, row);
     }
     for (const QByteArray &png : plots) {
         QImage image;

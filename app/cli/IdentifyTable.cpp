@@ -2,6 +2,7 @@
 
 #include "model/ChainModel.h"
 #include "service/LogIdentificationSummary.h"
+#include "session/LinkVerdictTable.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -40,9 +41,9 @@ QString jointHeader(int width)
            QCoreApplication::translate("learnid-cli", "name").leftJustified(width);
 }
 
-// text in lines of at most width characters (a longer word on a line of its own), the lines
-// after the first indented by two spaces.
-QString wrapped(const QString &text, int width)
+} // namespace
+
+QString wrapText(const QString &text, int width)
 {
     QStringList lines;
     QString line;
@@ -60,8 +61,6 @@ QString wrapped(const QString &text, int width)
     return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }
 
-} // namespace
-
 QString identifySummary(const LogIdentificationResult &result, int width)
 {
     const LogIdentificationSummary s = summarizeLogIdentification(result);
@@ -72,8 +71,14 @@ QString identifySummary(const LogIdentificationResult &result, int width)
                         .arg(result.consistency.join(QStringLiteral("; ")))};
     QString text;
     for (const QString &sentence : sentences)
-        text += wrapped(sentence, width);
+        text += wrapText(sentence, width);
     return text;
+}
+
+QString verdictTable(const LogIdentificationResult &result, int width)
+{
+    const LinkVerdictTable table = linkVerdictTable(result.model(), result.verdict);
+    return wrapText(table.title, width) + linkVerdictText(table);
 }
 
 QString trainingTable(const ChainModel &model, const LogFit &fit)

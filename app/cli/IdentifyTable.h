@@ -20,6 +20,15 @@ namespace learnid::cli {
 /// they are).
 QString identifySummary(const LogIdentificationResult &result, int width = 100);
 
+/// text in lines of at most width characters (a longer word on a line of its own), the lines
+/// after the first indented by two spaces, each ended by a newline.
+QString wrapText(const QString &text, int width = 100);
+
+/// One row per link (LinkVerdictTable): its smallest principal moment about the centre of mass
+/// and the CAD link's, (I1 + I2) / I3, the centre of mass inside its bounding volume, consistent
+/// and plausible; the title above wrapped at width.
+QString verdictTable(const LogIdentificationResult &result, int width = 100);
+
 /// One row per joint: the RMS of the fitted torque's residual on the --log files [N m].
 QString trainingTable(const ChainModel &model, const LogFit &fit);
 

@@ -11,7 +11,4 @@ namespace learnid::cli {
 /// progress and errors to err, and the requested files only when every trial completed.
 ExitCode runCommand(const RunOptions &options, QTextStream &out, QTextStream &err);
 
-/// `learnid-cli scenario --print`.
-ExitCode printScenarioCommand(QTextStream &out);
-
 } // namespace learnid::cli

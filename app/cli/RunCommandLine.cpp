@@ -2,6 +2,7 @@
 
 #include "cli/CliOptions.h"
 #include "io/OutputPath.h"
+#include "io/ParameterFile.h"
 #include "model/Error.h"
 
 #include <QCommandLineParser>
@@ -34,7 +35,7 @@ QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOpti
                     .arg(name);
             }
         }
-        for (const char *name : {"can-log", "can-sync-timeout"}) {
+        for (const char *name : {"can-log", "can-sync-timeout", "commission", "can-drives"}) {
             if (parser.isSet(QLatin1String(name))) {
                 run->robot.clear();
                 return QCoreApplication::translate("learnid-cli", "--%1 needs --robot can")
@@ -52,6 +53,21 @@ QString parseCanOptions(const QCommandLineParser &parser, const QCommandLineOpti
                                                "--robot can needs --can-interface (e.g. can0)");
         run->can.plugin = parser.value(plugin);
         run->can.interface = parser.value(interface);
+        run->can.commissioning = parser.isSet(QStringLiteral("commission"));
+        if (parser.isSet(QStringLiteral("can-drives"))) {
+            const QString file = parser.value(QStringLiteral("can-drives"));
+            try {
+                run->can.recordedDrives = readParameterFile(file).drives;
+            } catch (const Error &e) {
+                return QCoreApplication::translate("learnid-cli", "--can-drives: %1")
+                    .arg(e.message());
+            }
+            if (run->can.recordedDrives.isEmpty())
+                return QCoreApplication::translate(
+                           "learnid-cli", "--can-drives: %1 records no drives (robot.drives): "
+                                          "export it from a session on CAN drives")
+                    .arg(file);
+        }
     } // a replay's device (candump/replay) is the robot factory's (makeRobot)
     if (parser.isSet(nodes)) {
         QString error;
@@ -142,6 +158,15 @@ void parseRunCommandLine(const QStringList &args, CommandLine *cl)
                   QT_TRANSLATE_NOOP("learnid-cli",
                                     "Write each trial's CAN frames as a candump log into DIR."),
                   "DIR");
+    const QCommandLineOption commission = cliOption(
+        "commission",
+        QT_TRANSLATE_NOOP("learnid-cli", "First commissioning: you confirmed that each node is the "
+                                         "drive of its joint (docs/can-protocol.md 2.4)."));
+    const QCommandLineOption canDrives =
+        cliOption("can-drives",
+                  QT_TRANSLATE_NOOP("learnid-cli", "A parameter file of this robot: its drives' "
+                                                   "identities (0x1018) must match."),
+                  "FILE");
     const QCommandLineOption candump =
         cliOption("candump",
                   QT_TRANSLATE_NOOP("learnid-cli",
@@ -157,7 +182,8 @@ void parseRunCommandLine(const QStringList &args, CommandLine *cl)
     if (replay)
         parser.addOption(candump);
     else
-        parser.addOptions({robot, canPlugin, canInterface, canLog, canSyncTimeout});
+        parser.addOptions(
+            {robot, canPlugin, canInterface, canLog, canSyncTimeout, commission, canDrives});
     const auto usage = [&] {
         return commandHelp(
             command,
@@ -204,14 +230,7 @@ void parseRunCommandLine(const QStringList &args, CommandLine *cl)
                                                     "'replay' needs at least one --candump FILE");
             return;
         }
-        if (run.iterations && *run.iterations > run.candumpFiles.size()) {
-            cl->error = QCoreApplication::translate(
-                            "learnid-cli", "--iterations: %1 trials need %1 logs, %2 given")
-                            .arg(*run.iterations)
-                            .arg(run.candumpFiles.size());
-            cl->errorCode = ExitBadInput;
-            return;
-        }
+        // --iterations against the trials the logs hold: runCommand, once they are read.
     }
     run.apply = parser.isSet(apply);
     run.consistent = parser.isSet(consistent);

@@ -2,6 +2,7 @@
 #include "cli/IdentifyCommand.h"
 #include "cli/LoopCommands.h"
 #include "cli/RunCommand.h"
+#include "cli/ScenarioCommand.h"
 #include "cli/TorquePlotPng.h"
 #include "translations/Translations.h"
 
@@ -36,7 +37,7 @@ int main(int argc, char **argv)
         out << QStringLiteral("learnid-cli %1\n").arg(QStringLiteral(LEARNID_VERSION));
         return ExitOk;
     case CommandLine::Command::PrintScenario:
-        return printScenarioCommand(out);
+        return printScenarioCommand(cl.scenarioRobot, out, err);
     case CommandLine::Command::Run:
     case CommandLine::Command::Replay:
         return runCommand(cl.run, out, err);

@@ -141,10 +141,15 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
         QCoreApplication::translate(
             "learnid-robot-sim",
             "SYNC periods in Operation enabled without a set-point before a drive faults with "
-            "EMCY 0x8100 (default 3; raise it on a heavily loaded machine)."),
+            "EMCY 0x8100 (default: 3 periods, at least 50 ms)."),
         QCoreApplication::translate("learnid-robot-sim", "N"));
+    const QCommandLineOption uncommissioned(
+        QStringLiteral("uncommissioned"),
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "Drives that were never commissioned: 0x2400 is 0 (by default "
+                                    "joint j's drive holds the robot's identity and j)."));
     parser.addOptions({help, version, plugin, interface, nodes, scenario, state, drop, silent, emcy,
-                       refuse, setPointTimeout});
+                       refuse, setPointTimeout, uncommissioned});
     cl.usage = parser.helpText();
 
     if (!parser.parse(arguments)) {
@@ -217,6 +222,7 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
     if (error.isEmpty() && parser.isSet(refuse))
         error = parseRefusal(parser.value(refuse), &o.faults);
     o.scenarioPath = parser.value(scenario);
+    o.uncommissioned = parser.isSet(uncommissioned);
     o.statePath = parser.value(state);
     if (!error.isEmpty()) {
         cl.error = error;

@@ -24,7 +24,8 @@ struct SimOptions
     QString scenarioPath; ///< empty: the paper scenario
     QString statePath;    ///< empty: no state file
     CanSimFaults faults;
-    int setPointTimeoutSyncs = cansim::missedSetPointLimit;
+    bool uncommissioned = false;  ///< the drives' joint identity 0x2400 is 0
+    int setPointTimeoutSyncs = 0; ///< 0: 3 SYNC periods, at least 50 ms (can/CanTimeouts.h)
 };
 
 struct SimCommandLine

@@ -1,6 +1,7 @@
 #include "robot-sim/SimProcess.h"
 
 #include "can/CanLink.h"
+#include "can/SocketCanInterface.h"
 #include "can/TcpLowLatency.h"
 #include "cansim/CanArmSimulator.h"
 #include "cansim/ScenarioCanArm.h"
@@ -55,8 +56,7 @@ int SimProcess::run()
     const int code = m_loop.exec();
     if (m_simulator)
         m_simulator->stop();
-    if (m_device && m_device->state() != QCanBusDevice::UnconnectedState)
-        m_device->disconnectDevice();
+    closeCanDevice(m_device.get());
     return code;
 }
 
@@ -75,7 +75,10 @@ int SimProcess::setUp()
                 nodes << j;
         }
         settings = canArmSettings(scenario, model, nodes);
-        settings.setPointTimeoutSyncs = m_options.setPointTimeoutSyncs;
+        if (m_options.uncommissioned)
+            settings.robotIdentity = 0;
+        if (m_options.setPointTimeoutSyncs > 0)
+            settings.setPointTimeoutSyncs = m_options.setPointTimeoutSyncs;
     } catch (const Error &e) {
         m_err << tr("learnid-robot-sim: error: %1").arg(e.message()) << Qt::endl;
         return ExitUsage;
@@ -89,6 +92,7 @@ int SimProcess::setUp()
               << Qt::endl;
         return ExitFailure;
     }
+    prepareCanDevice(m_device.get(), m_options.plugin); // socketcan: the bitrate is ip link's
     m_link = std::make_unique<CanLink>(m_device.get());
     try {
         m_simulator = std::make_unique<CanArmSimulator>(m_link.get(), settings, m_options.faults);

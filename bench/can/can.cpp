@@ -4,7 +4,9 @@
 // KUKA LWR4+ (URDF of ../shared/data, SYNC every 4 ms): lost samples, late set-points, and the
 // time from a SYNC's arrival in the tool to its RPDOs written (median, 99th percentile).
 //   learnid-bench-can [--trials N] [--sim PATH] [--arm paper|lwr4|all] [--urdf FILE]
-//                     [--can-sync-timeout MS]   (default 20, as learnid-cli)
+//                     [--can-sync-timeout MS]   (default: the SYNC period's, as learnid-cli)
+//                     [--can-plugin socketcan --can-interface vcan0] [--lwr4-period-ms 4|5|10]
+// Over socketcan it needs a kernel with AF_CAN: ../shared/tools/can-kernel runs it in a VM.
 #include "BenchSupport.h"
 #include "canrobot/CanRobot.h"
 #include "io/ScenarioFile.h"
@@ -67,18 +69,25 @@ void busLoadTable()
     }
 }
 
-// The 7-axis scenario of docs/scenario.md ("Any serial arm") at a 4 ms SYNC period, the gains
-// scaled for it, as tests/app/tst_can_e2e_7axis.cpp runs it.
-QByteArray lwrScenarioJson(const QString &urdf)
+// The 7-axis scenario of docs/scenario.md ("Any serial arm") at a SYNC period of 4, 5 or 10 ms,
+// the gains scaled for it as tests/app/tst_can_e2e_7axis.cpp runs it: x 0.4 with lambda 400 at
+// 4 ms; x 0.2 (5 ms) and x 0.15 (10 ms) with lambda 150 and the wrist (joints 5, 6, 7) x 4, 4, 3
+// of that.
+QByteArray lwrScenarioJson(const QString &urdf, int periodMs)
 {
     const double kp[] = {340, 600, 100, 140, 15, 14, 11};
     const double ki[] = {34, 60, 10, 14, 1.5, 1.4, 1.1};
     const double kd[] = {45, 80, 14, 19, 2, 1.9, 1.5};
+    const double gain = periodMs <= 4 ? 0.4 : periodMs <= 5 ? 0.2 : 0.15;
+    const double wrist[] = {periodMs <= 4 ? 1.0 : 4.0, periodMs <= 4 ? 1.0 : 4.0,
+                            periodMs <= 4 ? 1.0 : 3.0};
+    const double lambda = periodMs <= 4 ? 400 : 150;
     QJsonArray p, i, d;
     for (int j = 0; j < 7; ++j) {
-        p.append(0.4 * kp[j]);
-        i.append(0.4 * ki[j]);
-        d.append(0.4 * kd[j]);
+        const double g = gain * (j >= 4 ? wrist[j - 4] : 1);
+        p.append(g * kp[j]);
+        i.append(g * ki[j]);
+        d.append(g * kd[j]);
     }
     const QJsonObject s{
         {"schema", "learnid-scenario/2"},
@@ -91,8 +100,11 @@ QByteArray lwrScenarioJson(const QString &urdf)
                                               QJsonArray{0.8, 0.8, 0.5, -0.6, 0.6, -0.4, 0.9},
                                               QJsonArray{-0.4, 0.5, -0.5, -1.4, -0.5, 0.6, -0.7}}},
                      {"planningFraction", 0.3}}},
-        {"controller",
-         QJsonObject{{"samplePeriod", 0.004}, {"kp", p}, {"ki", i}, {"kd", d}, {"lambda", 400}}},
+        {"controller", QJsonObject{{"samplePeriod", periodMs / 1000.0},
+                                   {"kp", p},
+                                   {"ki", i},
+                                   {"kd", d},
+                                   {"lambda", lambda}}},
         {"simulation", QJsonObject{{"inertiaPerturbation", 0.3},
                                    {"encoderCounts", 1048576},
                                    {"torqueNoise", 0.01}}},
@@ -100,22 +112,30 @@ QByteArray lwrScenarioJson(const QString &urdf)
     return QJsonDocument(s).toJson();
 }
 
-// Trials of the scenario's first plan against learnid-robot-sim on a free port; the samples lost
-// over all trials, or -1 when the simulator did not start.
+struct Bus
+{
+    QString plugin = QStringLiteral("virtualcan");
+    QString interface;     ///< socketcan: the interface; virtualcan: a free port is taken
+    int syncTimeoutMs = 0; ///< 0: the default of the SYNC period
+};
+
+// Trials of the scenario's first plan against learnid-robot-sim (virtualcan: on a free port);
+// the samples lost over all trials, or -1 when the simulator did not start.
 int runTrials(const QString &simPath, const QString &title, const QString &scenarioPath, int trials,
-              int syncTimeoutMs)
+              const Bus &bus)
 {
     Scenario scenario = scenarioPath.isEmpty() ? Scenario{} : readScenarioFile(scenarioPath);
     const auto model = makeRobotModel(scenario.model, scenario.urdf);
     scenario = withRobotDefaults(scenario, *model);
     const PreTrialCheck check = bench::makeSession(scenario)->checkNextTrial();
 
-    QTcpServer probe;
-    probe.listen(QHostAddress::LocalHost, 0);
-    const quint16 port = probe.serverPort();
-    probe.close();
-    const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
-    QStringList simArgs{QStringLiteral("--can-plugin"), QStringLiteral("virtualcan"),
+    QString interface = bus.interface;
+    if (bus.plugin == QLatin1String("virtualcan")) {
+        QTcpServer probe;
+        probe.listen(QHostAddress::LocalHost, 0);
+        interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(probe.serverPort());
+    }
+    QStringList simArgs{QStringLiteral("--can-plugin"), bus.plugin,
                         QStringLiteral("--can-interface"), interface};
     if (!scenarioPath.isEmpty())
         simArgs << QStringLiteral("--scenario") << scenarioPath;
@@ -125,24 +145,28 @@ int runTrials(const QString &simPath, const QString &title, const QString &scena
     QElapsedTimer wait;
     wait.start();
     bool ready = false;
-    while (!ready && wait.elapsed() < 10000 && sim.waitForReadyRead(500))
-        ready = sim.readAll().contains("ready");
+    // Up to 30 s: in the VM of ../shared/tools/can-kernel the simulator needs seconds to start.
+    while (!ready && wait.elapsed() < 30000 && sim.state() != QProcess::NotRunning) {
+        if (sim.waitForReadyRead(500))
+            ready = sim.readAll().contains("ready");
+    }
     if (!ready) {
         std::fprintf(stderr, "learnid-bench-can: %s did not get ready\n", qPrintable(simPath));
         return -1;
     }
 
     CanRobotOptions options;
-    options.plugin = QStringLiteral("virtualcan");
+    options.plugin = bus.plugin;
     options.interface = interface;
     options.nodes = defaultNodeList(model->dof());
     options.syncPeriod = scenario.controller.samplePeriod;
-    setSyncTimeoutMs(options, syncTimeoutMs);
-    std::printf("\n### %s: %d joints, SYNC every %.0f ms, bus load %s; %d samples per trial; "
-                "no SYNC for %d ms stops a trial\n",
-                qPrintable(title), model->dof(), 1000 * scenario.controller.samplePeriod,
+    setSyncTimeoutMs(options, bus.syncTimeoutMs);
+    std::printf("\n### %s: %d joints over %s %s, SYNC every %.0f ms, bus load %s; %d samples per "
+                "trial; no SYNC for %d ms stops a trial\n",
+                qPrintable(title), model->dof(), qPrintable(bus.plugin), qPrintable(interface),
+                1000 * scenario.controller.samplePeriod,
                 qPrintable(configuredBusLoad(options).text(options.bitrate)), check.plan.samples(),
-                syncTimeoutMs);
+                effectiveSyncTimeoutMs(options));
     CanRobot robot(model, options);
     const QString startLoad = loadAverage();
     std::vector<double> latency;
@@ -192,8 +216,21 @@ int main(int argc, char **argv)
     const QString simPath =
         option(args, QStringLiteral("--sim"), QStringLiteral(LEARNID_ROBOT_SIM_PATH));
     const QString arm = option(args, QStringLiteral("--arm"), QStringLiteral("all"));
-    const int syncTimeoutMs =
-        option(args, QStringLiteral("--can-sync-timeout"), QStringLiteral("20")).toInt();
+    Bus bus;
+    bus.syncTimeoutMs =
+        option(args, QStringLiteral("--can-sync-timeout"), QStringLiteral("0")).toInt();
+    bus.plugin = option(args, QStringLiteral("--can-plugin"), bus.plugin);
+    bus.interface = option(args, QStringLiteral("--can-interface"), QStringLiteral("vcan0"));
+    const int lwrPeriodMs =
+        option(args, QStringLiteral("--lwr4-period-ms"), QStringLiteral("4")).toInt();
+    if (bus.plugin != QLatin1String("virtualcan") && bus.plugin != QLatin1String("socketcan")) {
+        std::fprintf(stderr, "learnid-bench-can: --can-plugin is virtualcan or socketcan\n");
+        return 1;
+    }
+    if (lwrPeriodMs != 4 && lwrPeriodMs != 5 && lwrPeriodMs != 10) {
+        std::fprintf(stderr, "learnid-bench-can: --lwr4-period-ms is 4, 5 or 10\n");
+        return 1;
+    }
     const QString data = qEnvironmentVariable("LEARNID_DATA", QStringLiteral(LEARNID_SHARED_DATA));
     const QString urdf = option(args, QStringLiteral("--urdf"),
                                 QDir(data).filePath(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf")));
@@ -201,7 +238,7 @@ int main(int argc, char **argv)
 
     int lost = 0;
     if (arm == QLatin1String("paper") || arm == QLatin1String("all")) {
-        const int l = runTrials(simPath, QStringLiteral("paper arm"), {}, trials, syncTimeoutMs);
+        const int l = runTrials(simPath, QStringLiteral("paper arm"), {}, trials, bus);
         if (l < 0)
             return 1;
         lost += l;
@@ -213,13 +250,12 @@ int main(int argc, char **argv)
             return 1;
         }
         QTemporaryDir dir;
-        const QString scenario = dir.filePath(QStringLiteral("lwr4-4ms.json"));
+        const QString scenario = dir.filePath(QStringLiteral("lwr4-%1ms.json").arg(lwrPeriodMs));
         QFile f(scenario);
-        if (!f.open(QIODevice::WriteOnly) || f.write(lwrScenarioJson(urdf)) < 0)
+        if (!f.open(QIODevice::WriteOnly) || f.write(lwrScenarioJson(urdf, lwrPeriodMs)) < 0)
             return 1;
         f.close();
-        const int l =
-            runTrials(simPath, QStringLiteral("KUKA LWR4+"), scenario, trials, syncTimeoutMs);
+        const int l = runTrials(simPath, QStringLiteral("KUKA LWR4+"), scenario, trials, bus);
         if (l < 0)
             return 1;
         lost += l;

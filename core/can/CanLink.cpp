@@ -44,7 +44,9 @@ void CanLink::readFrames()
     // deliver received frames through the event loop.
     const QList<QCanBusFrame> frames = m_device->readAllFrames();
     for (const QCanBusFrame &frame : frames) {
-        if (frame.isValid())
+        if (frame.frameType() == QCanBusFrame::ErrorFrame)
+            emit errorFrameReceived(frame);
+        else if (frame.isValid())
             emit frameReceived(frame);
     }
 }

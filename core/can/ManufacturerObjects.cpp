@@ -1,5 +1,6 @@
 #include "can/ManufacturerObjects.h"
 
+#include "can/JointIdentity.h"
 #include "can/SdoAbortCode.h"
 #include "model/Error.h"
 
@@ -111,7 +112,8 @@ PdoMapping trialTpdoMapping()
                        {statusword, 0, DataType::Unsigned16}});
 }
 
-SdoWriteSequence parameterWriteSequence(const QList<int> &nodes, const Eigen::VectorXd &phi)
+SdoWriteSequence parameterWriteSequence(const QList<int> &nodes, const Eigen::VectorXd &phi,
+                                        quint32 robotIdentity)
 {
     if (nodes.isEmpty())
         throw Error(Text::tr("No node to write the parameters to."));
@@ -143,6 +145,8 @@ SdoWriteSequence parameterWriteSequence(const QList<int> &nodes, const Eigen::Ve
             writes << SdoWrite::make(id, identifiedParameters, quint8(i + 1), DataType::Real32,
                                      phi[i]);
     }
+    if (robotIdentity != 0) // the joint identity, stored with the parameters
+        writes << jointIdentityWrites(nodes, robotIdentity);
     for (const int node : nodes) {
         writes << SdoWrite::make(quint8(node), storeParameters, storeAll, DataType::Unsigned32,
                                  double(saveSignature));

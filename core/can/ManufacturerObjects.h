@@ -104,8 +104,11 @@ PdoMapping trialTpdoMapping();
 /// The exact SDO writes "apply" performs (docs/can-protocol.md §8, Apply): for each node the
 /// count then each parameter to 0x2200; after every node holds them (and the caller has read
 /// them back), 0x1010:01 = "save" on each node, so that no drive stores a half-written set.
-/// phi: identified parameters in SI units (n). Throws learnid::Error for an empty or
-/// non-finite phi, more than 254 parameters, invalid or repeated node ids.
-SdoWriteSequence parameterWriteSequence(const QList<int> &nodes, const Eigen::VectorXd &phi);
+/// phi: identified parameters in SI units (n). With a robot identity (not 0) the joint identity
+/// of every node (JointIdentity.h, 0x2400:01..02) follows the parameters, before the stores.
+/// Throws learnid::Error for an empty or non-finite phi, more than 254 parameters, invalid or
+/// repeated node ids.
+SdoWriteSequence parameterWriteSequence(const QList<int> &nodes, const Eigen::VectorXd &phi,
+                                        quint32 robotIdentity = 0);
 
 } // namespace learnid::objects

@@ -74,6 +74,12 @@ void MemoryCanDevice::injectError(const QString &text, CanBusError error, bool d
         setState(UnconnectedState);
 }
 
+void MemoryCanDevice::injectErrorFrame(const QCanBusFrame &frame)
+{
+    if (state() == ConnectedState && frame.frameType() == QCanBusFrame::ErrorFrame)
+        enqueueReceivedFrames({frame});
+}
+
 QString MemoryCanDevice::interpretErrorFrame(const QCanBusFrame &errorFrame)
 {
     if (errorFrame.frameType() != QCanBusFrame::ErrorFrame)

@@ -28,6 +28,9 @@ public:
     /// Fault injection: the driver reports an error (e.g. bus off) and, when disconnect is set,
     /// drops the connection as a real adapter does.
     void injectError(const QString &text, QCanBusDevice::CanBusError error, bool disconnect);
+    /// Fault injection: the controller reports an error frame (as SocketCAN's drivers do, to
+    /// this device only; it is not on the wire). Ignored when not connected.
+    void injectErrorFrame(const QCanBusFrame &frame);
 
     bool writeFrame(const QCanBusFrame &frame) override;
     QString interpretErrorFrame(const QCanBusFrame &errorFrame) override;

@@ -7,9 +7,10 @@
 
 namespace learnid {
 
-QList<SdoStep> applySteps(const QList<int> &nodes, const Eigen::VectorXd &phi)
+QList<SdoStep> applySteps(const QList<int> &nodes, const Eigen::VectorXd &phi,
+                          quint32 robotIdentity)
 {
-    const SdoWriteSequence sequence = objects::parameterWriteSequence(nodes, phi);
+    const SdoWriteSequence sequence = objects::parameterWriteSequence(nodes, phi, robotIdentity);
     QList<SdoStep> writes, readBacks, stores;
     for (const SdoWrite &w : sequence) {
         if (w.index == objects::storeParameters) {

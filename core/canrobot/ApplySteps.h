@@ -11,7 +11,9 @@ namespace learnid {
 /// without its stores, then every written object read back and compared bit for bit, then the
 /// stores (0x1010:01 = "save") on each node. Run as one SdoSequence, a refused write or read or
 /// a difference stops it before any store is written. Throws learnid::Error for a set that
-/// cannot be sent (see parameterWriteSequence).
-QList<SdoStep> applySteps(const QList<int> &nodes, const Eigen::VectorXd &phi);
+/// cannot be sent (see parameterWriteSequence). With robotIdentity (not 0) the joint identity
+/// objects 0x2400 are written, read back and stored with the parameters.
+QList<SdoStep> applySteps(const QList<int> &nodes, const Eigen::VectorXd &phi,
+                          quint32 robotIdentity = 0);
 
 } // namespace learnid

@@ -32,6 +32,9 @@ public:
     /// open(). An open connection answers at once.
     void open(Done done);
     void close();
+    /// While connected, watch the SocketCAN interface: when it goes down or its controller
+    /// turns error passive or bus off, lost() names the interface (checked every 25 ms).
+    void watchSocketCanInterface(const QString &interface);
     bool isConnected() const;
     QString name() const { return m_name; }
 
@@ -48,6 +51,12 @@ signals:
 private:
     void onStateChanged(QCanBusDevice::CanBusDeviceState state);
     void onError(QCanBusDevice::CanBusError error);
+    void onErrorFrame(const QCanBusFrame &frame);
+    void checkInterface();
+    /// What is wrong with the watched SocketCAN interface (gone, down, error passive, bus off),
+    /// or empty.
+    QString interfaceFault() const;
+    void fail(const QString &reason);
     void complete(const QString &error);
     void acknowledgeQuickly();
 
@@ -57,7 +66,10 @@ private:
     QPointer<QCanBusDevice> m_device;
     QList<QPointer<QAbstractSocket>> m_sockets; ///< of a TCP-carried bus (virtualcan)
     std::unique_ptr<CanLink> m_link;
-    QTimer *m_timer; ///< a child: it moves to the CAN thread with this object
+    QTimer *m_timer;          ///< a child: it moves to the CAN thread with this object
+    QTimer *m_interfaceTimer; ///< the SocketCAN interface watch, a child as well
+    QString m_watchedInterface;
+    bool m_watchState = false; ///< the driver reports a controller state (a real CAN controller)
     Done m_pending;
     bool m_connected = false;
     QElapsedTimer m_clock;

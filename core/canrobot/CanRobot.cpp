@@ -85,6 +85,16 @@ QString CanRobot::applyParameters(const Eigen::VectorXd &phi)
     return error;
 }
 
+QList<DriveIdentity> CanRobot::driveIdentities() const
+{
+    QList<DriveIdentity> drives;
+    CanRobotWorker *worker = m_worker;
+    QMetaObject::invokeMethod(
+        worker, [worker, &drives] { drives = worker->driveIdentities(); },
+        Qt::BlockingQueuedConnection);
+    return drives;
+}
+
 TrialStreamStatistics CanRobot::lastTrialStatistics() const
 {
     TrialStreamStatistics stats;

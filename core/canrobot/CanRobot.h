@@ -32,6 +32,7 @@ public:
     TrialRecord runTrial(const TrialPlan &plan, const TrialMonitor &monitor) override;
     QString applyParameters(const Eigen::VectorXd &phi) override;
     Eigen::VectorXd storedParameters() const override { return m_stored; }
+    QList<DriveIdentity> driveIdentities() const override;
 
     const CanRobotOptions &options() const { return m_options; }
     /// Figures of the last trial streamed (late set-points, SYNC to RPDO latency).

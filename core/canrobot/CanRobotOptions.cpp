@@ -1,6 +1,8 @@
 #include "canrobot/CanRobotOptions.h"
 
 #include "can/CanOpen.h"
+#include "can/CanTimeouts.h"
+#include "can/SocketCanInterface.h"
 #include "model/Error.h"
 
 #include <QCanBus>
@@ -23,8 +25,20 @@ struct Text
 CanDeviceFactory qcanbusDeviceFactory(const QString &plugin, const QString &interface)
 {
     return [plugin, interface](QString *error) -> QCanBusDevice * {
+        if (plugin == QLatin1String("socketcan")) {
+            // What the plugin would only find out by failing, or not at all (a down interface
+            // opens, and carries nothing).
+            const QString unusable =
+                socketCanInterfaceError(interface, readSocketCanInterface(interface));
+            if (!unusable.isEmpty()) {
+                if (error)
+                    *error = unusable;
+                return nullptr;
+            }
+        }
         QString reason;
         QCanBusDevice *device = QCanBus::instance()->createDevice(plugin, interface, &reason);
+        prepareCanDevice(device, plugin);
         if (!device && error) {
             *error = Text::tr("cannot create the CAN device %1/%2: %3")
                          .arg(plugin, interface,
@@ -101,9 +115,9 @@ QString canNodeOptionsError(const CanRobotOptions &options)
         seen.insert(node);
     }
     if (options.connectTimeoutMs <= 0 || options.sdoTimeoutMs <= 0 ||
-        options.heartbeatPeriodMs <= 0 || options.heartbeatPeriodMs > 65535 ||
-        options.heartbeatTimeoutFactor < 1 || options.enableTimeoutMs <= 0 ||
-        options.syncGapPeriods < 2 || !(options.syncPeriod > 0) || !(options.bitrate > 0))
+        options.heartbeatPeriodMs < 0 || options.heartbeatPeriodMs > 65535 ||
+        options.enableTimeoutMs <= 0 || options.syncTimeoutMs < 0 || !(options.syncPeriod > 0) ||
+        !(options.bitrate > 0))
         return Text::tr("CAN timing options must be positive (heartbeat period at most 65535 ms)");
     return {};
 }
@@ -124,17 +138,27 @@ QList<int> defaultNodeList(int joints)
 
 void setSyncTimeoutMs(CanRobotOptions &options, int ms)
 {
-    // 1e-9: 20 ms at 0.004 s is 5 periods, not 6 by the rounding of 1000 * 0.004.
-    options.syncGapPeriods = std::max(2, int(std::ceil(ms / (1000.0 * options.syncPeriod) - 1e-9)));
+    options.syncTimeoutMs = std::max(0, ms);
 }
 
 void setSyncPeriod(CanRobotOptions &options, double seconds)
 {
-    if (!(seconds > 0) || seconds == options.syncPeriod)
-        return;
-    const int ms = int(std::lround(options.syncGapPeriods * options.syncPeriod * 1000.0));
-    options.syncPeriod = seconds;
-    setSyncTimeoutMs(options, ms);
+    if (seconds > 0)
+        options.syncPeriod = seconds;
+}
+
+int effectiveSyncTimeoutMs(const CanRobotOptions &options)
+{
+    if (options.syncTimeoutMs <= 0)
+        return cantimeouts::syncTimeoutMs(options.syncPeriod);
+    return std::max(options.syncTimeoutMs,
+                    cantimeouts::periodsWithFloorMs(options.syncPeriod, 2, 0));
+}
+
+int effectiveHeartbeatPeriodMs(const CanRobotOptions &options)
+{
+    return options.heartbeatPeriodMs > 0 ? options.heartbeatPeriodMs
+                                         : cantimeouts::heartbeatPeriodMs(options.syncPeriod);
 }
 
 QList<int> parseNodeList(const QString &text, QString *error)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "can/BusLoad.h"
+#include "types/DriveIdentity.h"
 
 #include <QCanBusDevice>
 #include <QList>
@@ -16,16 +17,31 @@ struct CanRobotOptions
     QString plugin = QStringLiteral("socketcan"); ///< QCanBus plugin name
     QString interface = QStringLiteral("can0");   ///< the plugin's interface name
     QList<int> nodes{1, 2};                       ///< node id of joint 1, 2, ...
-    int connectTimeoutMs = 3000;     ///< virtualcan stays "connecting" on an unreachable host
-    int sdoTimeoutMs = 500;          ///< per SDO request
-    int heartbeatPeriodMs = 100;     ///< written to 0x1017 of every node
-    int heartbeatTimeoutFactor = 3;  ///< heartbeat lost after factor x period
-    int enableTimeoutMs = 500;       ///< CiA 402 enable walk
-    int syncGapPeriods = 10;         ///< no SYNC for this many periods aborts a trial
+    int connectTimeoutMs = 3000; ///< virtualcan stays "connecting" on an unreachable host
+    int sdoTimeoutMs = 500;      ///< per SDO request
+    /// Written to 0x1017 of every node (a node is lost after 3 periods without a heartbeat);
+    /// 0: cantimeouts::heartbeatPeriodMs at the SYNC period (10 periods, at least 100 ms).
+    int heartbeatPeriodMs = 0;
+    int enableTimeoutMs = 500; ///< CiA 402 enable walk
+    /// No SYNC for this long aborts a trial (at least 2 periods); 0: cantimeouts::syncTimeoutMs
+    /// at the SYNC period (10 periods, at least 50 ms).
+    int syncTimeoutMs = 0;
     double syncPeriod = 0.002;       ///< the SYNC period the robot side produces [s]
     double bitrate = 1'000'000.0;    ///< [bit/s]
     double maxBusLoadPercent = 70.0; ///< refuse to connect above this computed load
     QString candumpDir;              ///< when set, trial-NNN.log per trial (can-utils format)
+    /// The robot's identity in 0x2400:01 of its drives; 0: objects::robotIdentityOf(model id).
+    quint32 robotIdentity = 0;
+    /// The first-time procedure (docs/can-protocol.md §2.4): the technician confirmed that each
+    /// node is the drive of its joint; drives never commissioned (or for another robot) are
+    /// accepted, and apply stores their joint identity.
+    bool commissioning = false;
+    /// The drives' 0x1018 per joint from a parameter file, compared before any motion; empty:
+    /// not compared.
+    QList<DriveIdentity> recordedDrives;
+    /// Read and check every node's identity before a trial or apply; off only for a replay of
+    /// recorded trials (whose logs begin at the trial's first NMT command).
+    bool checkJointIdentity = true;
 };
 
 /// Creates the (not yet connected) CAN device in the calling thread; on failure returns null
@@ -57,12 +73,19 @@ QString canNodeOptionsError(const CanRobotOptions &options);
 /// canNodeOptionsError, then busLoadError: why the options cannot work, or empty.
 QString canRobotOptionsError(const CanRobotOptions &options);
 
-/// Sets syncGapPeriods so that a trial stops after ms without SYNC (at least 2 periods).
+/// Sets the time without SYNC that stops a trial [ms] (0: the default of the SYNC period).
 void setSyncTimeoutMs(CanRobotOptions &options, int ms);
 
 /// Sets the SYNC period [s] (the scenario's controller.samplePeriod, which the robot side
-/// produces) and keeps the time without SYNC that stops a trial (syncGapPeriods x period).
+/// produces); a SYNC timeout given in ms stays, the default ones follow the period.
 void setSyncPeriod(CanRobotOptions &options, double seconds);
+
+/// The SYNC timeout in force [ms]: syncTimeoutMs (at least 2 periods), or the default at the
+/// SYNC period (cantimeouts::syncTimeoutMs).
+int effectiveSyncTimeoutMs(const CanRobotOptions &options);
+
+/// The heartbeat period in force [ms]: heartbeatPeriodMs, or cantimeouts::heartbeatPeriodMs.
+int effectiveHeartbeatPeriodMs(const CanRobotOptions &options);
 
 /// Nodes 1, 2, ..., joints: joint j is node j (the default of --nodes for an n-joint robot).
 QList<int> defaultNodeList(int joints);

@@ -4,11 +4,14 @@
 #include "can/CanLogging.h"
 #include "can/EmcyConsumer.h"
 #include "can/HeartbeatConsumer.h"
+#include "can/JointIdentity.h"
 #include "can/Nmt.h"
 #include "can/SdoClient.h"
+#include "can/SocketCanInterface.h"
 #include "canrobot/ApplySteps.h"
 #include "canrobot/CanConnection.h"
 #include "canrobot/CandumpRecorder.h"
+#include "canrobot/JointIdentityCheck.h"
 #include "canrobot/NodeConfiguration.h"
 #include "canrobot/SdoSequence.h"
 #include "model/Error.h"
@@ -54,6 +57,7 @@ TrialRecord notStarted(double ts, TrialStatus status, const QString &message)
     TrialRecord r;
     r.samplePeriod = ts;
     r.status = status;
+    r.stopCause = defaultStopCause(status);
     r.message = message;
     return r;
 }
@@ -69,6 +73,8 @@ CanRobotWorker::CanRobotWorker(std::shared_ptr<const RobotModel> model, CanRobot
     m_connection =
         new CanConnection(std::move(factory), connectionName(), m_options.connectTimeoutMs, this);
     connect(m_connection, &CanConnection::lost, this, &CanRobotWorker::onLost);
+    if (m_options.plugin == QLatin1String("socketcan"))
+        m_connection->watchSocketCanInterface(m_options.interface);
 }
 
 CanRobotWorker::~CanRobotWorker()
@@ -92,9 +98,22 @@ void CanRobotWorker::connectBus(std::function<void(const QString &)> done)
     if (m_units && !m_connection->isConnected())
         m_units.reset(); // built on the link of a connection that was lost
     m_connection->open([this, done](const QString &error) {
-        if (error.isEmpty())
-            ensureUnits();
-        done(error);
+        if (!error.isEmpty())
+            return done(error);
+        if (m_options.plugin == QLatin1String("socketcan")) {
+            // The bus load at the bitrate the interface really has, where the driver tells it.
+            const quint32 bitrate = readSocketCanInterface(m_options.interface).bitrate;
+            if (bitrate > 0 && bitrate != m_options.bitrate) {
+                m_options.bitrate = bitrate;
+                const QString load = busLoadError(m_options);
+                if (!load.isEmpty()) {
+                    m_connection->close();
+                    return done(tr("%1: %2").arg(m_options.interface, load));
+                }
+            }
+        }
+        ensureUnits();
+        done({});
     });
 }
 
@@ -140,8 +159,38 @@ void CanRobotWorker::runTrial(const TrialPlan &plan, const TrialMonitor &monitor
         if (monitor.cancelled())
             return endTrial(notStarted(m_samplePeriod, TrialStatus::Cancelled,
                                        tr("stopped by the operator before the drives moved")));
-        configure(plan, monitor);
+        checkIdentity([this, plan, monitor](const QString &refused, bool unread) {
+            if (!refused.isEmpty())
+                return endTrial(notStarted(m_samplePeriod,
+                                           unread ? TrialStatus::Faulted : TrialStatus::Refused,
+                                           tr("refused before any motion: %1").arg(refused)));
+            configure(plan, monitor);
+        });
     });
+}
+
+quint32 CanRobotWorker::robotIdentity() const
+{
+    return m_options.robotIdentity != 0 ? m_options.robotIdentity
+                                        : objects::robotIdentityOf(m_model->id());
+}
+
+void CanRobotWorker::checkIdentity(std::function<void(const QString &, bool)> next)
+{
+    if (!m_options.checkJointIdentity)
+        return next({}, false);
+    auto found = std::make_shared<JointIdentityFound>();
+    const QList<int> nodes = m_options.nodes;
+    m_units->sequence.run(
+        jointIdentityReads(nodes, found), [this, found, nodes, next](const QString &error) {
+            if (!error.isEmpty())
+                return next(tr("reading the drives' identity failed: %1").arg(error), true);
+            m_drives = QList<DriveIdentity>(found->drives.begin(), found->drives.end());
+            next(jointIdentityError(
+                     nodes, *found,
+                     {robotIdentity(), m_options.commissioning, m_options.recordedDrives}),
+                 false);
+        });
 }
 
 void CanRobotWorker::configure(const TrialPlan &plan, const TrialMonitor &monitor)
@@ -191,6 +240,7 @@ void CanRobotWorker::endTrial(TrialRecord record)
                 qCWarning(lcCan).noquote() << error;
                 if (record.completed()) {
                     record.status = TrialStatus::Aborted;
+                    record.stopCause = TrialStopCause::Other;
                     record.message =
                         tr("the trial's candump log could not be written: %1").arg(error);
                 }
@@ -206,7 +256,7 @@ void CanRobotWorker::apply(const Eigen::VectorXd &phi, std::function<void(const 
 {
     QList<SdoStep> steps;
     try {
-        steps = applySteps(m_options.nodes, phi);
+        steps = applySteps(m_options.nodes, phi, robotIdentity());
     } catch (const Error &e) {
         done(e.message());
         return;
@@ -214,19 +264,25 @@ void CanRobotWorker::apply(const Eigen::VectorXd &phi, std::function<void(const 
     connectBus([this, steps, done](const QString &error) {
         if (!error.isEmpty())
             return done(tr("%1; the stored parameters are unchanged").arg(asClause(error)));
-        int stores = 0;
-        for (const SdoStep &s : steps)
-            stores += s.index == 0x1010 ? 1 : 0;
-        const int firstStore = int(steps.size()) - stores;
-        SdoSequence *sequence = &m_units->sequence; // connectBus succeeded just now
-        sequence->run(steps, [done, firstStore, sequence](const QString &error) {
-            if (error.isEmpty())
-                return done({});
-            if (sequence->stepsDone() < firstStore)
-                return done(tr("%1; nothing was stored (0x1010 not written)").arg(asClause(error)));
-            done(tr("%1; storing stopped at node %2 of the list")
-                     .arg(asClause(error))
-                     .arg(sequence->stepsDone() - firstStore + 1));
+        checkIdentity([this, steps, done](const QString &refused, bool) {
+            if (!refused.isEmpty())
+                return done(tr("%1; nothing was stored (0x2200, 0x2400 and 0x1010 not written)")
+                                .arg(asClause(refused)));
+            int stores = 0;
+            for (const SdoStep &s : steps)
+                stores += s.index == 0x1010 ? 1 : 0;
+            const int firstStore = int(steps.size()) - stores;
+            SdoSequence *sequence = &m_units->sequence; // connectBus succeeded just now
+            sequence->run(steps, [done, firstStore, sequence](const QString &error) {
+                if (error.isEmpty())
+                    return done({});
+                if (sequence->stepsDone() < firstStore)
+                    return done(
+                        tr("%1; nothing was stored (0x1010 not written)").arg(asClause(error)));
+                done(tr("%1; storing stopped at node %2 of the list")
+                         .arg(asClause(error))
+                         .arg(sequence->stepsDone() - firstStore + 1));
+            });
         });
     });
 }

@@ -35,12 +35,18 @@ public:
     void shutdown();
 
     const TrialStreamStatistics &lastStatistics() const { return m_stats; }
+    /// The drives' 0x1018 per joint, as read before the last trial or apply (empty before).
+    const QList<DriveIdentity> &driveIdentities() const { return m_drives; }
     int trialsRun() const { return m_trials; }
 
 private:
     void ensureUnits();
     void onLost(const QString &reason);
     void configure(const TrialPlan &plan, const TrialMonitor &monitor);
+    /// Reads every node's identity and calls next(error, unread): error empty when each node is
+    /// the drive of its joint (JointIdentityCheck.h); unread when a read failed.
+    void checkIdentity(std::function<void(const QString &error, bool unread)> next);
+    quint32 robotIdentity() const;
     void endTrial(TrialRecord record);
     QString connectionName() const;
 
@@ -56,6 +62,7 @@ private:
     double m_samplePeriod = 0;
     TrialStreamStatistics m_stats;
     int m_trials = 0;
+    QList<DriveIdentity> m_drives;
 };
 
 } // namespace learnid

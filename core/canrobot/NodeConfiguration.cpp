@@ -66,7 +66,7 @@ QList<SdoStep> trialConfigurationSteps(const QList<int> &nodes, const TrialPlan 
         const auto node = quint8(nodes[j]);
         SdoWriteSequence writes;
         writes << SdoWrite::make(node, objects::producerHeartbeatTime, 0, DataType::Unsigned16,
-                                 options.heartbeatPeriodMs)
+                                 effectiveHeartbeatPeriodMs(options))
                << SdoWrite::make(node, objects::modesOfOperation, 0, DataType::Integer8,
                                  objects::cyclicSynchronousPosition)
                << SdoWrite::make(node, objects::interpolationTimePeriod, 1, DataType::Unsigned8,

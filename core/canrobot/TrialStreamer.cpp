@@ -3,6 +3,7 @@
 #include "can/CanLink.h"
 #include "can/CanLogging.h"
 #include "can/CanOpen.h"
+#include "can/CanTimeouts.h"
 #include "can/Cia402.h"
 #include "can/Nmt.h"
 
@@ -15,7 +16,6 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr quint16 statusSetpointFollowed = 0x1000; // bit 12 in cyclic synchronous position
-constexpr int stoppingDeadlineMs = 100;
 
 } // namespace
 
@@ -77,13 +77,15 @@ void TrialStreamer::start(const RobotModel &model, const TrialPlan &plan, const 
     m_writer.reset(m_link, nodes);
     m_progressReported = 0;
     m_status = TrialStatus::Completed;
+    m_cause = TrialStopCause::None;
     m_message.clear();
     m_stats = {};
     m_phase = Phase::Enabling;
 
     m_connections << connect(m_link, &CanLink::frameReceived, this, &TrialStreamer::onFrame);
-    m_watchdog.start(nodes, m_options.heartbeatPeriodMs * m_options.heartbeatTimeoutFactor,
-                     int(std::lround(options.syncGapPeriods * plan.desired.samplePeriod * 1000)));
+    // The options' SYNC period is the plan's (CanRobotWorker::runTrial).
+    m_watchdog.start(nodes, effectiveHeartbeatPeriodMs(options) * cantimeouts::heartbeatLossFactor,
+                     effectiveSyncTimeoutMs(options));
     m_deadline.start(options.enableTimeoutMs);
     if (!m_nmt->startNode(0))
         QMetaObject::invokeMethod(
@@ -119,7 +121,8 @@ void TrialStreamer::onSync(quint8 counter)
     ++m_stats.syncs;
     ++m_phaseSyncs;
     if (!error.isEmpty())
-        return abort(TrialStatus::Aborted, tr("%1 %2").arg(error, where()));
+        return abort(TrialStatus::Aborted, tr("%1 %2").arg(error, where()),
+                     TrialStopCause::MissingSamples);
     if (m_phase != Phase::Stopping && m_monitor.cancelled())
         return abort(TrialStatus::Cancelled, tr("stopped by the operator %1").arg(where()));
     switch (m_phase) {
@@ -175,7 +178,8 @@ void TrialStreamer::checkCycle()
                              .arg(nodeName(j))
                              .arg(error * kRadToDeg, 0, 'g', 4)
                              .arg(m_plan.maxTrackingError * kRadToDeg, 0, 'g', 4)
-                             .arg(where()));
+                             .arg(where()),
+                         TrialStopCause::TrackingLimit);
         }
     }
 }
@@ -207,17 +211,19 @@ void TrialStreamer::sendQuickStop()
                        cia402::controlword(cia402::Command::QuickStop));
 }
 
-void TrialStreamer::abort(TrialStatus status, const QString &message)
+void TrialStreamer::abort(TrialStatus status, const QString &message,
+                          std::optional<TrialStopCause> cause)
 {
     if (m_phase == Phase::Idle || m_phase == Phase::Stopping)
         return;
     qCWarning(lcCan).noquote() << "trial stopped:" << message;
     m_status = status;
+    m_cause = cause.value_or(defaultStopCause(status));
     m_message = message;
     m_phase = Phase::Stopping;
     m_phaseSyncs = 0;
     sendQuickStop();
-    m_deadline.start(stoppingDeadlineMs); // also when the bus went silent
+    m_deadline.start(cantimeouts::stopBoundMs(m_options.syncPeriod)); // also on a silent bus
 }
 
 void TrialStreamer::finish()
@@ -234,16 +240,19 @@ void TrialStreamer::finish()
     m_nmt->enterPreOperational(0);
 
     TrialStatus status = m_status;
+    TrialStopCause cause = m_cause;
     QString message = m_message;
     if (!stopped && m_collector->recordedSamples() < m_plan.samples()) {
         status = TrialStatus::Aborted;
+        cause = TrialStopCause::MissingSamples;
         message = tr("only %1 of %2 samples were recorded")
                       .arg(m_collector->recordedSamples())
                       .arg(m_plan.samples());
     }
     if (m_stats.lateSetpoints > 0)
         qCWarning(lcCan) << m_stats.lateSetpoints << "set-points arrived late (statusword bit 12)";
-    const TrialRecord record = m_collector->record(status, message);
+    TrialRecord record = m_collector->record(status, message);
+    record.stopCause = status == TrialStatus::Completed ? TrialStopCause::None : cause;
     if (Done done = std::exchange(m_done, nullptr))
         done(record);
 }

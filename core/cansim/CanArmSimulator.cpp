@@ -82,6 +82,9 @@ CanArmSimulator::CanArmSimulator(CanLink *link, const CanArmSettings &settings,
         d.parameterCount = settings.model->parameterCount();
         d.syncPeriodUs = m_syncPeriodUs;
         d.setPointTimeoutSyncs = settings.setPointTimeoutSyncs;
+        d.identity = cansim::driveIdentityOfJoint(j + 1);
+        d.robotIdentity = settings.robotIdentity;
+        d.commissionedJoint = settings.robotIdentity != 0 ? j + 1 : 0;
         auto *node = new DriveNode(link, d, this);
         connect(node, &DriveNode::parametersStored, this, &CanArmSimulator::parametersStored);
         if (faults.refusedWrite) {
@@ -144,7 +147,7 @@ void CanArmSimulator::syncCycle()
     }
     m_link->send(SyncProducer::frame(m_sync.advance()));
     ++m_syncCount;
-    m_tauMeasured = m_tau;
+    m_arm->measureTorques(m_tau, m_tauMeasured);
     m_arm->addTorqueNoise(m_tauMeasured, m_limits);
     for (int j = 0; j < n; ++j) {
         const bool drop =

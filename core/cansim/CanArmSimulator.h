@@ -30,6 +30,9 @@ struct CanArmSettings
     /// Consecutive SYNCs in Operation enabled without a fresh set-point before a drive faults
     /// (EMCY 0x8100). Real drives allow 1-3; a loaded test machine may need more.
     int setPointTimeoutSyncs = cansim::missedSetPointLimit;
+    /// 0x2400:01 of every drive at power on: 0, never commissioned; else joint j's drive holds
+    /// (robotIdentity, j) as a robot commissioned by its maker (docs/can-protocol.md §2.4).
+    quint32 robotIdentity = 0;
 };
 
 /// Faults the simulator injects on request (learnid-robot-sim's options).

@@ -1,5 +1,6 @@
 #include "cansim/DriveDictionary.h"
 
+#include "can/JointIdentity.h"
 #include "can/ManufacturerObjects.h"
 #include "can/Pdo.h"
 #include "can/SdoAbortCode.h"
@@ -123,6 +124,16 @@ void addDriveObjects(ObjectDictionary &od, const DriveNodeSettings &s)
            cansim::syncCounterMax);
     addPdoObjects(od, node, PdoDirection::Receive);
     addPdoObjects(od, node, PdoDirection::Transmit);
+    od.add(identityObject, 0, DataType::Unsigned8, Access::ReadOnly, 4);
+    od.add(identityObject, 1, DataType::Unsigned32, Access::ReadOnly, s.identity.vendorId);
+    od.add(identityObject, 2, DataType::Unsigned32, Access::ReadOnly, s.identity.productCode);
+    od.add(identityObject, 3, DataType::Unsigned32, Access::ReadOnly, s.identity.revision);
+    od.add(identityObject, 4, DataType::Unsigned32, Access::ReadOnly, s.identity.serialNumber);
+    od.add(jointIdentity, 0, DataType::Unsigned8, Access::ReadOnly, 2);
+    od.add(jointIdentity, jointIdentityRobot, DataType::Unsigned32, Access::ReadWrite,
+           s.robotIdentity);
+    od.add(jointIdentity, jointIdentityJoint, DataType::Unsigned8, Access::ReadWrite,
+           s.commissionedJoint, ObjectDictionary::rangeValidator(DataType::Unsigned8, 0, 127));
 
     // The manufacturer objects as the one table describes them (the DCF and the docs follow it).
     for (const ObjectDescription &o : manufacturerObjects(manufacturerDefaults(s))) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "types/DriveIdentity.h"
+
 #include <QString>
 #include <QtGlobal>
 
@@ -24,6 +26,16 @@ constexpr quint8 errorRegisterDeviceProfile = 0x20;
 constexpr int missedSetPointLimit = 3; ///< consecutive SYNCs without a set-point -> fault
 constexpr int quickStopSyncs = 10;     ///< SYNCs of holding in Quick stop active
 constexpr qint64 idealIncrements = qint64(1) << 24; ///< encoder increments for an ideal encoder
+constexpr quint32 vendorId = 0x4C4E4944;            ///< 0x1018:01 of the simulated drives ("LNID")
+constexpr quint32 productCode = 0x00000402;         ///< 0x1018:02
+constexpr quint32 revision = 0x00010000;            ///< 0x1018:03
+constexpr quint32 firstSerial = 1000;               ///< 0x1018:04 of joint j's drive: 1000 + j
+
+/// The identity of the simulated drive that moves joint (1-based).
+inline DriveIdentity driveIdentityOfJoint(int joint)
+{
+    return {vendorId, productCode, revision, firstSerial + quint32(joint)};
+}
 
 /// Motor rated torque [mN m] of a torque limit [N m]: limit / 25 rounded up to 1 mN m, so that
 /// the limit is about 25,000 per mille and INTEGER16 torques reach 1.3 times the limit.
@@ -44,6 +56,9 @@ struct DriveNodeSettings
     int parameterCount = 3;                      ///< entries 0x2200:1..m
     quint32 syncPeriodUs = 2000; ///< 0x1006 and the default interpolation period 0x60C2
     int setPointTimeoutSyncs = cansim::missedSetPointLimit; ///< SYNCs without one -> fault
+    DriveIdentity identity;    ///< 0x1018: the drive itself, whatever node id it answers to
+    quint32 robotIdentity = 0; ///< 0x2400:01 at power on (0: never commissioned)
+    int commissionedJoint = 0; ///< 0x2400:02 at power on (0: never commissioned)
 };
 
 } // namespace learnid

@@ -1,6 +1,9 @@
 #include "cansim/ScenarioCanArm.h"
 
+#include "can/CanTimeouts.h"
+#include "can/JointIdentity.h"
 #include "session/ScenarioRobot.h"
+#include "session/ScenarioRobotJoints.h"
 #include "session/TrialPlanner.h"
 
 #include <QJsonArray>
@@ -27,15 +30,20 @@ CanArmSettings canArmSettings(const Scenario &given, std::shared_ptr<const Robot
     } else {
         s.initialPose = planner.kinematics().inverse(scenario.line.start, Eigen::VectorXd());
     }
+    // The drives come commissioned for this robot, joint j's drive as joint j (--uncommissioned
+    // of learnid-robot-sim clears it).
+    s.robotIdentity = objects::robotIdentityOf(model->id());
     s.model = std::move(model);
     s.trueParameters = scenario.simulation.trueParameters;
     s.measurement.encoderCounts = scenario.simulation.encoderCounts;
     s.measurement.torqueNoise = scenario.simulation.torqueNoise;
     s.measurement.seed = scenario.simulation.seed;
     s.measurement.substeps = scenario.simulation.substeps;
+    s.measurement.realism = simulatedJoints(scenario, *s.model);
     s.controller = scenario.controller;
     s.torqueLimits = scenario.torqueLimits;
     s.nodes = nodes;
+    s.setPointTimeoutSyncs = cantimeouts::setpointTimeoutSyncs(scenario.controller.samplePeriod);
     return s;
 }
 

@@ -1,5 +1,6 @@
 #include "cansim/StoredParameterSet.h"
 
+#include "can/JointIdentity.h"
 #include "can/ManufacturerObjects.h"
 #include "cansim/DriveDictionary.h"
 
@@ -18,6 +19,8 @@ void StoredParameterSet::store(const ObjectDictionary &dictionary)
             dictionary.bytes(ob::identifiedParameters, quint8(sub));
     }
     m_raw[key(ob::torqueLimit, 0)] = dictionary.bytes(ob::torqueLimit, 0);
+    for (const quint8 sub : {ob::jointIdentityRobot, ob::jointIdentityJoint})
+        m_raw[key(ob::jointIdentity, sub)] = dictionary.bytes(ob::jointIdentity, sub);
 }
 
 Eigen::VectorXd StoredParameterSet::parameters() const
@@ -44,6 +47,8 @@ void StoredParameterSet::restore(ObjectDictionary &dictionary,
     // Nothing stored: every manufacturer object back to its power-on default.
     for (const ob::ObjectDescription &o : ob::manufacturerObjects(manufacturerDefaults(settings)))
         dictionary.setValue(o.index, o.subIndex, o.defaultValue);
+    dictionary.setValue(ob::jointIdentity, ob::jointIdentityRobot, settings.robotIdentity);
+    dictionary.setValue(ob::jointIdentity, ob::jointIdentityJoint, settings.commissionedJoint);
 }
 
 } // namespace learnid

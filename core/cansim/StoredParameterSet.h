@@ -9,7 +9,8 @@
 namespace learnid {
 
 /// The non-volatile memory of a simulated drive: the controller objects 0x2100:1..4, the
-/// identified parameters 0x2200:0..count and the torque limit 0x2300 as they were at the last
+/// identified parameters 0x2200:0..count, the torque limit 0x2300 and the joint identity
+/// 0x2400:1..2 as they were at the last
 /// "save" (0x1010:1), restored by NMT reset node.
 class StoredParameterSet
 {

@@ -154,7 +154,7 @@ LogFit fitLogs(const ChainModel &model, const std::vector<FilteredLog> &logs,
     LogFit fit;
     fit.samples = total;
     fit.baseCount = model.parameterCount();
-    fit.prior = realBodyPrior(model.cadStandard(), n);
+    fit.prior = realBodyPrior(model.cadStandard(), n, model.nonnegativeStandard());
     const std::vector<Eigen::MatrixXd> factors = jointFactors(model, logs, total);
 
     // First pass unweighted: each joint's residual sets its weight.

@@ -88,6 +88,18 @@ JsonTree contentTree(const ParameterFileContent &c)
     robot.insert(key("model"), c.robotModel)
         .insert(key("description"), c.robotDescription)
         .insert(key("jointNodes"), nodes);
+    if (!c.drives.isEmpty()) {
+        JsonTree drives = JsonTree::array();
+        for (const DriveIdentity &d : c.drives) {
+            JsonTree o = JsonTree::object();
+            o.insert(key("vendorId"), double(d.vendorId))
+                .insert(key("productCode"), double(d.productCode))
+                .insert(key("revision"), double(d.revision))
+                .insert(key("serialNumber"), double(d.serialNumber));
+            drives.append(o);
+        }
+        robot.insert(key("drives"), drives);
+    }
     JsonTree identification = JsonTree::object();
     identification.insert(key("law"), c.law).insert(key("sourceTrial"), c.sourceTrial);
     JsonTree parameters = JsonTree::array();
@@ -260,6 +272,20 @@ ParameterFileContent readContent(const QJsonObject &root, bool version1)
     const QJsonArray nodes = jsonArray(robot.require(key("jointNodes")), nodesPath);
     for (int i = 0; i < int(nodes.size()); ++i)
         c.jointNodes.append(int(jsonInteger(nodes.at(i), jsonIndexPath(nodesPath, i), 1, 127)));
+    if (const QJsonValue drives = robot.value(key("drives")); !drives.isUndefined()) {
+        const QString drivesPath = robot.keyPath(key("drives"));
+        const QJsonArray list = jsonArray(drives, drivesPath);
+        for (int i = 0; i < int(list.size()); ++i) {
+            JsonObjectReader d(list.at(i), jsonIndexPath(drivesPath, i));
+            const auto u32 = [&d](const char *name) {
+                return quint32(
+                    jsonInteger(d.require(key(name)), d.keyPath(key(name)), 0, 0xFFFFFFFFll));
+            };
+            c.drives.append(
+                {u32("vendorId"), u32("productCode"), u32("revision"), u32("serialNumber")});
+            d.rejectUnknownKeys();
+        }
+    }
     robot.rejectUnknownKeys();
 
     // Version 2 records no gains as null: the identification from logs without a scenario.

@@ -4,6 +4,7 @@
 
 #include "model/RobotModel.h"
 #include "types/ControllerSettings.h"
+#include "types/DriveIdentity.h"
 
 #include <Eigen/Core>
 #include <QByteArray>
@@ -27,6 +28,9 @@ struct ParameterFileContent
     QString robotModel;       ///< model id, e.g. "paper-2link"
     QString robotDescription; ///< the robot in words (simulated, CAN interface and nodes)
     QList<int> jointNodes;    ///< CANopen node of each joint's drive; empty means 1, 2, ...
+    /// The identity (0x1018) of each joint's drive when the robot is on CAN, else empty
+    /// (written as robot.drives only when there are some).
+    QList<DriveIdentity> drives;
     /// false: the file records no controller gains ("controller": null), as an identification
     /// from logs without a scenario writes it; jointNodes then give the joint count.
     bool hasController = true;

@@ -101,6 +101,8 @@ void validateParameterFileContent(const ParameterFileContent &c)
                            Text::tr("node %1 is given to two joints").arg(c.jointNodes.at(j)));
         }
     }
+    if (!c.drives.isEmpty())
+        checkLength(key("robot.drives"), c.drives.size(), n, perJoint);
     if (c.hasController) {
         validateControllerSettings(c.controller, n, key("controller"));
         // The gains and the parameters go to the drives' REAL32 objects (the DCF fragment, apply).

@@ -15,9 +15,12 @@ constexpr double eigenvalueFloor = 1e-6;      ///< relative to a link's largest,
 
 } // namespace
 
-Eigen::VectorXd realBodyPrior(const Eigen::VectorXd &cad, int links)
+Eigen::VectorXd realBodyPrior(const Eigen::VectorXd &cad, int links,
+                              const std::vector<int> &nonnegative)
 {
     Eigen::VectorXd prior = cad;
+    for (const int i : nonnegative)
+        prior[i] = std::max(prior[i], 0.0);
     for (const LinkConsistency &l : checkConsistency(cad, links, eigenvalueTolerance)) {
         if (l.consistent && !l.degenerate)
             continue;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/PhysicalConsistency.h"
 #include "model/Plausibility.h"
 
 #include <Eigen/Core>
@@ -25,6 +26,27 @@ struct SerialChain;
 /// model.cadStandard()). Empty when nothing is wrong.
 QStringList modelProblems(const ChainModel &model, const SerialChain &chain,
                           const Eigen::VectorXd &cadPrior, const PlausibilityRule &rule = {});
+
+/// "link 3 (lwr_3_link)" and "joint 3 (lwr_a3_joint)": how the verdicts name a link or joint
+/// (chain order, l from 0).
+QString linkLabel(const SerialChain &chain, int l);
+QString jointLabel(const SerialChain &chain, int j);
+
+/// What is wrong with one link, one line per problem starting with `label` (linkLabel()): not a
+/// real body (consistency: its mass, or no mass distribution has its inertia), else the
+/// criteria of plausibility it fails (plausibilityProblems()). The words of modelProblems() and
+/// EstimateConsistency::describe(). Empty for a plausible link.
+QStringList linkProblems(const QString &label, const LinkConsistency &consistency,
+                         const LinkPlausibility &plausibility,
+                         const std::optional<BoundingEllipsoid> &volume,
+                         const PlausibilityRule &rule = {});
+
+/// What is wrong with a joint term `term` (a URDF element or a standard parameter's name) of
+/// value: negative (friction and rotor inertia take energy), or strictly between 0 and the
+/// rule's termFloor (the underflow of a positive parametrisation where 0 is meant). One line
+/// starting with `label` (jointLabel()), empty when the value is fine.
+QString jointTermProblem(const QString &label, const QString &term, double value,
+                         const PlausibilityRule &rule = {});
 
 /// modelProblems() of the model's own URDF (its CAD values against themselves made real
 /// bodies): what to warn about when it serves as the model and prior.

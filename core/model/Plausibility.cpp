@@ -110,31 +110,47 @@ checkPlausibility(const Eigen::VectorXd &standard, const Eigen::VectorXd &cadPri
     return out;
 }
 
-QString plausibilityProblem(const LinkPlausibility &v, const PlausibilityRule &rule)
+QStringList plausibilityProblems(const LinkPlausibility &v,
+                                 const std::optional<BoundingEllipsoid> &volume,
+                                 const PlausibilityRule &rule)
 {
+    const auto number = [](double x) {
+        return QString::number(x, 'g', 3);
+    };
+    QStringList out;
     if (v.plausible)
-        return {};
+        return out;
     if (!(v.mass > 0.0))
-        return Text::tr("mass %1 kg").arg(v.mass, 0, 'g', 3);
-    QStringList problems;
+        return {Text::tr("its mass is %1 kg: not a real body").arg(number(v.mass))};
     if (!v.momentsOk) {
-        problems << Text::tr("smallest principal moment %1 kg m², below %2 % of the CAD link's "
-                             "smallest (%3 kg m²)")
-                        .arg(v.moments[0], 0, 'g', 2)
-                        .arg(100.0 * rule.minMomentShare, 0, 'g', 3)
-                        .arg(v.cadSmallestMoment, 0, 'g', 2);
+        out << Text::tr("its smallest principal moment of inertia about the centre of mass, "
+                        "%1 kg m^2, is below %2 % of the CAD link's smallest (%3 kg m^2): a point "
+                        "mass or a needle, not a link")
+                   .arg(number(v.moments[0]), number(100.0 * rule.minMomentShare),
+                        number(v.cadSmallestMoment));
     }
     if (!v.triangleOk) {
-        problems << Text::tr("(I1 + I2) / I3 = %1, below %2: a needle or a plate")
-                        .arg(v.triangleRatio, 0, 'f', 3)
-                        .arg(1.0 + rule.triangleMargin, 0, 'f', 2);
+        out << Text::tr("its principal moments %1, %2 and %3 kg m^2 give I1 + I2 = %4 I3, "
+                        "below %5 I3 (a flat plate at best)")
+                   .arg(number(v.moments[0]), number(v.moments[1]), number(v.moments[2]),
+                        QString::number(v.triangleRatio, 'f', 3),
+                        QString::number(1.0 + rule.triangleMargin, 'f', 3));
     }
     if (!v.volumeOk) {
-        problems << Text::tr("centre of mass outside the link's bounding volume (%1 times its "
-                             "size)")
-                        .arg(std::sqrt(v.comDistance), 0, 'f', 2);
+        out << (volume ? Text::tr("its centre of mass lies outside its bounding volume (%1)")
+                             .arg(volume->source == VolumeSource::Geometry
+                                      ? Text::tr("the URDF's geometry: %1").arg(volume->description)
+                                      : Text::tr("the CAD body's inertia ellipsoid, enlarged "
+                                                 "%1 times")
+                                            .arg(cadVolumeMargin))
+                       : Text::tr("its centre of mass lies outside its bounding volume"));
     }
-    return problems.join(QStringLiteral("; "));
+    return out;
+}
+
+QString plausibilityProblem(const LinkPlausibility &v, const PlausibilityRule &rule)
+{
+    return plausibilityProblems(v, std::nullopt, rule).join(QStringLiteral("; "));
 }
 
 std::vector<int> tinyJointTerms(const Eigen::VectorXd &standard,

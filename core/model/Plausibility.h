@@ -60,9 +60,17 @@ checkPlausibility(const Eigen::VectorXd &standard, const Eigen::VectorXd &cadPri
                   const std::vector<std::optional<BoundingEllipsoid>> &volumes,
                   const PlausibilityRule &rule = {});
 
-/// What is wrong with a link that is not plausible, in one clause for reports ("smallest
-/// principal moment 5e-14 kg m^2, 1e-11 of the CAD link's 0.004; (I1 + I2) / I3 = 1.000"), or
-/// an empty string for a plausible one.
+/// What is wrong with a link that is not plausible, one clause per criterion it fails, worded
+/// for "link 3 (name): <clause>" (modelProblems(), EstimateConsistency::describe()): "its
+/// smallest principal moment of inertia about the centre of mass, 5e-14 kg m^2, is below 5 % of
+/// the CAD link's smallest (0.004 kg m^2): a point mass or a needle, not a link". volume: the
+/// link's bounding volume, named in the clause on the centre of mass (none: not named). Empty for
+/// a plausible link.
+QStringList plausibilityProblems(const LinkPlausibility &verdict,
+                                 const std::optional<BoundingEllipsoid> &volume = std::nullopt,
+                                 const PlausibilityRule &rule = {});
+
+/// plausibilityProblems() without the volume's name, joined by "; ".
 QString plausibilityProblem(const LinkPlausibility &verdict, const PlausibilityRule &rule = {});
 
 /// The indices among nonnegativeIndices whose entry lies strictly between 0 and rule.termFloor.

@@ -1,7 +1,9 @@
 #pragma once
 
+#include "types/DriveIdentity.h"
 #include "types/Trial.h"
 
+#include <QList>
 #include <QString>
 #include <optional>
 
@@ -30,6 +32,10 @@ public:
 
     /// The true parameters, known only for a simulated robot (for error-against-truth figures).
     virtual std::optional<Eigen::VectorXd> trueParameters() const { return std::nullopt; }
+
+    /// The identity (CiA 301 0x1018) of each joint's drive, for the parameter file; empty when
+    /// the robot has no such drives or has not read them yet.
+    virtual QList<DriveIdentity> driveIdentities() const { return {}; }
 };
 
 } // namespace learnid

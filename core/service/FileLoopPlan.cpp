@@ -9,6 +9,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <algorithm>
 
 namespace learnid {
 
@@ -90,6 +91,9 @@ PlannedTrial planNextTrial(const LoopScenario &s, const PlanRequest &request)
     // The session's own planning and check, with the estimate as the current one.
     Scenario scenario = s.scenario;
     scenario.initialParameters = estimate.phi;
+    // Gentle (path.gentleTrials) until the history has learned that many times.
+    const int learned = read && !estimate.newInitial ? int(read->estimates.size()) - 1 : 0;
+    scenario.gentleTrials = std::max(0, scenario.gentleTrials - learned);
     const CommissioningSession session(scenario, s.model, std::make_shared<RecordedTrialRobot>());
     PlannedTrial planned;
     planned.check = session.checkNextTrial();

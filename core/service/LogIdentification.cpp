@@ -149,9 +149,9 @@ LogIdentificationResult run(const LogRobot &robot, const LogIdentificationReques
     r.trainingLogs = request.trainingLogs;
     r.fit = fitLogs(model, trainingLogs, request.fit);
     trainingLogs.clear();
-    const EstimateConsistency consistency = checkStandardConsistency(model, r.fit.standard);
-    r.consistency = consistency.describe(model);
-    r.consistent = consistency.consistent;
+    r.verdict = checkStandardConsistency(model, r.fit.standard);
+    r.consistency = r.verdict.describe(model);
+    r.consistent = r.verdict.consistent;
     for (const int i : r.fit.undetermined())
         r.undetermined << model.parameters().at(i).name;
     for (int i = 0; i < validation; ++i) {

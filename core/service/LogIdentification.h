@@ -8,6 +8,7 @@
 #include "model/ChainModel.h"
 #include "model/Error.h"
 #include "model/SerialChain.h"
+#include "session/EstimateConsistency.h"
 #include "types/ChainSettings.h"
 #include "types/ControllerSettings.h"
 
@@ -88,6 +89,8 @@ struct LogIdentificationResult
     /// one that they are consistent (EstimateConsistency::describe()).
     QStringList consistency;
     bool consistent = false;
+    /// The same per link: consistent, and plausible (LinkVerdictTable.h shows it).
+    EstimateConsistency verdict;
     QStringList undetermined; ///< names of the base parameters the logs leave undetermined
     std::vector<LogValidation> validation; ///< one per validation log, in order
     std::vector<LogReading> readings;      ///< the training logs, then the validation logs

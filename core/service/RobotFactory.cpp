@@ -7,6 +7,17 @@
 
 namespace learnid {
 
+int recordedTrialCount(const QStringList &candumpFiles)
+{
+    int total = 0;
+    for (const QString &file : candumpFiles) {
+        int trials = 0;
+        replayEntries(candump::readFile(file), &trials);
+        total += trials;
+    }
+    return total;
+}
+
 RobotConnection makeRobot(const RobotRequest &request, const Scenario &scenario,
                           std::shared_ptr<const RobotModel> model)
 {
@@ -19,8 +30,9 @@ RobotConnection makeRobot(const RobotRequest &request, const Scenario &scenario,
     CanDeviceFactory factory; // empty: the plugin and interface of request.can
     if (request.kind == RobotRequest::Kind::Replay) {
         QList<CandumpEntry> entries;
-        for (const QString &file : request.candumpFiles)
-            entries += candump::readFile(file); // throws Error naming file and line
+        int trials = 0;
+        for (const QString &file : request.candumpFiles) // throws Error naming file and line
+            entries += replayEntries(candump::readFile(file), &trials);
         factory = [entries](QString *) {
             return new CandumpReplayDevice(entries);
         };
@@ -30,6 +42,7 @@ RobotConnection makeRobot(const RobotRequest &request, const Scenario &scenario,
     if (request.kind == RobotRequest::Kind::Replay) {
         options.plugin = QStringLiteral("candump");
         options.interface = QStringLiteral("replay");
+        options.checkJointIdentity = false; // the logs begin at each trial's first NMT command
     }
     auto robot = std::make_shared<CanRobot>(std::move(model), options, std::move(factory));
     c.connectError = robot->connectBus();

@@ -23,6 +23,10 @@ struct RobotConnection
 /// bus is reported before a session starts), or a CanRobot whose bus replays candump logs.
 /// Throws Error for input it cannot use (a candump log it cannot read, naming file and line);
 /// an unreachable robot is no exception: connectError says why.
+/// How many trials the replay of these candump logs plays (CandumpReplayDevice.h,
+/// replayEntries). Throws Error naming the file and line of a log it cannot read.
+int recordedTrialCount(const QStringList &candumpFiles);
+
 RobotConnection makeRobot(const RobotRequest &request, const Scenario &scenario,
                           std::shared_ptr<const RobotModel> model);
 

@@ -1,10 +1,12 @@
 #include "service/SessionReport.h"
 
+#include "can/JointIdentity.h"
 #include "can/ManufacturerObjects.h"
 #include "model/CadPrior.h"
 #include "model/ChainModel.h"
 #include "model/Error.h"
 #include "service/StandardExport.h"
+#include "session/TrialSeries.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -59,7 +61,7 @@ QJsonArray standardReport(const CommissioningSession &session, const ChainModel 
 
 } // namespace
 
-QByteArray sessionReportJson(const CommissioningSession &session)
+QByteArray sessionReportJson(const CommissioningSession &session, const QString &endedEarly)
 {
     QJsonObject root;
     root.insert(QStringLiteral("schema"), QStringLiteral("learnid-report/1"));
@@ -95,9 +97,21 @@ QByteArray sessionReportJson(const CommissioningSession &session)
         }
         if (!t->message.isEmpty())
             o.insert(QStringLiteral("message"), t->message);
+        if (t->learnedFromPartial()) {
+            o.insert(QStringLiteral("learnedFromPartialTrial"), true);
+            o.insert(QStringLiteral("learnedSeconds"), t->partialSamples * t->record.samplePeriod);
+        }
+        if (!t->worseTracking.isEmpty())
+            o.insert(QStringLiteral("worseTracking"), t->worseTracking);
+        if (!t->seriesStop.isEmpty())
+            o.insert(QStringLiteral("seriesStop"), t->seriesStop);
         trials.append(o);
     }
     root.insert(QStringLiteral("trials"), trials);
+    root.insert(QStringLiteral("proposedEstimate"),
+                proposedEstimate(session.history(), int(estimates.size())));
+    if (!endedEarly.isEmpty())
+        root.insert(QStringLiteral("endedEarly"), endedEarly);
     QJsonObject finalEstimate;
     finalEstimate.insert(QStringLiteral("phi"), toArray(session.currentEstimate()));
     finalEstimate.insert(QStringLiteral("learningSteps"), int(estimates.size()) - 1);
@@ -143,6 +157,7 @@ ParameterFileContent parameterFileContent(const CommissioningSession &session, i
         c.rmsTrackingErrorDeg = tracking->rmsTrackingErrorDeg;
     }
     c.canWrites = canWrites;
+    c.drives = session.robot().driveIdentities();
     return c;
 }
 
@@ -155,9 +170,13 @@ ParameterFileContent parameterFileContent(const CommissioningSession &session, i
     const Eigen::VectorXd phi = estimateIndex >= 0 && estimateIndex < estimates.size()
                                     ? estimates.at(estimateIndex)
                                     : Eigen::VectorXd();
-    return parameterFileContent(session, estimateIndex,
-                                phi.size() > 0 ? objects::parameterWriteSequence(nodes, phi)
-                                               : QList<SdoWrite>());
+    // A robot on CAN (its drives known) gets the joint identity with the parameters.
+    const quint32 identity = session.robot().driveIdentities().isEmpty()
+                                 ? 0
+                                 : objects::robotIdentityOf(session.model().id());
+    return parameterFileContent(
+        session, estimateIndex,
+        phi.size() > 0 ? objects::parameterWriteSequence(nodes, phi, identity) : QList<SdoWrite>());
 }
 
 } // namespace learnid

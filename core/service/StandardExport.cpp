@@ -36,7 +36,9 @@ QString parameterOriginText(ParameterOrigin origin)
     case ParameterOrigin::Data:
         return Text::tr("data");
     case ParameterOrigin::Prior:
-        return Text::tr("prior");
+        // Not "prior": the geometric prior keeps the value near the URDF's, the data still move
+        // it (and what they determine in combination with other parameters).
+        return Text::tr("undetermined (kept near the prior)");
     case ParameterOrigin::Unknown:
         break;
     }
@@ -79,8 +81,9 @@ QStringList determinedNotes(const ChainModel &model, const Eigen::VectorXd &pi,
         QStringLiteral("What the data determined. Per standard parameter: value, unit, the share"),
         QStringLiteral(
             "of its direction (the parameter alone, scaled by its regressor column) the"),
-        QStringLiteral("data see, and \"data\" (at least 0.5: identified) or \"prior\" (kept near"),
-        QStringLiteral("the original URDF's value, or known only in combination with others).")};
+        QStringLiteral("data see, and \"data\" (at least 0.5: identified) or \"undetermined\""),
+        QStringLiteral("(below: kept near the original URDF's value, not at it, or known only in"),
+        QStringLiteral("combination with others).")};
     int width = 0;
     for (const ParameterInfo &p : info)
         width = std::max(width, int(p.name.size() + 1 + p.unit.size()));
@@ -106,7 +109,7 @@ QStringList determinedNotes(const ChainModel &model, const Eigen::VectorXd &pi,
                               ? QString::number(determined[size_t(i)], 'f', 2)
                               : QStringLiteral("   -"),
                           origin == ParameterOrigin::Data    ? QStringLiteral("data")
-                          : origin == ParameterOrigin::Prior ? QStringLiteral("prior")
+                          : origin == ParameterOrigin::Prior ? QStringLiteral("undetermined")
                                                              : QStringLiteral("unknown"));
     }
     return lines;

@@ -18,7 +18,8 @@ enum class ParameterOrigin { Data, Prior, Unknown };
 /// The origin of standard parameter i for the shares `determined` (empty: unknown for all).
 ParameterOrigin parameterOrigin(const std::vector<double> &determined, int i);
 
-/// The origin in words, translated, for tables ("data", "prior", "?").
+/// The origin in words, translated, for tables ("data", "undetermined (kept near the prior)",
+/// "?"). The parameter file keeps its schema's "prior" (ParameterFile.h).
 QString parameterOriginText(ParameterOrigin origin);
 
 /// Each joint's terms of standard vector pi (ChainModel's layout) as the URDF holds them:
@@ -27,8 +28,8 @@ QString parameterOriginText(ParameterOrigin origin);
 std::vector<IdentifiedJoint> urdfJointTerms(const ChainModel &model, const Eigen::VectorXd &pi);
 
 /// The URDF comment block on what the data determined: a heading, then per link and joint one
-/// line per standard parameter (name, value, unit, share, data or prior). English, as the file's
-/// other comments. Empty when determined is empty.
+/// line per standard parameter (name, value, unit, share, "data" or "undetermined"). English, as
+/// the file's other comments. Empty when determined is empty.
 QStringList determinedNotes(const ChainModel &model, const Eigen::VectorXd &pi,
                             const std::vector<double> &determined);
 

@@ -3,6 +3,7 @@
 #include "model/CadPrior.h"
 #include "model/ChainModel.h"
 #include "model/Error.h"
+#include "model/ModelCheck.h"
 #include "model/PlausibleEstimate.h"
 #include "session/PathIdentifiability.h"
 
@@ -64,12 +65,14 @@ EstimateConsistency checkStandardConsistency(const ChainModel &model,
                      std::all_of(out.links.begin(), out.links.end(),
                                  [](const LinkConsistency &l) { return l.consistent; });
     const Eigen::VectorXd prior = realBodyPrior(model.cadStandard(), model.dof());
-    out.plausibility =
-        checkPlausibility(standard, prior, model.dof(), linkVolumes(model.chain(), prior));
+    out.volumes = linkVolumes(model.chain(), prior);
+    out.plausibility = checkPlausibility(standard, prior, model.dof(), out.volumes);
+    out.tinyTerms = tinyJointTerms(standard, model.nonnegativeStandard());
     out.plausible = out.consistent &&
                     std::all_of(out.plausibility.begin(), out.plausibility.end(),
                                 [](const LinkPlausibility &l) { return l.plausible; }) &&
-                    tinyJointTerms(standard, model.nonnegativeStandard()).empty();
+                    out.tinyTerms.empty();
+    out.standard = standard;
     return out;
 }
 
@@ -80,7 +83,8 @@ EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eige
     if (!chain || phi.size() != model.parameterCount() || !phi.allFinite())
         return {};
     const int n = chain->dof();
-    const Eigen::VectorXd prior = realBodyPrior(chain->cadStandard(), n);
+    const Eigen::VectorXd prior =
+        realBodyPrior(chain->cadStandard(), n, chain->nonnegativeStandard());
     EstimateConsistency out =
         checkStandardConsistency(*chain, chain->base().standardFromBase(phi, prior));
     out.nearest = phi;
@@ -118,41 +122,36 @@ EstimateConsistency checkEstimateConsistency(const RobotModel &model, const Eige
 
 QStringList EstimateConsistency::describe(const RobotModel &model) const
 {
-    QStringList lines;
     if (!applicable)
-        return lines;
+        return {};
     const auto *chain = dynamic_cast<const ChainModel *>(&model);
-    for (const LinkConsistency &l : links) {
-        if (l.consistent)
-            continue;
-        const QString link = chain ? chain->chain().joints[size_t(l.link)].link : QString();
-        lines << (l.mass <= 0.0 ? Text::tr("link %1 (%2): mass %3 kg: not a real body")
-                                      .arg(l.link + 1)
-                                      .arg(link)
-                                      .arg(l.mass, 0, 'g', 4)
-                                : Text::tr("link %1 (%2): its inertia cannot belong to a real body "
-                                           "(pseudo-inertia eigenvalue %3)")
-                                      .arg(l.link + 1)
-                                      .arg(link)
-                                      .arg(l.minEigenvalue, 0, 'g', 3));
-    }
-    if (chain) {
+    QStringList problems;
+    if (chain && plausibility.size() == links.size() && volumes.size() == links.size()) {
+        const SerialChain &joints = chain->chain();
+        for (size_t l = 0; l < links.size(); ++l)
+            problems +=
+                linkProblems(linkLabel(joints, int(l)), links[l], plausibility[l], volumes[l]);
+        // A joint term's index past the 10 n inertia entries: its joint, JointTerms' order.
         const QList<ParameterInfo> names = chain->standardParameters();
-        for (const int i : negativeTerms)
-            lines << Text::tr("%1 is negative: friction and rotor inertia cannot be")
-                         .arg(names.value(i).name);
+        const int perJoint = std::max(1, chain->jointTerms().count());
+        std::vector<int> terms = negativeTerms;
+        terms.insert(terms.end(), tinyTerms.begin(), tinyTerms.end());
+        for (const int i : terms) {
+            const int j = (i - 10 * chain->dof()) / perJoint;
+            if (j < 0 || j >= chain->dof() || i >= standard.size())
+                continue;
+            problems << jointTermProblem(jointLabel(joints, j), names.value(i).name, standard[i]);
+        }
     }
-    if (lines.isEmpty())
-        lines << Text::tr("physically consistent: every link a real body");
-    for (const LinkPlausibility &l : plausibility) {
-        if (l.plausible || !links.at(size_t(l.link)).consistent)
-            continue;
-        lines << Text::tr("link %1 (%2): not a plausible body: %3")
-                     .arg(l.link + 1)
-                     .arg(chain ? chain->chain().joints[size_t(l.link)].link : QString())
-                     .arg(plausibilityProblem(l));
-    }
-    return lines;
+    QStringList lines;
+    if (!consistent)
+        lines << Text::tr("not physically consistent");
+    else if (!plausible)
+        lines << Text::tr("physically consistent (every link a real body) but not plausible");
+    else
+        lines << Text::tr("physically consistent and plausible: every link a real body that a "
+                          "robot's link could be");
+    return lines + problems;
 }
 
 } // namespace learnid

@@ -25,10 +25,15 @@ struct EstimateConsistency
     std::vector<LinkConsistency> links; ///< per link, in chain order
     std::vector<int> negativeTerms;     ///< standard indices of negative friction or inertia
     bool consistent = true;             ///< every link and term as it should be
-    /// Per link, whether it is a body a robot could have (Plausibility.h), and whether all are.
+    /// Per link, whether it is a body a robot could have (Plausibility.h) against the CAD body
+    /// and in its bounding volume (volumes, linkVolumes()); whether all are and no joint term
+    /// lies strictly between 0 and the rule's floor (tinyTerms: their standard indices).
     std::vector<LinkPlausibility> plausibility;
+    std::vector<std::optional<BoundingEllipsoid>> volumes;
+    std::vector<int> tinyTerms;
     bool plausible = true;
-    Eigen::VectorXd nearest; ///< base parameters of the nearest consistent estimate
+    Eigen::VectorXd standard; ///< the standard parameters judged
+    Eigen::VectorXd nearest;  ///< base parameters of the nearest consistent estimate
     /// Standard parameters with those base parameters that are consistent (the witness; its
     /// unseen part near the CAD model); empty when phi is consistent or nothing was found.
     Eigen::VectorXd nearestStandard;
@@ -39,7 +44,10 @@ struct EstimateConsistency
     /// kept from the CAD model. Empty when not known (no path).
     std::vector<double> standardDetermined;
 
-    /// One line per problem ("link 3 (lwr_3_link): ..."), or that the estimate is consistent.
+    /// The verdict first ("physically consistent and plausible: ...", "physically consistent
+    /// (every link a real body) but not plausible", "not physically consistent"), then one line
+    /// per problem in the words of modelProblems() ("link 3 (lwr_3_link): ...", "joint 2
+    /// (name): fc₂ is ..."). Empty when not applicable.
     QStringList describe(const RobotModel &model) const;
 };
 

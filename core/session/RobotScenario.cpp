@@ -6,6 +6,7 @@
 
 #include <Eigen/LU>
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -120,6 +121,10 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf)
     // The torque rule needs room above gravity: plan at 1.5 times the largest gravity share,
     // at least 30 % and at most 80 % of the limits.
     s.planningFraction = std::clamp(1.5 * gravityShare.maxCoeff(), 0.3, 0.8);
+    // The CAD model of a robot new to the tool may be far from the real one (friction above
+    // all): its first trial runs at half speed, a quarter of the inertial torque.
+    s.gentleTrials = 1;
+    s.gentleSpeed = 0.5;
     s.torqueLimits.resize(0);
     s.initialParameters.resize(0);
     s.simulation.trueParameters.resize(0);
@@ -128,6 +133,26 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf)
     s.simulation.torqueNoise = 0.01;
     s.maxTrackingErrorDeg = 5.0;
     return s;
+}
+
+Scenario scenarioForRobotName(const QString &robot)
+{
+    if (robot == QLatin1String("paper"))
+        return scenarioForRobot(QStringLiteral("paper-2link"));
+    if (knownRobotModels().contains(robot) && robot != QLatin1String("urdf"))
+        return scenarioForRobot(robot);
+    const QFileInfo file(robot);
+    if (!robot.endsWith(QLatin1String(".urdf"), Qt::CaseInsensitive) && !file.isFile()) {
+        QStringList known{QStringLiteral("paper")};
+        for (const QString &id : knownRobotModels())
+            if (isUrdfModel(id) && id != QLatin1String("urdf"))
+                known << id;
+        throw Error(Text::tr("unknown robot \"%1\"; known: %2, or a URDF file (FILE.urdf)")
+                        .arg(robot, known.join(QStringLiteral(", "))));
+    }
+    UrdfRobotSettings urdf;
+    urdf.file = file.absoluteFilePath();
+    return scenarioForRobot(QStringLiteral("urdf"), urdf);
 }
 
 QString waypointLimitError(const RobotModel &model, const std::vector<Eigen::VectorXd> &waypoints)

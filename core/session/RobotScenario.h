@@ -16,11 +16,20 @@ namespace learnid {
 /// friction / 0.05 rad) with w = 25 rad/s, kd damping it 1.5 times critically together with
 /// the joint's viscous friction, ki = 0.1 kp per second, the feedforward at the middle of each
 /// sample (FeedforwardTime::MidSample); the planning fraction 1.5 times the
-/// largest gravity share of a limit (30 to 80 %); the torque limits and initial parameters left to
+/// largest gravity share of a limit (30 to 80 %); the first trial gentle, at half speed
+/// (path.gentleTrials 1, path.gentleSpeed 0.5); the torque limits and initial parameters left to
 /// the robot (its URDF, its CAD base parameters) and, for the simulated robot, the CAD robot
 /// perturbed by 30 % with a 20-bit encoder and 1 % torque noise. Throws Error when the model is
 /// unknown or its URDF cannot be read.
 Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf = {});
+
+/// The same for a robot named as a technician names it (`learnid-cli scenario --print --robot`):
+/// "paper" or "paper-2link" (the paper scenario), a built-in URDF robot's id ("panda",
+/// "puma560", "double-pendulum", "paper-2link-urdf"), or a URDF file (a name ending in ".urdf",
+/// or any existing file), which becomes model "urdf" with the file's absolute path. Throws
+/// Error naming the robot when it is none of these, or naming the file when it cannot be read
+/// as a serial arm.
+Scenario scenarioForRobotName(const QString &robot);
 
 /// Why waypoints leave the robot's joint limits, or "" when they stay within: the first
 /// offending value named by key (path.waypoints[i][j]), joint, value and limit (in degrees for

@@ -69,12 +69,17 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
     m_ruleGrid = torqueRuleGrid(*m_model, *m_kinematics, scenario.line);
 }
 
-TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ruleOut) const
+TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ruleOut,
+                             bool gentle) const
 {
     clearUpperVectorState();
     TorqueRuleResult rule =
         shortestDuration(m_ruleGrid, phiHat, m_scenario.torqueLimits, m_scenario.planningFraction);
     rule.duration = std::max({rule.duration, m_shortestDuration, m_speedDuration});
+    // A gentle trial moves the same path slower: every speed times gentleSpeed, every
+    // acceleration times its square.
+    if (gentle)
+        rule.duration /= m_scenario.gentleSpeed;
     if (ruleOut)
         *ruleOut = rule;
     MotionTiming timing;

@@ -31,8 +31,11 @@ public:
     /// The joint path; nullptr for a path of kind Line.
     const JointPath *jointPath() const { return m_path.get(); }
 
-    /// Throws Error when the torque rule cannot be met with phiHat.
-    TrialPlan plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *rule = nullptr) const;
+    /// Throws Error when the torque rule cannot be met with phiHat. gentle: a gentle trial
+    /// (path.gentleTrials), its motion duration the rule's divided by path.gentleSpeed; rule
+    /// then holds that duration.
+    TrialPlan plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *rule = nullptr,
+                   bool gentle = false) const;
 
 private:
     Scenario m_scenario;

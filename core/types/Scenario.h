@@ -24,6 +24,18 @@ struct SimulationSettings
     /// changed at random by up to +-inertiaPerturbation (a fraction), consistently (seed).
     QString realUrdf;
     double inertiaPerturbation = 0.0;
+    // What real joints have beyond the rigid-body model (docs/scenario.md, simulation); empty
+    // vectors and 0 are off. Vectors have one entry per joint.
+    Eigen::VectorXd staticFriction;     ///< Stribeck: static friction Fs [N m]
+    double staticFrictionRatio = 0.0;   ///< Stribeck: Fs = ratio * Coulomb friction (>= 1)
+    double stribeckVelocity = 0.1;      ///< Stribeck velocity vs [rad/s]
+    Eigen::VectorXd armature;           ///< rotor inertia the model leaves out [kg m^2]
+    Eigen::VectorXd armatureFactor;     ///< ... as a factor of the link's inertia about its axis
+    Eigen::VectorXd jointStiffness;     ///< elastic joints: spring stiffness [N m/rad]
+    Eigen::VectorXd jointDamping;       ///< elastic joints: spring damping [N m s/rad]
+    bool linkSideEncoder = true;        ///< elastic joints: the encoder on the link (else motor)
+    Eigen::VectorXd torqueSensorOffset; ///< [N m]
+    double torqueSensorLag = 0.0;       ///< first-order time constant [s]
 };
 
 /// A commissioning scenario: what the technician asks for (the robot, the path, the controller,
@@ -50,6 +62,12 @@ struct Scenario
     double restBefore = 0.1;       ///< [s]
     double restAfter = 0.5;        ///< [s]
     double planningFraction = 0.8; ///< planned peak torque / limit
+    /// Trials planned gently, slower than the torque rule allows, until the estimate has been
+    /// learned this many times (docs/scenario.md, path.gentleTrials).
+    int gentleTrials = 0;
+    /// A gentle trial's speed as a fraction of the planned one: its motion duration is the torque
+    /// rule's divided by this, so its inertial torque is gentleSpeed^2 of the planned one.
+    double gentleSpeed = 0.5;
     // controller
     ControllerSettings controller;
     // estimator

@@ -1,10 +1,12 @@
 // End to end over virtualcan: learnid-robot-sim and learnid-cli as two processes on a loopback
-// port of their own. The CAN session identifies what the simulated robot's session identifies;
-// every fault the simulator injects ends the run with a clear error, quickly, a non-zero exit
-// code and the robot's stored parameters unchanged; a recorded trial replays to the same
-// estimate.
+// port of their own (or over socketcan on a vcan interface, see ../support/CanE2eBus.h). The CAN
+// session identifies what the simulated robot's session identifies; a swapped node list is
+// refused before any motion (on socketcan: no NMT start, RPDO or SDO write on the bus); every
+// fault the simulator injects ends the run with a clear error, quickly, a non-zero exit code and
+// the robot's stored parameters unchanged; a recorded trial replays to the same estimate.
 #include "can/CandumpLog.h"
 
+#include "../support/CanE2eBus.h"
 #include "../support/CanFaultLog.h"
 #include "../support/RobotSimProcess.h"
 #include "../support/ToolRun.h"
@@ -33,6 +35,12 @@ QJsonObject readJson(const QString &path)
     return QJsonDocument::fromJson(f.readAll()).object();
 }
 
+QByteArray readAll(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
 // The final estimate of a session report.
 QList<double> finalEstimate(const QString &reportPath)
 {
@@ -53,6 +61,7 @@ private slots:
     void initTestCase();
     void canSession_identifiesAsTheSimulatedRobot();
     void recordedTrials_replayToTheSameEstimate();
+    void swappedNodeList_refusedBeforeAnyMotion();
     void fault_endsWithClearErrorQuickly_data();
     void fault_endsWithClearErrorQuickly();
 
@@ -61,21 +70,27 @@ private:
     {
         return learnid::test::runTool(QStringLiteral(LEARNID_CLI_PATH), args, m_dir.path(), 240000);
     }
-    static QString interface(quint16 port)
-    {
-        return QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
-    }
     QStringList canRun(quint16 port) const
     {
-        return {QStringLiteral("run"), QStringLiteral("--robot"), QStringLiteral("can"),
-                QStringLiteral("--can-plugin"), QStringLiteral("virtualcan"),
-                QStringLiteral("--can-interface"), interface(port),
-                // CI runs this beside other tests on 2 cores: a 20 ms stall of the simulator
-                // process is the machine, not the protocol (docs/cli.md).
-                QStringLiteral("--can-sync-timeout"), QStringLiteral("200")};
+        return QStringList{QStringLiteral("run"), QStringLiteral("--robot"),
+                           QStringLiteral("can")} +
+               test::canE2eBusOptions(port) +
+               QStringList{// CI runs this beside other tests on 2 cores: a 20 ms stall of the
+                           // simulator process is the machine, not the protocol (docs/cli.md).
+                           QStringLiteral("--can-sync-timeout"), QStringLiteral("200")} +
+               m_scenarioArgs;
+    }
+    bool startRobot(test::RobotSimProcess &robot, quint16 port, const QStringList &options) const
+    {
+        if (!test::canE2eOnSocketCan())
+            return robot.start(test::canE2eInterface(port), options + m_scenarioArgs);
+        return robot.startOn(test::canE2ePlugin(), test::canE2eInterface(port),
+                             options + m_scenarioArgs);
     }
 
     QTemporaryDir m_dir; // the workspace of every run; the logs of the CAN session stay here
+    int m_periodMs = 2;
+    QStringList m_scenarioArgs; ///< --scenario FILE at a SYNC period other than 2 ms
     QList<double> m_canEstimate;
 };
 
@@ -84,24 +99,45 @@ void TestCanE2e::initTestCase()
     QVERIFY(m_dir.isValid());
     QVERIFY(QFileInfo::exists(QStringLiteral(LEARNID_CLI_PATH)));
     QVERIFY(QFileInfo::exists(QStringLiteral(LEARNID_ROBOT_SIM_PATH)));
+    m_periodMs = test::canE2ePeriodMs(2);
+    if (m_periodMs != 2) {
+        // The paper scenario at a longer SYNC period, with gains that pass the pre-trial check
+        // there (the 2 ms gains are unstable at 10 ms).
+        const Result printed = cli({QStringLiteral("scenario"), QStringLiteral("--print")});
+        QCOMPARE(printed.exitCode, 0);
+        const QByteArray json = test::paperScenarioAt(printed.out.toUtf8(), m_periodMs);
+        QVERIFY(!json.isEmpty());
+        const QString path = m_dir.filePath(QStringLiteral("paper-%1ms.json").arg(m_periodMs));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly) && f.write(json) == json.size());
+        m_scenarioArgs = {QStringLiteral("--scenario"), path};
+    }
 }
 
 void TestCanE2e::canSession_identifiesAsTheSimulatedRobot()
 {
-    const quint16 port = test::freeLoopbackPort();
-    QVERIFY(port != 0);
+    const quint16 port = test::canE2ePort();
+    QVERIFY(port != 0 || test::canE2eOnSocketCan());
     test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-    QVERIFY(robot.start(interface(port),
-                        {QStringLiteral("--state"), m_dir.filePath(QStringLiteral("state.json"))}));
+    QVERIFY(startRobot(robot, port,
+                       {QStringLiteral("--state"), m_dir.filePath(QStringLiteral("state.json"))}));
     const Result can =
         cli(canRun(port) + QStringList{QStringLiteral("--iterations"), QStringLiteral("3"),
                                        QStringLiteral("--report"), QStringLiteral("can.json"),
                                        QStringLiteral("--can-log"), QStringLiteral("logs")});
-    QVERIFY2(can.exitCode == 0, qPrintable(can.err + robot.stderrText()));
+    const QString robotErr = robot.stderrText();
+    QVERIFY2(can.exitCode == 0, qPrintable(can.err + robotErr));
     QVERIFY2(!can.out.contains(QLatin1String("vs truth")), qPrintable(can.out)); // no truth
+    // Clean use of the device (socketcan: no bitrate set, the socket closed without a notifier
+    // left on it).
+    for (const QString &text : {can.err, robotErr}) {
+        QVERIFY2(!text.contains(QLatin1String("Cannot apply parameter")), qPrintable(text));
+        QVERIFY2(!text.contains(QLatin1String("QSocketNotifier")), qPrintable(text));
+    }
     const Result sim =
-        cli({QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("3"),
-             QStringLiteral("--report"), QStringLiteral("sim.json")});
+        cli(QStringList{QStringLiteral("run"), QStringLiteral("--iterations"), QStringLiteral("3"),
+                        QStringLiteral("--report"), QStringLiteral("sim.json")} +
+            m_scenarioArgs);
     QCOMPARE(sim.exitCode, 0);
     m_canEstimate = finalEstimate(m_dir.filePath(QStringLiteral("can.json")));
     const QList<double> simEstimate = finalEstimate(m_dir.filePath(QStringLiteral("sim.json")));
@@ -126,8 +162,9 @@ void TestCanE2e::recordedTrials_replayToTheSameEstimate()
 {
     if (m_canEstimate.isEmpty())
         QFAIL("no logs: canSession_identifiesAsTheSimulatedRobot, which records them, failed");
-    QStringList args{QStringLiteral("replay"), QStringLiteral("--report"),
-                     QStringLiteral("replay.json")};
+    QStringList args = QStringList{QStringLiteral("replay"), QStringLiteral("--report"),
+                                   QStringLiteral("replay.json")} +
+                       m_scenarioArgs;
     for (int k = 0; k < 3; ++k)
         args << QStringLiteral("--candump")
              << QStringLiteral("logs/trial-%1.log").arg(k, 3, 10, QLatin1Char('0'));
@@ -136,9 +173,66 @@ void TestCanE2e::recordedTrials_replayToTheSameEstimate()
     QCOMPARE(finalEstimate(m_dir.filePath(QStringLiteral("replay.json"))), m_canEstimate);
 }
 
+void TestCanE2e::swappedNodeList_refusedBeforeAnyMotion()
+{
+    // The drives wired joint 1 = node 1, joint 2 = node 2 (the simulator's default); the master
+    // told --nodes 2,1, as the independent robot side of issue 24 found a session complete with
+    // a and c exchanged.
+    const quint16 port = test::canE2ePort();
+    const QString state = m_dir.filePath(QStringLiteral("swapped-state.json"));
+    test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+    QVERIFY(startRobot(robot, port, {QStringLiteral("--state"), state}));
+    const QByteArray stateBefore = readAll(state);
+    QVERIFY(!stateBefore.isEmpty());
+    QProcess candump; // on socketcan the whole bus is watched as well
+    if (test::canE2eOnSocketCan()) {
+        candump.setStandardOutputFile(m_dir.filePath(QStringLiteral("swapped-bus.log")));
+        candump.start(QStringLiteral("candump"),
+                      {QStringLiteral("-L"), test::canE2eInterface(port)});
+        QVERIFY(candump.waitForStarted());
+        QTest::qWait(300);
+    }
+    const Result r =
+        cli(canRun(port) + QStringList{QStringLiteral("--nodes"), QStringLiteral("2,1"),
+                                       QStringLiteral("--iterations"), QStringLiteral("2"),
+                                       QStringLiteral("--apply"), QStringLiteral("--can-log"),
+                                       QStringLiteral("swapped-logs")});
+    QVERIFY2(r.exitCode == 3, qPrintable(QString::number(r.exitCode) + r.err));
+    QVERIFY2(r.err.contains(QLatin1String("refused before any motion: node 2 is listed for joint 1 "
+                                          "but is the drive of joint 2")),
+             qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("--nodes 1,2")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("no files written")), qPrintable(r.err));
+    // No trial started: a trial's log begins with its NMT start; nothing stored on the drives.
+    QVERIFY(QDir(m_dir.filePath(QStringLiteral("swapped-logs"))).entryList(QDir::Files).isEmpty());
+    QCOMPARE(readAll(state), stateBefore);
+    if (!test::canE2eOnSocketCan())
+        return;
+    QTest::qWait(300);
+    candump.terminate();
+    QVERIFY(candump.waitForFinished(5000));
+    const QList<CandumpEntry> bus =
+        candump::readFile(m_dir.filePath(QStringLiteral("swapped-bus.log")));
+    QVERIFY(!bus.isEmpty()); // the identity reads (SDO 0x600 + node) at least
+    for (const CandumpEntry &e : bus) {
+        const quint32 id = e.frame.frameId();
+        // No NMT start (0x000, command 0x01), no RPDO (0x200 + node), and of the SDO requests
+        // (0x600 + node) only reads: client command 2 (initiate upload) or 3 (upload segment).
+        const QByteArray data = e.frame.payload();
+        QVERIFY2(!(id == 0 && data.startsWith('\x01')), "NMT start on the bus");
+        QVERIFY2(id < 0x200 || id > 0x27F, qPrintable(QString::number(id, 16)));
+        if (id > 0x600 && id <= 0x67F) {
+            const int command = quint8(data.at(0)) >> 5;
+            QVERIFY2(command == 2 || command == 3, qPrintable(data.toHex(' ')));
+        }
+    }
+}
+
 void TestCanE2e::fault_endsWithClearErrorQuickly_data()
 {
-    test::addCanFaultRows(600);
+    // At sample 600 of 2 ms (1.2 s into the plan), after 4000 frames of 2 ms: the same times.
+    const int periodMs = test::canE2ePeriodMs(2);
+    test::addCanFaultRows(600 * 2 / periodMs, 4000 * 2 / periodMs);
 }
 
 void TestCanE2e::fault_endsWithClearErrorQuickly()
@@ -146,11 +240,11 @@ void TestCanE2e::fault_endsWithClearErrorQuickly()
     QFETCH(QStringList, faults);
     QFETCH(QStringList, cliArgs);
     QFETCH(QString, expected);
-    const quint16 port = test::freeLoopbackPort();
+    const quint16 port = test::canE2ePort();
     const QString tag = QString::fromLatin1(QTest::currentDataTag());
     const QString state = m_dir.filePath(tag + QStringLiteral("-state.json"));
     test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-    QVERIFY(robot.start(interface(port), QStringList{QStringLiteral("--state"), state} + faults));
+    QVERIFY(startRobot(robot, port, QStringList{QStringLiteral("--state"), state} + faults));
     const QByteArray stateBefore = [&] {
         QFile f(state);
         return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();

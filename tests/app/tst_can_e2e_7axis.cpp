@@ -6,6 +6,7 @@
 // stored parameters unchanged; the robot process killed mid-trial as well.
 #include "can/CandumpLog.h"
 
+#include "../support/CanE2eBus.h"
 #include "../support/CanFaultLog.h"
 #include "../support/RobotSimProcess.h"
 #include "../support/SharedData.h"
@@ -48,16 +49,19 @@ QByteArray readAll(const QString &path)
 
 // The 7-axis scenario of docs/scenario.md ("Any serial arm") at a 4 ms SYNC period, with the
 // gains scaled for it (the 2 ms gains are unstable at 4 ms: the pre-trial check refuses them).
-QByteArray lwrScenario(const QString &urdf, double samplePeriod, double gainScale, double lambda)
+/// The gains of joint j scaled by gainScale and by wristScale for joints 5, 6 and 7 (j 4..6).
+QByteArray lwrScenario(const QString &urdf, double samplePeriod, double gainScale, double lambda,
+                       const QList<double> &wristScale = {1, 1, 1})
 {
     const double kp[] = {340, 600, 100, 140, 15, 14, 11};
     const double ki[] = {34, 60, 10, 14, 1.5, 1.4, 1.1};
     const double kd[] = {45, 80, 14, 19, 2, 1.9, 1.5};
     QJsonArray p, i, d;
     for (int j = 0; j < kJoints; ++j) {
-        p.append(kp[j] * gainScale);
-        i.append(ki[j] * gainScale);
-        d.append(kd[j] * gainScale);
+        const double scale = gainScale * (j >= 4 ? wristScale.value(j - 4, 1) : 1);
+        p.append(kp[j] * scale);
+        i.append(ki[j] * scale);
+        d.append(kd[j] * scale);
     }
     const QJsonObject scenario{
         {QStringLiteral("schema"), QStringLiteral("learnid-scenario/2")},
@@ -106,9 +110,12 @@ private:
     {
         return learnid::test::runTool(QStringLiteral(LEARNID_CLI_PATH), args, m_dir.path(), 120000);
     }
-    static QString interface(quint16 port)
+    static QString interface(quint16 port) { return test::canE2eInterface(port); }
+    bool startRobot(test::RobotSimProcess &robot, quint16 port, const QStringList &options) const
     {
-        return QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
+        if (!test::canE2eOnSocketCan())
+            return robot.start(interface(port), options);
+        return robot.startOn(test::canE2ePlugin(), interface(port), options);
     }
     QStringList simOptions(const QString &state) const
     {
@@ -117,17 +124,19 @@ private:
     }
     QStringList canRun(quint16 port) const
     {
-        return {QStringLiteral("run"), QStringLiteral("--robot"), QStringLiteral("can"),
-                QStringLiteral("--can-plugin"), QStringLiteral("virtualcan"),
-                QStringLiteral("--can-interface"), interface(port), QStringLiteral("--nodes"),
-                kNodes, QStringLiteral("--scenario"), m_scenario,
-                // CI runs this beside other tests on 2 cores (tst_can_e2e).
-                QStringLiteral("--can-sync-timeout"), QStringLiteral("200")};
+        return QStringList{QStringLiteral("run"), QStringLiteral("--robot"),
+                           QStringLiteral("can")} +
+               test::canE2eBusOptions(port) +
+               QStringList{QStringLiteral("--nodes"), kNodes, QStringLiteral("--scenario"),
+                           m_scenario,
+                           // CI runs this beside other tests on 2 cores (tst_can_e2e).
+                           QStringLiteral("--can-sync-timeout"), QStringLiteral("200")};
     }
 
     QTemporaryDir m_dir;
     QString m_urdf;
-    QString m_scenario; ///< the 7-axis scenario at 4 ms
+    QString m_scenario; ///< the 7-axis scenario at 4 ms (or LEARNID_CAN_E2E_PERIOD_MS)
+    int m_periodMs = 4;
     QList<double> m_canEstimate;
 };
 
@@ -139,10 +148,20 @@ void TestCanE2e7Axis::initTestCase()
     m_urdf = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
     if (m_urdf.isEmpty())
         QSKIP(qPrintable(test::sharedDataMissing()));
-    m_scenario = m_dir.filePath(QStringLiteral("lwr-4ms.json"));
+    // Gains that pass the pre-trial check, keep every joint within the 5 deg tracking limit for
+    // 20 trials and halve the largest tracking error in 3 (learnid-cli run --iterations 20 on
+    // this scenario): at 4 ms x 0.4 with lambda 400; at 5 and 10 ms (the VM of
+    // scripts/test-socketcan) x 0.2 and x 0.15 with lambda 150 and the wrist (joints 5, 6, 7)
+    // x 4, 4, 3 of that (at 10 ms x 0.15 alone: joint 6 passes 5 deg at 0.61 s; x 0.25 alone
+    // is unstable).
+    m_periodMs = test::canE2ePeriodMs(4);
+    m_scenario = m_dir.filePath(QStringLiteral("lwr-%1ms.json").arg(m_periodMs));
     QFile f(m_scenario);
     QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(lwrScenario(m_urdf, 0.004, 0.4, 400));
+    const double ts = m_periodMs / 1000.0;
+    f.write(m_periodMs <= 4   ? lwrScenario(m_urdf, ts, 0.4, 400)
+            : m_periodMs <= 5 ? lwrScenario(m_urdf, ts, 0.2, 150, {4, 4, 3})
+                              : lwrScenario(m_urdf, ts, 0.15, 150, {4, 4, 3}));
 }
 
 void TestCanE2e7Axis::sevenAxesAt2ms_refusedWithTheOffer_offeredPeriodReachesTheBus()
@@ -154,7 +173,7 @@ void TestCanE2e7Axis::sevenAxesAt2ms_refusedWithTheOffer_offeredPeriodReachesThe
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(lwrScenario(m_urdf, 0.002, 1.0, 1000));
     f.close();
-    const quint16 port = test::freeLoopbackPort();
+    const quint16 port = test::canE2ePort();
     QStringList args = canRun(port);
     args[args.indexOf(m_scenario)] = at2ms;
     const Result refused = cli(args + QStringList{QStringLiteral("--iterations"), "1"});
@@ -176,17 +195,17 @@ void TestCanE2e7Axis::sevenAxesAt2ms_refusedWithTheOffer_offeredPeriodReachesThe
     QVERIFY2(offered.exitCode == 3, qPrintable(QString::number(offered.exitCode) + offered.err));
     QVERIFY2(!offered.err.contains(QLatin1String("kbit/s")), qPrintable(offered.err));
     QVERIFY2(offered.err.contains(QLatin1String("node 3")) &&
-                 offered.err.contains(QLatin1String("0x1017:00")),
+                 offered.err.contains(QLatin1String("0x1018:01")),
              qPrintable(offered.err));
 }
 
 void TestCanE2e7Axis::sevenAxisSession_learnsAppliesWithReadBackAndStores()
 {
-    const quint16 port = test::freeLoopbackPort();
-    QVERIFY(port != 0);
+    const quint16 port = test::canE2ePort();
+    QVERIFY(port != 0 || test::canE2eOnSocketCan());
     const QString state = m_dir.filePath(QStringLiteral("state.json"));
     test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-    QVERIFY(robot.start(interface(port), simOptions(state)));
+    QVERIFY(startRobot(robot, port, simOptions(state)));
     const Result can =
         cli(canRun(port) + QStringList{QStringLiteral("--iterations"), QStringLiteral("3"),
                                        QStringLiteral("--apply"), QStringLiteral("--report"),
@@ -205,8 +224,8 @@ void TestCanE2e7Axis::sevenAxisSession_learnsAppliesWithReadBackAndStores()
     for (const QJsonValue v : report[QStringLiteral("final")][QStringLiteral("phi")].toArray())
         m_canEstimate << v.toDouble();
     QVERIFY(m_canEstimate.size() > 3 * kJoints); // 57 base parameters and friction
-    qInfo("7 axes over virtualcan: %lld parameters, max tracking error %.3f -> %.3f deg (%lld ms)",
-          qint64(m_canEstimate.size()), first, last, can.ms);
+    qInfo("7 axes over %s: %lld parameters, max tracking error %.3f -> %.3f deg (%lld ms)",
+          qPrintable(test::canE2ePlugin()), qint64(m_canEstimate.size()), first, last, can.ms);
     QVERIFY2(last < 0.5 * first, qPrintable(QString::number(last) + " " + QString::number(first)));
 
     // Apply: every node holds the final estimate (REAL32, read back before the store), stored.
@@ -250,7 +269,9 @@ void TestCanE2e7Axis::recordedTrials_replayToTheSameEstimate()
 
 void TestCanE2e7Axis::fault_endsWithClearErrorQuickly_data()
 {
-    test::addCanFaultRows(300);
+    // At sample 300 of 4 ms, after 4000 frames of 4 ms: the same times at another period.
+    const int periodMs = test::canE2ePeriodMs(4);
+    test::addCanFaultRows(300 * 4 / periodMs, 4000 * 4 / periodMs);
 }
 
 void TestCanE2e7Axis::fault_endsWithClearErrorQuickly()
@@ -258,11 +279,11 @@ void TestCanE2e7Axis::fault_endsWithClearErrorQuickly()
     QFETCH(QStringList, faults);
     QFETCH(QStringList, cliArgs);
     QFETCH(QString, expected);
-    const quint16 port = test::freeLoopbackPort();
+    const quint16 port = test::canE2ePort();
     const QString tag = QString::fromLatin1(QTest::currentDataTag());
     const QString state = m_dir.filePath(tag + QStringLiteral("-state.json"));
     test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-    QVERIFY(robot.start(interface(port), simOptions(state) + faults));
+    QVERIFY(startRobot(robot, port, simOptions(state) + faults));
     const QByteArray stateBefore = readAll(state);
     QVERIFY(!stateBefore.isEmpty());
     const QString logs = tag + QStringLiteral("-logs");
@@ -294,15 +315,16 @@ void TestCanE2e7Axis::fault_endsWithClearErrorQuickly()
 
 void TestCanE2e7Axis::robotKilledMidTrial_clearErrorWithinOneSecond_nothingApplied()
 {
-    const quint16 port = test::freeLoopbackPort();
+    const quint16 port = test::canE2ePort();
     const QString state = m_dir.filePath(QStringLiteral("killed-state.json"));
     // The simulator as a process of this test's own, so that it can be killed (SIGKILL: no
-    // goodbye on the bus; it hosts virtualcan's server, so the tool's socket closes).
+    // goodbye on the bus; over virtualcan it hosts the server, so the tool's socket closes).
     QProcess robot;
     robot.start(QStringLiteral(LEARNID_ROBOT_SIM_PATH),
-                QStringList{QStringLiteral("--can-plugin"), QStringLiteral("virtualcan"),
-                            QStringLiteral("--can-interface"), interface(port),
-                            QStringLiteral("--setpoint-timeout"), QStringLiteral("25")} +
+                test::canE2eBusOptions(port) +
+                    (test::canE2eOnSocketCan() ? QStringList{}
+                                               : QStringList{QStringLiteral("--setpoint-timeout"),
+                                                             QStringLiteral("25")}) +
                     simOptions(state));
     QElapsedTimer ready;
     ready.start();
@@ -316,14 +338,16 @@ void TestCanE2e7Axis::robotKilledMidTrial_clearErrorWithinOneSecond_nothingAppli
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
     tool.setProcessEnvironment(env);
+    test::DrivesFollowWatch watch(interface(port), 3);
     tool.start(QStringLiteral(LEARNID_CLI_PATH),
                canRun(port) + QStringList{QStringLiteral("--iterations"), QStringLiteral("3"),
                                           QStringLiteral("--apply"), QStringLiteral("--report"),
                                           QStringLiteral("killed.json")});
     QVERIFY(tool.waitForStarted());
     // Configuration (7 x 29 SDOs), enable walk, return move and hold take about 1.5 s, the
-    // first plan 2.7 s: 3 s after the start the drives are following the plan.
-    QTest::qWait(3000);
+    // first plan 2.7 s: then the drives follow the set-points.
+    QByteArray progress;
+    QVERIFY2(watch.wait(tool, &progress), progress.constData());
     QCOMPARE(tool.state(), QProcess::Running);
     robot.kill();
     QElapsedTimer sinceKill;
@@ -331,14 +355,24 @@ void TestCanE2e7Axis::robotKilledMidTrial_clearErrorWithinOneSecond_nothingAppli
     QVERIFY(robot.waitForFinished(5000));
     QVERIFY(tool.waitForFinished(10000));
     const qint64 ms = sinceKill.elapsed();
-    const QString err = QString::fromUtf8(tool.readAllStandardError());
+    const QString err = QString::fromUtf8(progress + tool.readAllStandardError());
     qInfo("killed: %s; tool exited %lld ms after the kill",
           qPrintable(err.section(QLatin1Char('\n'), -3, -3)), ms);
     QVERIFY2(tool.exitCode() == 3, qPrintable(QString::number(tool.exitCode()) + err));
-    QVERIFY2(err.contains(QLatin1String("went unconnected")), qPrintable(err));
+    // virtualcan: the server went with the robot; socketcan: the bus falls silent.
+    QVERIFY2(
+        err.contains(QLatin1String(test::canE2eOnSocketCan() ? "no SYNC" : "went unconnected")),
+        qPrintable(err));
     QVERIFY2(ms < 1000, qPrintable(QString::number(ms)));
-    QVERIFY2(err.contains(QLatin1String("no files written")), qPrintable(err));
-    QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("killed.json"))));
+    // The report asked for is written, saying the session ended early and why (issue 23).
+    QVERIFY2(err.contains(QLatin1String("(the session ended early)")), qPrintable(err));
+    QFile killed(m_dir.filePath(QStringLiteral("killed.json")));
+    QVERIFY(killed.open(QIODevice::ReadOnly));
+    const QString endedEarly = QJsonDocument::fromJson(killed.readAll())
+                                   .object()
+                                   .value(QStringLiteral("endedEarly"))
+                                   .toString();
+    QVERIFY2(endedEarly.contains(QLatin1String("went unconnected")), qPrintable(endedEarly));
     QCOMPARE(readAll(state), stateBefore); // nothing applied: the stored sets never changed
 }
 

@@ -121,7 +121,7 @@ void TestCliCan::silentBus_failsWithinSecondsNamingNodeAndObject()
              QStringLiteral("--iterations"), QStringLiteral("1")});
     QVERIFY2(r.exitCode == 3, qPrintable(r.err));
     QVERIFY2(r.err.contains(QLatin1String("node 1")), qPrintable(r.err));
-    QVERIFY2(r.err.contains(QLatin1String("0x1017:00")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("0x1018:01")), qPrintable(r.err));
     QVERIFY2(r.err.contains(QLatin1String("500 ms")), qPrintable(r.err));
     QVERIFY2(r.ms < 5000, qPrintable(QString::number(r.ms)));
     // The trial that never moved: no figures to show, said so; every sentence ends once.

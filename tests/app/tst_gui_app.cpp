@@ -4,6 +4,7 @@
 #include "../support/SharedData.h"
 #include "../support/ToolRun.h"
 
+#include <QFile>
 #include <QImage>
 #include <QProcess>
 #include <QSet>
@@ -110,6 +111,64 @@ private slots:
         const Run run = learnid(arguments);
         QCOMPARE(run.exitCode, 1);
         QVERIFY2(run.err.contains(expected), qPrintable(run.err));
+    }
+
+    // learnid --help where there is no display (a server, an SSH session): the options, and
+    // that the window needs a display; without --help one line says so, not Qt's abort.
+    void help_withoutADisplay_printsTheOptions()
+    {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char *name : {"QT_QPA_PLATFORM", "DISPLAY", "WAYLAND_DISPLAY"})
+            env.remove(QLatin1String(name));
+        env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
+        const QString program = QStringLiteral(LEARNID_GUI_PATH);
+        const Run help =
+            learnid::test::runTool(program, {QStringLiteral("--help")}, {}, 60000, env);
+        QVERIFY2(help.exitCode == 0, qPrintable(help.err));
+        for (const char *expected :
+             {"Usage:", "--screenshot <file>", "--scenario <file>", "--language <locale>",
+              "[SCENARIO.json]", "The window needs a display; learnid-cli works without one."})
+            QVERIFY2(help.out.contains(QLatin1String(expected)), qPrintable(help.out));
+        QVERIFY2(help.err.isEmpty(), qPrintable(help.err));
+
+        const Run window = learnid::test::runTool(program, {}, {}, 60000, env);
+        QCOMPARE(window.exitCode, 1);
+        QCOMPARE(window.err.trimmed().count(QLatin1Char('\n')), 0); // one line
+        QVERIFY2(window.err.startsWith(QLatin1String("learnid: the window needs a display")),
+                 qPrintable(window.err));
+        QVERIFY2(!window.err.contains(QLatin1String("could not connect")), qPrintable(window.err));
+    }
+
+    // learnid SCENARIO.json (or --scenario FILE) opens that scenario: here one whose abort limit
+    // (0.001 deg) the paper arm's first trial exceeds (0.039 deg), so the session the screenshot
+    // runs does not complete, where the default scenario's does (screenshot_rendersTheWindow...).
+    void scenarioArgument_opensThatScenario()
+    {
+        QTemporaryDir dir;
+        const QString scenario = dir.filePath(QStringLiteral("aborted.json"));
+        QFile file(scenario);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"estimator": {"iterations": 2}, "safety": {"maxTrackingErrorDeg": 0.001}})");
+        file.close();
+        const QString png = dir.filePath(QStringLiteral("x.png"));
+        const QStringList screenshot{QStringLiteral("--screenshot"), png};
+        for (const QStringList &given :
+             {QStringList{scenario}, QStringList{QStringLiteral("--scenario"), scenario}}) {
+            const Run run = learnid(given + screenshot);
+            QCOMPARE(run.exitCode, 1);
+            QVERIFY2(run.err.contains(QLatin1String("the simulated session did not complete")),
+                     qPrintable(run.err));
+        }
+        const QString missing = dir.filePath(QStringLiteral("missing.json"));
+        const Run notLoaded = learnid(QStringList{missing} + screenshot);
+        QCOMPARE(notLoaded.exitCode, 1);
+        QVERIFY2(notLoaded.err.contains(
+                     QStringLiteral("Scenario not loaded: cannot read %1").arg(missing)),
+                 qPrintable(notLoaded.err));
+        const Run two = learnid({scenario, QStringLiteral("--scenario"), missing});
+        QCOMPARE(two.exitCode, 1);
+        QVERIFY2(two.err.contains(QStringLiteral("learnid: one scenario at a time, got 2")),
+                 qPrintable(two.err));
     }
 
     void unknownLanguage_stillStartsTheWindow()

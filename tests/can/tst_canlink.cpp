@@ -11,6 +11,7 @@ class TestCanLink : public QObject
 
 private slots:
     void receivedFrame_reachesEverySubscriber();
+    void errorFrame_isKeptApartFromTheProtocolFrames();
     void send_reportsTheFrameSent();
     void send_whenDeviceUnconnected_failsWithReason();
     void send_whenDeviceRefuses_failsWithDeviceError();
@@ -30,6 +31,27 @@ void TestCanLink::receivedFrame_reachesEverySubscriber()
     QCOMPARE(first, (QList<quint32>{0x601, 0x000}));
     QCOMPARE(second, first);
     QCOMPARE(net.slave->framesAvailable(), 0); // the link took them
+}
+
+// CAN_ERR_BUSERROR is 0x080, the SYNC's COB-ID: a unit that took the error frame for a frame
+// of the bus would see a SYNC.
+void TestCanLink::errorFrame_isKeptApartFromTheProtocolFrames()
+{
+    test::CanTestBus net;
+    QList<quint32> frames, errors;
+    connect(&net.slaveLink, &CanLink::frameReceived, this,
+            [&](const QCanBusFrame &f) { frames.append(f.frameId()); });
+    connect(&net.slaveLink, &CanLink::errorFrameReceived, this,
+            [&](const QCanBusFrame &f) { errors.append(quint32(f.error().toInt())); });
+    QCanBusFrame error(QCanBusFrame::ErrorFrame);
+    error.setError(QCanBusFrame::BusError);
+    error.setPayload(QByteArray(8, '\0'));
+    net.slave->injectErrorFrame(error);
+    QVERIFY(net.masterLink.send(QCanBusFrame(0x080, QByteArray())));
+    QTRY_COMPARE_WITH_TIMEOUT(frames.size(), 1, 1000);
+    QCOMPARE(frames, QList<quint32>{0x080});
+    QCOMPARE(errors, QList<quint32>{0x080});
+    QCOMPARE(net.wire.size(), 1); // the error frame is not on the wire
 }
 
 void TestCanLink::send_reportsTheFrameSent()

@@ -8,6 +8,7 @@
 #include "can/Cia402Drive.h"
 #include "can/EmcyConsumer.h"
 #include "can/HeartbeatProducer.h"
+#include "can/JointIdentity.h"
 #include "can/ManufacturerObjects.h"
 #include "can/MemoryCanDevice.h"
 #include "can/Nmt.h"
@@ -30,6 +31,7 @@ public:
     struct Node
     {
         quint8 id = 0;
+        int joint = 0; ///< 1-based, the node's place in the list
         ObjectDictionary od;
         std::unique_ptr<SdoServer> server;
         std::unique_ptr<HeartbeatProducer> heartbeat;
@@ -51,6 +53,7 @@ public:
         for (const int id : nodes) {
             auto node = std::make_unique<Node>();
             node->id = quint8(id);
+            node->joint = int(m_nodes.size()) + 1; // listed in joint order
             buildDictionary(*node);
             node->server = std::make_unique<SdoServer>(&m_link, node->id, &node->od);
             node->heartbeat = std::make_unique<HeartbeatProducer>(&m_link, node->id);
@@ -120,6 +123,12 @@ private:
         using A = ObjectDictionary::Access;
         ObjectDictionary &od = n.od;
         od.add(0x1000, 0, DataType::Unsigned32, A::ReadOnly, 0x00020192);
+        // Identity (docs/can-protocol.md §2.4): commissioned as joint n.joint of the paper arm.
+        for (quint8 s = 1; s <= 4; ++s)
+            od.add(0x1018, s, DataType::Unsigned32, A::ReadOnly, s == 4 ? 500 + n.joint : s);
+        od.add(0x2400, 1, DataType::Unsigned32, A::ReadWrite,
+               objects::robotIdentityOf(QStringLiteral("paper-2link")));
+        od.add(0x2400, 2, DataType::Unsigned8, A::ReadWrite, n.joint);
         od.add(0x1006, 0, DataType::Unsigned32, A::ReadWrite, 2000);
         od.add(0x1010, 1, DataType::Unsigned32, A::ReadWrite, 0, [&n](const QByteArray &raw) {
             if (canopen::readU32(raw, 0) != objects::saveSignature)

@@ -23,6 +23,7 @@ class TestCandumpReplayDevice : public QObject
 private slots:
     void masterFrames_areRecognisedByCobId();
     void robotFrames_comeUpToTheMastersNextFrame();
+    void busRecording_masterAheadOfRobotFrames_matchesAndPlaysThemAfter();
     void differentMasterFrame_endsTheReplayNamingBoth();
 };
 
@@ -52,6 +53,33 @@ void TestCandumpReplayDevice::robotFrames_comeUpToTheMastersNextFrame()
     QTRY_COMPARE(received, (QList<quint32>{0x701, 0x080, 0x181, 0x080}));
     QVERIFY(link.send(QCanBusFrame(0x201, QByteArray::fromHex("0200"))));
     QVERIFY(device.atEnd());
+}
+
+// candump of a bus: both nodes answer the SYNC, and the master's second set-point went out
+// after node 2's TPDO, which the master had not handled yet when it wrote both set-points.
+void TestCandumpReplayDevice::busRecording_masterAheadOfRobotFrames_matchesAndPlaysThemAfter()
+{
+    CandumpReplayDevice device({entry(0x080, "01"), entry(0x181, "11"), entry(0x201, "0100"),
+                                entry(0x182, "12"), entry(0x202, "0200"), entry(0x080, "02")});
+    CanLink link(&device);
+    QList<quint32> received;
+    connect(&link, &CanLink::frameReceived,
+            [&](const QCanBusFrame &f) { received << f.frameId(); });
+    QVERIFY(device.connectDevice());
+    QTRY_COMPARE(received, (QList<quint32>{0x080, 0x181}));
+    QVERIFY(link.send(QCanBusFrame(0x201, QByteArray::fromHex("0100"))));
+    QVERIFY(link.send(QCanBusFrame(0x202, QByteArray::fromHex("0200")))); // before 0x182 played
+    QCOMPARE(device.state(), QCanBusDevice::ConnectedState);
+    QCOMPARE(device.position(), 4); // 0x080, 0x181 played, 0x201 and 0x202 matched
+    QTRY_COMPARE(received, (QList<quint32>{0x080, 0x181, 0x182, 0x080}));
+    QVERIFY(device.atEnd());
+    QCOMPARE(device.position(), 6);
+    // A master frame that is not the log's next one still ends the replay.
+    CandumpReplayDevice other({entry(0x080, "01"), entry(0x181, "11"), entry(0x201, "0100")});
+    QVERIFY(other.connectDevice());
+    QVERIFY(!other.writeFrame(QCanBusFrame(0x202, QByteArray::fromHex("0100"))));
+    QVERIFY2(other.errorString().contains(QLatin1String("log frame 3")),
+             qPrintable(other.errorString()));
 }
 
 void TestCandumpReplayDevice::differentMasterFrame_endsTheReplayNamingBoth()

@@ -170,18 +170,26 @@ void TestCanRobotOptions::nodeIds_anyListUpTo127()
 
 void TestCanRobotOptions::setSyncPeriod_keepsTheSyncTimeoutInMilliseconds()
 {
-    CanRobotOptions o; // 10 periods of 2 ms
-    setSyncPeriod(o, 0.004);
-    QCOMPARE(o.syncPeriod, 0.004);
-    QCOMPARE(o.syncGapPeriods, 5); // still 20 ms
+    CanRobotOptions o; // default: 10 periods, at least 50 ms
+    QCOMPARE(effectiveSyncTimeoutMs(o), 50);
+    QCOMPARE(effectiveHeartbeatPeriodMs(o), 100);
+    setSyncPeriod(o, 0.01);
+    QCOMPARE(o.syncPeriod, 0.01);
+    QCOMPARE(effectiveSyncTimeoutMs(o), 100); // the default follows the period
+    QCOMPARE(effectiveHeartbeatPeriodMs(o), 100);
     setSyncTimeoutMs(o, 200);
-    QCOMPARE(o.syncGapPeriods, 50);
+    QCOMPARE(effectiveSyncTimeoutMs(o), 200);
     setSyncPeriod(o, 0.003);
-    QCOMPARE(o.syncGapPeriods, 67); // 201 ms: at least the 200 asked
-    setSyncPeriod(o, 0.05);
-    QCOMPARE(o.syncGapPeriods, 5);
+    QCOMPARE(effectiveSyncTimeoutMs(o), 200); // given in ms: kept
+    setSyncPeriod(o, 0.15);
+    QCOMPARE(effectiveSyncTimeoutMs(o), 300); // at least 2 periods
+    QCOMPARE(effectiveHeartbeatPeriodMs(o), 1500);
     setSyncPeriod(o, 0.0); // ignored
-    QCOMPARE(o.syncPeriod, 0.05);
+    QCOMPARE(o.syncPeriod, 0.15);
+    o.heartbeatPeriodMs = 250;
+    QCOMPARE(effectiveHeartbeatPeriodMs(o), 250);
+    setSyncTimeoutMs(o, 0);
+    QCOMPARE(effectiveSyncTimeoutMs(o), 1500);
 }
 
 QTEST_GUILESS_MAIN(TestCanRobotOptions)

@@ -92,6 +92,8 @@ private slots:
     void heartbeatLoss_aborts();
     void cancel_stopsAtNextSync();
     void deviceLost_endsTheTrialNamingTheDevice();
+    void errorFrame_fatalStopsNamingTheError_otherIsOnlyLogged_data();
+    void errorFrame_fatalStopsNamingTheError_otherIsOnlyLogged();
     void apply_writesReadsBackAndStores();
     void apply_readBackMismatch_storesNothing();
     void apply_abort_storesNothing();
@@ -245,6 +247,61 @@ void TestCanRobotWorker::deviceLost_endsTheTrialNamingTheDevice()
     // The next call connects again.
     s.drives.onSync = nullptr;
     QCOMPARE(s.apply(Eigen::Vector3d(20, 5, 8)), QString());
+}
+
+void TestCanRobotWorker::errorFrame_fatalStopsNamingTheError_otherIsOnlyLogged_data()
+{
+    // Error classes (the identifier) and byte 1 of a controller error, as in linux/can/error.h.
+    QTest::addColumn<int>("classes");
+    QTest::addColumn<int>("controller");
+    QTest::addColumn<QString>("expected"); // in the trial's message; empty: the trial completes
+    QTest::newRow("bus-off") << 0x40 << 0x00 << QStringLiteral("reported bus off");
+    QTest::newRow("error-passive")
+        << 0x04 << 0x20 << QStringLiteral("reported controller error passive (tx)");
+    QTest::newRow("rx-overflow") << 0x04 << 0x01 << QStringLiteral("buffer overflow");
+    QTest::newRow("no-ack") << 0x20 << 0x00 << QStringLiteral("no acknowledgement");
+    QTest::newRow("warning") << 0x04 << 0x08 << QString();
+    QTest::newRow("lost-arbitration") << 0x02 << 0x00 << QString();
+}
+
+void TestCanRobotWorker::errorFrame_fatalStopsNamingTheError_otherIsOnlyLogged()
+{
+    QFETCH(int, classes);
+    QFETCH(int, controller);
+    QFETCH(QString, expected);
+    Setup s;
+    int enabledSyncs = 0;
+    QElapsedTimer sinceError;
+    s.drives.onSync = [&](qint64) {
+        if (s.drives.node(1).drive.state() != cia402::State::OperationEnabled ||
+            ++enabledSyncs != 300 || !s.master)
+            return;
+        QCanBusFrame error(QCanBusFrame::ErrorFrame);
+        error.setError(QCanBusFrame::FrameErrors(classes));
+        QByteArray payload(8, '\0');
+        payload[1] = char(controller);
+        error.setPayload(payload);
+        s.master->injectErrorFrame(error);
+        sinceError.start();
+    };
+    s.drives.startSync();
+    const TrialPlan plan = test::testPlan(400);
+    const TrialRecord r = s.run(plan);
+    QVERIFY(sinceError.isValid()); // injected during the trial
+    if (expected.isEmpty()) {
+        QVERIFY2(r.completed(), qPrintable(r.message));
+        QCOMPARE(r.samples(), plan.samples());
+        return;
+    }
+    const qint64 ms = sinceError.elapsed();
+    QCOMPARE(r.status, TrialStatus::Faulted);
+    QVERIFY2(r.message.contains(QLatin1String("memory/master")), qPrintable(r.message));
+    QVERIFY2(r.message.contains(expected), qPrintable(r.message));
+    QVERIFY2(r.message.contains(QStringLiteral("error frame 0x%1").arg(classes, 0, 16)),
+             qPrintable(r.message));
+    QVERIFY2(r.message.contains(QLatin1String("SYNC")), qPrintable(r.message));
+    QVERIFY(s.drives.controlwords.contains(0x0002)); // quick stop: the device still writes
+    QVERIFY2(ms < 1000, qPrintable(QString::number(ms)));
 }
 
 void TestCanRobotWorker::apply_writesReadsBackAndStores()

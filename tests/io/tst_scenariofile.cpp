@@ -60,6 +60,8 @@ void compareScenarios(const Scenario &a, const Scenario &b)
     QVERIFY(bitEqual(a.restBefore, b.restBefore));
     QVERIFY(bitEqual(a.restAfter, b.restAfter));
     QVERIFY(bitEqual(a.planningFraction, b.planningFraction));
+    QCOMPARE(a.gentleTrials, b.gentleTrials);
+    QVERIFY(bitEqual(a.gentleSpeed, b.gentleSpeed));
     QVERIFY(bitEqual(a.controller.samplePeriod, b.controller.samplePeriod));
     QVERIFY(bitEqual(a.controller.kp, b.controller.kp));
     QVERIFY(bitEqual(a.controller.ki, b.controller.ki));
@@ -127,6 +129,8 @@ void TestScenarioFile::defaultScenario_printsEveryKeyInDocumentedOrder()
                               "restBefore",
                               "restAfter",
                               "planningFraction",
+                              "gentleTrials",
+                              "gentleSpeed",
                               "controller",
                               "samplePeriod",
                               "kp",
@@ -175,6 +179,8 @@ void TestScenarioFile::changedScenario_roundTripsBitExactly()
     s.restBefore = 0.0;
     s.restAfter = 2.0;
     s.planningFraction = 1.0;
+    s.gentleTrials = 3;
+    s.gentleSpeed = 0.3 + 0.1;
     s.controller.samplePeriod = 0.001;
     s.controller.kp << 1e4, 2e4;
     s.controller.ki << 0.0, 1.5;
@@ -223,6 +229,9 @@ void TestScenarioFile::boundaryValues_areAccepted_data()
     QTest::newRow("repetitions 20") << "estimator.repetitions" << QJsonValue(20);
     QTest::newRow("substeps 1") << "simulation.substeps" << QJsonValue(1);
     QTest::newRow("planningFraction 1") << "path.planningFraction" << QJsonValue(1.0);
+    QTest::newRow("gentleTrials 0") << "path.gentleTrials" << QJsonValue(0);
+    QTest::newRow("gentleTrials 100") << "path.gentleTrials" << QJsonValue(100);
+    QTest::newRow("gentleSpeed 1") << "path.gentleSpeed" << QJsonValue(1.0);
     QTest::newRow("samplePeriod 0.1") << "controller.samplePeriod" << QJsonValue(0.1);
     QTest::newRow("restBefore 0") << "path.restBefore" << QJsonValue(0.0);
     QTest::newRow("ki 0") << "controller.ki[0]" << QJsonValue(0.0);
@@ -314,6 +323,18 @@ void TestScenarioFile::badValue_isRejectedWithKeyPath_data()
         "path.planningFraction: must be greater than 0 and at most 1, got 0");
     row("planningFraction above 1", "path.planningFraction", 1.5,
         "path.planningFraction: must be greater than 0 and at most 1, got 1.5");
+    row("gentleTrials negative", "path.gentleTrials", -1,
+        "path.gentleTrials: must be an integer from 0 to 100, got -1");
+    row("gentleTrials fraction", "path.gentleTrials", 1.5,
+        "path.gentleTrials: must be an integer from 0 to 100, got 1.5");
+    row("gentleTrials 101", "path.gentleTrials", 101,
+        "path.gentleTrials: must be an integer from 0 to 100, got 101");
+    row("gentleSpeed zero", "path.gentleSpeed", 0,
+        "path.gentleSpeed: must be greater than 0 and at most 1, got 0");
+    row("gentleSpeed above 1", "path.gentleSpeed", 2,
+        "path.gentleSpeed: must be greater than 0 and at most 1, got 2");
+    row("gentleSpeed string", "path.gentleSpeed", QStringLiteral("0.5"),
+        "path.gentleSpeed: must be a number, got \"0.5\"");
     row("rho zero", "estimator.rho", 0, "estimator.rho: must be a positive number, got 0");
     row("rankTolerance 1", "estimator.rankTolerance", 1,
         "estimator.rankTolerance: must be greater than 0 and less than 1, got 1");

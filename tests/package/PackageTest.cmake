@@ -55,8 +55,8 @@ foreach(file usr/share/applications/learnid.desktop
     expect("EXISTS \"${root}/${file}\"" "the package lacks /${file}")
 endforeach()
 file(STRINGS "${root}/usr/share/applications/learnid.desktop" entry REGEX "^(Exec|Icon)=")
-expect("\"Exec=learnid;Icon=learnid\" STREQUAL entry"
-       "desktop entry Exec/Icon are '${entry}', expected Exec=learnid;Icon=learnid")
+expect("\"Exec=learnid %f;Icon=learnid\" STREQUAL entry"
+       "desktop entry Exec/Icon are '${entry}', expected Exec=learnid %f;Icon=learnid")
 
 # 4. Each executable: present, no absolute RPATH, and every Qt library it links is
 # in Depends (libQt6Foo.so.6 is Debian's libqt6foo6).

@@ -13,8 +13,8 @@ namespace learnid::test {
 
 /// Rows faults (learnid-robot-sim options), cliArgs (learnid-cli run options) and expected (in
 /// the CLI's error): a dropped TPDO, a silent robot, an EMCY at emcySample, an SDO abort of the
-/// first parameter write during apply.
-inline void addCanFaultRows(int emcySample)
+/// first parameter write during apply; the robot goes silent after silentAfter frames.
+inline void addCanFaultRows(int emcySample, int silentAfter = 4000)
 {
     QTest::addColumn<QStringList>("faults");
     QTest::addColumn<QStringList>("cliArgs");
@@ -22,7 +22,8 @@ inline void addCanFaultRows(int emcySample)
     const QStringList one{QStringLiteral("--iterations"), QStringLiteral("1")};
     QTest::newRow("drop") << QStringList{QStringLiteral("--drop-fraction"), QStringLiteral("0.02")}
                           << one << QStringLiteral("sample missing");
-    QTest::newRow("silent") << QStringList{QStringLiteral("--silent-after"), QStringLiteral("4000")}
+    QTest::newRow("silent") << QStringList{QStringLiteral("--silent-after"),
+                                           QString::number(silentAfter)}
                             << one << QStringLiteral("no SYNC");
     QTest::newRow("emcy") << QStringList{QStringLiteral("--emcy-at-sample"),
                                          QString::number(emcySample)}

@@ -40,11 +40,18 @@ public:
     /// 2 cores with other tests; the protocol does not change, only how long a drive waits.
     bool start(const QString &interface, const QStringList &options = {})
     {
-        m_process.start(m_program,
-                        QStringList{QStringLiteral("--can-plugin"), QStringLiteral("virtualcan"),
-                                    QStringLiteral("--can-interface"), interface,
-                                    QStringLiteral("--setpoint-timeout"), QStringLiteral("25")} +
-                            options);
+        return startOn(QStringLiteral("virtualcan"), interface,
+                       QStringList{QStringLiteral("--setpoint-timeout"), QStringLiteral("25")} +
+                           options);
+    }
+
+    /// Starts the simulator on any plugin's interface with the given options (its own default
+    /// set-point timeout unless they say otherwise) and waits for its "ready" line.
+    bool startOn(const QString &plugin, const QString &interface, const QStringList &options)
+    {
+        m_process.start(m_program, QStringList{QStringLiteral("--can-plugin"), plugin,
+                                               QStringLiteral("--can-interface"), interface} +
+                                       options);
         QElapsedTimer clock;
         clock.start();
         while (clock.elapsed() < 10000) {

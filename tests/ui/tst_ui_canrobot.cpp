@@ -6,6 +6,7 @@
 #include "ui/MessageBar.h"
 #include "ui/RobotPanel.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QLineEdit>
 #include <QSignalSpy>
@@ -46,7 +47,7 @@ private slots:
         QVERIFY2(text.contains(QStringLiteral("200")), qPrintable(text));
     }
 
-    void syncTimeout_becomesTheGapInSyncPeriods()
+    void syncTimeout_isTheLongestGapOrTheDefaultOfThePeriod()
     {
         WindowFixture f;
         chooseCan(f, QStringLiteral("virtualcan"), QStringLiteral("tcp://127.0.0.1:1/can0"),
@@ -54,14 +55,65 @@ private slots:
         auto *timeout = f.window->findChild<QSpinBox *>(QStringLiteral("canSyncTimeout"));
         const auto *panel = f.window->findChild<RobotPanel *>();
         QVERIFY(timeout && panel);
-        for (const int ms : {20, 21, 200}) {
+        QCOMPARE(timeout->value(), 0); // automatic: 10 periods, at least 50 ms
+        // {spin box, SYNC timeout in force at the 2 ms of the paper scenario}
+        for (const auto &[ms, expected] : {std::pair{0, 50}, {3, 4}, {21, 21}, {200, 200}}) {
             timeout->setValue(ms);
             QString error;
             const std::optional<RobotRequest> choice = panel->choice(&error);
             QVERIFY2(choice.has_value(), qPrintable(error));
-            // ceil(ms / period): a gap of exactly ms is still allowed
-            const int expected = int(std::ceil(ms / (1000.0 * choice->can.syncPeriod)));
-            QCOMPARE(choice->can.syncGapPeriods, expected);
+            QCOMPARE(choice->can.syncPeriod, 0.002);
+            QCOMPARE(effectiveSyncTimeoutMs(choice->can), expected);
+        }
+    }
+
+    // learnid-cli's --commission in the window: unticked, drives never commissioned are refused
+    // before any motion, naming node and joint; ticked, the same drives run the trial.
+    void firstCommissioning_isTheCheckBox_refusedWithoutItRunsWithIt()
+    {
+        const quint16 port = freeLoopbackPort();
+        QVERIFY(port > 0);
+        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
+        RobotSimProcess sim(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+        QVERIFY(sim.start(interface, {QStringLiteral("--uncommissioned")}));
+
+        WindowFixture f;
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        SessionController *c = f.window->controller();
+        chooseCan(f, QStringLiteral("virtualcan"), interface, QStringLiteral("1,2"));
+        f.window->findChild<QSpinBox *>(QStringLiteral("canSyncTimeout"))->setValue(200);
+        auto *commission = f.window->findChild<QCheckBox *>(QStringLiteral("canCommission"));
+        const auto *panel = f.window->findChild<RobotPanel *>();
+        QVERIFY(commission && panel);
+        QVERIFY(!commission->isChecked()); // never on by default
+        for (const bool ticked : {false, true}) {
+            commission->setChecked(ticked);
+            QString error;
+            const std::optional<RobotRequest> choice = panel->choice(&error);
+            QVERIFY2(choice.has_value(), qPrintable(error));
+            QCOMPARE(choice->can.commissioning, ticked);
+
+            QVERIFY(f.click("connectButton"));
+            QTRY_VERIFY_WITH_TIMEOUT(c->lastCheck().has_value(), 20000);
+            QVERIFY(!commission->isEnabled()); // not while connected
+            QSignalSpy finished(c, &SessionController::runFinished);
+            QTRY_VERIFY_WITH_TIMEOUT(f.button("runTrialButton")->isEnabled(), 20000);
+            QVERIFY(f.click("runTrialButton"));
+            QVERIFY(finished.wait(60000));
+            if (!ticked) {
+                const QString text = f.window->messageBar()->text();
+                QVERIFY2(text.contains(QStringLiteral("node 1 (joint 1) has never been "
+                                                      "commissioned")) &&
+                             text.contains(QStringLiteral("First commissioning")),
+                         qPrintable(text));
+            } else {
+                QVERIFY(!c->history().isEmpty());
+                QVERIFY2(c->history().constLast().record.completed(),
+                         qPrintable(c->history().constLast().record.message));
+            }
+            QVERIFY(f.click("connectButton")); // disconnect
+            QTRY_VERIFY_WITH_TIMEOUT(!c->isOpen(), 10000);
+            QVERIFY(commission->isEnabled());
         }
     }
 

@@ -170,9 +170,19 @@ void TestRecordedData::doublePendulum_showsTheLibrarysFiguresAndExportsWhatItSho
             QCOMPARE(plot->pointCount(j, curve), int(v.samples()));
         QCOMPARE(plot->timeRange(j), plot->timeRange(0)); // one time axis
     }
-    QVERIFY(f.dialog.findChild<QLabel *>(QStringLiteral("identifySummary"))
-                ->text()
-                .contains(QStringLiteral("physically consistent")));
+    const QString summary = f.dialog.findChild<QLabel *>(QStringLiteral("identifySummary"))->text();
+    QVERIFY(summary.contains(QStringLiteral("physically consistent")));
+    // The verdict per link, as checkPlausibility() found it: its smallest principal moment, the
+    // CAD link's and (I1 + I2) / I3 in one row of the table.
+    QCOMPARE(expected.verdict.plausibility.size(), size_t(2));
+    for (const LinkPlausibility &p : expected.verdict.plausibility) {
+        const QString cells = QStringLiteral("<td align=\"right\">%1</td><td align=\"right\">%2"
+                                             "</td><td align=\"right\">%3</td>")
+                                  .arg(QString::number(p.moments[0], 'g', 3),
+                                       QString::number(p.cadSmallestMoment, 'g', 3),
+                                       QString::number(p.triangleRatio, 'f', 3));
+        QVERIFY2(summary.contains(cells), qPrintable(cells + QLatin1Char('\n') + summary));
+    }
 
     // Nothing to export before Accept; then both files, read back.
     QVERIFY(!f.button("exportParameterFileButton")->isEnabled());

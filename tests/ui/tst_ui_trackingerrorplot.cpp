@@ -10,7 +10,9 @@
 #include <QtCharts/QChartView>
 #include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
+#include <QtCharts/QValueAxis>
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
 
 using namespace learnid;
@@ -91,6 +93,7 @@ class TestTrackingErrorPlot : public QObject
     Q_OBJECT
 
 private slots:
+    void labels_fitThePlot();
     void jointSelector_listsTheJointsWithTheirNames()
     {
         TrackingErrorPlot plot;
@@ -196,7 +199,8 @@ private slots:
                 QVERIFY(std::abs(shade[j][0].hslHue() - colours[j].hslHue()) <= 6);
         }
         // The legend names the 7 joints, by the latest trial's series.
-        plot.show(); // the legend's items are visible once the chart is
+        plot.resize(1400, 500); // room for every "Joint k" (fitLabelsToThePlot: shorter ones)
+        plot.show();            // the legend's items are visible once the chart is
         QCoreApplication::processEvents();
         QStringList legend;
         for (const QLegendMarker *m : plot.chartView()->chart()->legend()->markers())
@@ -265,6 +269,69 @@ private slots:
         QCOMPARE(plot.axisInterval(), 0.02);
     }
 };
+
+// The 7-axis session's plot (issue 23): the legend's joint entries and the error axis's title are
+// shortened to what the plot shows in full, never cut by QtCharts ("Joint 1 (panda_join...",
+// "Tracking error ..."): wide, "Joint 1 (panda_joint1)"; narrower, the joint's name
+// "panda_joint1"; then "Joint 1"; then "1". Held against the legend's own width and the plot
+// area's height, measured with the fonts they are drawn in.
+void TestTrackingErrorPlot::labels_fitThePlot()
+{
+    TrackingErrorPlot plot;
+    plot.setJointNames(pandaNames());
+    for (int k = 0; k < kTrials; ++k)
+        plot.setTrialCurves(k, trackingErrorCurves(trial(k)));
+    plot.setSelectedTrial(-1);
+    QChart *chart = plot.chartView()->chart();
+    const QFontMetricsF legendFont(chart->legend()->font());
+    const auto *axis = qobject_cast<QValueAxis *>(chart->axes(Qt::Vertical).constFirst());
+    QVERIFY(axis);
+    const QFontMetricsF titleFont(axis->titleFont());
+    const auto forms = [](int j) {
+        return QStringList{QStringLiteral("Joint %1 (panda_joint%1)").arg(j + 1),
+                           QStringLiteral("panda_joint%1").arg(j + 1),
+                           QStringLiteral("Joint %1").arg(j + 1), QString::number(j + 1)};
+    };
+    QList<int> used;
+    for (const QSize size :
+         {QSize(2400, 600), QSize(1100, 260), QSize(800, 240), QSize(420, 240)}) {
+        plot.resize(size);
+        plot.show();
+        for (int i = 0; i < 5; ++i) // the layout, then the queued fitting after it
+            QCoreApplication::processEvents();
+        const qreal share = chart->legend()->geometry().width() / kJoints;
+        int form = -1;
+        int shown = 0;
+        for (const QLegendMarker *m : chart->legend()->markers()) {
+            if (!m->isVisible())
+                continue;
+            const int j = shown++;
+            const int f = int(forms(j).indexOf(m->label()));
+            QVERIFY2(f >= 0, qPrintable(m->label()));
+            QVERIFY2(form < 0 || f == form, "one form for all joints");
+            form = f;
+            // The label and its marker (a square of the font's height) within the entry's share.
+            QVERIFY2(legendFont.horizontalAdvance(m->label()) + legendFont.height() <= share,
+                     qPrintable(QStringLiteral("%1 in %2 px").arg(m->label()).arg(share)));
+        }
+        QCOMPARE(shown, kJoints);
+        used.append(form);
+        const QString title = axis->titleText();
+        QVERIFY2(QStringList({QStringLiteral("Tracking error [deg]"), QStringLiteral("Error [deg]"),
+                              QStringLiteral("[deg]")})
+                     .contains(title),
+                 qPrintable(title));
+        QVERIFY2(
+            titleFont.horizontalAdvance(title) <= chart->plotArea().height(),
+            qPrintable(QStringLiteral("%1 in %2 px").arg(title).arg(chart->plotArea().height())));
+        if (size.height() >= 600)
+            QCOMPARE(title, QStringLiteral("Tracking error [deg]"));
+    }
+    // Wide, the full label; narrower, shorter ones, never longer again.
+    QCOMPARE(used.constFirst(), 0);
+    QVERIFY2(used.constLast() > 0, qPrintable(QString::number(used.constLast())));
+    QVERIFY(std::is_sorted(used.begin(), used.end()));
+}
 
 QTEST_MAIN(TestTrackingErrorPlot)
 #include "tst_ui_trackingerrorplot.moc"
