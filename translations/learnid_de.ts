@@ -6341,7 +6341,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
-        <location filename="../ui/PreTrialCheckView.cpp" line="+36"/>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+38"/>
         <source>Joint</source>
         <translation>Gelenk</translation>
     </message>
@@ -6366,12 +6366,12 @@ Verhältnis %</translation>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>The largest torque holding the arm against gravity takes on this path, as a share of the limit</source>
         <translation>Das größte Moment, das das Halten des Arms gegen die Schwerkraft auf dieser Bahn erfordert, als Anteil der Grenze</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Planned motion:</source>
         <translation>Geplante Bewegung:</translation>
     </message>

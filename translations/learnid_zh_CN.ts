@@ -6321,7 +6321,7 @@ ratio %</source>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
-        <location filename="../ui/PreTrialCheckView.cpp" line="+36"/>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+38"/>
         <source>Joint</source>
         <translation>关节</translation>
     </message>
@@ -6346,12 +6346,12 @@ ratio %</source>
         <translation>重力</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>The largest torque holding the arm against gravity takes on this path, as a share of the limit</source>
         <translation>在该路径上克服重力保持机械臂所需的最大力矩，占限值的比例</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Planned motion:</source>
         <translation>规划运动：</translation>
     </message>
