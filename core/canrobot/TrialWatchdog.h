@@ -30,6 +30,10 @@ public:
         m_syncGap.start();
         m_sinceSync.start();
     }
+    /// Counts the SYNC gap and each heartbeat's timeout from now on: after the master's own
+    /// pause (planning the return move), whose frames still wait in the socket, so that the
+    /// master's pause is not taken for the robot side's (docs/can-protocol.md §8.2).
+    void restartClocks();
     void stop();
 
 signals:
