@@ -30,10 +30,10 @@ private slots:
 void TestTimeouts::silentRobot_detectedAfterTheSyncTimeout_stopWithinItsBound_data()
 {
     QTest::addColumn<int>("periodMs");
-    QTest::addColumn<int>("syncTimeoutMs"); // max(10 Ts, 50 ms)
-    QTest::addColumn<int>("stopBoundMs");   // max(20 Ts, 100 ms)
-    QTest::newRow("2 ms") << 2 << 50 << 100;  // the floors: 10 Ts would be 20 ms
-    QTest::newRow("5 ms") << 5 << 50 << 100;  // 10 Ts = the floor; 2 Ts (10 ms) was too short
+    QTest::addColumn<int>("syncTimeoutMs");     // max(10 Ts, 50 ms)
+    QTest::addColumn<int>("stopBoundMs");       // max(20 Ts, 100 ms)
+    QTest::newRow("2 ms") << 2 << 50 << 100;    // the floors: 10 Ts would be 20 ms
+    QTest::newRow("5 ms") << 5 << 50 << 100;    // 10 Ts = the floor; 2 Ts (10 ms) was too short
     QTest::newRow("10 ms") << 10 << 100 << 200; // 10 and 20 periods
 }
 
