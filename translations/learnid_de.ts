@@ -672,7 +672,17 @@
 <context>
     <name>ControllerLogCsv</name>
     <message>
-        <location filename="../core/io/ControllerLogCsv.cpp" line="+37"/>
+        <location filename="../core/io/ControllerLogCsv.cpp" line="+56"/>
+        <source>&quot;# stopped-by:&quot; says %1; known: %2</source>
+        <translation>&quot;# stopped-by:&quot; sagt %1; bekannt: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing</source>
+        <translation>nichts</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s line &quot;# plan-id: %2&quot; into its log</source>
         <translation>%1: keine Kommentarzeile „# plan-id:“; der Regler übernimmt die Zeile „# plan-id: %2“ des Plans in sein Log</translation>
     </message>
@@ -692,9 +702,19 @@
         <translation>t = %1 s liegt nicht im Zeitraster des Plans: Abtastwert %2 ist bei t = %3 s (+-%4 s) geplant; ein Log enthält jeden Abtastwert des Plans, zu den Zeiten des Plans</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
+        <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the controller stopped the trial at its tracking limit</source>
+        <translation>das Protokoll endet nach %1 der %2 Abtastwerte des Plans (t = %3 s von %4 s): die Steuerung hat den Versuch an ihrer Grenze des Folgefehlers angehalten</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the trial ended early</source>
         <translation>das Log endet nach %1 der %2 Abtastwerte des Plans (t = %3 s von %4 s): der Versuch endete vorzeitig</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&quot;# stopped-by:&quot; in a log of all the plan&apos;s %1 samples: a trial that ran to its end was not stopped</source>
+        <translation>&quot;# stopped-by:&quot; in einem Protokoll aller %1 Abtastwerte des Plans: ein Versuch, der bis zum Ende lief, wurde nicht angehalten</translation>
     </message>
 </context>
 <context>
@@ -1098,12 +1118,12 @@
         <translation>%1 wurde mit einer anderen Schätzung als der neuesten des Verlaufs (Schätzung %2) erstellt: den nächsten Versuch neu planen</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>%1: %2; nothing learned</source>
         <translation>%1: %2; nichts gelernt</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>the history %1 does not replay: trial %2: %3</source>
         <translation>der Verlauf %1 lässt sich nicht wiedergeben: Versuch %2: %3</translation>
     </message>
@@ -1309,13 +1329,19 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+119"/>
-        <location filename="../core/identify/PaperLaw.cpp" line="+18"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+57"/>
+        <location filename="../core/identify/PaperLaw.cpp" line="+44"/>
+        <source>trial record has only %1 samples to learn from</source>
+        <translation>die Versuchsaufzeichnung hat nur %1 Abtastwerte zum Lernen</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <location filename="../core/identify/PaperLaw.cpp" line="-26"/>
         <source>no completed trial to learn from</source>
         <translation>kein abgeschlossener Versuch, aus dem gelernt werden kann</translation>
     </message>
     <message>
-        <location filename="../core/identify/LearningLaw.cpp" line="+61"/>
+        <location filename="../core/identify/LearningLaw.cpp" line="+75"/>
         <source>trial record does not match its plan: %1 of %2 samples, %3 joints recorded for a %4-joint model</source>
         <translation>Versuchsaufzeichnung passt nicht zu ihrem Plan: %1 von %2 Abtastwerten, %3 Gelenke aufgezeichnet für ein Modell mit %4 Gelenken</translation>
     </message>
@@ -2304,7 +2330,7 @@
         <translation>der eigene Regler des Roboters (Plan- und Log-Dateien)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>no logged trial is left for trial run %1</source>
         <translation>für Versuchslauf %1 ist kein aufgezeichneter Versuch mehr übrig</translation>
     </message>
@@ -2529,23 +2555,23 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+164"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+203"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+238"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+279"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-96"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-135"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
     <message>
         <location line="+24"/>
-        <location line="+21"/>
+        <location line="+60"/>
         <source>one per joint of %1</source>
         <translation>einer pro Gelenk von %1</translation>
     </message>
@@ -2560,7 +2586,7 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-206"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-247"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -2570,12 +2596,12 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+85"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-86"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-125"/>
         <source>one per joint</source>
         <translation>einer pro Gelenk</translation>
     </message>
@@ -2610,7 +2636,22 @@
         <translation>%1 hat %2 Gelenkspalten, %3 hat %4 Gelenke</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
+        <source>must be 0 (off) or at least 1 (static friction is not below Coulomb friction), got %1</source>
+        <translation>muss 0 (aus) oder mindestens 1 sein (Haftreibung liegt nicht unter der Coulomb-Reibung), ist %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>give static friction either as simulation.staticFriction or as this ratio, not both</source>
+        <translation>Haftreibung entweder als simulation.staticFriction oder als dieses Verhältnis angeben, nicht beides</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>applies to elastic joints only: give simulation.jointStiffness</source>
+        <translation>gilt nur für elastische Gelenke: simulation.jointStiffness angeben</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>must be 1 or -1, got %1</source>
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
@@ -2628,9 +2669,19 @@
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+70"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+71"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits: Gelenk %1 (%2) hat im URDF keine Momentengrenze (effort): die Momentengrenzen im Szenario angeben</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="+79"/>
+        <source>must be at least the simulated robot&apos;s Coulomb friction of joint %1, %2 N m, got %3</source>
+        <translation>muss mindestens die Coulomb-Reibung des simulierten Roboters in Gelenk %1 sein, %2 N m, ist %3</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>an elastic joint needs its motor&apos;s rotor inertia: give simulation.armature or simulation.armatureFactor above 0 for joint %1</source>
+        <translation>ein elastisches Gelenk braucht die Rotorträgheit seines Motors: simulation.armature oder simulation.armatureFactor über 0 für Gelenk %1 angeben</translation>
     </message>
 </context>
 <context>
@@ -2835,7 +2886,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+116"/>
+        <location filename="../core/service/SessionReport.cpp" line="+129"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>Schätzung %1 existiert in dieser Sitzung nicht</translation>
     </message>
@@ -2848,17 +2899,17 @@
         <translation>Simulation %1</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>tracking error of joint %1 reached %2 deg at t = %3 s (limit %4 deg): quick stop</source>
         <translation>Folgefehler von Gelenk %1 erreichte %2° bei t = %3 s (Grenze %4°): Schnellhalt</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>drive of joint 1 reported a fault at t = %1 s (injected)</source>
         <translation>Antrieb von Gelenk 1 meldete bei t = %1 s einen Fehler (eingespeist)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>stopped by the operator at t = %1 s</source>
         <translation>vom Bediener gestoppt bei t = %1 s</translation>
     </message>
@@ -2933,6 +2984,11 @@
         <source>%1: %2: parameter %3 is &quot;%4&quot;, the robot&apos;s is &quot;%5&quot;</source>
         <translation>%1: %2: Parameter %3 ist „%4“, der des Roboters ist „%5“</translation>
     </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="-50"/>
+        <source>needs a URDF robot (the link&apos;s inertia about its axis); %1 has none: give simulation.armature in kg m^2</source>
+        <translation>braucht einen URDF-Roboter (die Trägheit des Glieds um seine Achse); %1 hat keinen: simulation.armature in kg m^2 angeben</translation>
+    </message>
 </context>
 <context>
     <name>TorqueRule</name>
@@ -3006,6 +3062,24 @@
         <location line="+24"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>nur ebene Zweigelenkarme haben eine kartesische Geradenkinematik</translation>
+    </message>
+</context>
+<context>
+    <name>TrialSeries</name>
+    <message>
+        <location filename="../core/session/TrialSeries.cpp" line="+70"/>
+        <source>Run all stops: %1 trials in a row stopped at the tracking limit, and trial %2 was no progress over trial %3 (stopped at t = %4 s with %5 deg, against t = %6 s with %7 deg)</source>
+        <translation>„Alle starten“ hält an: %1 Versuche hintereinander stoppten an der Grenze des Folgefehlers, und Versuch %2 war kein Fortschritt gegenüber Versuch %3 (gestoppt bei t = %4 s mit %5 Grad, gegenüber t = %6 s mit %7 Grad)</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>trial %1 tracked worse than trial %2 (max %3 deg against %4 deg)</source>
+        <translation>Versuch %1 folgte schlechter als Versuch %2 (max. %3 Grad gegenüber %4 Grad)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1; Accept proposes estimate %2, which tracked best</source>
+        <translation>%1; „Akzeptieren“ schlägt Schätzung %2 vor, die am besten folgte</translation>
     </message>
 </context>
 <context>
@@ -3445,13 +3519,13 @@
         <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+104"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+105"/>
         <location line="+9"/>
         <location line="+6"/>
         <location line="+13"/>
         <location line="+12"/>
-        <location line="+61"/>
-        <location line="+44"/>
+        <location line="+69"/>
+        <location line="+62"/>
         <location filename="../app/cli/main.cpp" line="+53"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli: Fehler: %1</translation>
@@ -3521,7 +3595,7 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-179"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-205"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
@@ -3782,36 +3856,36 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location filename="../app/cli/ResultTable.cpp" line="+39"/>
-        <location line="+73"/>
+        <location line="+76"/>
         <source>trial</source>
         <translation>Vers.</translation>
     </message>
     <message>
-        <location line="-72"/>
-        <location line="+75"/>
+        <location line="-75"/>
+        <location line="+78"/>
         <source>change %</source>
         <translation>Änd. %</translation>
     </message>
     <message>
-        <location line="-73"/>
-        <location line="+75"/>
+        <location line="-76"/>
+        <location line="+78"/>
         <source>max|e|%1 deg</source>
         <translation>max|e|%1 °</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+75"/>
+        <location line="-77"/>
+        <location line="+78"/>
         <source>T s</source>
         <translation>T s</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+75"/>
+        <location line="-77"/>
+        <location line="+78"/>
         <source>cond</source>
         <translation>cond</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-77"/>
         <source>rank</source>
         <translation>Rang</translation>
     </message>
@@ -3821,7 +3895,13 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Bahnmom.-Fehler %</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+29"/>
+        <location line="+73"/>
+        <source>learned from a partial trial</source>
+        <translation>aus einem abgebrochenen Versuch gelernt</translation>
+    </message>
+    <message>
+        <location line="-65"/>
         <source>unit</source>
         <translation>Einheit</translation>
     </message>
@@ -3846,7 +3926,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>vs. wahr %</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>(rank %1: unobservable kept)</source>
         <translation>(Rang %1: nicht beobachtbare beibehalten)</translation>
     </message>
@@ -3864,6 +3944,11 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <location line="+10"/>
         <source>trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg</source>
         <translation>Versuch %1: %2, T = %3 s, %4 Abtastwerte, max. Folgefehler %5°</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>; learned from its first %1 s (a partial trial)</source>
+        <translation>; aus seinen ersten %1 s gelernt (ein abgebrochener Versuch)</translation>
     </message>
     <message>
         <location filename="../app/cli/RunCommand.cpp" line="-33"/>
@@ -3891,8 +3976,24 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: Warnung: das URDF als realer Roboter: %1</translation>
     </message>
     <message>
+        <location line="+54"/>
+        <source>learnid-cli: estimate %1 tracked best: it is the one accepted, applied and exported</source>
+        <translation>learnid-cli: Schätzung %1 folgte am besten: sie wird akzeptiert, angewendet und exportiert</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>learnid-cli: %1 not written: nothing was learned</source>
+        <translation>learnid-cli: %1 nicht geschrieben: nichts wurde gelernt</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>learnid-cli: wrote %1 (the session ended early)</source>
+        <translation>learnid-cli: %1 geschrieben (die Sitzung endete vorzeitig)</translation>
+    </message>
+    <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-74"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+8"/>
+        <location filename="../app/cli/ResultTable.cpp" line="+7"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
     </message>
@@ -3919,7 +4020,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     <message>
         <location line="+5"/>
         <location line="+35"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+12"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+66"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli: keine Dateien geschrieben</translation>
     </message>
@@ -3934,7 +4035,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: aus Versuch %1 (Plan %2) gelernt; der nächste Plan verwendet Schätzung %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="+14"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-30"/>
         <source>learnid-cli: error: apply failed: %1</source>
         <translation>learnid-cli: Fehler: Übertragen fehlgeschlagen: %1</translation>
     </message>
@@ -3945,7 +4046,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+26"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
@@ -4522,7 +4623,7 @@ neue Schätzung.
 <context>
     <name>learnid::ApplyPanel</name>
     <message>
-        <location filename="../ui/ApplyPanel.cpp" line="+22"/>
+        <location filename="../ui/ApplyPanel.cpp" line="+23"/>
         <source>estimate </source>
         <translation>Schätzung </translation>
     </message>
@@ -4547,7 +4648,7 @@ neue Schätzung.
         <translation>noch nichts übertragen</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>estimate %1</source>
         <translation>Schätzung %1</translation>
     </message>
@@ -4661,7 +4762,7 @@ neue Schätzung.
 <context>
     <name>learnid::CanRobotWorker</name>
     <message>
-        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+110"/>
+        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+111"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4697,7 +4798,7 @@ neue Schätzung.
         <translation>Konfigurieren der Antriebe fehlgeschlagen, nichts hat sich bewegt: %1</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>the trial&apos;s candump log could not be written: %1</source>
         <translation>das candump-Log des Versuchs konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -4743,7 +4844,7 @@ neue Schätzung.
 <context>
     <name>learnid::CommissioningSession</name>
     <message>
-        <location filename="../core/session/CommissioningSession.cpp" line="+22"/>
+        <location filename="../core/session/CommissioningSession.cpp" line="+23"/>
         <source>unknown estimator law &apos;%1&apos; (known: %2)</source>
         <translation>unbekanntes Schätzgesetz &apos;%1&apos; (bekannt: %2)</translation>
     </message>
@@ -4758,12 +4859,22 @@ neue Schätzung.
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+37"/>
         <source>repetition %1 of %2: %3</source>
         <translation>Wiederholung %1 von %2: %3</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+26"/>
+        <source>trial %1 stopped at the tracking limit after %2 s: too short to learn from once the filter has settled (%3 s); the estimate is unchanged</source>
+        <translation>Versuch %1 stoppte nach %2 s an der Grenze des Folgefehlers: zu kurz, um nach dem Einschwingen des Filters (%3 s) daraus zu lernen; die Schätzung bleibt unverändert</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>trial %1 stopped at the tracking limit: its %2 s before the stop observe no parameter; the estimate is unchanged</source>
+        <translation>Versuch %1 stoppte an der Grenze des Folgefehlers: seine %2 s vor dem Halt beobachten keinen Parameter; die Schätzung bleibt unverändert</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>the update produced non-finite parameters</source>
         <translation>die Aktualisierung ergab nicht endliche Parameter</translation>
     </message>
@@ -4773,7 +4884,7 @@ neue Schätzung.
         <translation>aus Versuch %1 nicht gelernt: %2</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>there is no learned estimate to accept yet: run a trial first</source>
         <translation>es gibt noch keine gelernte Schätzung zum Akzeptieren: zuerst einen Versuch ausführen</translation>
     </message>
@@ -4883,6 +4994,11 @@ neue Schätzung.
     </message>
     <message>
         <location line="+12"/>
+        <source>%1 (learned from a partial trial)</source>
+        <translation>%1 (aus einem abgebrochenen Versuch gelernt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -6818,7 +6934,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::SessionPresenter</name>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+34"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+35"/>
         <source>connected: %1</source>
         <translation>verbunden: %1</translation>
     </message>
@@ -6844,12 +6960,17 @@ Verhältnis %</translation>
         <translation>Versuch %1 läuft…</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+12"/>
+        <source>Trial %1 stopped: %2. Learned from its first %3 s (a partial trial); the next trial runs with the new estimate.</source>
+        <translation>Versuch %1 gestoppt: %2. Aus seinen ersten %3 s gelernt (ein abgebrochener Versuch); der nächste Versuch läuft mit der neuen Schätzung.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Trial %1 %2: %3. Its data are kept.</source>
         <translation>Versuch %1 %2: %3. Seine Daten bleiben erhalten.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
         <source>Finished; %1 estimate(s) learned.</source>
         <translation>Fertig; %1 Schätzung(en) gelernt.</translation>
     </message>
@@ -6877,7 +6998,7 @@ Verhältnis %</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+25"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+26"/>
         <source>nothing applied yet</source>
         <translation>noch nichts übertragen</translation>
     </message>
@@ -7049,14 +7170,14 @@ Verhältnis %</translation>
     <name>learnid::TrialStreamer</name>
     <message>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
-        <location line="+91"/>
-        <location line="+66"/>
+        <location line="+92"/>
+        <location line="+68"/>
         <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-147"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 erreichte Betrieb freigegeben nicht innerhalb von %2 ms: meldet %3 (Statuswort 0x%4)</translation>
     </message>
@@ -7066,7 +7187,7 @@ Verhältnis %</translation>
         <translation>kein TPDO</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+78"/>
         <source>stopped by the operator %1</source>
         <translation>vom Bediener gestoppt %1</translation>
     </message>
@@ -7086,12 +7207,12 @@ Verhältnis %</translation>
         <translation>Folgefehler von %1 erreichte %2° (Grenze %3°) %4: Schnellhalt</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+71"/>
         <source>only %1 of %2 samples were recorded</source>
         <translation>nur %1 von %2 Abtastwerten wurden aufgezeichnet</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>an unknown node</source>
         <translation>ein unbekannter Knoten</translation>
     </message>

@@ -672,7 +672,17 @@
 <context>
     <name>ControllerLogCsv</name>
     <message>
-        <location filename="../core/io/ControllerLogCsv.cpp" line="+37"/>
+        <location filename="../core/io/ControllerLogCsv.cpp" line="+56"/>
+        <source>&quot;# stopped-by:&quot; says %1; known: %2</source>
+        <translation>&quot;# stopped-by:&quot; 的值为 %1；已知值：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing</source>
+        <translation>空</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s line &quot;# plan-id: %2&quot; into its log</source>
         <translation>%1：没有“# plan-id:”注释行；控制器会把计划中的“# plan-id: %2”行复制到其日志中</translation>
     </message>
@@ -692,9 +702,19 @@
         <translation>t = %1 s 不在计划的时间网格上：采样点 %2 计划位于 t = %3 s（+-%4 s）；日志应包含计划的每个采样点，且时刻与计划一致</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
+        <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the controller stopped the trial at its tracking limit</source>
+        <translation>日志在计划的 %2 个采样中的第 %1 个之后结束（t = %3 s，共 %4 s）：控制器在其跟踪误差限值处停止了试验</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the log ends after %1 of the plan&apos;s %2 samples (t = %3 s of %4 s): the trial ended early</source>
         <translation>日志在计划的 %2 个采样点中的 %1 个之后结束（t = %3 s，共 %4 s）：试验提前结束</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&quot;# stopped-by:&quot; in a log of all the plan&apos;s %1 samples: a trial that ran to its end was not stopped</source>
+        <translation>包含计划全部 %1 个采样的日志中出现 &quot;# stopped-by:&quot;：运行到结束的试验并未被停止</translation>
     </message>
 </context>
 <context>
@@ -1098,12 +1118,12 @@
         <translation>%1 所用的估计不是历史中最新的估计（估计 %2）：请重新规划下一次试验</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>%1: %2; nothing learned</source>
         <translation>%1：%2；未学习任何内容</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>the history %1 does not replay: trial %2: %3</source>
         <translation>历史 %1 无法回放：试验 %2：%3</translation>
     </message>
@@ -1309,13 +1329,19 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+119"/>
-        <location filename="../core/identify/PaperLaw.cpp" line="+18"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+57"/>
+        <location filename="../core/identify/PaperLaw.cpp" line="+44"/>
+        <source>trial record has only %1 samples to learn from</source>
+        <translation>试验记录只有 %1 个可用于学习的采样</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <location filename="../core/identify/PaperLaw.cpp" line="-26"/>
         <source>no completed trial to learn from</source>
         <translation>没有可供学习的已完成试验</translation>
     </message>
     <message>
-        <location filename="../core/identify/LearningLaw.cpp" line="+61"/>
+        <location filename="../core/identify/LearningLaw.cpp" line="+75"/>
         <source>trial record does not match its plan: %1 of %2 samples, %3 joints recorded for a %4-joint model</source>
         <translation>试验记录与其计划不符：%2 个采样点中记录了 %1 个，%4 关节模型记录了 %3 个关节</translation>
     </message>
@@ -2294,7 +2320,7 @@
         <translation>机器人自身的控制器（计划和日志文件）</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>no logged trial is left for trial run %1</source>
         <translation>试验运行 %1 已没有剩余的记录试验</translation>
     </message>
@@ -2518,23 +2544,23 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+164"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+203"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+238"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+279"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-96"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-135"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
     <message>
         <location line="+24"/>
-        <location line="+21"/>
+        <location line="+60"/>
         <source>one per joint of %1</source>
         <translation>%1 的每个关节一个</translation>
     </message>
@@ -2549,7 +2575,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-206"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-247"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -2559,12 +2585,12 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+85"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-86"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-125"/>
         <source>one per joint</source>
         <translation>每个关节一个</translation>
     </message>
@@ -2599,7 +2625,22 @@
         <translation>%1 有 %2 个关节列，%3 有 %4 个关节</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
+        <source>must be 0 (off) or at least 1 (static friction is not below Coulomb friction), got %1</source>
+        <translation>必须为 0（关闭）或至少为 1（静摩擦不低于库仑摩擦），实际为 %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>give static friction either as simulation.staticFriction or as this ratio, not both</source>
+        <translation>静摩擦请用 simulation.staticFriction 或此比值之一给出，不可同时给出</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>applies to elastic joints only: give simulation.jointStiffness</source>
+        <translation>仅适用于弹性关节：请给出 simulation.jointStiffness</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>must be 1 or -1, got %1</source>
         <translation>必须是 1 或 -1，实际为 %1</translation>
     </message>
@@ -2617,9 +2658,19 @@
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+70"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+71"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits：关节 %1（%2）在 URDF 中没有 effort 限值：请在场景中给出力矩限值</translation>
+    </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="+79"/>
+        <source>must be at least the simulated robot&apos;s Coulomb friction of joint %1, %2 N m, got %3</source>
+        <translation>必须至少等于仿真机器人关节 %1 的库仑摩擦 %2 N m，实际为 %3</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>an elastic joint needs its motor&apos;s rotor inertia: give simulation.armature or simulation.armatureFactor above 0 for joint %1</source>
+        <translation>弹性关节需要其电机的转子惯量：请为关节 %1 给出大于 0 的 simulation.armature 或 simulation.armatureFactor</translation>
     </message>
 </context>
 <context>
@@ -2824,7 +2875,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+116"/>
+        <location filename="../core/service/SessionReport.cpp" line="+129"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>本会话中不存在估计 %1</translation>
     </message>
@@ -2837,17 +2888,17 @@
         <translation>仿真 %1</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>tracking error of joint %1 reached %2 deg at t = %3 s (limit %4 deg): quick stop</source>
         <translation>关节 %1 的跟踪误差在 t = %3 s 时达到 %2 度（限值 %4 度）：快速停止</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>drive of joint 1 reported a fault at t = %1 s (injected)</source>
         <translation>关节 1 的驱动器在 t = %1 s 时报告故障（注入）</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>stopped by the operator at t = %1 s</source>
         <translation>操作员在 t = %1 s 时停止</translation>
     </message>
@@ -2922,6 +2973,11 @@
         <source>%1: %2: parameter %3 is &quot;%4&quot;, the robot&apos;s is &quot;%5&quot;</source>
         <translation>%1：%2：参数 %3 为“%4”，而机器人的为“%5”</translation>
     </message>
+    <message>
+        <location filename="../core/session/ScenarioRobotJoints.cpp" line="-50"/>
+        <source>needs a URDF robot (the link&apos;s inertia about its axis); %1 has none: give simulation.armature in kg m^2</source>
+        <translation>需要 URDF 机器人（连杆绕其轴的惯量）；%1 没有：请以 kg m^2 给出 simulation.armature</translation>
+    </message>
 </context>
 <context>
     <name>TorqueRule</name>
@@ -2995,6 +3051,24 @@
         <location line="+24"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>只有平面二连杆机械臂具有笛卡尔直线运动学</translation>
+    </message>
+</context>
+<context>
+    <name>TrialSeries</name>
+    <message>
+        <location filename="../core/session/TrialSeries.cpp" line="+70"/>
+        <source>Run all stops: %1 trials in a row stopped at the tracking limit, and trial %2 was no progress over trial %3 (stopped at t = %4 s with %5 deg, against t = %6 s with %7 deg)</source>
+        <translation>全部运行停止：连续 %1 次试验在跟踪误差限值处停止，且试验 %2 相比试验 %3 没有进展（在 t = %4 s 以 %5 度停止，对比 t = %6 s 以 %7 度）</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>trial %1 tracked worse than trial %2 (max %3 deg against %4 deg)</source>
+        <translation>试验 %1 的跟踪比试验 %2 差（最大 %3 度，对比 %4 度）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1; Accept proposes estimate %2, which tracked best</source>
+        <translation>%1；“接受”建议跟踪最好的估计 %2</translation>
     </message>
 </context>
 <context>
@@ -3433,13 +3507,13 @@
         <location line="+73"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+104"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+105"/>
         <location line="+9"/>
         <location line="+6"/>
         <location line="+13"/>
         <location line="+12"/>
-        <location line="+61"/>
-        <location line="+44"/>
+        <location line="+69"/>
+        <location line="+62"/>
         <location filename="../app/cli/main.cpp" line="+53"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli：错误：%1</translation>
@@ -3509,7 +3583,7 @@
         <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-179"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-205"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1：%2</translation>
@@ -3768,36 +3842,36 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location filename="../app/cli/ResultTable.cpp" line="+39"/>
-        <location line="+73"/>
+        <location line="+76"/>
         <source>trial</source>
         <translation>试验</translation>
     </message>
     <message>
-        <location line="-72"/>
-        <location line="+75"/>
+        <location line="-75"/>
+        <location line="+78"/>
         <source>change %</source>
         <translation>变化 %</translation>
     </message>
     <message>
-        <location line="-73"/>
-        <location line="+75"/>
+        <location line="-76"/>
+        <location line="+78"/>
         <source>max|e|%1 deg</source>
         <translation>最大|e|%1 度</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+75"/>
+        <location line="-77"/>
+        <location line="+78"/>
         <source>T s</source>
         <translation>T s</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+75"/>
+        <location line="-77"/>
+        <location line="+78"/>
         <source>cond</source>
         <translation>cond</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-77"/>
         <source>rank</source>
         <translation>秩</translation>
     </message>
@@ -3807,7 +3881,13 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>路径力矩误差 %</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+29"/>
+        <location line="+73"/>
+        <source>learned from a partial trial</source>
+        <translation>从部分试验中学习</translation>
+    </message>
+    <message>
+        <location line="-65"/>
         <source>unit</source>
         <translation>单位</translation>
     </message>
@@ -3832,7 +3912,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>相对真值 %</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>(rank %1: unobservable kept)</source>
         <translation>（秩 %1：保留不可观测参数）</translation>
     </message>
@@ -3850,6 +3930,11 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <location line="+10"/>
         <source>trial %1: %2, T = %3 s, %4 samples, max tracking error %5 deg</source>
         <translation>试验 %1：%2，T = %3 s，%4 个采样点，最大跟踪误差 %5 度</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>; learned from its first %1 s (a partial trial)</source>
+        <translation>；从其前 %1 s 学习（部分试验）</translation>
     </message>
     <message>
         <location filename="../app/cli/RunCommand.cpp" line="-33"/>
@@ -3877,8 +3962,24 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：警告：该 URDF 作为真实机器人：%1</translation>
     </message>
     <message>
+        <location line="+54"/>
+        <source>learnid-cli: estimate %1 tracked best: it is the one accepted, applied and exported</source>
+        <translation>learnid-cli：估计 %1 跟踪最好：接受、应用和导出的是它</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>learnid-cli: %1 not written: nothing was learned</source>
+        <translation>learnid-cli：未写入 %1：没有学到任何内容</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>learnid-cli: wrote %1 (the session ended early)</source>
+        <translation>learnid-cli：已写入 %1（会话提前结束）</translation>
+    </message>
+    <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-74"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+8"/>
+        <location filename="../app/cli/ResultTable.cpp" line="+7"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
         <translation>learnid-cli: %1</translation>
     </message>
@@ -3905,7 +4006,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     <message>
         <location line="+5"/>
         <location line="+35"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+12"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+66"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli：未写入文件</translation>
     </message>
@@ -3920,7 +4021,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已从试验 %1（计划 %2）学习；下一个计划使用估计 %3</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="+14"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-30"/>
         <source>learnid-cli: error: apply failed: %1</source>
         <translation>learnid-cli：错误：写入失败：%1</translation>
     </message>
@@ -3931,7 +4032,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+26"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
@@ -4506,7 +4607,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::ApplyPanel</name>
     <message>
-        <location filename="../ui/ApplyPanel.cpp" line="+22"/>
+        <location filename="../ui/ApplyPanel.cpp" line="+23"/>
         <source>estimate </source>
         <translation>估计 </translation>
     </message>
@@ -4531,7 +4632,7 @@ stdout, and the next plan uses the new estimate.
         <translation>尚未写入</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>estimate %1</source>
         <translation>估计 %1</translation>
     </message>
@@ -4645,7 +4746,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CanRobotWorker</name>
     <message>
-        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+110"/>
+        <location filename="../core/canrobot/CanRobotWorker.cpp" line="+111"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -4681,7 +4782,7 @@ stdout, and the next plan uses the new estimate.
         <translation>配置驱动器失败，未发生任何运动：%1</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>the trial&apos;s candump log could not be written: %1</source>
         <translation>无法写入该试验的 candump 日志：%1</translation>
     </message>
@@ -4727,7 +4828,7 @@ stdout, and the next plan uses the new estimate.
 <context>
     <name>learnid::CommissioningSession</name>
     <message>
-        <location filename="../core/session/CommissioningSession.cpp" line="+22"/>
+        <location filename="../core/session/CommissioningSession.cpp" line="+23"/>
         <source>unknown estimator law &apos;%1&apos; (known: %2)</source>
         <translation>未知估计律 &apos;%1&apos;（已知：%2）</translation>
     </message>
@@ -4742,12 +4843,22 @@ stdout, and the next plan uses the new estimate.
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+37"/>
         <source>repetition %1 of %2: %3</source>
         <translation>第 %1 次重复（共 %2 次）：%3</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+26"/>
+        <source>trial %1 stopped at the tracking limit after %2 s: too short to learn from once the filter has settled (%3 s); the estimate is unchanged</source>
+        <translation>试验 %1 在 %2 s 后于跟踪误差限值处停止：除去滤波器的稳定时间（%3 s）后太短，无法学习；估计保持不变</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>trial %1 stopped at the tracking limit: its %2 s before the stop observe no parameter; the estimate is unchanged</source>
+        <translation>试验 %1 在跟踪误差限值处停止：停止前的 %2 s 观测不到任何参数；估计保持不变</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>the update produced non-finite parameters</source>
         <translation>更新产生了非有限参数</translation>
     </message>
@@ -4757,7 +4868,7 @@ stdout, and the next plan uses the new estimate.
         <translation>未从试验 %1 学习：%2</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>there is no learned estimate to accept yet: run a trial first</source>
         <translation>尚无可接受的学习估计：请先运行一次试验</translation>
     </message>
@@ -4867,6 +4978,11 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+12"/>
+        <source>%1 (learned from a partial trial)</source>
+        <translation>%1（从部分试验中学习）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
@@ -6797,7 +6913,7 @@ ratio %</source>
 <context>
     <name>learnid::SessionPresenter</name>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+34"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+35"/>
         <source>connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
@@ -6823,12 +6939,17 @@ ratio %</source>
         <translation>试验 %1 运行中…</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+12"/>
+        <source>Trial %1 stopped: %2. Learned from its first %3 s (a partial trial); the next trial runs with the new estimate.</source>
+        <translation>试验 %1 已停止：%2。已从其前 %3 s 学习（部分试验）；下一次试验使用新的估计运行。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Trial %1 %2: %3. Its data are kept.</source>
         <translation>试验 %1 %2：%3。其数据已保留。</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
         <source>Finished; %1 estimate(s) learned.</source>
         <translation>完成；已学习 %1 个估计。</translation>
     </message>
@@ -6855,7 +6976,7 @@ ratio %</source>
         </translation>
     </message>
     <message>
-        <location filename="../ui/SessionPresenter.cpp" line="+25"/>
+        <location filename="../ui/SessionPresenter.cpp" line="+26"/>
         <source>nothing applied yet</source>
         <translation>尚未写入</translation>
     </message>
@@ -7027,14 +7148,14 @@ ratio %</source>
     <name>learnid::TrialStreamer</name>
     <message>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
-        <location line="+91"/>
-        <location line="+66"/>
+        <location line="+92"/>
+        <location line="+68"/>
         <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-147"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 未在 %2 ms 内达到运行使能：报告为 %3（状态字 0x%4）</translation>
     </message>
@@ -7044,7 +7165,7 @@ ratio %</source>
         <translation>无 TPDO</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+78"/>
         <source>stopped by the operator %1</source>
         <translation>被操作员停止 %1</translation>
     </message>
@@ -7064,12 +7185,12 @@ ratio %</source>
         <translation>%1 的跟踪误差达到 %2 度（限值 %3 度）%4：快速停止</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+71"/>
         <source>only %1 of %2 samples were recorded</source>
         <translation>%2 个采样点中只记录了 %1 个</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>an unknown node</source>
         <translation>未知节点</translation>
     </message>

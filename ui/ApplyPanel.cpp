@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QSpinBox>
 #include <QToolButton>
+#include <algorithm>
 
 namespace learnid {
 
@@ -35,16 +36,18 @@ ApplyPanel::ApplyPanel(QAction *accept, QAction *apply, QAction *revert, QWidget
     setAccepted(std::nullopt);
     setStored(tr("nothing applied yet"));
     connect(m_estimate, &QSpinBox::valueChanged, this,
-            [this](int k) { m_followNewest = k == m_estimate->maximum(); });
+            [this](int k) { m_followProposal = k == m_proposed; });
 }
 
-void ApplyPanel::setEstimateCount(int count)
+void ApplyPanel::setEstimateCount(int count, int proposed)
 {
-    const bool follow = m_followNewest;
+    const bool follow = m_followProposal;
     m_estimate->setRange(count > 1 ? 1 : 0, std::max(0, count - 1));
+    m_proposed = proposed >= 0 ? std::clamp(proposed, m_estimate->minimum(), m_estimate->maximum())
+                               : m_estimate->maximum();
     if (follow)
-        m_estimate->setValue(m_estimate->maximum());
-    m_followNewest = follow;
+        m_estimate->setValue(m_proposed);
+    m_followProposal = follow;
 }
 
 int ApplyPanel::chosenEstimate() const

@@ -205,8 +205,9 @@ QString ConvergenceTableModel::text(int k, Column kind, int p) const
         QStringList trials;
         for (int i : m_trialsWith.at(k)) {
             const TrialResult &t = m_history.at(i);
-            trials << (t.status() == TrialStatus::Completed
-                           ? QString::number(t.index)
+            trials << (t.status() == TrialStatus::Completed ? QString::number(t.index)
+                       : t.learnedFromPartial()
+                           ? tr("%1 (learned from a partial trial)").arg(t.index)
                            : tr("%1 (%2)").arg(t.index).arg(trialStatusName(t.status())));
         }
         return trials.join(QStringLiteral(", "));

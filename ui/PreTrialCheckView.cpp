@@ -32,13 +32,19 @@ PreTrialCheckView::PreTrialCheckView(QWidget *parent)
     m_verdict->setMargin(6);
     m_stability->setWordWrap(true);
     m_duration->setWordWrap(true); // a long line (German) must not widen the window
-    m_torques->setHorizontalHeaderLabels(
-        {tr("Joint"), tr("Peak [N m]"), tr("Limit [N m]"), tr("Use"), tr("Gravity")});
+    // Units on a second header line, and columns as wide as their longest word: in German
+    // ("Spitze", "Auslastung", "Schwerkraft") a header cut to fit the panel cannot be read; the
+    // table scrolls sideways instead when the panel is narrower.
+    QStringList headers{tr("Joint"), tr("Peak [N m]"), tr("Limit [N m]"), tr("Use"), tr("Gravity")};
+    for (QString &h : headers)
+        h.replace(QStringLiteral(" ["), QStringLiteral("\n["));
+    m_torques->setHorizontalHeaderLabels(headers);
     m_torques->horizontalHeaderItem(4)->setToolTip(
         tr("The largest torque holding the arm against gravity takes on this path, as a share "
            "of the limit"));
     m_torques->verticalHeader()->hide();
-    m_torques->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_torques->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_torques->horizontalHeader()->setStretchLastSection(true);
     m_torques->setSelectionMode(QAbstractItemView::NoSelection);
     m_torques->setMaximumHeight(150);
 

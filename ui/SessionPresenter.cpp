@@ -1,6 +1,7 @@
 #include "ui/SessionPresenter.h"
 
 #include "service/SessionController.h"
+#include "session/TrialSeries.h"
 #include "ui/ApplyPanel.h"
 #include "ui/ApplyPreview.h"
 #include "ui/ConvergenceChart.h"
@@ -55,7 +56,16 @@ SessionPresenter::SessionPresenter(SessionController *controller, Views views, Q
             [this](const TrialResult &t, const QList<TrackingErrorCurve> &curves) {
                 if (t.status() != TrialStatus::Refused)
                     m_views.plot->setTrialCurves(t.index, curves);
-                if (t.learned())
+                if (t.learnedFromPartial()) {
+                    m_views.run->trialDone(int(m_controller->estimates().size()) - 1);
+                    m_views.message->showMessage(
+                        tr("Trial %1 stopped: %2. Learned from its first %3 s (a partial "
+                           "trial); the next trial runs with the new estimate.")
+                            .arg(t.index)
+                            .arg(t.record.message)
+                            .arg(t.partialSamples * t.record.samplePeriod, 0, 'f', 3),
+                        MessageBar::Severity::Info);
+                } else if (t.learned())
                     m_views.run->trialDone(int(m_controller->estimates().size()) - 1);
                 else if (t.status() == TrialStatus::Refused) { // nothing moved, nothing recorded
                     QString text = t.message;
@@ -67,6 +77,16 @@ SessionPresenter::SessionPresenter(SessionController *controller, Views views, Q
                                                      .arg(t.index)
                                                      .arg(trialStatusName(t.status()), t.message),
                                                  MessageBar::Severity::Error);
+                // Tracked worse than the trial before; Run all stops after a partial trial.
+                for (const QString &note : {t.worseTracking, t.seriesStop}) {
+                    if (note.isEmpty())
+                        continue;
+                    QString text = note;
+                    text[0] = text[0].toUpper();
+                    m_views.message->showMessage(text + QLatin1Char('.'),
+                                                 note == t.seriesStop ? MessageBar::Severity::Error
+                                                                      : MessageBar::Severity::Info);
+                }
             });
     connect(c, &SessionController::historyChanged, this, &SessionPresenter::refreshTables);
     connect(c, &SessionController::runFinished, this, [this](bool all) {
@@ -101,7 +121,8 @@ void SessionPresenter::refreshTables()
     if (c->info())
         m_views.chart->setData(c->info()->parameters, c->estimates(), c->info()->truth,
                                c->estimateFigures());
-    m_views.apply->setEstimateCount(int(c->estimates().size()));
+    m_views.apply->setEstimateCount(int(c->estimates().size()),
+                                    proposedEstimate(c->history(), int(c->estimates().size())));
     const Eigen::VectorXd &stored = c->storedParameters();
     m_views.apply->setStored(
         stored.size() == 0

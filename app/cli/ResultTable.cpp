@@ -71,7 +71,10 @@ QString transposedTable(const CommissioningSession &session)
                           : cell(QStringLiteral("-"), 17));
         }
         QString line = cells.join(QLatin1Char(' '));
-        if (t && !t->record.completed())
+        if (t && t->learnedFromPartial())
+            line += QStringLiteral("  ") +
+                    QCoreApplication::translate("learnid-cli", "learned from a partial trial");
+        else if (t && !t->record.completed())
             line += QStringLiteral("  ") + trialStatusName(t->status());
         lines << line;
     }
@@ -141,7 +144,10 @@ QString resultTable(const CommissioningSession &session)
         if (truth)
             cells << number(largestRelativeDifferencePercent(phi, *truth), 3, 10);
         QString line = cells.join(QLatin1Char(' '));
-        if (t && !t->record.completed())
+        if (t && t->learnedFromPartial())
+            line += QStringLiteral("  ") +
+                    QCoreApplication::translate("learnid-cli", "learned from a partial trial");
+        else if (t && !t->record.completed())
             line += QStringLiteral("  ") + trialStatusName(t->status());
         if (t && t->update && t->update->rank < phi.size())
             line += QStringLiteral("  ") +
@@ -179,6 +185,18 @@ QString trialSummary(const TrialResult &result)
             .arg(errors.join(QStringLiteral(" / ")));
     if (!result.message.isEmpty() && result.status() == TrialStatus::Completed)
         line += QStringLiteral(": ") + result.message;
+    // A trial stopped by the tracking limit, learned from up to the stop or not: why.
+    if (result.record.stoppedAtTrackingLimit()) {
+        line += QStringLiteral(": ") + result.message;
+        if (result.learnedFromPartial())
+            line += QCoreApplication::translate("learnid-cli",
+                                                "; learned from its first %1 s (a partial trial)")
+                        .arg(result.partialSamples * result.record.samplePeriod, 0, 'f', 3);
+    }
+    for (const QString &note : {result.worseTracking, result.seriesStop})
+        if (!note.isEmpty())
+            line += QStringLiteral("\n") +
+                    QCoreApplication::translate("learnid-cli", "learnid-cli: %1").arg(note);
     return line;
 }
 

@@ -7,6 +7,7 @@
 #include "model/ModelCheck.h"
 #include "service/RobotFactory.h"
 #include "service/SessionWorker.h"
+#include "session/TrialSeries.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -200,18 +201,28 @@ ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
         out << Qt::endl;
     }
     out.flush();
+    // The estimate Accept proposes: the newest, unless a trial tracked worse (TrialSeries.h).
+    const int proposed = proposedEstimate(session->history(), int(session->estimates().size()));
+    QString endedEarly;
     if (!completed) {
+        // The session ended early: the outputs asked for are still written, marked so, for
+        // the technician to see what happened (the aborted trial's record in the trial CSVs).
         const TrialResult &last = session->history().constLast();
-        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1")
-                   .arg(last.message.isEmpty() ? trialStatusName(last.status()) : last.message)
-            << Qt::endl
-            << QCoreApplication::translate("learnid-cli", "learnid-cli: no files written")
+        endedEarly = last.seriesStop.isEmpty()
+                         ? (last.message.isEmpty() ? trialStatusName(last.status()) : last.message)
+                         : last.seriesStop;
+        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(endedEarly)
             << Qt::endl;
-        return ExitTrialFailed;
+    } else if (proposed != int(session->estimates().size()) - 1 && !options.quiet) {
+        err << QCoreApplication::translate("learnid-cli",
+                                           "learnid-cli: estimate %1 tracked best: it is the one "
+                                           "accepted, applied and exported")
+                   .arg(proposed)
+            << Qt::endl;
     }
 
-    if (options.apply) {
-        const int last = int(session->estimates().size()) - 1;
+    if (options.apply && completed) {
+        const int last = proposed;
         QString error;
         QObject::connect(&worker, &SessionWorker::operationFailed,
                          [&error](SessionOperation, const QString &message) { error = message; });
@@ -235,8 +246,24 @@ ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
     ExportRequest request;
     request.reportPath = options.reportPath;
     request.parameterPath = options.exportPath;
+    request.estimateIndex = proposed;
     request.nearestConsistent = options.consistent;
     request.trialCsvDir = options.trialCsvDir;
+    request.endedEarly = endedEarly;
+    if (proposed < 1 && !request.parameterPath.isEmpty()) {
+        // Nothing learned: there is no estimate to write as a parameter file.
+        err << QCoreApplication::translate("learnid-cli",
+                                           "learnid-cli: %1 not written: nothing was learned")
+                   .arg(QDir::toNativeSeparators(request.parameterPath))
+            << Qt::endl;
+        request.parameterPath.clear();
+    }
+    if (!completed && request.reportPath.isEmpty() && request.trialCsvDir.isEmpty() &&
+        request.parameterPath.isEmpty()) {
+        err << QCoreApplication::translate("learnid-cli", "learnid-cli: no files written")
+            << Qt::endl;
+        return ExitTrialFailed;
+    }
     QStringList written;
     QString writeError;
     QObject::connect(&worker, &SessionWorker::exported,
@@ -250,12 +277,15 @@ ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
             << Qt::endl;
         return ExitWriteFailed;
     }
-    if (!options.quiet)
+    if (!options.quiet || !completed)
         for (const QString &path : written)
-            err << QCoreApplication::translate("learnid-cli", "learnid-cli: wrote %1")
+            err << (completed ? QCoreApplication::translate("learnid-cli", "learnid-cli: wrote %1")
+                              : QCoreApplication::translate("learnid-cli",
+                                                            "learnid-cli: wrote %1 (the session "
+                                                            "ended early)"))
                        .arg(QDir::toNativeSeparators(path))
                 << Qt::endl;
-    return ExitOk;
+    return completed ? ExitOk : ExitTrialFailed;
 }
 
 } // namespace learnid::cli

@@ -57,6 +57,7 @@ TrialRecord notStarted(double ts, TrialStatus status, const QString &message)
     TrialRecord r;
     r.samplePeriod = ts;
     r.status = status;
+    r.stopCause = defaultStopCause(status);
     r.message = message;
     return r;
 }
@@ -239,6 +240,7 @@ void CanRobotWorker::endTrial(TrialRecord record)
                 qCWarning(lcCan).noquote() << error;
                 if (record.completed()) {
                     record.status = TrialStatus::Aborted;
+                    record.stopCause = TrialStopCause::Other;
                     record.message =
                         tr("the trial's candump log could not be written: %1").arg(error);
                 }

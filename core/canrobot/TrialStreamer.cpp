@@ -77,6 +77,7 @@ void TrialStreamer::start(const RobotModel &model, const TrialPlan &plan, const 
     m_writer.reset(m_link, nodes);
     m_progressReported = 0;
     m_status = TrialStatus::Completed;
+    m_cause = TrialStopCause::None;
     m_message.clear();
     m_stats = {};
     m_phase = Phase::Enabling;
@@ -120,7 +121,8 @@ void TrialStreamer::onSync(quint8 counter)
     ++m_stats.syncs;
     ++m_phaseSyncs;
     if (!error.isEmpty())
-        return abort(TrialStatus::Aborted, tr("%1 %2").arg(error, where()));
+        return abort(TrialStatus::Aborted, tr("%1 %2").arg(error, where()),
+                     TrialStopCause::MissingSamples);
     if (m_phase != Phase::Stopping && m_monitor.cancelled())
         return abort(TrialStatus::Cancelled, tr("stopped by the operator %1").arg(where()));
     switch (m_phase) {
@@ -176,7 +178,8 @@ void TrialStreamer::checkCycle()
                              .arg(nodeName(j))
                              .arg(error * kRadToDeg, 0, 'g', 4)
                              .arg(m_plan.maxTrackingError * kRadToDeg, 0, 'g', 4)
-                             .arg(where()));
+                             .arg(where()),
+                         TrialStopCause::TrackingLimit);
         }
     }
 }
@@ -208,12 +211,14 @@ void TrialStreamer::sendQuickStop()
                        cia402::controlword(cia402::Command::QuickStop));
 }
 
-void TrialStreamer::abort(TrialStatus status, const QString &message)
+void TrialStreamer::abort(TrialStatus status, const QString &message,
+                          std::optional<TrialStopCause> cause)
 {
     if (m_phase == Phase::Idle || m_phase == Phase::Stopping)
         return;
     qCWarning(lcCan).noquote() << "trial stopped:" << message;
     m_status = status;
+    m_cause = cause.value_or(defaultStopCause(status));
     m_message = message;
     m_phase = Phase::Stopping;
     m_phaseSyncs = 0;
@@ -235,16 +240,19 @@ void TrialStreamer::finish()
     m_nmt->enterPreOperational(0);
 
     TrialStatus status = m_status;
+    TrialStopCause cause = m_cause;
     QString message = m_message;
     if (!stopped && m_collector->recordedSamples() < m_plan.samples()) {
         status = TrialStatus::Aborted;
+        cause = TrialStopCause::MissingSamples;
         message = tr("only %1 of %2 samples were recorded")
                       .arg(m_collector->recordedSamples())
                       .arg(m_plan.samples());
     }
     if (m_stats.lateSetpoints > 0)
         qCWarning(lcCan) << m_stats.lateSetpoints << "set-points arrived late (statusword bit 12)";
-    const TrialRecord record = m_collector->record(status, message);
+    TrialRecord record = m_collector->record(status, message);
+    record.stopCause = status == TrialStatus::Completed ? TrialStopCause::None : cause;
     if (Done done = std::exchange(m_done, nullptr))
         done(record);
 }

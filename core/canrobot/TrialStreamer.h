@@ -63,7 +63,9 @@ public:
                const TrialMonitor &monitor, Done done);
     bool isRunning() const { return m_phase != Phase::Idle; }
     /// Ends a running trial from outside (e.g. the device went unconnected).
-    void abort(TrialStatus status, const QString &message);
+    /// cause: what stopped it, when more specific than the status says (defaultStopCause()).
+    void abort(TrialStatus status, const QString &message,
+               std::optional<TrialStopCause> cause = std::nullopt);
 
     const TrialStreamStatistics &statistics() const { return m_stats; }
     /// Where the running trial is, for messages ("at SYNC 812 (counter 92), plan sample ...").
@@ -111,6 +113,7 @@ private:
     SetpointWriter m_writer;
     int m_progressReported = 0;
     TrialStatus m_status = TrialStatus::Completed;
+    TrialStopCause m_cause = TrialStopCause::None;
     QString m_message;
     QTimer m_deadline; ///< enable timeout, then the bound of the stopping phase
     TrialStreamStatistics m_stats;

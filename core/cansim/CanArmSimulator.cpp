@@ -147,7 +147,7 @@ void CanArmSimulator::syncCycle()
     }
     m_link->send(SyncProducer::frame(m_sync.advance()));
     ++m_syncCount;
-    m_tauMeasured = m_tau;
+    m_arm->measureTorques(m_tau, m_tauMeasured);
     m_arm->addTorqueNoise(m_tauMeasured, m_limits);
     for (int j = 0; j < n; ++j) {
         const bool drop =

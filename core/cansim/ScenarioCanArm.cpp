@@ -3,6 +3,7 @@
 #include "can/CanTimeouts.h"
 #include "can/JointIdentity.h"
 #include "session/ScenarioRobot.h"
+#include "session/ScenarioRobotJoints.h"
 #include "session/TrialPlanner.h"
 
 #include <QJsonArray>
@@ -38,6 +39,7 @@ CanArmSettings canArmSettings(const Scenario &given, std::shared_ptr<const Robot
     s.measurement.torqueNoise = scenario.simulation.torqueNoise;
     s.measurement.seed = scenario.simulation.seed;
     s.measurement.substeps = scenario.simulation.substeps;
+    s.measurement.realism = simulatedJoints(scenario, *s.model);
     s.controller = scenario.controller;
     s.torqueLimits = scenario.torqueLimits;
     s.nodes = nodes;

@@ -41,13 +41,22 @@ void forEachJoint(TaskThreads &threads, const std::vector<JointRows> &a,
     });
 }
 
-std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialPlan &plan,
-                                     const TrialRecord &record, const EstimatorSettings &settings,
+std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialData &trial,
+                                     const EstimatorSettings &settings,
                                      const Eigen::VectorXd &phiPrev)
 {
+    const TrialPlan &plan = *trial.plan;
+    const TrialRecord &record = *trial.record;
     validateRecord(model, plan, record);
     const int n = model.dof();
     const int samples = record.samples();
+    // The rows learned from: all, or those before the filter's settling at the end of a trial
+    // stopped early (TrialData::rows); every sample is filtered.
+    const Eigen::Index used = std::max(trial.usedSamples() - 1, 0);
+    if (used + 1 < 16)
+        throw Error(QCoreApplication::translate("LearningLaw",
+                                                "trial record has only %1 samples to learn from")
+                        .arg(used + 1));
     const FilteringEstimator filter(settings.rho, record.samplePeriod);
 
     // 1. Joint states from the zero-phase filtered tracking error.
@@ -66,12 +75,14 @@ std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialPlan &p
     auto out = std::make_shared<TrialGram>();
     out->rho = settings.rho;
     GramBlock &block = out->block;
-    block = GramBlock(n, model.parameterCount(), rows, phiPrev);
+    block = GramBlock(n, model.parameterCount(), used, phiPrev);
     // Per joint: both sides filtered, then the normal equations of the OLS fit of step 4.
     forEachJoint(threads, a, [&](int j) {
         filter.zeroPhaseLowPassColumnsInPlace(a[size_t(j)].a);
         filter.zeroPhaseLowPassInPlace(tauf.col(j).data(), rows);
-        block.setJointNormalEquations(j, a[size_t(j)], tauf.col(j));
+        if (used < rows)
+            a[size_t(j)].a.conservativeResize(used, Eigen::NoChange);
+        block.setJointNormalEquations(j, a[size_t(j)], tauf.col(j).head(used));
     });
 
     // 4. OLS gives each joint's residual level in this trial; its rows get the inverse weight.
@@ -79,14 +90,14 @@ std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialPlan &p
     // the rows (exactly) and any later fit's residual follows without cancellation.
     block.setReference(observableUpdate({&block}, phiPrev, settings.rankTolerance).phi);
     forEachJoint(threads, a, [&](int j) {
-        block.setJointResidual(j, a[size_t(j)], tauf.col(j));
+        block.setJointResidual(j, a[size_t(j)], tauf.col(j).head(used));
         // Torque noise reaches b through F(s)F(-s), a symmetric operator (H^T = H).
         filter.zeroPhaseLowPassColumnsInPlace(a[size_t(j)].a);
         block.setJointShapedRows(j, a[size_t(j)]);
     });
-    const double floor = 1e-9 * (tauf.cwiseAbs().maxCoeff() + 1.0);
+    const double floor = 1e-9 * (tauf.topRows(used).cwiseAbs().maxCoeff() + 1.0);
     for (int j = 0; j < n; ++j) {
-        const double rms = std::sqrt(block.residualSquares(j) / double(rows));
+        const double rms = std::sqrt(block.residualSquares(j) / double(used));
         block.setJointWeight(j, 1.0 / std::max(rms, floor));
     }
     return out;
@@ -99,10 +110,11 @@ std::shared_ptr<const TrialGram> trialGramOf(const RobotModel &model, const Tria
 {
     if (trial.cache) {
         if (auto cached = std::dynamic_pointer_cast<const TrialGram>(*trial.cache);
-            cached && cached->rho == settings.rho)
+            cached && cached->rho == settings.rho &&
+            cached->block.samples() == std::max(trial.usedSamples() - 1, 0))
             return cached;
     }
-    auto r = trialGram(model, *trial.plan, *trial.record, settings, phiPrev);
+    auto r = trialGram(model, trial, settings, phiPrev);
     if (trial.cache)
         *trial.cache = r;
     return r;

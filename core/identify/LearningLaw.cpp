@@ -6,6 +6,7 @@
 #include "model/Error.h"
 
 #include <QCoreApplication>
+#include <algorithm>
 #include <cmath>
 
 namespace learnid {
@@ -31,6 +32,19 @@ std::unique_ptr<LearningLaw> makeLearningLaw(const QString &id)
     if (id == QLatin1String("improved"))
         return std::make_unique<ImprovedLaw>();
     return nullptr;
+}
+
+int TrialData::usedSamples() const
+{
+    const int recorded = record ? record->samples() : 0;
+    return rows > 0 ? std::min(rows, recorded) : recorded;
+}
+
+int partialSettlingSamples(double rho, double samplePeriod)
+{
+    if (!(rho > 0.0) || !(samplePeriod > 0.0))
+        return 0;
+    return int(std::ceil(partialSettlingRhoTimes / (rho * samplePeriod)));
 }
 
 JointStateEstimate estimateJointStates(const FilteringEstimator &filter, const TrialPlan &plan,

@@ -26,6 +26,13 @@ struct TrialData
     const TrialPlan *plan = nullptr;
     const TrialRecord *record = nullptr;
     std::shared_ptr<LawCache> *cache = nullptr; ///< optional slot the law may fill and reuse
+    /// Samples to learn from: the first `rows` samples of the record (0: all). A trial stopped
+    /// by the tracking limit is filtered over all it recorded, but the filter's settling at its
+    /// end is left out (docs/method.md, "Learning from a trial stopped by the tracking limit").
+    int rows = 0;
+
+    /// The samples the law learns from: rows, bounded by the record's length.
+    int usedSamples() const;
 };
 
 /// One learning step (paper eq. 13): from a trial's plan and record and the estimate it ran
@@ -59,6 +66,13 @@ struct JointStateEstimate
 JointStateEstimate estimateJointStates(const class FilteringEstimator &filter,
                                        const TrialPlan &plan, const TrialRecord &record,
                                        bool zeroPhase);
+
+/// Samples at the end of a record that the filtering estimator F(s) = rho^3 / (s + rho)^3,
+/// run zero-phase, leaves unsettled when the record ends mid-motion (a trial stopped early):
+/// the backward pass starts at rest there, so the joint states it estimates, and through them
+/// the filtered regressor, are off for about partialSettlingRhoTimes / rho seconds.
+constexpr double partialSettlingRhoTimes = 8.0;
+int partialSettlingSamples(double rho, double samplePeriod);
 
 /// Checks that plan and record agree in size and hold only finite numbers; throws Error naming
 /// the first bad sample and joint.

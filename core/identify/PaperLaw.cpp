@@ -37,14 +37,20 @@ ParameterUpdate PaperLaw::update(const RobotModel &model, const std::vector<Tria
     // mid-point, (W_k + W_k+1) / 2. Online this costs one sample of delay. Pairing it with W_k
     // instead leaves a converged bias of about -0.5 % in b on the paper scenario.
     // Joint j's rows A_j (rows x m) and targets b_j, one row per sample.
-    const int rows = samples - 1;
+    // The rows learned from: all, or those before the filter's settling at the end of a trial
+    // stopped early (TrialData::rows; the causal filter has none, the rule is the laws').
+    const int rows = trials.back().usedSamples() - 1;
+    if (rows + 1 < 16)
+        throw Error(QCoreApplication::translate("LearningLaw",
+                                                "trial record has only %1 samples to learn from")
+                        .arg(rows + 1));
     Eigen::MatrixXd w(n * m, samples); // row i * n + j: W(j, i) over the samples
     model.regressorSeries(record.q, qdHat, qddHat, w);
     std::vector<Eigen::MatrixXd> a(size_t(n), Eigen::MatrixXd(rows, m));
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < m; ++i)
             a[size_t(j)].col(i) =
-                0.5 * (w.row(i * n + j).head(rows) + w.row(i * n + j).tail(rows)).transpose();
+                0.5 * (w.row(i * n + j).head(rows) + w.row(i * n + j).segment(1, rows)).transpose();
     // Solved, then taken about its own fit: the residual is the rows' own.
     GramBlock block =
         selfFittedBlock(a, tauHat.leftCols(rows).transpose(), phiPrev, settings.rankTolerance);

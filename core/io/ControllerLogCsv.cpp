@@ -7,6 +7,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QStringList>
 #include <cmath>
 
 namespace learnid {
@@ -24,6 +25,40 @@ struct Text
 QString seconds(double t)
 {
     return QString::number(t, 'g', 10);
+}
+
+// What the log's `# stopped-by:` line says stopped the trial (docs/file-formats.md,
+// "Controller trial log"), and the line it is on; Other and 0 without one.
+std::pair<TrialStopCause, int> stoppedBy(const QByteArray &csv, const QString &source)
+{
+    static const std::pair<const char *, TrialStopCause> known[] = {
+        {"tracking-limit", TrialStopCause::TrackingLimit},
+        {"fault", TrialStopCause::RobotFault},
+        {"missing-samples", TrialStopCause::MissingSamples},
+        {"operator", TrialStopCause::Operator},
+        {"other", TrialStopCause::Other}};
+    const QList<QByteArray> lines = csv.split('\n');
+    for (int i = 0; i < int(lines.size()); ++i) {
+        const QByteArray line = lines.at(i).trimmed();
+        if (!line.startsWith('#'))
+            continue;
+        const QByteArray body = line.mid(1).trimmed();
+        if (!body.startsWith("stopped-by:"))
+            continue;
+        const QByteArray value = body.mid(int(qstrlen("stopped-by:"))).trimmed();
+        QStringList names;
+        for (const auto &[name, cause] : known) {
+            if (value == name)
+                return {cause, i + 1};
+            names << QLatin1String(name);
+        }
+        throwAtLine(source, i + 1,
+                    Text::tr("\"# stopped-by:\" says %1; known: %2")
+                        .arg(QString::fromUtf8(value).isEmpty() ? Text::tr("nothing")
+                                                                : QString::fromUtf8(value),
+                             names.join(QStringLiteral(", "))));
+    }
+    return {TrialStopCause::Other, 0};
 }
 
 } // namespace
@@ -72,14 +107,27 @@ ControllerLog readControllerLog(const QByteArray &csv, const QString &source, co
     log.record.samplePeriod = ts;
     log.record.q = robotLog.q;
     log.record.tau = robotLog.tau;
+    const auto [cause, causeLine] = stoppedBy(csv, source);
     if (samples < planned) {
         log.record.status = TrialStatus::Aborted;
+        log.record.stopCause = cause;
         log.record.message =
-            Text::tr("the log ends after %1 of the plan's %2 samples (t = %3 s "
-                     "of %4 s): the trial ended early")
-                .arg(samples)
-                .arg(planned)
-                .arg(seconds(robotLog.t[samples - 1]), seconds((planned - 1) * ts));
+            cause == TrialStopCause::TrackingLimit
+                ? Text::tr("the log ends after %1 of the plan's %2 samples (t = %3 s of %4 s): "
+                           "the controller stopped the trial at its tracking limit")
+                      .arg(samples)
+                      .arg(planned)
+                      .arg(seconds(robotLog.t[samples - 1]), seconds((planned - 1) * ts))
+                : Text::tr("the log ends after %1 of the plan's %2 samples (t = %3 s "
+                           "of %4 s): the trial ended early")
+                      .arg(samples)
+                      .arg(planned)
+                      .arg(seconds(robotLog.t[samples - 1]), seconds((planned - 1) * ts));
+    } else if (causeLine > 0) {
+        throwAtLine(source, causeLine,
+                    Text::tr("\"# stopped-by:\" in a log of all the plan's %1 samples: a trial "
+                             "that ran to its end was not stopped")
+                        .arg(planned));
     }
     return log;
 }

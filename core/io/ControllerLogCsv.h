@@ -27,11 +27,14 @@ struct ControllerLog
 /// `# plan-id:` line. Sample k must be logged at t = k Ts within +-controllerLogJitter Ts; a row
 /// repeating the values of the row before is a sample like any (StaleRows::Keep). A log
 /// with fewer samples than the plan is a trial that ended early: its record is Aborted, with a
-/// message saying where it ended.
+/// message saying where it ended, and the stop cause its `# stopped-by:` comment line names
+/// (`tracking-limit`, `fault`, `missing-samples`, `operator`, `other`; Other without one). Only
+/// `tracking-limit` lets the trial be learned from.
 ///
 /// Throws Error as readRobotLog() does, and "<source>: ..." for a log without a plan-id line or
 /// of another plan (naming both ids), "<source>: line <L>: ..." for a sample off the plan's grid
-/// and for a sample beyond the plan's last.
+/// and for a sample beyond the plan's last, for an unknown `# stopped-by:` value and for one in a
+/// log of all the plan's samples.
 /// angular: as readRobotLog() (revolute joints: a log in degrees is refused).
 ControllerLog readControllerLog(const QByteArray &csv, const QString &source, const PlanCsv &plan,
                                 const QList<bool> &angular = {});

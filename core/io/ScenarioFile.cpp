@@ -86,6 +86,8 @@ void readEstimator(JsonObjectReader r, Scenario &s)
     r.rejectUnknownKeys();
 }
 
+const std::pair<bool, const char *> encoderSides[] = {{false, "motor"}, {true, "link"}};
+
 void readSimulation(JsonObjectReader r, Scenario &s)
 {
     r.read(key("trueParameters"), s.simulation.trueParameters);
@@ -97,6 +99,19 @@ void readSimulation(JsonObjectReader r, Scenario &s)
     r.readInteger(key("substeps"), s.simulation.substeps, 1, scenarioLimits::maxSubsteps);
     r.read(key("realUrdf"), s.simulation.realUrdf);
     r.read(key("inertiaPerturbation"), s.simulation.inertiaPerturbation);
+    SimulationSettings &sim = s.simulation;
+    r.read(key("staticFriction"), sim.staticFriction);
+    r.read(key("staticFrictionRatio"), sim.staticFrictionRatio);
+    r.read(key("stribeckVelocity"), sim.stribeckVelocity);
+    r.read(key("armature"), sim.armature);
+    r.read(key("armatureFactor"), sim.armatureFactor);
+    r.read(key("jointStiffness"), sim.jointStiffness);
+    r.read(key("jointDamping"), sim.jointDamping);
+    const QJsonValue side = r.value(key("encoderSide"));
+    if (!side.isUndefined())
+        sim.linkSideEncoder = jsonEnum(side, r.keyPath(key("encoderSide")), encoderSides);
+    r.read(key("torqueSensorOffset"), sim.torqueSensorOffset);
+    r.read(key("torqueSensorLag"), sim.torqueSensorLag);
     r.rejectUnknownKeys();
 }
 
@@ -147,6 +162,31 @@ Scenario readScenario(const QJsonObject &root)
             s.simulation.trueParameters.resize(0);
     }
     return s;
+}
+
+// The realistic-joint keys, each only when it differs from its default (off).
+void insertJointRealism(JsonTree &out, const SimulationSettings &sim)
+{
+    const SimulationSettings off;
+    const auto vector = [&out](const char *name, const Eigen::VectorXd &v) {
+        if (v.size() > 0)
+            out.insert(key(name), JsonTree::numbers(v));
+    };
+    const auto number = [&out](const char *name, double value, double byDefault) {
+        if (!(value == byDefault)) // NaN is written too (as null, which the reader refuses)
+            out.insert(key(name), value);
+    };
+    vector("staticFriction", sim.staticFriction);
+    number("staticFrictionRatio", sim.staticFrictionRatio, off.staticFrictionRatio);
+    number("stribeckVelocity", sim.stribeckVelocity, off.stribeckVelocity);
+    vector("armature", sim.armature);
+    vector("armatureFactor", sim.armatureFactor);
+    vector("jointStiffness", sim.jointStiffness);
+    vector("jointDamping", sim.jointDamping);
+    if (sim.linkSideEncoder != off.linkSideEncoder)
+        out.insert(key("encoderSide"), enumName(sim.linkSideEncoder, encoderSides));
+    vector("torqueSensorOffset", sim.torqueSensorOffset);
+    number("torqueSensorLag", sim.torqueSensorLag, off.torqueSensorLag);
 }
 
 // Seeds above 2^53 are invalid; written as a double they read back as out of range.
@@ -209,6 +249,7 @@ QByteArray scenarioToJson(const Scenario &s)
         simulation.insert(key("realUrdf"), s.simulation.realUrdf)
             .insert(key("inertiaPerturbation"), s.simulation.inertiaPerturbation);
     }
+    insertJointRealism(simulation, s.simulation);
     JsonTree safety = JsonTree::object();
     safety.insert(key("maxTrackingErrorDeg"), s.maxTrackingErrorDeg)
         .insert(key("stabilityMargin"), s.stabilityMargin);

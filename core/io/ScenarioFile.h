@@ -25,6 +25,8 @@ constexpr double maxSamplePeriod = 0.1;        ///< [s]
 constexpr double maxRest = 60.0;               ///< restBefore, restAfter [s]
 constexpr double maxTorqueNoise = 1.0;         ///< standard deviation / torque limit
 constexpr double maxInertiaPerturbation = 0.9; ///< simulated real robot vs CAD, a fraction
+constexpr double maxJointStiffness = 1e7;      ///< [N m/rad]
+constexpr double maxTorqueSensorLag = 1.0;     ///< [s]
 } // namespace scenarioLimits
 
 /// The scenario as indented JSON with every key, in the documented order (docs/scenario.md).

@@ -102,6 +102,45 @@ void validatePath(const Scenario &s, int n)
     }
 }
 
+// The realistic-joint keys (docs/scenario.md, simulation); whether static friction reaches the
+// true robot's Coulomb friction is checked when the simulated robot is made (simulatedJoints()).
+void validateJointRealism(const SimulationSettings &sim, int n, const QString &perJoint)
+{
+    const auto optional = [&](const char *name, const Eigen::VectorXd &v, EntryRule rule) {
+        checkOptionalVector(key(name), v, n, perJoint, rule, true);
+    };
+    optional("simulation.staticFriction", sim.staticFriction, EntryRule::NonNegative);
+    checkFinite(key("simulation.staticFrictionRatio"), sim.staticFrictionRatio);
+    if (sim.staticFrictionRatio != 0.0 && !(sim.staticFrictionRatio >= 1.0)) {
+        throwAtKey(key("simulation.staticFrictionRatio"),
+                   Text::tr("must be 0 (off) or at least 1 (static friction is not below "
+                            "Coulomb friction), got %1")
+                       .arg(describeNumber(sim.staticFrictionRatio)));
+    }
+    if (sim.staticFrictionRatio != 0.0 && sim.staticFriction.size() > 0) {
+        throwAtKey(key("simulation.staticFrictionRatio"),
+                   Text::tr("give static friction either as simulation.staticFriction or as "
+                            "this ratio, not both"));
+    }
+    checkPositive(key("simulation.stribeckVelocity"), sim.stribeckVelocity);
+    optional("simulation.armature", sim.armature, EntryRule::NonNegative);
+    optional("simulation.armatureFactor", sim.armatureFactor, EntryRule::NonNegative);
+    optional("simulation.jointStiffness", sim.jointStiffness, EntryRule::Positive);
+    for (Eigen::Index j = 0; j < sim.jointStiffness.size(); ++j) {
+        checkInterval(jsonIndexPath(key("simulation.jointStiffness"), int(j)),
+                      sim.jointStiffness[j], 0.0, scenarioLimits::maxJointStiffness,
+                      Bounds::LeftOpen);
+    }
+    optional("simulation.jointDamping", sim.jointDamping, EntryRule::NonNegative);
+    if (sim.jointStiffness.size() == 0 && (sim.jointDamping.size() > 0 || !sim.linkSideEncoder)) {
+        throwAtKey(key(sim.linkSideEncoder ? "simulation.jointDamping" : "simulation.encoderSide"),
+                   Text::tr("applies to elastic joints only: give simulation.jointStiffness"));
+    }
+    optional("simulation.torqueSensorOffset", sim.torqueSensorOffset, EntryRule::Finite);
+    checkInterval(key("simulation.torqueSensorLag"), sim.torqueSensorLag, 0.0,
+                  scenarioLimits::maxTorqueSensorLag, Bounds::Closed);
+}
+
 } // namespace
 
 void validateScenario(const Scenario &s)
@@ -167,6 +206,7 @@ void validateScenario(const Scenario &s)
     }
     checkIntegerRange(key("simulation.substeps"), s.simulation.substeps, 1,
                       scenarioLimits::maxSubsteps);
+    validateJointRealism(s.simulation, n, perJoint);
 
     checkPositive(key("safety.maxTrackingErrorDeg"), s.maxTrackingErrorDeg);
     checkNonNegative(key("safety.stabilityMargin"), s.stabilityMargin);

@@ -3,6 +3,8 @@
 #include "model/RobotModel.h"
 #include "model/TwoLinkArm.h"
 #include "model/TwoLinkDynamics.h"
+#include "robot/JointRealism.h"
+#include "robot/RealisticPlant.h"
 
 #include <Eigen/Core>
 #include <QtGlobal>
@@ -13,13 +15,16 @@
 
 namespace learnid {
 
-/// How the simulated robot measures: encoder quantisation of q and white noise on tau.
+/// How the simulated robot measures (encoder quantisation of q, white noise on tau) and what its
+/// joints have beyond the rigid-body model (realism: friction, rotor inertia, elasticity, the
+/// torque sensor's offset and lag).
 struct MeasurementOptions
 {
     qint64 encoderCounts = 0; ///< counts per revolution; 0 = ideal angle measurement
     double torqueNoise = 0.0; ///< standard deviation of torque noise as a fraction of the limit
     quint64 seed = 1;         ///< noise seed; trial i of a robot uses (seed, i)
     int substeps = 10;        ///< RK4 steps per sample period (0.2 ms at Ts = 2 ms)
+    JointRealism realism;     ///< off by default: the rigid-body model of the true parameters
 };
 
 /// The physics of a simulated arm, one sample period at a time: the state q [rad], qd [rad/s]
@@ -59,6 +64,10 @@ public:
         m_qd = Vector::Zero(n);
         m_braked = Eigen::Matrix<bool, N, 1>::Constant(n, false);
         m_heldQ = Vector::Zero(n);
+        if (options.realism.any()) {
+            m_plant = std::make_unique<RealisticPlant>(m_model, m_phi, options.realism,
+                                                       samplePeriod, m_substeps);
+        }
     }
 
     int dof() const { return int(m_q.size()); }
@@ -67,13 +76,20 @@ public:
     const MeasurementOptions &options() const { return m_options; }
     double samplePeriod() const { return m_h * m_substeps; }
 
-    /// The arm at rest at q0 [rad] (n).
+    /// The arm at rest with its encoders reading q0 [rad] (n) (with elastic joints and motor-side
+    /// encoders the link hangs on its springs below that: RealisticPlant::reset).
     void reset(const Eigen::Ref<const Eigen::VectorXd> &q0)
     {
         m_q = q0;
         m_qd.setZero();
         m_heldQ = m_q;
+        if (m_plant) {
+            m_plant->reset(q0);
+            syncFromPlant();
+        }
     }
+    /// The realistic joints' plant, or nullptr when the options have none (JointRealism).
+    const RealisticPlant *plant() const { return m_plant.get(); }
     const Vector &q() const { return m_q; }
     const Vector &qd() const { return m_qd; }
 
@@ -82,16 +98,38 @@ public:
     /// The measured angles: q rounded to whole encoder counts (q itself for an ideal encoder).
     template <typename Out> void measureAngles(Out &&out) const
     {
+        if (m_plant) {
+            const Eigen::VectorXd &angles = m_plant->encoderAngles();
+            if (m_countAngle > 0.0)
+                out = (angles / m_countAngle).array().round() * m_countAngle;
+            else
+                out = angles;
+            return;
+        }
         if (m_countAngle > 0.0)
             out = (m_q / m_countAngle).array().round() * m_countAngle;
         else
             out = m_q;
     }
+    /// The torque sensor's reading [N m] (n) at this sample while the drive commands command:
+    /// the command itself on rigid joints, the spring torque on elastic ones, through the
+    /// sensor's lag and offset (RealisticPlant::measureTorque). Noise is added apart.
+    template <typename Command, typename Out> void measureTorques(const Command &command, Out &&out)
+    {
+        if (m_plant) {
+            Eigen::VectorXd reading(dof());
+            m_plant->measureTorque(command, reading);
+            out = reading;
+        } else {
+            out = command;
+        }
+    }
     /// The encoder count of joint j for an encoder of countAngle [rad] per count (the nearest
     /// whole count to q_j).
     qint64 encoderCount(int j, double countAngle) const
     {
-        return qint64(std::llround(m_q[j] / countAngle));
+        const double angle = m_plant ? m_plant->encoderAngles()[j] : m_q[j];
+        return qint64(std::llround(angle / countAngle));
     }
 
     /// Adds the measurement noise to measured torques tau [N m] (n): standard deviation
@@ -113,6 +151,8 @@ public:
         }
         m_braked[j] = braked;
         m_anyBraked = m_braked.any();
+        if (m_plant)
+            m_plant->setHeld(j, braked);
     }
     bool braked(int j) const { return m_braked[j]; }
 
@@ -122,6 +162,11 @@ public:
     /// RobotModel::rk4Step does, to rounding.
     template <typename Tau> void integrate(const Tau &tau)
     {
+        if (m_plant) {
+            m_plant->advance(tau);
+            syncFromPlant();
+            return;
+        }
         if (m_twoLink && !m_anyBraked) {
             const double t[2] = {tau[0], tau[1]};
             twolink::rk4Steps(m_q.data(), m_qd.data(), t, m_phi.data(), m_h, m_substeps);
@@ -135,6 +180,11 @@ public:
     }
 
 private:
+    void syncFromPlant()
+    {
+        m_q = m_plant->q();
+        m_qd = m_plant->qd();
+    }
     void holdBrakedJoints()
     {
         for (int j = 0; j < dof(); ++j) {
@@ -159,6 +209,7 @@ private:
     Vector m_heldQ;
     bool m_anyBraked = false;
     bool m_twoLink; ///< the model is the paper's 2-link arm (TwoLinkArm)
+    std::unique_ptr<RealisticPlant> m_plant;
 };
 
 } // namespace learnid

@@ -71,7 +71,7 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
         pid.step(e, u);
         tauCommand = (plan.feedforward.col(k) + u).cwiseMax(-limit).cwiseMin(limit);
         record.q.col(k) = qMeasured;
-        record.tau.col(k) = tauCommand;
+        arm.measureTorques(tauCommand, record.tau.col(k));
         arm.addTorqueNoise(record.tau.col(k), limit);
         if (k == m_faults.nanTorqueAtSample)
             record.tau(0, k) = std::numeric_limits<double>::quiet_NaN();
@@ -81,6 +81,7 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
         const double worstError = e.cwiseAbs().maxCoeff(&worst);
         if (worstError > plan.maxTrackingError) {
             record.status = TrialStatus::Aborted;
+            record.stopCause = TrialStopCause::TrackingLimit;
             record.message = Text::tr("tracking error of joint %1 reached %2 deg at t = %3 s "
                                       "(limit %4 deg): quick stop")
                                  .arg(worst + 1)
@@ -91,12 +92,14 @@ TrialRecord SimulatedRobot::simulate(const TrialPlan &plan, const TrialMonitor &
         }
         if (k == m_faults.driveFaultAtSample) {
             record.status = TrialStatus::Faulted;
+            record.stopCause = TrialStopCause::RobotFault;
             record.message = Text::tr("drive of joint 1 reported a fault at t = %1 s (injected)")
                                  .arg(k * ts, 0, 'f', 3);
             break;
         }
         if (monitor.cancelled()) {
             record.status = TrialStatus::Cancelled;
+            record.stopCause = TrialStopCause::Operator;
             record.message = Text::tr("stopped by the operator at t = %1 s").arg(k * ts, 0, 'f', 3);
             break;
         }

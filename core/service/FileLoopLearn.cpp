@@ -85,7 +85,7 @@ QList<RecordedTrialRobot::Run> historyRuns(const LoopHistory &history, const QDi
         for (const QString &name : trial.logs) {
             const QString path = dir.filePath(name);
             const ControllerLog log = readControllerLogFile(path, plan, angular);
-            if (!log.record.completed())
+            if (!log.record.completed() && !log.record.stoppedAtTrackingLimit())
                 throw Error(Text::tr("%1: %2").arg(native(path), log.record.message));
             runs.append({log.planId, log.record, native(path)});
         }
@@ -150,7 +150,9 @@ LearnedTrial learnFromTrial(const LoopScenario &s, const LearnRequest &request)
     for (int r = 0; r < int(logs.size()); ++r) {
         const QString source = native(request.trialLogs.at(r));
         const ControllerLog log = readControllerLog(logs.at(r), source, plan, angular);
-        if (!log.record.completed()) {
+        // A log that ended early is learned from only when it says the controller stopped the
+        // trial at its tracking limit ("# stopped-by: tracking-limit"), as a session does.
+        if (!log.record.completed() && !log.record.stoppedAtTrackingLimit()) {
             learned.failure =
                 Text::tr("%1: %2; nothing learned").arg(source, asClause(log.record.message));
             return learned;
@@ -164,19 +166,23 @@ LearnedTrial learnFromTrial(const LoopScenario &s, const LearnRequest &request)
                                                   *s.model, native(request.historyDir));
     auto robot = std::make_shared<RecordedTrialRobot>(runs);
     learned.session = std::make_unique<CommissioningSession>(scenario, s.model, robot);
-    const bool completed = learned.session->runTrials(learned.trialIndex + 1);
-    if (!robot->mismatch().isEmpty())
-        throw Error(robot->mismatch());
-    const TrialResult &last = learned.session->history().constLast();
-    if (!completed && last.index < learned.trialIndex)
-        throw Error(Text::tr("the history %1 does not replay: trial %2: %3")
-                        .arg(native(request.historyDir))
-                        .arg(last.index)
-                        .arg(last.message));
-    if (!completed) {
-        learned.failure = last.message;
+    // Trial by trial (not runTrials): the loop's technician decides whether to go on after a
+    // partial trial, so no series rule applies to the replay.
+    for (int k = 0; k <= learned.trialIndex; ++k) {
+        const TrialResult &t = learned.session->runTrial();
+        if (!robot->mismatch().isEmpty())
+            throw Error(robot->mismatch());
+        if (t.learned())
+            continue;
+        if (k < learned.trialIndex)
+            throw Error(Text::tr("the history %1 does not replay: trial %2: %3")
+                            .arg(native(request.historyDir))
+                            .arg(k)
+                            .arg(t.message));
+        learned.failure = t.message;
         return learned;
     }
+    const TrialResult &last = learned.session->history().constLast();
     const QVector<Eigen::VectorXd> &estimates = learned.session->estimates();
     for (int k = 1; k <= newest; ++k) {
         const QString path = dir.filePath(history.estimates.at(k));

@@ -29,6 +29,7 @@ TrialRecord RecordedTrialRobot::runTrial(const TrialPlan &plan, const TrialMonit
     TrialRecord record;
     record.samplePeriod = plan.desired.samplePeriod;
     record.status = TrialStatus::Faulted;
+    record.stopCause = TrialStopCause::Other;
     if (m_next >= m_runs.size()) {
         record.message = m_mismatch =
             Text::tr("no logged trial is left for trial run %1").arg(m_next + 1);

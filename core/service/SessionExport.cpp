@@ -105,7 +105,7 @@ QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &sessio
 {
     QList<QPair<QString, QByteArray>> files;
     if (!request.reportPath.isEmpty())
-        files.append({request.reportPath, sessionReportJson(session)});
+        files.append({request.reportPath, sessionReportJson(session, request.endedEarly)});
     const int k =
         request.estimateIndex >= 0 ? request.estimateIndex : int(session.estimates().size()) - 1;
     if (!request.parameterPath.isEmpty()) {

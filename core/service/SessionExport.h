@@ -25,6 +25,9 @@ struct ExportRequest
     /// estimate) and friction in <dynamics>: URDF robots only.
     QString urdfPath;
     QString urdfComment; ///< who made it and when, for the URDF's leading comment
+    /// Why the session ended before its trials were done (the report says so); empty: it did
+    /// not.
+    QString endedEarly;
 };
 
 /// The URDF xml (read from source) with the links and joint terms of standard parameters pi of

@@ -6,6 +6,7 @@
 #include "model/ChainModel.h"
 #include "model/Error.h"
 #include "service/StandardExport.h"
+#include "session/TrialSeries.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -60,7 +61,7 @@ QJsonArray standardReport(const CommissioningSession &session, const ChainModel 
 
 } // namespace
 
-QByteArray sessionReportJson(const CommissioningSession &session)
+QByteArray sessionReportJson(const CommissioningSession &session, const QString &endedEarly)
 {
     QJsonObject root;
     root.insert(QStringLiteral("schema"), QStringLiteral("learnid-report/1"));
@@ -96,9 +97,21 @@ QByteArray sessionReportJson(const CommissioningSession &session)
         }
         if (!t->message.isEmpty())
             o.insert(QStringLiteral("message"), t->message);
+        if (t->learnedFromPartial()) {
+            o.insert(QStringLiteral("learnedFromPartialTrial"), true);
+            o.insert(QStringLiteral("learnedSeconds"), t->partialSamples * t->record.samplePeriod);
+        }
+        if (!t->worseTracking.isEmpty())
+            o.insert(QStringLiteral("worseTracking"), t->worseTracking);
+        if (!t->seriesStop.isEmpty())
+            o.insert(QStringLiteral("seriesStop"), t->seriesStop);
         trials.append(o);
     }
     root.insert(QStringLiteral("trials"), trials);
+    root.insert(QStringLiteral("proposedEstimate"),
+                proposedEstimate(session.history(), int(estimates.size())));
+    if (!endedEarly.isEmpty())
+        root.insert(QStringLiteral("endedEarly"), endedEarly);
     QJsonObject finalEstimate;
     finalEstimate.insert(QStringLiteral("phi"), toArray(session.currentEstimate()));
     finalEstimate.insert(QStringLiteral("learningSteps"), int(estimates.size()) - 1);

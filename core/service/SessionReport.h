@@ -12,7 +12,11 @@ namespace learnid {
 /// tracking error, duration and samples, and the figures of the fit made from that trial:
 /// condition, rank, residualRms, phiStd), and the final estimate. Non-finite figures (the
 /// standard deviation of a parameter the path does not observe) are written as null.
-QByteArray sessionReportJson(const CommissioningSession &session);
+/// A trial learned from as far as the tracking limit let it run is marked
+/// ("learnedFromPartialTrial", "learnedSeconds"); "proposedEstimate" is the estimate Accept
+/// proposes (TrialSeries.h). endedEarly: why the session ended before its trials were done,
+/// written as "endedEarly" (empty: it did not).
+QByteArray sessionReportJson(const CommissioningSession &session, const QString &endedEarly = {});
 
 /// The parameter file content for estimate k of a session (k >= 1), with the quality figures of
 /// the trials that produced it and the SDO writes that apply performs.

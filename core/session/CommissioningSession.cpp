@@ -1,6 +1,7 @@
 #include "session/CommissioningSession.h"
 
 #include "model/Error.h"
+#include "session/TrialSeries.h"
 
 #include <QLoggingCategory>
 
@@ -100,6 +101,14 @@ const TrialResult &CommissioningSession::runNextTrial()
                              result.rmsTrackingErrorDeg);
         if (result.record.completed())
             learnFrom(result);
+        else if (result.record.stoppedAtTrackingLimit())
+            learnFromPartial(result);
+        // Never learned from: a fault, an EMCY, a lost heartbeat, missing samples, Stop.
+        result.seriesStop = seriesStopAfterAbort(m_history, result);
+        result.worseTracking = worseTrackingNote(m_history, result);
+        for (const QString &note : {result.seriesStop, result.worseTracking})
+            if (!note.isEmpty())
+                qCInfo(lcSession).noquote() << note;
     }
     m_history.append(result);
     emit trialFinished(m_history.constLast());
@@ -136,6 +145,50 @@ TrialRecord CommissioningSession::runRepetitions(const TrialPlan &plan, int inde
     return sum;
 }
 
+void CommissioningSession::learnFromPartial(TrialResult &result)
+{
+    // The samples up to the stop, less the filter's settling at the end (LearningLaw.h); too
+    // short a record observes nothing once it has settled and is not learned from.
+    const int recorded = result.record.samples();
+    const int settling =
+        partialSettlingSamples(m_scenario.estimator.rho, result.record.samplePeriod);
+    const int rows = recorded - settling;
+    if (rows < minimumPartialSamples) {
+        result.message =
+            tr("trial %1 stopped at the tracking limit after %2 s: too short to learn from once "
+               "the filter has settled (%3 s); the estimate is unchanged")
+                .arg(result.index)
+                .arg(std::max(recorded - 1, 0) * result.record.samplePeriod, 0, 'f', 3)
+                .arg(settling * result.record.samplePeriod, 0, 'f', 3);
+        qCWarning(lcSession).noquote() << result.message;
+        return;
+    }
+    m_partialPlans[result.index] = planUpTo(result.plan(), recorded);
+    result.partialSamples = rows;
+    learnFrom(result);
+    if (result.learned() && result.update->rank == 0) {
+        // Nothing observed: the estimate did not move; not counted as progress.
+        m_estimates.removeLast();
+        result.update.reset();
+        result.partialSamples = 0;
+        result.message = tr("trial %1 stopped at the tracking limit: its %2 s before the stop "
+                            "observe no parameter; the estimate is unchanged")
+                             .arg(result.index)
+                             .arg(rows * result.record.samplePeriod, 0, 'f', 3);
+    }
+    if (!result.learned())
+        m_partialPlans.erase(result.index);
+}
+
+TrialData CommissioningSession::trialData(const TrialResult &t,
+                                          std::shared_ptr<LawCache> *cache) const
+{
+    const auto partial = m_partialPlans.find(t.index);
+    if (partial == m_partialPlans.end())
+        return {&t.plan(), &t.record, cache};
+    return {&partial->second, &t.record, cache, t.partialSamples};
+}
+
 void CommissioningSession::learnFrom(TrialResult &result)
 {
     // One cache slot per trial index, the new trial's last; the law fills and reuses them.
@@ -144,9 +197,9 @@ void CommissioningSession::learnFrom(TrialResult &result)
     for (qsizetype i = 0; i < m_history.size(); ++i) {
         const TrialResult &earlier = m_history.at(i);
         if (earlier.learned())
-            trials.push_back({&earlier.plan(), &earlier.record, &m_lawCaches[std::size_t(i)]});
+            trials.push_back(trialData(earlier, &m_lawCaches[std::size_t(i)]));
     }
-    trials.push_back({&result.plan(), &result.record, &m_lawCaches.back()});
+    trials.push_back(trialData(result, &m_lawCaches.back()));
     try {
         ParameterUpdate update =
             m_law->update(*m_model, trials, result.phiUsed, m_scenario.estimator);
@@ -168,7 +221,8 @@ bool CommissioningSession::runTrials(int count, bool keepEarlierStop)
     for (int i = 0; i < count; ++i) {
         if (m_cancel.load())
             return false;
-        if (!runNextTrial().learned())
+        const TrialResult &t = runNextTrial();
+        if (!t.learned() || !t.seriesStop.isEmpty())
             return false;
     }
     return true;

@@ -12,6 +12,7 @@
 #include <QObject>
 #include <QVector>
 #include <atomic>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -24,6 +25,10 @@ namespace learnid {
 ///
 /// Calls are synchronous and belong to one thread (a worker thread in the GUI, the main thread
 /// in the CLI); requestCancel() may be called from any thread. Signals carry value types.
+/// Samples a trial stopped by the tracking limit must keep after the filter's settling to be
+/// learned from (below that, nothing is learned and the trial is no progress).
+constexpr int minimumPartialSamples = 16;
+
 class CommissioningSession : public QObject
 {
     Q_OBJECT
@@ -55,10 +60,15 @@ public:
     /// planned.
     PathIdentifiability identifiability() const;
 
-    /// Checks, runs and learns from one trial. A refused, aborted or faulted trial is kept in
-    /// the history, marked, and leaves the estimate unchanged.
+    /// Checks, runs and learns from one trial. A refused, faulted, cancelled trial, or one
+    /// aborted for another reason than the tracking limit, is kept in the history, marked, and
+    /// leaves the estimate unchanged. A trial stopped by the tracking limit is learned from as
+    /// far as it ran, less the filter's settling (TrialResult::learnedFromPartial()), unless
+    /// that leaves fewer than minimumPartialSamples samples or observes nothing.
     const TrialResult &runTrial();
-    /// Runs trials until `count` more have completed or one did not; returns whether all did.
+    /// Runs trials until `count` more have been learned from, or one was not, or one stopped
+    /// by the tracking limit ends the series (TrialResult::seriesStop, TrialSeries.h); returns
+    /// whether the series ran to its end.
     /// A Stop requested before the series starts is forgotten, unless keepEarlierStop: a caller
     /// that clears it when the run is requested (clearCancel) passes true, so that a Stop sent
     /// between the request and the start is not lost.
@@ -105,6 +115,8 @@ private:
     const TrialResult &runNextTrial();
     TrialRecord runRepetitions(const TrialPlan &plan, int index, QString *message);
     void learnFrom(TrialResult &result);
+    void learnFromPartial(TrialResult &result);
+    TrialData trialData(const TrialResult &t, std::shared_ptr<LawCache> *cache) const;
 
     Scenario m_scenario;
     std::shared_ptr<const RobotModel> m_model;
@@ -121,6 +133,9 @@ private:
     /// The law's per-trial work (LawCache), by trial index: kept with the algorithm's caller,
     /// not in the trials the session hands out.
     std::vector<std::shared_ptr<LawCache>> m_lawCaches;
+    /// The plans of trials learned from partially, cut at their stop (what their records ran
+    /// against), by trial index.
+    std::map<int, TrialPlan> m_partialPlans;
     std::atomic_bool m_cancel{false};
 };
 

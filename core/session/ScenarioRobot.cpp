@@ -6,6 +6,7 @@
 #include "model/Error.h"
 #include "model/ModelCheck.h"
 #include "model/UrdfChain.h"
+#include "session/ScenarioRobotJoints.h"
 
 #include <QCoreApplication>
 #include <cmath>
@@ -95,6 +96,7 @@ std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
     measurement.torqueNoise = scenario.simulation.torqueNoise;
     measurement.seed = scenario.simulation.seed;
     measurement.substeps = scenario.simulation.substeps;
+    measurement.realism = simulatedJoints(scenario, *model);
     return std::make_shared<SimulatedRobot>(std::move(model), scenario.simulation.trueParameters,
                                             measurement);
 }

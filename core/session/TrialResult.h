@@ -38,10 +38,21 @@ struct TrialResult
     Eigen::VectorXd rmsTrackingErrorDeg;   ///< RMS of q_d - q per joint [deg] (n)
     std::optional<ParameterUpdate> update; ///< the learning step made from this trial
     QString message;                       ///< why it was refused, ended early or not learned from
+    /// A trial stopped by the tracking limit and learned from: the samples learned from (the
+    /// record's, less the filter's settling at its end); 0 for a completed trial.
+    int partialSamples = 0;
+    /// Why a series of trials (Run all) stops after this trial although it was learned from
+    /// (a partial trial that is no progress, TrialSeries.h); empty: it may go on.
+    QString seriesStop;
+    /// Set when this trial tracked worse (max error) than the completed trial before it: in
+    /// words, with the estimate that tracked best (TrialSeries.h); empty otherwise.
+    QString worseTracking;
 
     const TrialPlan &plan() const { return check.plan; }
     TrialStatus status() const { return record.status; }
     bool learned() const { return update.has_value(); }
+    /// Learned from the samples of a trial stopped by the tracking limit.
+    bool learnedFromPartial() const { return learned() && !record.completed(); }
 };
 
 /// Tracking error figures of a record against its plan [deg], per joint.

@@ -24,6 +24,18 @@ struct SimulationSettings
     /// changed at random by up to +-inertiaPerturbation (a fraction), consistently (seed).
     QString realUrdf;
     double inertiaPerturbation = 0.0;
+    // What real joints have beyond the rigid-body model (docs/scenario.md, simulation); empty
+    // vectors and 0 are off. Vectors have one entry per joint.
+    Eigen::VectorXd staticFriction;     ///< Stribeck: static friction Fs [N m]
+    double staticFrictionRatio = 0.0;   ///< Stribeck: Fs = ratio * Coulomb friction (>= 1)
+    double stribeckVelocity = 0.1;      ///< Stribeck velocity vs [rad/s]
+    Eigen::VectorXd armature;           ///< rotor inertia the model leaves out [kg m^2]
+    Eigen::VectorXd armatureFactor;     ///< ... as a factor of the link's inertia about its axis
+    Eigen::VectorXd jointStiffness;     ///< elastic joints: spring stiffness [N m/rad]
+    Eigen::VectorXd jointDamping;       ///< elastic joints: spring damping [N m s/rad]
+    bool linkSideEncoder = true;        ///< elastic joints: the encoder on the link (else motor)
+    Eigen::VectorXd torqueSensorOffset; ///< [N m]
+    double torqueSensorLag = 0.0;       ///< first-order time constant [s]
 };
 
 /// A commissioning scenario: what the technician asks for (the robot, the path, the controller,

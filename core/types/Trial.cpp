@@ -21,4 +21,20 @@ QString trialStatusName(TrialStatus status)
     return {};
 }
 
+TrialStopCause defaultStopCause(TrialStatus status)
+{
+    switch (status) {
+    case TrialStatus::Completed:
+    case TrialStatus::Refused:
+        return TrialStopCause::None;
+    case TrialStatus::Faulted:
+        return TrialStopCause::RobotFault;
+    case TrialStatus::Cancelled:
+        return TrialStopCause::Operator;
+    case TrialStatus::Aborted:
+        return TrialStopCause::Other;
+    }
+    return TrialStopCause::Other;
+}
+
 } // namespace learnid

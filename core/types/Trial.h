@@ -34,13 +34,31 @@ struct TrialPlan
 
 enum class TrialStatus {
     Completed, ///< all samples recorded
-    Aborted,   ///< stopped by a safety limit (tracking error, missing samples)
+    Aborted,   ///< stopped by a safety limit (tracking error, missing samples, bus errors)
     Faulted,   ///< the robot reported a fault
     Cancelled, ///< stopped on request
     Refused,   ///< not started: the pre-trial check failed
 };
 
 QString trialStatusName(TrialStatus status);
+
+/// What stopped a trial that did not complete. Only a stop at the tracking-error limit leaves a
+/// record that is sound up to the stop (the robot did what it was told, only worse than
+/// allowed); every other cause may have corrupted the samples before it (a fault, an EMCY, a
+/// lost heartbeat, missing samples) or says nothing about the robot (Stop), and is never
+/// learned from.
+enum class TrialStopCause {
+    None,           ///< the trial completed, or was not started
+    TrackingLimit,  ///< |q_d - q| exceeded the abort threshold: quick stop
+    MissingSamples, ///< samples, SYNCs or frames went missing, or the bus failed
+    RobotFault,     ///< a drive fault, an EMCY, a lost heartbeat, a restart
+    Operator,       ///< Stop
+    Other,          ///< anything else (a log that ended without saying why, a write error)
+};
+
+/// The cause a status implies when nothing more specific is known: a fault is the robot's, a
+/// cancel the operator's, an abort not known to be the tracking limit is Other.
+TrialStopCause defaultStopCause(TrialStatus status);
 
 /// What a robot measured in one trial, sample k at t_k = k * samplePeriod: the joint angles
 /// q [rad] and torques tau [N m], both (n x samples()). A trial that ended early keeps the
@@ -52,9 +70,15 @@ struct TrialRecord
     Eigen::MatrixXd tau;
     TrialStatus status = TrialStatus::Completed;
     QString message; ///< why the trial ended early, in words for the technician
+    TrialStopCause stopCause = TrialStopCause::None; ///< what ended it early (None: completed)
 
     int samples() const { return int(q.cols()); }
     bool completed() const { return status == TrialStatus::Completed; }
+    /// Stopped by the tracking-error limit: the samples up to the stop may be learned from.
+    bool stoppedAtTrackingLimit() const
+    {
+        return status == TrialStatus::Aborted && stopCause == TrialStopCause::TrackingLimit;
+    }
 };
 
 /// Progress and cancel between a running trial and whoever started it. progress may be called

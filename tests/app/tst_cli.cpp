@@ -24,6 +24,7 @@ private slots:
     void badInput_exitsWithMessageAndWritesNothing_data();
     void badInput_exitsWithMessageAndWritesNothing();
     void unstableController_isRefusedAndWritesNothing();
+    void abortedSession_writesItsOutputsMarkedEndedEarly();
     void unknownOption_printsUsage();
     void commandHelp_listsThatCommandsOptions_data();
     void commandHelp_listsThatCommandsOptions();
@@ -271,19 +272,72 @@ void TestCli::badInput_exitsWithMessageAndWritesNothing()
 }
 
 // The paper's lambda = 40 is unstable for the true inertia (docs/method.md §3): the session
-// refuses the trial once the estimate nears the truth, exits non-zero and writes nothing.
+// refuses the trial once the estimate nears the truth and exits non-zero; without outputs asked
+// for it writes nothing.
 void TestCli::unstableController_isRefusedAndWritesNothing()
 {
     QTemporaryDir dir;
     write(dir.filePath(QStringLiteral("s.json")), R"({"controller": {"lambda": 40}})");
     const Result r =
-        cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("s.json"),
-             QStringLiteral("--report"), QStringLiteral("r.json")},
+        cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("s.json")},
             dir.path());
     QCOMPARE(r.exitCode, 3);
     QVERIFY2(r.err.contains(QStringLiteral("unstable")), qPrintable(r.err));
     QVERIFY(r.err.contains(QStringLiteral("no files written")));
-    QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("r.json"))));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{QStringLiteral("s.json")});
+}
+
+// A session that ends early writes the outputs asked for, marked so (issue 23, part 5): the
+// report says why, the trial CSVs hold the aborted trial's record up to the stop; nothing was
+// learned, so no parameter file. A drive fault at sample 400 of trial 0 is not learned from.
+void TestCli::abortedSession_writesItsOutputsMarkedEndedEarly()
+{
+    QTemporaryDir dir;
+    write(dir.filePath(QStringLiteral("s.json")), R"({"safety": {"maxTrackingErrorDeg": 0.02}})");
+    const Result r =
+        cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("s.json"),
+             QStringLiteral("--iterations"), QStringLiteral("2"), QStringLiteral("--report"),
+             QStringLiteral("r.json"), QStringLiteral("--trial-csv"), QStringLiteral("trials"),
+             QStringLiteral("--export"), QStringLiteral("p.json")},
+            dir.path());
+    // Trial 0 stops at the limit and is learned from; trial 1 completes: exit 0, all written,
+    // the row marked.
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY2(r.out.contains(QStringLiteral("learned from a partial trial")), qPrintable(r.out));
+    QVERIFY2(r.err.contains(QStringLiteral("learned from its first")), qPrintable(r.err));
+    const QJsonObject report = readJson(dir.filePath(QStringLiteral("r.json")));
+    QVERIFY(!report.contains(QStringLiteral("endedEarly")));
+    QVERIFY(report.value(QStringLiteral("trials"))
+                .toArray()
+                .at(0)
+                .toObject()
+                .value(QStringLiteral("learnedFromPartialTrial"))
+                .toBool());
+    QVERIFY(QFile::exists(dir.filePath(QStringLiteral("p.json"))));
+
+    // The same with a limit so tight the record is too short to learn from: ended early.
+    QTemporaryDir early;
+    write(early.filePath(QStringLiteral("s.json")),
+          R"({"safety": {"maxTrackingErrorDeg": 0.0001}})");
+    const Result e =
+        cli({QStringLiteral("run"), QStringLiteral("--scenario"), QStringLiteral("s.json"),
+             QStringLiteral("--report"), QStringLiteral("r.json"), QStringLiteral("--trial-csv"),
+             QStringLiteral("trials"), QStringLiteral("--export"), QStringLiteral("p.json")},
+            early.path());
+    QCOMPARE(e.exitCode, 3);
+    QVERIFY2(e.err.contains(QStringLiteral("too short to learn from")), qPrintable(e.err));
+    QVERIFY2(e.err.contains(QStringLiteral("p.json not written: nothing was learned")),
+             qPrintable(e.err));
+    QVERIFY(e.err.contains(QStringLiteral("(the session ended early)")));
+    const QJsonObject r2 = readJson(early.filePath(QStringLiteral("r.json")));
+    QVERIFY2(
+        r2.value(QStringLiteral("endedEarly")).toString().contains(QStringLiteral("too short")),
+        qPrintable(r2.value(QStringLiteral("endedEarly")).toString()));
+    QFile csv(early.filePath(QStringLiteral("trials/trial-000.csv")));
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const qsizetype rows = csv.readAll().count('\n') - 1; // the header line
+    QVERIFY2(rows > 0 && rows < 100 + 16, qPrintable(QString::number(rows)));
+    QVERIFY(!QFile::exists(early.filePath(QStringLiteral("p.json"))));
 }
 
 void TestCli::unknownOption_printsUsage()

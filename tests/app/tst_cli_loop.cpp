@@ -31,6 +31,7 @@ private slots:
     void badLogs_areRefusedAndChangeNothing_data();
     void badLogs_areRefusedAndChangeNothing();
     void changedScenario_isRefusedNamingBothPlans();
+    void trackingLimitLog_isLearnedAsTheSessionLearnsIt();
     void usageErrorsAndHelp_nameTheCommandsOptions();
 
 private:
@@ -249,6 +250,50 @@ void TestCliLoop::estimateOption_startsTheHistoryWithIt()
     QCOMPARE(again.exitCode, 2);
     QVERIFY2(again.err.contains(QStringLiteral("has learned from 1 trials")),
              qPrintable(again.err));
+}
+
+// A log that ends early is learned from when it says the controller stopped the trial at its
+// tracking limit (docs/file-formats.md, "Controller trial log"), exactly as a session learns.
+void TestCliLoop::trackingLimitLog_isLearnedAsTheSessionLearnsIt()
+{
+    QTemporaryDir dir;
+    const QByteArray scenario = R"({"safety": {"maxTrackingErrorDeg": 0.02}})";
+    write(dir.filePath(QStringLiteral("s.json")), scenario);
+    const QStringList options{QStringLiteral("--scenario"), QStringLiteral("s.json")};
+    QCOMPARE(cli(QStringList{QStringLiteral("plan"), QStringLiteral("--out"), QStringLiteral("."),
+                             QStringLiteral("--quiet")} +
+                     options,
+                 dir.path())
+                 .exitCode,
+             0);
+    const PlanCsv plan = readPlanCsvFile(dir.filePath(QStringLiteral("plan.csv")));
+    const LoopScenario s = loopScenario(readScenarioFile(dir.filePath(QStringLiteral("s.json"))));
+    const TrialRecord record =
+        makeSimulatedRobot(s.scenario, s.model)->runTrial(planFromCsv(plan, s.scenario), {});
+    QVERIFY(record.stoppedAtTrackingLimit());
+    const QByteArray log = logCsv(plan.planId, record);
+    const QStringList learn = QStringList{QStringLiteral("learn"), QStringLiteral("--trial-log"),
+                                          QStringLiteral("run.csv")} +
+                              options;
+
+    // An unknown cause is refused, naming the line and the known ones.
+    write(dir.filePath(QStringLiteral("run.csv")), "# stopped-by: limit\n" + log);
+    const Result unknown = cli(learn, dir.path());
+    QCOMPARE(unknown.exitCode, 2);
+    QVERIFY2(unknown.err.contains(QStringLiteral("line 1: \"# stopped-by:\" says limit; known: "
+                                                 "tracking-limit")),
+             qPrintable(unknown.err));
+
+    write(dir.filePath(QStringLiteral("run.csv")), "# stopped-by: tracking-limit\n" + log);
+    const Result learned = cli(learn, dir.path());
+    QCOMPARE(learned.exitCode, 0);
+    QVERIFY2(learned.out.contains(QStringLiteral("learned from a partial trial")),
+             qPrintable(learned.out));
+    CommissioningSession session(s.scenario, s.model, makeSimulatedRobot(s.scenario, s.model));
+    QVERIFY(session.runTrial().learnedFromPartial());
+    const Eigen::VectorXd phi =
+        readParameterFile(dir.filePath(QStringLiteral("learnid-history/estimate-1.json"))).values;
+    QVERIFY(relativeDifference(phi, session.estimates().at(1)) < 1e-12);
 }
 
 void TestCliLoop::badLogs_areRefusedAndChangeNothing_data()

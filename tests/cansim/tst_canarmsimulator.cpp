@@ -100,6 +100,7 @@ private slots:
     void settings_startAtRestAtThePathStart();
     void syncCycle_sendsSyncFirstThenEachTpdo();
     void planOnTheEncoderGrid_measuresExactlyWhatSimulatedRobotMeasures();
+    void realisticJoints_busMeasuresWhatSimulatedRobotMeasures();
     void paperPlan_matchesSimulatedRobotWithinTheBusResolution();
     void unpoweredJoint_isHeldByItsBrake();
     void dropFraction_losesThatShareOfTpdos_reproducibly();
@@ -183,6 +184,46 @@ void TestCanArmSimulator::planOnTheEncoderGrid_measuresExactlyWhatSimulatedRobot
     QVERIFY(qDiff <= ca * 1.000001);
     QVERIFY(tauDiff[0] <= 0.5 * 320e-6 + 1e-9);
     QVERIFY(tauDiff[1] <= 0.5 * 160e-6 + 1e-9);
+}
+
+void TestCanArmSimulator::realisticJoints_busMeasuresWhatSimulatedRobotMeasures()
+{
+    // learnid-robot-sim serves the scenario's realistic joints (elastic, rotor inertia, sensor
+    // offset and lag): on the grid plan the bus measures what SimulatedRobot measures, the
+    // torque reading being the spring's and not the command.
+    Scenario scenario;
+    scenario.simulation.encoderCounts = qint64(1) << 24;
+    scenario.simulation.armature = Eigen::Vector2d(2.0, 1.0);
+    scenario.simulation.jointStiffness = Eigen::Vector2d(20000, 10000);
+    scenario.simulation.jointDamping = Eigen::Vector2d(20, 10);
+    scenario.simulation.torqueSensorOffset = Eigen::Vector2d(0.05, -0.02);
+    scenario.simulation.torqueSensorLag = 0.001;
+    scenario.simulation.linkSideEncoder = false; // the collocated loop: PID on the motor angle
+    const auto model = makeRobotModel(scenario.model, scenario.urdf);
+    TrialPlan plan = TrialPlanner(scenario, model).plan(scenario.initialParameters);
+    const double ca = 2.0 * M_PI / double(scenario.simulation.encoderCounts);
+    plan.desired.q = (plan.desired.q / ca).array().round() * ca;
+    for (int j = 0; j < 2; ++j) {
+        const double unit = cansim::ratedTorqueFor(scenario.torqueLimits[j]) * 1e-6;
+        plan.feedforward.row(j) = (plan.feedforward.row(j) / unit).array().round() * unit;
+    }
+    const TrialRecord expected = makeSimulatedRobot(scenario, model)->runTrial(plan, {});
+    const TrialRecord rigid = makeSimulatedRobot(Scenario{}, model)->runTrial(plan, {});
+    const TrialRecord bus = runPlanOnBus(scenario, plan);
+    QVERIFY(expected.completed());
+    QCOMPARE(bus.status, TrialStatus::Completed);
+    QCOMPARE(bus.samples(), expected.samples());
+    const double qDiff = (bus.q - expected.q).cwiseAbs().maxCoeff();
+    const Eigen::Vector2d tauDiff = (bus.tau - expected.tau).cwiseAbs().rowwise().maxCoeff();
+    qInfo("elastic grid plan: max |q diff| = %.3g counts, max |tau diff| = %.3g / %.3g mN m",
+          qDiff / ca, 1e3 * tauDiff[0], 1e3 * tauDiff[1]);
+    QVERIFY(qDiff <= ca * 1.000001);
+    QVERIFY(tauDiff[0] <= 0.5 * 320e-6 + 1e-9);
+    QVERIFY(tauDiff[1] <= 0.5 * 160e-6 + 1e-9);
+    // The reading carries the offset at rest (sample 0: the spring holds nothing on the
+    // horizontal arm), so it is not the command the rigid robot records.
+    QVERIFY(std::abs(expected.tau(0, 0) - 0.05) < 1e-9);
+    QVERIFY((expected.tau - rigid.tau.leftCols(expected.samples())).cwiseAbs().maxCoeff() > 1e-3);
 }
 
 void TestCanArmSimulator::paperPlan_matchesSimulatedRobotWithinTheBusResolution()
