@@ -2086,6 +2086,189 @@
     </message>
 </context>
 <context>
+    <name>Payload</name>
+    <message>
+        <location filename="../core/model/Payload.cpp" line="+22"/>
+        <source>the payload&apos;s inertial parameters are not finite</source>
+        <translation>die Trägheitsparameter der Nutzlast sind nicht endlich</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the payload&apos;s mass must be positive (it is %1 kg)</source>
+        <translation>die Masse der Nutzlast muss positiv sein (sie ist %1 kg)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 has no moving link to carry a payload</source>
+        <translation>%1 hat kein bewegtes Glied, das eine Nutzlast tragen kann</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>payload link &apos;%1&apos; is not a moving link of %2 (its links: %3)</source>
+        <translation>Nutzlast-Glied „%1“ ist kein bewegtes Glied von %2 (seine Glieder: %3)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>a payload needs the arm&apos;s model</source>
+        <translation>eine Nutzlast braucht das Modell des Arms</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the arm&apos;s parameters for %1 must be %2 finite numbers</source>
+        <translation>die Parameter des Arms für %1 müssen %2 endliche Zahlen sein</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadEstimate</name>
+    <message>
+        <location filename="../core/identify/PayloadEstimate.cpp" line="+61"/>
+        <source>the payload&apos;s rows (%1 x %2) and targets (%3) do not match</source>
+        <translation>die Zeilen der Nutzlast (%1 x %2) und die Zielwerte (%3) passen nicht zusammen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the payload&apos;s rows or targets are not finite</source>
+        <translation>die Zeilen oder Zielwerte der Nutzlast sind nicht endlich</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the variance factor must be positive</source>
+        <translation>der Varianzfaktor muss positiv sein</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>no direction determined: the prior</source>
+        <translation>keine Richtung bestimmt: die Vorgabe</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadFit</name>
+    <message>
+        <location filename="../core/identify/PayloadFit.cpp" line="+87"/>
+        <source>%1 has %2 joints, the robot %3</source>
+        <translation>%1 hat %2 Gelenke, der Roboter %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the filtered signals are not finite</source>
+        <translation>%1: die gefilterten Signale sind nicht endlich</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no samples to fit the payload to</source>
+        <translation>keine Abtastwerte, an die die Nutzlast angepasst werden kann</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadIdentification</name>
+    <message>
+        <location filename="../core/service/PayloadIdentification.cpp" line="+31"/>
+        <source>no log to identify the payload from</source>
+        <translation>kein Log, aus dem die Nutzlast identifiziert werden kann</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadObservability</name>
+    <message>
+        <location filename="../core/identify/PayloadObservability.cpp" line="+48"/>
+        <source>the mass is not seen: the path must hold the payload against gravity in several orientations of %1, or accelerate it</source>
+        <translation>die Masse ist nicht sichtbar: die Bahn muss die Nutzlast in mehreren Orientierungen von %1 gegen die Schwerkraft halten oder sie beschleunigen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the centre of mass along the %1 axis of %2 is not seen: the mass and the centre of mass need changes of the wrist&apos;s orientation; tilt the wrist so that this axis turns away from the vertical</source>
+        <translation>der Schwerpunkt entlang der %1-Achse von %2 ist nicht sichtbar: Masse und Schwerpunkt brauchen Änderungen der Orientierung des Handgelenks; neigen Sie das Handgelenk, sodass sich diese Achse aus der Senkrechten dreht</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the centre of mass along the %1 axes of %2 is not seen: the mass and the centre of mass need changes of the wrist&apos;s orientation; tilt the wrist so that these axes turn away from the vertical</source>
+        <translation>der Schwerpunkt entlang der Achsen %1 von %2 ist nicht sichtbar: Masse und Schwerpunkt brauchen Änderungen der Orientierung des Handgelenks; neigen Sie das Handgelenk, sodass sich diese Achsen aus der Senkrechten drehen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the inertia %1 is not seen: the full inertia needs rotations of the wrist about several axes, with accelerations</source>
+        <translation>die Trägheit %1 ist nicht sichtbar: die volle Trägheit braucht Drehungen des Handgelenks um mehrere Achsen, mit Beschleunigungen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the payload&apos;s regressor has 10 columns, not %1</source>
+        <translation>der Regressor der Nutzlast hat 10 Spalten, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the share of the strongest direction must lie between 0 and 1</source>
+        <translation>der Anteil der stärksten Richtung muss zwischen 0 und 1 liegen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the payload&apos;s regressor is not finite</source>
+        <translation>der Regressor der Nutzlast ist nicht endlich</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>the path must give q, qd and qdd for the %1 joints at every sample</source>
+        <translation>die Bahn muss q, qd und qdd für die %1 Gelenke bei jedem Abtastwert angeben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the path has no samples</source>
+        <translation>die Bahn hat keine Abtastwerte</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadPrior</name>
+    <message>
+        <location filename="../core/model/PayloadPrior.cpp" line="+53"/>
+        <source>box %1 to %2 m</source>
+        <translation>Quader %1 bis %2 m</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sphere of radius %1 m around %2 m</source>
+        <translation>Kugel mit Radius %1 m um %2 m</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: the payload&apos;s mass must be a positive number of kg, not %2</source>
+        <translation>%1: die Masse der Nutzlast muss eine positive Zahl in kg sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the centre of mass must be finite, not %2</source>
+        <translation>%1: der Schwerpunkt muss endlich sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: the box&apos;s upper corner %2 must lie above its lower corner %3 in x, y and z</source>
+        <translation>%1: die obere Ecke %2 des Quaders muss in x, y und z über seiner unteren Ecke %3 liegen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: the bounding sphere needs a positive radius [m], not %2</source>
+        <translation>%1: die Hüllkugel braucht einen positiven Radius [m], nicht %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: the prior centre of mass %2 m is not inside the bound (%3): give a bound that contains it</source>
+        <translation>%1: der vorgegebene Schwerpunkt %2 m liegt nicht innerhalb der Grenze (%3): geben Sie eine Grenze an, die ihn enthält</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: the inertia must be finite and symmetric</source>
+        <translation>%1: die Trägheit muss endlich und symmetrisch sein</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the inertia is not a real body&apos;s (principal moments %2 kg m^2 must be positive and each at most the sum of the others)</source>
+        <translation>%1: die Trägheit ist nicht die eines realen Körpers (die Hauptmomente %2 kg m^2 müssen positiv und jedes höchstens die Summe der anderen sein)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: a body with this inertia does not fit in the bound (%2)</source>
+        <translation>%1: ein Körper mit dieser Trägheit passt nicht in die Grenze (%2)</translation>
+    </message>
+</context>
+<context>
     <name>Pdo</name>
     <message>
         <location filename="../core/can/Pdo.cpp" line="+24"/>
@@ -3478,12 +3661,12 @@
 <context>
     <name>learnid-cli</name>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+43"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+44"/>
         <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
         <translation>--robot: &apos;%1&apos; ist weder eine URDF-Datei noch ein eingebauter Roboter (%2)</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+75"/>
         <source>robot %1: %2, %3 moving joints</source>
         <translation>Roboter %1: %2, %3 bewegliche Gelenke</translation>
     </message>
@@ -3506,7 +3689,7 @@
         <translation>identifiziert von learnid-cli %1 identify am %2</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-79"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1: vorhergesagtes und gemessenes Moment</translation>
     </message>
@@ -3516,9 +3699,11 @@
         <translation>learnid: %1 aus Logs identifiziert</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+75"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+182"/>
+        <location line="+10"/>
         <location filename="../app/cli/RunCommand.cpp" line="+105"/>
         <location line="+9"/>
         <location line="+6"/>
@@ -3532,6 +3717,7 @@
     </message>
     <message>
         <location line="-4"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-4"/>
         <source>--plots: cannot create %1</source>
         <translation>--plots: %1 kann nicht angelegt werden</translation>
     </message>
@@ -3663,7 +3849,7 @@
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+218"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -4046,12 +4232,13 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+10"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-166"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-173"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms: unbekannter Term &apos;%1&apos;; die Terme sind armature, viscous, coulomb und offset, oder none</translation>
     </message>
@@ -4081,7 +4268,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--urdf-out: nach %1 schreibt schon --export</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+6"/>
+        <source>--%1: a payload&apos;s result is not exported yet; leave it out</source>
+        <translation>--%1: das Ergebnis einer Nutzlast wird noch nicht exportiert; lassen Sie die Option weg</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>A built-in URDF robot (e.g. double-pendulum) or a URDF file.</source>
         <translation>Ein eingebauter URDF-Roboter (z. B. double-pendulum) oder eine URDF-Datei.</translation>
     </message>
@@ -4167,7 +4359,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Ordner, ab dem relative Ausgabepfade gelten.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
 
 Identify a robot&apos;s inertia and joint friction from its recorded logs,
@@ -4380,6 +4572,189 @@ neue Schätzung.
         <location filename="../app/cli/ScenarioCommand.cpp" line="+20"/>
         <source>learnid-cli: error: --robot %1: %2</source>
         <translation>learnid-cli: Fehler: --robot %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-154"/>
+        <source>value</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>estimate</source>
+        <translation>Schätzung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>std. error</source>
+        <translation>Std.-Fehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>prior</source>
+        <translation>Vorgabe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>from</source>
+        <translation>Herkunft</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the logs</source>
+        <translation>die Logs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the prior (not identified)</source>
+        <translation>die Vorgabe (nicht identifiziert)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Payload on %1 of %2; the arm&apos;s model (%3) held fixed.
+</source>
+        <translation>Nutzlast an %1 von %2; das Modell des Arms (%3) bleibt fest.
+</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>Fitted to %n log(s), %1 samples: %2 of 10 directions determined (condition %3).
+</source>
+        <translation>
+            <numerusform>An %n Log angepasst, %1 Abtastwerte: %2 von 10 Richtungen bestimmt (Kondition %3).
+</numerusform>
+            <numerusform>An %n Logs angepasst, %1 Abtastwerte: %2 von 10 Richtungen bestimmt (Kondition %3).
+</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Warning: the plausible estimate did not converge (%1).
+</source>
+        <translation>Warnung: die plausible Schätzung ist nicht konvergiert (%1).
+</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A real body whose mass lies in the bound (%1).
+</source>
+        <translation>Ein realer Körper, dessen Masse in der Grenze liegt (%1).
+</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Warning: the centre of mass lies outside the bound (%1).
+</source>
+        <translation>Warnung: der Schwerpunkt liegt außerhalb der Grenze (%1).
+</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>What the logs did not show (kept from the prior):
+</source>
+        <translation>Was die Logs nicht zeigten (aus der Vorgabe übernommen):
+</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Torque residual per joint on the logs [N m]:</source>
+        <translation>Drehmoment-Residuum je Gelenk auf den Logs [N m]:</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>learnid-cli: fitting the payload to %1</source>
+        <translation>learnid-cli: passe die Nutzlast an %1 an</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>On the --validate logs: &quot;URDF as given&quot; is the arm without the payload, &quot;identified&quot; the arm with it.
+</source>
+        <translation>Auf den --validate-Logs: „URDF wie gegeben“ ist der Arm ohne die Nutzlast, „identifiziert“ der Arm mit ihr.
+</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1: torque of the arm alone and with the payload</source>
+        <translation>%1: Drehmoment des Arms allein und mit der Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>learnid: payload on %1 identified from logs</source>
+        <translation>learnid: Nutzlast an %1 aus Logs identifiziert</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/PayloadOptions.cpp" line="+39"/>
+        <source>Identify only a payload fixed to the arm, the --robot URDF held fixed as the arm&apos;s model; needs --payload-mass.</source>
+        <translation>Nur eine am Arm befestigte Nutzlast identifizieren, die --robot-URDF bleibt als Modell des Arms fest; braucht --payload-mass.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The link the payload is fixed to; default: the tip link.</source>
+        <translation>Das Glied, an dem die Nutzlast befestigt ist; Standard: das Endglied.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Your estimate of the payload&apos;s mass [kg].</source>
+        <translation>Ihre Schätzung der Masse der Nutzlast [kg].</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Your estimate of its centre of mass in the link frame [m]; default 0,0,0 (the flange).</source>
+        <translation>Ihre Schätzung ihres Schwerpunkts im Gliedkoordinatensystem [m]; Standard 0,0,0 (der Flansch).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Your estimate of its inertia about the centre of mass [kg m^2]; default: a uniform sphere.</source>
+        <translation>Ihre Schätzung ihrer Trägheit um den Schwerpunkt [kg m^2]; Standard: eine homogene Kugel.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The payload lies within this distance of the flange [m]; default 0.3.</source>
+        <translation>Die Nutzlast liegt innerhalb dieses Abstands vom Flansch [m]; Standard 0,3.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Or within this box in the link frame [m], instead of the sphere.</source>
+        <translation>Oder innerhalb dieses Quaders im Gliedkoordinatensystem [m], statt der Kugel.</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>--%1: needs --payload</source>
+        <translation>--%1: braucht --payload</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--payload: needs --payload-mass KG, your estimate of the payload&apos;s mass</source>
+        <translation>--payload: braucht --payload-mass KG, Ihre Schätzung der Masse der Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--payload-box: give either a bounding box or --payload-radius, not both</source>
+        <translation>--payload-box: geben Sie entweder einen Hüllquader oder --payload-radius an, nicht beides</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
+        <translation>--payload-mass: muss eine Zahl in kg sein, erhalten: „%1“</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--payload-com: must be three numbers X,Y,Z [m], got &apos;%1&apos;</source>
+        <translation>--payload-com: muss aus drei Zahlen X,Y,Z [m] bestehen, erhalten: „%1“</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--payload-inertia: must be six numbers IXX,IXY,IYY,IXZ,IYZ,IZZ [kg m^2], got &apos;%1&apos;</source>
+        <translation>--payload-inertia: muss aus sechs Zahlen IXX,IXY,IYY,IXZ,IYZ,IZZ [kg m^2] bestehen, erhalten: „%1“</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--payload-radius: must be a number of m, got &apos;%1&apos;</source>
+        <translation>--payload-radius: muss eine Zahl in m sein, erhalten: „%1“</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--payload-box: must be six numbers X0,Y0,Z0,X1,Y1,Z1 [m], got &apos;%1&apos;</source>
+        <translation>--payload-box: muss aus sechs Zahlen X0,Y0,Z0,X1,Y1,Z1 [m] bestehen, erhalten: „%1“</translation>
     </message>
 </context>
 <context>
@@ -5966,7 +6341,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
-        <location filename="../ui/PreTrialCheckView.cpp" line="+36"/>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+38"/>
         <source>Joint</source>
         <translation>Gelenk</translation>
     </message>
@@ -5991,12 +6366,12 @@ Verhältnis %</translation>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>The largest torque holding the arm against gravity takes on this path, as a share of the limit</source>
         <translation>Das größte Moment, das das Halten des Arms gegen die Schwerkraft auf dieser Bahn erfordert, als Anteil der Grenze</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Planned motion:</source>
         <translation>Geplante Bewegung:</translation>
     </message>

@@ -104,11 +104,22 @@
 <context>
     <name>learnid-cli</name>
     <message numerus="yes">
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+130"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+133"/>
         <source>fitting %1 standard parameters to %n log(s)</source>
         <translation>
             <numerusform>fitting %1 standard parameters to %n log</numerusform>
             <numerusform>fitting %1 standard parameters to %n logs</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/cli/PayloadCommand.cpp" line="+73"/>
+        <source>Fitted to %n log(s), %1 samples: %2 of 10 directions determined (condition %3).
+</source>
+        <translation>
+            <numerusform>Fitted to %n log, %1 samples: %2 of 10 directions determined (condition %3).
+</numerusform>
+            <numerusform>Fitted to %n logs, %1 samples: %2 of 10 directions determined (condition %3).
+</numerusform>
         </translation>
     </message>
 </context>

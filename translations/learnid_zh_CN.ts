@@ -2077,6 +2077,189 @@
     </message>
 </context>
 <context>
+    <name>Payload</name>
+    <message>
+        <location filename="../core/model/Payload.cpp" line="+22"/>
+        <source>the payload&apos;s inertial parameters are not finite</source>
+        <translation>负载的惯性参数不是有限值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the payload&apos;s mass must be positive (it is %1 kg)</source>
+        <translation>负载质量必须为正（当前为 %1 kg）</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 has no moving link to carry a payload</source>
+        <translation>%1 没有可承载负载的运动连杆</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>payload link &apos;%1&apos; is not a moving link of %2 (its links: %3)</source>
+        <translation>负载连杆“%1”不是 %2 的运动连杆（其连杆：%3）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>a payload needs the arm&apos;s model</source>
+        <translation>负载需要机械臂的模型</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the arm&apos;s parameters for %1 must be %2 finite numbers</source>
+        <translation>%1 的机械臂参数必须是 %2 个有限数</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadEstimate</name>
+    <message>
+        <location filename="../core/identify/PayloadEstimate.cpp" line="+61"/>
+        <source>the payload&apos;s rows (%1 x %2) and targets (%3) do not match</source>
+        <translation>负载的行（%1 x %2）与目标值（%3）不匹配</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the payload&apos;s rows or targets are not finite</source>
+        <translation>负载的行或目标值不是有限值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the variance factor must be positive</source>
+        <translation>方差因子必须为正</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>no direction determined: the prior</source>
+        <translation>没有确定的方向：采用先验</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadFit</name>
+    <message>
+        <location filename="../core/identify/PayloadFit.cpp" line="+87"/>
+        <source>%1 has %2 joints, the robot %3</source>
+        <translation>%1 有 %2 个关节，机器人有 %3 个</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the filtered signals are not finite</source>
+        <translation>%1：滤波后的信号不是有限值</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no samples to fit the payload to</source>
+        <translation>没有可用于拟合负载的采样</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadIdentification</name>
+    <message>
+        <location filename="../core/service/PayloadIdentification.cpp" line="+31"/>
+        <source>no log to identify the payload from</source>
+        <translation>没有用于辨识负载的日志</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadObservability</name>
+    <message>
+        <location filename="../core/identify/PayloadObservability.cpp" line="+48"/>
+        <source>the mass is not seen: the path must hold the payload against gravity in several orientations of %1, or accelerate it</source>
+        <translation>质量不可见：路径必须在 %1 的多个姿态下抵抗重力保持负载，或使其加速</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the centre of mass along the %1 axis of %2 is not seen: the mass and the centre of mass need changes of the wrist&apos;s orientation; tilt the wrist so that this axis turns away from the vertical</source>
+        <translation>沿 %2 的 %1 轴的质心不可见：质量和质心需要改变手腕的姿态；倾斜手腕，使该轴偏离竖直方向</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the centre of mass along the %1 axes of %2 is not seen: the mass and the centre of mass need changes of the wrist&apos;s orientation; tilt the wrist so that these axes turn away from the vertical</source>
+        <translation>沿 %2 的 %1 轴的质心不可见：质量和质心需要改变手腕的姿态；倾斜手腕，使这些轴偏离竖直方向</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the inertia %1 is not seen: the full inertia needs rotations of the wrist about several axes, with accelerations</source>
+        <translation>惯量 %1 不可见：完整的惯量需要手腕绕多个轴加速转动</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the payload&apos;s regressor has 10 columns, not %1</source>
+        <translation>负载回归矩阵有 10 列，而不是 %1 列</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the share of the strongest direction must lie between 0 and 1</source>
+        <translation>最强方向的比例必须在 0 和 1 之间</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the payload&apos;s regressor is not finite</source>
+        <translation>负载回归矩阵不是有限值</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>the path must give q, qd and qdd for the %1 joints at every sample</source>
+        <translation>路径必须在每个采样点给出 %1 个关节的 q、qd 和 qdd</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the path has no samples</source>
+        <translation>路径没有采样</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadPrior</name>
+    <message>
+        <location filename="../core/model/PayloadPrior.cpp" line="+53"/>
+        <source>box %1 to %2 m</source>
+        <translation>长方体 %1 至 %2 m</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sphere of radius %1 m around %2 m</source>
+        <translation>以 %2 m 为中心、半径 %1 m 的球</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: the payload&apos;s mass must be a positive number of kg, not %2</source>
+        <translation>%1：负载质量必须是正的千克数，而不是 %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the centre of mass must be finite, not %2</source>
+        <translation>%1：质心必须是有限值，而不是 %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: the box&apos;s upper corner %2 must lie above its lower corner %3 in x, y and z</source>
+        <translation>%1：长方体的上角 %2 必须在 x、y 和 z 上都高于下角 %3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: the bounding sphere needs a positive radius [m], not %2</source>
+        <translation>%1：包围球需要正的半径 [m]，而不是 %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: the prior centre of mass %2 m is not inside the bound (%3): give a bound that contains it</source>
+        <translation>%1：先验质心 %2 m 不在边界内（%3）：请给出包含它的边界</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: the inertia must be finite and symmetric</source>
+        <translation>%1：惯量必须是有限且对称的</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the inertia is not a real body&apos;s (principal moments %2 kg m^2 must be positive and each at most the sum of the others)</source>
+        <translation>%1：该惯量不属于真实物体（主惯量 %2 kg m^2 必须为正，且每个不超过其余两者之和）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: a body with this inertia does not fit in the bound (%2)</source>
+        <translation>%1：具有该惯量的物体无法放入边界（%2）</translation>
+    </message>
+</context>
+<context>
     <name>Pdo</name>
     <message>
         <location filename="../core/can/Pdo.cpp" line="+24"/>
@@ -3467,12 +3650,12 @@
 <context>
     <name>learnid-cli</name>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+43"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+44"/>
         <source>--robot: &apos;%1&apos; is neither a URDF file nor a built-in robot (%2)</source>
         <translation>--robot：&apos;%1&apos; 既不是 URDF 文件，也不是内置机器人（%2）</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+75"/>
         <source>robot %1: %2, %3 moving joints</source>
         <translation>机器人 %1：%2，%3 个可动关节</translation>
     </message>
@@ -3494,7 +3677,7 @@
         <translation>由 learnid-cli %1 identify 于 %2 辨识</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-79"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1：预测力矩与测量力矩</translation>
     </message>
@@ -3504,9 +3687,11 @@
         <translation>learnid：根据日志辨识 %1</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+75"/>
         <location line="+10"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+182"/>
+        <location line="+10"/>
         <location filename="../app/cli/RunCommand.cpp" line="+105"/>
         <location line="+9"/>
         <location line="+6"/>
@@ -3520,6 +3705,7 @@
     </message>
     <message>
         <location line="-4"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-4"/>
         <source>--plots: cannot create %1</source>
         <translation>--plots：无法创建 %1</translation>
     </message>
@@ -3651,7 +3837,7 @@
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+211"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+218"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -4032,12 +4218,13 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+10"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-166"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-173"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms：未知项 &apos;%1&apos;；可用的项为 armature、viscous、coulomb 和 offset，或 none</translation>
     </message>
@@ -4067,7 +4254,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--urdf-out：%1 已是 --export 的写入位置</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+6"/>
+        <source>--%1: a payload&apos;s result is not exported yet; leave it out</source>
+        <translation>--%1：负载结果暂不支持导出；请省略该选项</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>A built-in URDF robot (e.g. double-pendulum) or a URDF file.</source>
         <translation>内置 URDF 机器人（例如 double-pendulum）或 URDF 文件。</translation>
     </message>
@@ -4153,7 +4345,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>相对输出路径的基准文件夹。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Usage: learnid-cli identify --robot ROBOT --log FILE [options]
 
 Identify a robot&apos;s inertia and joint friction from its recorded logs,
@@ -4364,6 +4556,187 @@ stdout, and the next plan uses the new estimate.
         <location filename="../app/cli/ScenarioCommand.cpp" line="+20"/>
         <source>learnid-cli: error: --robot %1: %2</source>
         <translation>learnid-cli：错误：--robot %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-154"/>
+        <source>value</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>estimate</source>
+        <translation>估计值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>std. error</source>
+        <translation>标准误差</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>prior</source>
+        <translation>先验</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>from</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the logs</source>
+        <translation>日志</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the prior (not identified)</source>
+        <translation>先验（未辨识）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Payload on %1 of %2; the arm&apos;s model (%3) held fixed.
+</source>
+        <translation>%2 的 %1 上的负载；机械臂模型（%3）保持固定。
+</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>Fitted to %n log(s), %1 samples: %2 of 10 directions determined (condition %3).
+</source>
+        <translation>
+            <numerusform>已拟合 %n 个日志，%1 个采样：10 个方向中确定了 %2 个（条件数 %3）。
+</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Warning: the plausible estimate did not converge (%1).
+</source>
+        <translation>警告：合理估计未收敛（%1）。
+</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A real body whose mass lies in the bound (%1).
+</source>
+        <translation>一个质量位于边界内的真实物体（%1）。
+</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Warning: the centre of mass lies outside the bound (%1).
+</source>
+        <translation>警告：质心位于边界之外（%1）。
+</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>What the logs did not show (kept from the prior):
+</source>
+        <translation>日志未显示的部分（保留先验）：
+</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Torque residual per joint on the logs [N m]:</source>
+        <translation>各关节在日志上的力矩残差 [N m]：</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>learnid-cli: fitting the payload to %1</source>
+        <translation>learnid-cli：正在将负载拟合到 %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>On the --validate logs: &quot;URDF as given&quot; is the arm without the payload, &quot;identified&quot; the arm with it.
+</source>
+        <translation>在 --validate 日志上：“给定的 URDF”是不带负载的机械臂，“已辨识”是带负载的机械臂。
+</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1: torque of the arm alone and with the payload</source>
+        <translation>%1：机械臂单独及带负载时的力矩</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>learnid: payload on %1 identified from logs</source>
+        <translation>learnid：根据日志辨识的 %1 上的负载</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/PayloadOptions.cpp" line="+39"/>
+        <source>Identify only a payload fixed to the arm, the --robot URDF held fixed as the arm&apos;s model; needs --payload-mass.</source>
+        <translation>仅辨识固定在机械臂上的负载，--robot 的 URDF 作为机械臂模型保持固定；需要 --payload-mass。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The link the payload is fixed to; default: the tip link.</source>
+        <translation>负载所固定的连杆；默认：末端连杆。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Your estimate of the payload&apos;s mass [kg].</source>
+        <translation>您对负载质量的估计 [kg]。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Your estimate of its centre of mass in the link frame [m]; default 0,0,0 (the flange).</source>
+        <translation>您对其在连杆坐标系中质心的估计 [m]；默认 0,0,0（法兰）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Your estimate of its inertia about the centre of mass [kg m^2]; default: a uniform sphere.</source>
+        <translation>您对其绕质心惯量的估计 [kg m^2]；默认：均匀球体。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The payload lies within this distance of the flange [m]; default 0.3.</source>
+        <translation>负载位于距法兰此距离之内 [m]；默认 0.3。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Or within this box in the link frame [m], instead of the sphere.</source>
+        <translation>或位于连杆坐标系中的此长方体内 [m]，代替球。</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>--%1: needs --payload</source>
+        <translation>--%1：需要 --payload</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--payload: needs --payload-mass KG, your estimate of the payload&apos;s mass</source>
+        <translation>--payload：需要 --payload-mass KG，即您对负载质量的估计</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--payload-box: give either a bounding box or --payload-radius, not both</source>
+        <translation>--payload-box：请给出包围长方体或 --payload-radius，不要同时给出</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
+        <translation>--payload-mass：必须是千克数，收到“%1”</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--payload-com: must be three numbers X,Y,Z [m], got &apos;%1&apos;</source>
+        <translation>--payload-com：必须是三个数 X,Y,Z [m]，收到“%1”</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--payload-inertia: must be six numbers IXX,IXY,IYY,IXZ,IYZ,IZZ [kg m^2], got &apos;%1&apos;</source>
+        <translation>--payload-inertia：必须是六个数 IXX,IXY,IYY,IXZ,IYZ,IZZ [kg m^2]，收到“%1”</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--payload-radius: must be a number of m, got &apos;%1&apos;</source>
+        <translation>--payload-radius：必须是米数，收到“%1”</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--payload-box: must be six numbers X0,Y0,Z0,X1,Y1,Z1 [m], got &apos;%1&apos;</source>
+        <translation>--payload-box：必须是六个数 X0,Y0,Z0,X1,Y1,Z1 [m]，收到“%1”</translation>
     </message>
 </context>
 <context>
@@ -5948,7 +6321,7 @@ ratio %</source>
 <context>
     <name>learnid::PreTrialCheckView</name>
     <message>
-        <location filename="../ui/PreTrialCheckView.cpp" line="+36"/>
+        <location filename="../ui/PreTrialCheckView.cpp" line="+38"/>
         <source>Joint</source>
         <translation>关节</translation>
     </message>
@@ -5973,12 +6346,12 @@ ratio %</source>
         <translation>重力</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>The largest torque holding the arm against gravity takes on this path, as a share of the limit</source>
         <translation>在该路径上克服重力保持机械臂所需的最大力矩，占限值的比例</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Planned motion:</source>
         <translation>规划运动：</translation>
     </message>

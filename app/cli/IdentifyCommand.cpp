@@ -1,6 +1,7 @@
 #include "cli/IdentifyCommand.h"
 
 #include "cli/IdentifyReportPdf.h"
+#include "cli/PayloadCommand.h"
 #include "cli/TorquePlotPng.h"
 
 #include "cli/IdentifyParameters.h"
@@ -98,6 +99,8 @@ plotFiles(const IdentifyOptions &o, const LogIdentificationResult &result, const
 
 ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream &err)
 {
+    if (o.payload)
+        return payloadIdentifyCommand(o, out, err);
     const auto progress = [&](const QString &line) {
         if (!o.quiet)
             err << QCoreApplication::translate("learnid-cli", "learnid-cli: %1").arg(line)

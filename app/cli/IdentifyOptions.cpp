@@ -117,6 +117,13 @@ QString readValues(const QCommandLineParser &parser, IdentifyOptions *o)
         (o->urdfPath == o->exportPath || o->urdfPath == dcfPathFor(o->exportPath)))
         return QCoreApplication::translate("learnid-cli", "--urdf-out: %1 is where --export writes")
             .arg(o->urdfPath);
+    const QString payload = readPayloadOptions(parser, &o->payload);
+    if (!payload.isEmpty())
+        return payload;
+    if (o->payload && (isSet("export") || isSet("urdf-out")))
+        return QCoreApplication::translate(
+                   "learnid-cli", "--%1: a payload's result is not exported yet; leave it out")
+            .arg(QLatin1String(isSet("export") ? "export" : "urdf-out"));
     return {};
 }
 
@@ -211,6 +218,7 @@ void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
         cliOption("quiet", QT_TRANSLATE_NOOP("learnid-cli", "No progress lines on stderr.")),
         helpOption(),
     });
+    parser.addOptions(payloadCliOptions());
     const auto usage = [&] {
         return QCoreApplication::translate(
                    "learnid-cli",

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "cli/PayloadOptions.h"
 #include "identify/LogFit.h"
 #include "identify/LogSignals.h"
 #include "identify/UniformLog.h"
@@ -8,6 +9,7 @@
 
 #include <QString>
 #include <QStringList>
+#include <optional>
 
 namespace learnid::cli {
 
@@ -33,6 +35,7 @@ struct IdentifyOptions
     QString reportPath;   ///< the report (PDF: tables and plots); empty: none
     QString plotsDir;     ///< one PNG per validation log; empty: none
     bool quiet = false;
+    std::optional<PayloadOptions> payload; ///< --payload: identify only the payload
 };
 
 /// Parses `learnid-cli identify ...` (args[1] is "identify") into cl: cl->identify and the

@@ -1,76 +1,22 @@
-// DriveNode: one simulated CiA 402 drive seen from a master on the memory bus. The SYNC cycle
-// is driven by the test (sync() + sendAfterSync()), so no real time passes.
-#include "CanSimTestBus.h"
-#include "can/Cia402.h"
+// DriveNode: one simulated CiA 402 drive seen from a master on the memory bus (DriveNodeRig.h):
+// boot-up, the object dictionary over SDO, store and reset, NMT, PDO mapping, the enable walk,
+// the SYNC cycle's torque. Its states after a stop and its faults: tst_drivenodestates.
+#include "DriveNodeRig.h"
 #include "can/EmcyConsumer.h"
 #include "can/Pdo.h"
 #include "can/SdoAbortCode.h"
-#include "cansim/DriveNode.h"
-
-#include <cmath>
 
 using namespace learnid;
+using namespace learnid::test::drive;
 using canopen::DataType;
 using cia402::State;
 namespace ob = learnid::objects;
-
-namespace {
-
-constexpr quint8 node = 5;
-constexpr double increments = 1 << 20;
-constexpr double countAngle = 2.0 * M_PI / increments;
-
-struct Drive
-{
-    test::CanSimTestBus net;
-    DriveNode drive{&net.slaveLink, settings()};
-
-    static DriveNodeSettings settings()
-    {
-        DriveNodeSettings s;
-        s.node = node;
-        s.joint = 2;
-        s.torqueLimit = 8.0;
-        s.increments = qint64(increments);
-        return s;
-    }
-    /// One SYNC at the measured angle q [rad]; the TPDO carries the torque without noise.
-    DriveSyncOutput sync(double q)
-    {
-        const DriveSyncOutput out = drive.sync(q);
-        drive.sendAfterSync(out.torque);
-        net.flush();
-        return out;
-    }
-    /// NMT start and the enable walk through RPDO controlwords, target = q.
-    void enable(double q)
-    {
-        net.nmt(NmtCommand::Start, node);
-        for (const quint16 cw : {0x0006, 0x0007, 0x000F}) {
-            net.rpdo(node, std::round(q / countAngle), 0, cw);
-            sync(q);
-        }
-    }
-    State tpdoState() const
-    {
-        return cia402::stateFromStatusword(quint16(net.lastTpdo(node).value(2)));
-    }
-};
-
-// The first output of the Tustin-discretised PID from rest: its feedthrough, the continuous
-// controller evaluated at s = 2/T (Tustin maps z = infinity there).
-double pidFeedthrough(double kp, double ki, double kd, double lambda, double ts)
-{
-    const double s = 2.0 / ts;
-    return kp + ki / s + kd * lambda * lambda * s / ((s + lambda) * (s + lambda));
-}
-
-} // namespace
 
 class TestDriveNode : public QObject
 {
     Q_OBJECT
 
+private slots:
 private slots:
     void bootUp_sendsBootUpMessage_andIsPreOperational();
     void dictionary_readsOverSdo_data();
@@ -86,12 +32,6 @@ private slots:
     void syncCycle_tpdoIsPidPlusOffset_saturatedAndQuantised();
     void interpolationPeriod_setsThePidSamplePeriod();
     void unpowered_appliesNoTorque();
-    void quickStop_holdsThenSwitchesOnDisabledAfterTenSyncs();
-    void leavingOperational_whileEnabled_quickStops();
-    void statuswordBit12_onlyInOperationEnabled_afterResetOrSdoControlword();
-    void threeMissedSetPoints_faultWithEmcy_faultResetClearsIt();
-    void injectedFault_atTheKthEnabledSync_sendsEmcy8611();
-    void silentNode_sendsAndAnswersNothing();
 };
 
 void TestDriveNode::bootUp_sendsBootUpMessage_andIsPreOperational()
@@ -368,111 +308,6 @@ void TestDriveNode::unpowered_appliesNoTorque()
         QCOMPARE(out.torque, 0.0);
         QCOMPARE(d.net.lastTpdo(node).value(1), 0.0);
     }
-}
-
-void TestDriveNode::quickStop_holdsThenSwitchesOnDisabledAfterTenSyncs()
-{
-    Drive d;
-    d.enable(0.0);
-    d.net.rpdo(node, 0, 0, 0x0002);
-    const double q = 10 * countAngle; // the arm at 10 increments when the quick stop comes
-    for (int i = 0; i < 10; ++i) {
-        const DriveSyncOutput out = d.sync(q);
-        QVERIFY2(out.powered, qPrintable(QString::number(i)));
-        QCOMPARE(d.drive.driveState(), State::QuickStopActive);
-        if (i == 0)
-            QCOMPARE(out.torque, 0.0); // holds where it is: no error
-    }
-    const DriveSyncOutput out = d.sync(q);
-    QVERIFY(!out.powered);
-    QCOMPARE(d.drive.driveState(), State::SwitchOnDisabled);
-}
-
-void TestDriveNode::leavingOperational_whileEnabled_quickStops()
-{
-    Drive d;
-    d.enable(0.0);
-    d.net.nmt(NmtCommand::EnterPreOperational, node);
-    QCOMPARE(d.drive.driveState(), State::QuickStopActive);
-}
-
-// Bit 12 (set-point followed) belongs to Operation enabled: a state left between SYNCs, by NMT
-// reset node or an SDO write of the controlword, must not report it (docs/can-protocol.md §5.2).
-void TestDriveNode::statuswordBit12_onlyInOperationEnabled_afterResetOrSdoControlword()
-{
-    Drive d;
-    d.enable(0.0);
-    QCOMPARE(d.net.readValue(node, 0x6041, 0, DataType::Unsigned16), double(0x1237));
-    QVERIFY(d.net.write(node, 0x6040, 0, DataType::Unsigned16, 0x0002).ok()); // quick stop
-    QCOMPARE(d.net.readValue(node, 0x6041, 0, DataType::Unsigned16), double(0x0217));
-
-    Drive r;
-    r.enable(0.0);
-    r.net.nmt(NmtCommand::ResetNode, node);
-    QCOMPARE(r.net.readValue(node, 0x6041, 0, DataType::Unsigned16), double(0x0240));
-}
-
-void TestDriveNode::threeMissedSetPoints_faultWithEmcy_faultResetClearsIt()
-{
-    Drive d;
-    EmcyConsumer emcy(&d.net.masterLink);
-    QSignalSpy emergencies(&emcy, &EmcyConsumer::emergency);
-    d.enable(0.0);
-    for (int missed = 1; missed <= 2; ++missed) {
-        QVERIFY(d.sync(0.0).powered);
-        QCOMPARE(d.tpdoState(), State::OperationEnabled);
-        QVERIFY(!(quint16(d.net.lastTpdo(node).value(2)) & 0x1000)); // not following: no set-point
-    }
-    QCOMPARE(emergencies.size(), 0);
-    QVERIFY(!d.sync(0.0).powered);
-    QCOMPARE(d.tpdoState(), State::Fault);
-    QCOMPARE(emergencies.size(), 1);
-    EmcyMessage m = emergencies.at(0).at(0).value<EmcyMessage>();
-    QCOMPARE(m.node, node);
-    QCOMPARE(m.errorCode, quint16(0x8100));
-    QCOMPARE(m.errorRegister, quint8(0x11));
-    QCOMPARE(d.net.readValue(node, 0x1001, 0, DataType::Unsigned8), 17.0);
-
-    d.net.rpdo(node, 0, 0, 0x0080); // fault reset
-    d.sync(0.0);
-    QCOMPARE(d.tpdoState(), State::SwitchOnDisabled);
-    QCOMPARE(emergencies.size(), 2);
-    QCOMPARE(emergencies.at(1).at(0).value<EmcyMessage>().errorCode, quint16(0));
-}
-
-void TestDriveNode::injectedFault_atTheKthEnabledSync_sendsEmcy8611()
-{
-    Drive d;
-    d.drive.setFaultAtEnabledSync(4, 0x8611);
-    EmcyConsumer emcy(&d.net.masterLink);
-    QSignalSpy emergencies(&emcy, &EmcyConsumer::emergency);
-    d.enable(0.0); // the enabling SYNC is the first in Operation enabled
-    for (int k = 2; k <= 3; ++k) {
-        d.net.rpdo(node, 0, 0, 0x000F);
-        QVERIFY(d.sync(0.0).powered);
-    }
-    QCOMPARE(emergencies.size(), 0);
-    d.net.rpdo(node, 0, 0, 0x000F);
-    QVERIFY(!d.sync(0.0).powered);
-    QCOMPARE(d.tpdoState(), State::Fault);
-    QCOMPARE(emergencies.size(), 1);
-    const EmcyMessage m = emergencies.at(0).at(0).value<EmcyMessage>();
-    QCOMPARE(m.errorCode, quint16(0x8611));
-    QCOMPARE(m.errorRegister, quint8(0x21));
-}
-
-void TestDriveNode::silentNode_sendsAndAnswersNothing()
-{
-    Drive d;
-    d.drive.setSilent(true);
-    d.drive.bootUp();
-    d.net.sdo.setTimeout(50);
-    QCOMPARE(d.net.read(node, 0x1000, 0).abortCode, sdoabort::protocolTimeout);
-    d.net.nmt(NmtCommand::Start, node);
-    d.sync(0.0);
-    const int slaveFrames = int(d.net.wire.size()) - int(d.net.framesWithId(0x605).size()) -
-                            int(d.net.framesWithId(0x000).size());
-    QCOMPARE(slaveFrames, 0);
 }
 
 QTEST_GUILESS_MAIN(TestDriveNode)

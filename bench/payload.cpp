@@ -1,0 +1,93 @@
+// learnid-bench-payload (issue 25): a 3 kg payload 5 cm off the KUKA LWR4+'s flange axis fitted
+// to a simulated 5 s log at 500 Hz (the arm's URDF from ../shared/data held fixed, 1 % of each
+// joint's limit as torque noise, 2^20-count encoders), 8 seeds: the errors of mass, centre of
+// mass and inertia, and the CPU of one payload update (filtering the log, the regressor, the
+// fit), the median of 20.
+#include "../tests/identify/PayloadPaths.h"
+#include "BenchSupport.h"
+#include "identify/LogSignals.h"
+#include "identify/PayloadFit.h"
+
+#include <cstdio>
+#include <random>
+
+using namespace learnid;
+
+namespace {
+
+PayloadBody truePayload()
+{
+    PayloadBody b;
+    b.mass = 3.0;
+    b.com = Eigen::Vector3d(0.05, 0.0, 0.08);
+    b.inertiaAtCom << 0.012, 0.001, 0.0, 0.001, 0.011, 0.0, 0.0, 0.0, 0.006;
+    return b;
+}
+
+UniformLog simulatedLog(const PayloadModel &model, const test::JointPath &path, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    const double count = 2.0 * M_PI / double(1 << 20);
+    UniformLog log;
+    log.source = QStringLiteral("simulated");
+    log.period = path.period;
+    log.q = (path.q / count).array().round() * count;
+    log.dq = path.qd;
+    log.tau.resize(model.dof(), path.q.cols());
+    const InertialParameters payload = truePayload().parameters();
+    for (Eigen::Index k = 0; k < path.q.cols(); ++k) {
+        log.tau.col(k) = model.torqueAt(path.q.col(k), path.qd.col(k), path.qdd.col(k), payload);
+        for (int j = 0; j < model.dof(); ++j)
+            log.tau(j, k) +=
+                0.01 * model.arm().chain().joints[size_t(j)].effortLimit * normal(random);
+    }
+    return log;
+}
+
+} // namespace
+
+int main()
+{
+    const auto arm = test::kukaArm();
+    if (!arm) {
+        std::printf("%s\n", qPrintable(test::sharedDataMissing()));
+        return 1;
+    }
+    const PayloadModel model(arm, arm->cadStandard());
+    PayloadPrior prior;
+    prior.mass = 2.5;
+    prior.com = Eigen::Vector3d(0.0, 0.0, 0.05);
+    const LogFilterSettings filter;
+    std::printf("| seed | mass error %% | CoM error [mm] | inertia error (Frobenius, of |I_c|) %% "
+                "| cz std. error [mm] |\n|---|---|---|---|---|\n");
+    std::vector<double> cpu;
+    const test::JointPath path = test::richPath(*arm, 5.0, 0.002);
+    double worstMass = 0.0, worstCom = 0.0;
+    for (unsigned seed = 1; seed <= 8; ++seed) {
+        const UniformLog log = simulatedLog(model, path, seed);
+        const PayloadFit fit = fitPayload(model, {filterLog(log, filter)}, prior);
+        const PayloadBody &b = fit.estimate.body;
+        const double mass = 100.0 * std::abs(b.mass - 3.0) / 3.0;
+        const double com = 1000.0 * (b.com - truePayload().com).norm();
+        worstMass = std::max(worstMass, mass);
+        worstCom = std::max(worstCom, com);
+        std::printf("| %u | %.3f | %.2f | %.0f | %.2f |\n", seed, mass, com,
+                    100.0 * (b.inertiaAtCom - truePayload().inertiaAtCom).norm() /
+                        truePayload().inertiaAtCom.norm(),
+                    1000.0 * fit.estimate.bodyStandardError[3]);
+    }
+    const UniformLog log = simulatedLog(model, path, 99);
+    for (int i = 0; i < 20; ++i) {
+        const double start = bench::cpuSeconds();
+        const PayloadFit fit = fitPayload(model, {filterLog(log, filter)}, prior);
+        cpu.push_back(bench::cpuSeconds() - start);
+        if (!(fit.estimate.body.mass > 0.0))
+            return 1;
+    }
+    std::printf("\nworst of 8 seeds: mass %.3f %%, centre of mass %.2f mm\n", worstMass, worstCom);
+    std::printf("one payload update (filter, regressor, fit) of %lld samples x 7 joints: %.1f ms "
+                "CPU (median of 20)\n",
+                static_cast<long long>(log.q.cols()), 1000.0 * bench::median(cpu));
+    return 0;
+}

@@ -1,0 +1,46 @@
+#pragma once
+
+#include "identify/PayloadFit.h"
+#include "model/Payload.h"
+#include "model/PayloadPrior.h"
+#include "service/LogIdentification.h"
+
+#include <QString>
+#include <memory>
+#include <vector>
+
+namespace learnid {
+
+/// A payload to identify from recorded logs with the arm's model held fixed (`learnid-cli
+/// identify --payload`, docs/payload.md). The arm is request.robot (a URDF, e.g. the one an
+/// earlier identification exported, or a built-in robot) with its joint terms; the logs, their
+/// columns, filter and resampling as for the arm's own identification.
+struct PayloadIdentificationRequest
+{
+    LogIdentificationRequest logs; ///< fit settings other than the filter are not used
+    QString link;                  ///< the link the payload is fixed to; empty: the tip
+    PayloadPrior prior;
+    PayloadFitSettings fit;
+};
+
+/// What a payload identification produced; nothing is written.
+struct PayloadIdentificationResult
+{
+    LogRobot robot;
+    std::shared_ptr<const PayloadModel> model;
+    QStringList trainingLogs;
+    PayloadFit fit;
+    /// Per validation log: "given" the arm alone (the URDF as given, no payload), "identified"
+    /// the arm with the identified payload.
+    std::vector<LogValidation> validation;
+    std::vector<LogReading> readings; ///< the training logs, then the validation logs
+};
+
+/// Reads the robot (loadLogRobot), checks the prior (validatePayloadPrior with `names`) and
+/// the link (payloadJointOf), reads, resamples and filters every log as identifyFromLogs()
+/// does, fits the payload (fitPayload) and predicts the validation logs. Throws Error naming
+/// the file, option or field at fault.
+PayloadIdentificationResult identifyPayloadFromLogs(const PayloadIdentificationRequest &request,
+                                                    const PayloadFieldNames &names = {});
+
+} // namespace learnid
