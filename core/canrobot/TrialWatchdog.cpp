@@ -58,6 +58,15 @@ void TrialWatchdog::start(const QList<int> &nodes, int heartbeatTimeoutMs, int s
     syncReceived();
 }
 
+void TrialWatchdog::restartClocks()
+{
+    if (m_nodes.isEmpty())
+        return;
+    for (const int node : std::as_const(m_nodes))
+        m_heartbeat->monitor(quint8(node), m_heartbeatTimeout);
+    syncReceived();
+}
+
 void TrialWatchdog::stop()
 {
     m_syncGap.stop();

@@ -27,9 +27,13 @@ public:
     void start(const QList<int> &nodes, int heartbeatTimeoutMs, int syncGapMs);
     void syncReceived()
     {
+        m_sinceSync.start(); // first: the gap reported is never below the timer's interval
         m_syncGap.start();
-        m_sinceSync.start();
     }
+    /// Counts the SYNC gap and each heartbeat's timeout from now on: after the master's own
+    /// pause (planning the return move), whose frames still wait in the socket, so that the
+    /// master's pause is not taken for the robot side's (docs/can-protocol.md §8.2).
+    void restartClocks();
     void stop();
 
 signals:

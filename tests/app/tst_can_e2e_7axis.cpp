@@ -360,9 +360,8 @@ void TestCanE2e7Axis::robotKilledMidTrial_clearErrorWithinOneSecond_nothingAppli
           qPrintable(err.section(QLatin1Char('\n'), -3, -3)), ms);
     QVERIFY2(tool.exitCode() == 3, qPrintable(QString::number(tool.exitCode()) + err));
     // virtualcan: the server went with the robot; socketcan: the bus falls silent.
-    QVERIFY2(
-        err.contains(QLatin1String(test::canE2eOnSocketCan() ? "no SYNC" : "went unconnected")),
-        qPrintable(err));
+    const QLatin1String why(test::canE2eOnSocketCan() ? "no SYNC" : "went unconnected");
+    QVERIFY2(err.contains(why), qPrintable(err));
     QVERIFY2(ms < 1000, qPrintable(QString::number(ms)));
     // The report asked for is written, saying the session ended early and why (issue 23).
     QVERIFY2(err.contains(QLatin1String("(the session ended early)")), qPrintable(err));
@@ -372,7 +371,7 @@ void TestCanE2e7Axis::robotKilledMidTrial_clearErrorWithinOneSecond_nothingAppli
                                    .object()
                                    .value(QStringLiteral("endedEarly"))
                                    .toString();
-    QVERIFY2(endedEarly.contains(QLatin1String("went unconnected")), qPrintable(endedEarly));
+    QVERIFY2(endedEarly.contains(why), qPrintable(endedEarly));
     QCOMPARE(readAll(state), stateBefore); // nothing applied: the stored sets never changed
 }
 

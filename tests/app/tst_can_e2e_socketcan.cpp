@@ -36,6 +36,27 @@ QList<double> finalEstimate(const QString &reportPath)
     return phi;
 }
 
+// The parameters each node of learnid-robot-sim stored (its --state file), in node order.
+QList<QList<double>> storedParameters(const QString &statePath)
+{
+    QFile f(statePath);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    const QJsonObject nodes =
+        QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("nodes")).toObject();
+    QList<QList<double>> result;
+    for (const QString &node : {QStringLiteral("1"), QStringLiteral("2")}) {
+        if (!nodes.contains(node))
+            continue;
+        QList<double> phi;
+        for (const QJsonValue &v :
+             nodes.value(node).toObject().value(QStringLiteral("storedParameters")).toArray())
+            phi << v.toDouble();
+        result << phi;
+    }
+    return result;
+}
+
 QByteArray readAll(const QString &path)
 {
     QFile f(path);
@@ -111,7 +132,9 @@ void TestCanE2eSocketCan::sessionRecordedByCandump_replaysToTheLiveEstimate()
     QVERIFY(candump.waitForStarted());
     QTest::qWait(300);
     test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-    QVERIFY(startRobot(robot, {}));
+    const QString state = m_dir.filePath(QStringLiteral("session-state.json"));
+    QVERIFY(startRobot(robot, {QStringLiteral("--state"), state}));
+    const QList<QList<double>> storedBefore = storedParameters(state);
     const test::ToolRun live =
         cli(canRun() + QStringList{QStringLiteral("--iterations"), QStringLiteral("2"),
                                    QStringLiteral("--apply"), QStringLiteral("--report"),
@@ -123,6 +146,16 @@ void TestCanE2eSocketCan::sessionRecordedByCandump_replaysToTheLiveEstimate()
     QVERIFY2(live.exitCode == 0, qPrintable(live.err + robot.stderrText()));
     m_liveEstimate = finalEstimate(m_dir.filePath(QStringLiteral("live.json")));
     QCOMPARE(m_liveEstimate.size(), 3);
+    // Apply: what the drives stored (the simulator's --state, written at each store) is the
+    // final estimate in REAL32, on both nodes; before the session they held something else.
+    const QList<QList<double>> stored = storedParameters(state);
+    QCOMPARE(stored.size(), 2);
+    for (int node = 0; node < 2; ++node) {
+        QCOMPARE(stored[node].size(), m_liveEstimate.size());
+        QVERIFY(storedBefore.value(node) != stored[node]);
+        for (int i = 0; i < m_liveEstimate.size(); ++i)
+            QCOMPARE(float(stored[node][i]), float(m_liveEstimate[i]));
+    }
 
     const QList<CandumpEntry> recorded =
         candump::readFile(m_dir.filePath(QStringLiteral("session.log")));

@@ -2,6 +2,7 @@
 // streamed by SYNC, every abort path, apply.
 #include "ScriptedDrives.h"
 #include "TestPlan.h"
+#include "WorkerSetup.h"
 #include "can/MemoryCanBus.h"
 #include "canrobot/CanRobotWorker.h"
 #include "canrobot/DriveScaling.h"
@@ -18,63 +19,7 @@ using namespace learnid;
 
 namespace {
 
-struct Setup
-{
-    MemoryCanBus bus;
-    MemoryCanDevice *robotDevice = bus.createDevice(QStringLiteral("robot"));
-    test::ScriptedDrives drives{robotDevice, {1, 2}};
-    CanRobotOptions options;
-    std::unique_ptr<CanRobotWorker> worker;
-    QPointer<MemoryCanDevice> master; ///< the master's device, once connected
-    QString refuseDevice; ///< when set, the factory makes no device and answers this error
-
-    explicit Setup(CanRobotOptions o = {})
-        : options(std::move(o))
-    {
-        robotDevice->connectDevice();
-        drives.placeAt({0.3, 1.2}); // at the plan's start: the shortest return move (0.5 s)
-        options.plugin = QStringLiteral("memory");
-        options.interface = QStringLiteral("master");
-        MemoryCanBus *b = &bus;
-        worker = std::make_unique<CanRobotWorker>(
-            test::testModel(), options, [this, b](QString *error) -> QCanBusDevice * {
-                if (!refuseDevice.isEmpty()) {
-                    *error = refuseDevice;
-                    return nullptr;
-                }
-                master = new MemoryCanDevice(QStringLiteral("master"), b);
-                return master.data();
-            });
-    }
-
-    TrialRecord run(const TrialPlan &plan, const TrialMonitor &monitor = {})
-    {
-        // A real event loop: QTest::qWaitFor sleeps between its rounds, which would delay the
-        // master's answers behind the next SYNC.
-        std::optional<TrialRecord> result;
-        QEventLoop loop;
-        worker->runTrial(plan, monitor, [&](const TrialRecord &r) {
-            result = r;
-            loop.quit();
-        });
-        QTimer::singleShot(20000, &loop, &QEventLoop::quit);
-        loop.exec();
-        return result.value_or(TrialRecord{});
-    }
-
-    QString apply(const Eigen::VectorXd &phi)
-    {
-        std::optional<QString> result;
-        QEventLoop loop;
-        worker->apply(phi, [&](const QString &e) {
-            result = e;
-            loop.quit();
-        });
-        QTimer::singleShot(10000, &loop, &QEventLoop::quit);
-        loop.exec();
-        return result.value_or(QStringLiteral("timeout"));
-    }
-};
+using test::WorkerSetup;
 
 const DriveScaling scaling{1u << 20, 1, 320};
 
@@ -104,7 +49,7 @@ private slots:
 
 void TestCanRobotWorker::trial_collectsSamplesBySyncAcrossCounterWrap()
 {
-    Setup s;
+    WorkerSetup s;
     s.drives.setCounter(200); // the plan's samples straddle the wrap 240 -> 1
     s.drives.startSync();
     const TrialPlan plan = test::testPlan(300);
@@ -134,7 +79,7 @@ void TestCanRobotWorker::trial_collectsSamplesBySyncAcrossCounterWrap()
 
 void TestCanRobotWorker::configurationAbort_namesObjectAndCode_nothingMoves()
 {
-    Setup s;
+    WorkerSetup s;
     s.drives.node(2).server->setRefusal([](quint16 index, quint8 sub, bool write) {
         return write && index == 0x2100 && sub == 3 ? sdoabort::invalidValue : 0u;
     });
@@ -151,7 +96,7 @@ void TestCanRobotWorker::configurationAbort_namesObjectAndCode_nothingMoves()
 
 void TestCanRobotWorker::missingTpdo_abortsWithQuickStop()
 {
-    Setup s;
+    WorkerSetup s;
     qint64 dropAt = -1;
     s.drives.dropTpdo = [&](int node, qint64 n) {
         return node == 2 && n == dropAt;
@@ -171,7 +116,7 @@ void TestCanRobotWorker::missingTpdo_abortsWithQuickStop()
 
 void TestCanRobotWorker::emcy_abortsFaultedWithQuickStop()
 {
-    Setup s;
+    WorkerSetup s;
     int enabledSyncs = 0;
     s.drives.onSync = [&](qint64) {
         if (s.drives.node(1).drive.state() == cia402::State::OperationEnabled &&
@@ -192,7 +137,7 @@ void TestCanRobotWorker::emcy_abortsFaultedWithQuickStop()
 
 void TestCanRobotWorker::heartbeatLoss_aborts()
 {
-    Setup s;
+    WorkerSetup s;
     bool silenced = false;
     s.drives.onSync = [&](qint64) {
         if (!silenced && s.drives.node(1).drive.state() == cia402::State::OperationEnabled) {
@@ -211,7 +156,7 @@ void TestCanRobotWorker::heartbeatLoss_aborts()
 
 void TestCanRobotWorker::cancel_stopsAtNextSync()
 {
-    Setup s;
+    WorkerSetup s;
     std::atomic_bool cancel{false};
     TrialMonitor monitor;
     monitor.cancel = &cancel;
@@ -230,7 +175,7 @@ void TestCanRobotWorker::cancel_stopsAtNextSync()
 
 void TestCanRobotWorker::deviceLost_endsTheTrialNamingTheDevice()
 {
-    Setup s;
+    WorkerSetup s;
     int enabledSyncs = 0;
     s.drives.onSync = [&](qint64) {
         if (s.drives.node(1).drive.state() == cia402::State::OperationEnabled &&
@@ -269,7 +214,7 @@ void TestCanRobotWorker::errorFrame_fatalStopsNamingTheError_otherIsOnlyLogged()
     QFETCH(int, classes);
     QFETCH(int, controller);
     QFETCH(QString, expected);
-    Setup s;
+    WorkerSetup s;
     int enabledSyncs = 0;
     QElapsedTimer sinceError;
     s.drives.onSync = [&](qint64) {
@@ -306,7 +251,7 @@ void TestCanRobotWorker::errorFrame_fatalStopsNamingTheError_otherIsOnlyLogged()
 
 void TestCanRobotWorker::apply_writesReadsBackAndStores()
 {
-    Setup s;
+    WorkerSetup s;
     QCOMPARE(s.apply(Eigen::Vector3d(20.5, 5.25, 8.125)), QString());
     for (const int node : {1, 2}) {
         QCOMPARE(s.drives.node(node).od.value(0x2200, 0), 3.0);
@@ -317,7 +262,7 @@ void TestCanRobotWorker::apply_writesReadsBackAndStores()
 
 void TestCanRobotWorker::apply_readBackMismatch_storesNothing()
 {
-    Setup s;
+    WorkerSetup s;
     // Node 2 rounds what it receives (a drive that keeps a different precision).
     connect(&s.drives.node(2).od, &ObjectDictionary::valueWritten, [&](quint16 index, quint8 sub) {
         if (index == 0x2200 && sub == 3)
@@ -332,7 +277,7 @@ void TestCanRobotWorker::apply_readBackMismatch_storesNothing()
 
 void TestCanRobotWorker::apply_abort_storesNothing()
 {
-    Setup s;
+    WorkerSetup s;
     s.drives.node(1).server->setRefusal([](quint16 index, quint8 sub, bool write) {
         return write && index == 0x2200 && sub == 1 ? sdoabort::cannotStore : 0u;
     });
@@ -348,7 +293,7 @@ void TestCanRobotWorker::apply_abort_storesNothing()
 // end with the reconnect's error (under ASan: no use of the units freed with the connection).
 void TestCanRobotWorker::lostConnection_failedReconnect_trialAndApplyEndWithTheError()
 {
-    Setup s;
+    WorkerSetup s;
     const Eigen::Vector3d phi(20.5, 5.25, 8.125);
     QCOMPARE(s.apply(phi), QString()); // connects and builds the units
     QVERIFY(s.master);
@@ -374,7 +319,7 @@ void TestCanRobotWorker::lostConnection_failedReconnect_trialAndApplyEndWithTheE
 
 void TestCanRobotWorker::apply_silentNode_saysSoInOneSentence()
 {
-    Setup s;
+    WorkerSetup s;
     s.drives.node(2).server.reset(); // node 2 answers no SDO
     const QString error = s.apply(Eigen::Vector3d(20, 5, 8));
     QVERIFY2(error.contains(QStringLiteral("node 2 did not answer within %1 ms; nothing was stored")
@@ -391,7 +336,7 @@ void TestCanRobotWorker::busLoadAtThePlansPeriod_refusedBeforeAnyFrame_offeredPe
     CanRobotOptions slowBus;
     slowBus.bitrate = 125'000.0;
     slowBus.syncPeriod = 0.007; // what the options say is overridden by the plan's period
-    Setup s(slowBus);
+    WorkerSetup s(slowBus);
     s.drives.startSync();
     const TrialRecord refused = s.run(test::testPlan(50));
     QCOMPARE(refused.status, TrialStatus::Refused);
