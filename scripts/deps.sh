@@ -16,6 +16,7 @@ LEARNID_PACKAGES=(
     clang-format  # scripts/format --check (CI)
     liburdfdom-dev  # URDF robots (core/model/UrdfChain)
     libassimp-dev  # URDF mesh files' bounding boxes (core/model/MeshBounds)
+    zlib1g-dev  # Debian 12's assimp CMake targets link libz.so but libassimp-dev does not pull it in
     liborocos-kdl-dev  # tests only: Orocos KDL, the dynamics oracle of tst_chaindynamics
     can-utils  # scripts/test-socketcan: cansend, candump, canplayer inside the VM (CI)
     libsocketcan2  # Qt's socketcan plugin loads it: bus state and bitrate of a real controller
