@@ -3700,10 +3700,9 @@
     </message>
     <message>
         <location line="+75"/>
-        <location line="+10"/>
+        <location line="+16"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+182"/>
-        <location line="+10"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+184"/>
         <location filename="../app/cli/RunCommand.cpp" line="+105"/>
         <location line="+9"/>
         <location line="+6"/>
@@ -3717,12 +3716,11 @@
     </message>
     <message>
         <location line="-4"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-4"/>
         <source>--plots: cannot create %1</source>
         <translation>--plots: %1 kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>wrote %1</source>
         <translation>%1 geschrieben</translation>
     </message>
@@ -4177,7 +4175,8 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 geschrieben (die Sitzung endete vorzeitig)</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-74"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-82"/>
+        <location line="+81"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4232,7 +4231,6 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+10"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
@@ -4574,7 +4572,7 @@ neue Schätzung.
         <translation>learnid-cli: Fehler: --robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-154"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-138"/>
         <source>value</source>
         <translation>Größe</translation>
     </message>
@@ -7547,7 +7545,7 @@ Verhältnis %</translation>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
         <location line="+92"/>
         <location line="+68"/>
-        <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
+        <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+49"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -7615,7 +7613,7 @@ Verhältnis %</translation>
         <translation>%1 hat selbst neu gestartet (Boot-up-Nachricht 0x%2)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+32"/>
         <source>node %1 (joint %2)</source>
         <translation>Knoten %1 (Gelenk %2)</translation>
     </message>

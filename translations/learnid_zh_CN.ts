@@ -3688,10 +3688,9 @@
     </message>
     <message>
         <location line="+75"/>
-        <location line="+10"/>
+        <location line="+16"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+182"/>
-        <location line="+10"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+184"/>
         <location filename="../app/cli/RunCommand.cpp" line="+105"/>
         <location line="+9"/>
         <location line="+6"/>
@@ -3705,12 +3704,11 @@
     </message>
     <message>
         <location line="-4"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-4"/>
         <source>--plots: cannot create %1</source>
         <translation>--plots：无法创建 %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>wrote %1</source>
         <translation>已写入 %1</translation>
     </message>
@@ -4163,7 +4161,8 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已写入 %1（会话提前结束）</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-74"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-82"/>
+        <location line="+81"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4218,7 +4217,6 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+10"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
@@ -4558,7 +4556,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：错误：--robot %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-154"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-138"/>
         <source>value</source>
         <translation>量</translation>
     </message>
@@ -7523,7 +7521,7 @@ ratio %</source>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
         <location line="+92"/>
         <location line="+68"/>
-        <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+46"/>
+        <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+49"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -7591,7 +7589,7 @@ ratio %</source>
         <translation>%1 自行重启（boot-up 报文 0x%2）</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+32"/>
         <source>node %1 (joint %2)</source>
         <translation>节点 %1（关节 %2）</translation>
     </message>

@@ -166,6 +166,12 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
             << Qt::endl;
         return ExitBadInput;
     }
+    return writeIdentifyFiles(o, files, err);
+}
+
+ExitCode writeIdentifyFiles(const IdentifyOptions &o,
+                            const QList<QPair<QString, QByteArray>> &files, QTextStream &err)
+{
     try {
         if (!o.plotsDir.isEmpty() && !QDir().mkpath(o.plotsDir))
             throw Error(QCoreApplication::translate("learnid-cli", "--plots: cannot create %1")
@@ -177,8 +183,11 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
         return ExitWriteFailed;
     }
     for (const auto &file : files)
-        progress(QCoreApplication::translate("learnid-cli", "wrote %1")
-                     .arg(QDir::toNativeSeparators(file.first)));
+        if (!o.quiet)
+            err << QCoreApplication::translate("learnid-cli", "learnid-cli: %1")
+                       .arg(QCoreApplication::translate("learnid-cli", "wrote %1")
+                                .arg(QDir::toNativeSeparators(file.first)))
+                << Qt::endl;
     return ExitOk;
 }
 

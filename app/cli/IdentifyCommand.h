@@ -12,4 +12,10 @@ namespace learnid::cli {
 /// the requested files (all or none) only when everything succeeded.
 ExitCode identifyCommand(const IdentifyOptions &options, QTextStream &out, QTextStream &err);
 
+/// Writes identify's files (the --plots folder made first), all or none, and names each on err
+/// unless --quiet: ExitOk, or ExitWriteFailed with the reason on err. Shared by the arm's and the
+/// payload's identification.
+ExitCode writeIdentifyFiles(const IdentifyOptions &options,
+                            const QList<QPair<QString, QByteArray>> &files, QTextStream &err);
+
 } // namespace learnid::cli

@@ -1,5 +1,7 @@
 #include "cli/PayloadCommand.h"
 
+#include "cli/IdentifyCommand.h"
+
 #include "cli/IdentifyReportPdf.h"
 #include "cli/IdentifyTable.h"
 #include "cli/TorquePlotPng.h"
@@ -183,22 +185,7 @@ ExitCode payloadIdentifyCommand(const IdentifyOptions &o, QTextStream &out, QTex
             << Qt::endl;
         return ExitBadInput;
     }
-    try {
-        if (!o.plotsDir.isEmpty() && !QDir().mkpath(o.plotsDir))
-            throw Error(QCoreApplication::translate("learnid-cli", "--plots: cannot create %1")
-                            .arg(QDir::toNativeSeparators(o.plotsDir)));
-        writeFilesAtomically(files);
-    } catch (const Error &e) {
-        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(e.message())
-            << Qt::endl;
-        return ExitWriteFailed;
-    }
-    for (const auto &file : files)
-        if (!o.quiet)
-            err << QCoreApplication::translate("learnid-cli", "learnid-cli: wrote %1")
-                       .arg(QDir::toNativeSeparators(file.first))
-                << Qt::endl;
-    return ExitOk;
+    return writeIdentifyFiles(o, files, err);
 }
 
 } // namespace learnid::cli
