@@ -42,7 +42,9 @@ RealisticPlant::RealisticPlant(std::shared_ptr<const RobotModel> model, const Ve
     m_held.assign(size_t(n), false);
     m_mass.setZero(n, n);
     m_a.setZero(n, n);
-    m_llt = Eigen::LLT<Eigen::MatrixXd>(n);
+    // Allocates the factor once. Not `m_llt = LLT(n)`: Eigen leaves a sized LLT's info unset, and
+    // moving it reads that value (UBSan: invalid ComputationInfo).
+    m_llt.compute(Eigen::MatrixXd::Identity(n, n));
 }
 
 void RealisticPlant::reset(const Eigen::Ref<const Vector> &encoderAngles)
