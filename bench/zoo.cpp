@@ -15,6 +15,7 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -146,8 +147,19 @@ int main(int argc, char **argv)
     const QCommandLineOption rankOpt(QStringLiteral("rank-tolerance"),
                                      QStringLiteral("Experiment: estimator.rankTolerance."),
                                      QStringLiteral("r"), QStringLiteral("0"));
+    const QCommandLineOption jointOpt(QStringLiteral("joint-levels"),
+                                      QStringLiteral("Experiment: observability decided on rows "
+                                                     "divided by each joint's torque level."));
+    const QCommandLineOption stdOpt(QStringLiteral("max-relative-std"),
+                                    QStringLiteral("Experiment: after a partial trial, learn no "
+                                                   "direction whose relative std is above s."),
+                                    QStringLiteral("s"), QStringLiteral("-1"));
+    const QCommandLineOption repOpt(QStringLiteral("repetitions"),
+                                    QStringLiteral("Runs per trial, averaged (estimator."
+                                                   "repetitions; the CPU target is for 1)."),
+                                    QStringLiteral("n"), QStringLiteral("1"));
     parser.addOptions({seedsOpt, robotsOpt, docsOpt, limitOpt, floorOpt, verboseOpt, coulombOpt,
-                       truthOpt, newestOpt, rankOpt});
+                       truthOpt, newestOpt, rankOpt, stdOpt, repOpt, jointOpt});
     parser.process(app);
     ZooOptions o;
     o.seeds = parser.value(seedsOpt).toInt();
@@ -160,6 +172,9 @@ int main(int argc, char **argv)
     o.startAtTruth = parser.isSet(truthOpt);
     o.accumulate = !parser.isSet(newestOpt);
     o.rankTolerance = parser.value(rankOpt).toDouble();
+    o.maxRelativeStd = parser.value(stdOpt).toDouble();
+    o.repetitions = std::max(1, parser.value(repOpt).toInt());
+    o.jointLevels = parser.isSet(jointOpt);
 
     const QString cadPath = QStringLiteral(LEARNID_SHARED_DATA "/kuka-lwr4/kuka_lwr4.urdf");
     QTemporaryDir dir;
@@ -171,11 +186,11 @@ int main(int argc, char **argv)
         return 1;
     }
     std::printf("KUKA LWR4+ from the CAD URDF, %s, %.0f deg abort limit, 2^20 counts, 1 %% "
-                "torque noise, %d trials (Run all), %d seeds per robot; the floor: the same "
-                "robot with an ideal encoder and no noise, %d trials\n\n",
+                "torque noise, %d trials (Run all) of %d run(s) each, %d seeds per robot; the "
+                "floor: the same robot with an ideal encoder and no noise, %d trials\n\n",
                 o.docsGains ? "docs/scenario.md's gains and path"
                             : "scenario --print's gains, path and gentle first trial",
-                o.limitDeg, o.trials, o.seeds, o.floorTrials);
+                o.limitDeg, o.trials, o.repetitions, o.seeds, o.floorTrials);
     std::printf("| robot | trials needed to <= 5 %% of trial 0, median / worst | trials aborted, "
                 "median / worst | best trial / trial 0, median / worst | path-torque error, "
                 "median / worst | floor (ideal measurement) / trial 0, median / worst | CPU per "

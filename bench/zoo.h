@@ -19,8 +19,11 @@ struct ZooOptions
     // Coulomb velocity scale (0: the scenario's); the first estimate the true robot's.
     double coulombVelocity = 0.0;
     bool startAtTruth = false;
-    bool accumulate = true;     ///< estimator.accumulate
-    double rankTolerance = 0.0; ///< estimator.rankTolerance (0: the scenario's)
+    bool accumulate = true;       ///< estimator.accumulate
+    double rankTolerance = 0.0;   ///< estimator.rankTolerance (0: the scenario's)
+    double maxRelativeStd = -1.0; ///< estimator.partialMaxRelativeStd (< 0: the scenario's)
+    int repetitions = 1;          ///< estimator.repetitions: runs per trial, averaged
+    bool jointLevels = false;     ///< EstimatorSettings::jointLevelObservability
 };
 
 /// Joint Coulomb friction of the zoo robots [N m] (tst_learnfromabort's; joint 5's 0.93 N m is

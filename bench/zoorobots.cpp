@@ -9,6 +9,7 @@
 #include <QRegularExpression>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <random>
 #include <stdexcept>
 
@@ -107,6 +108,11 @@ Scenario zooScenario(const ZooOptions &o, const QString &cadPath, const QString 
     s.estimator.accumulate = o.accumulate;
     if (o.rankTolerance > 0)
         s.estimator.rankTolerance = o.rankTolerance;
+    if (o.maxRelativeStd >= 0)
+        s.estimator.partialMaxRelativeStd =
+            o.maxRelativeStd > 0 ? o.maxRelativeStd : std::numeric_limits<double>::infinity();
+    s.repetitions = o.repetitions;
+    s.estimator.jointLevelObservability = o.jointLevels;
     if (o.coulombVelocity > 0)
         s.urdf.jointTerms.coulombVelocity = o.coulombVelocity;
     SimulationSettings &sim = s.simulation;

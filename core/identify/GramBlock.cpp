@@ -27,6 +27,7 @@ GramBlock::GramBlock(int n, int m, Eigen::Index samples, const Eigen::VectorXd &
     , m_gram(size_t(n), Eigen::MatrixXd::Zero(m, m))
     , m_gradient(size_t(n), Eigen::VectorXd::Zero(m))
     , m_residualSquares(Eigen::VectorXd::Zero(n))
+    , m_targetSquares(Eigen::VectorXd::Zero(n))
     , m_shapedGram(size_t(n))
     , m_weight(Eigen::VectorXd::Ones(n))
 {

@@ -48,6 +48,7 @@ public:
         m_gram[size_t(j)] = gramOf(a);
         m_gradient[size_t(j)] = a.transpose() * b - m_gram[size_t(j)] * m_reference;
         m_residualSquares[j] = std::numeric_limits<double>::quiet_NaN();
+        m_targetSquares[j] = b.squaredNorm();
     }
     /// Moves the reference to phiRef (m); every joint's residual must then be set again with
     /// setJointResidual() (the Gram matrices stay).
@@ -59,6 +60,7 @@ public:
         const Eigen::VectorXd r = b - a * m_reference;
         m_gradient[size_t(j)] = a.transpose() * r;
         m_residualSquares[j] = r.squaredNorm();
+        m_targetSquares[j] = b.squaredNorm();
     }
     /// Joint j's rows filtered by H^T (N x m), for the covariance.
     template <typename H> void setJointShapedRows(int j, const H &h)
@@ -75,6 +77,7 @@ public:
         m_gradient[size_t(j)] = scattered(Eigen::VectorXd(rows.a.transpose() * b), rows.columns) -
                                 m_gram[size_t(j)] * m_reference;
         m_residualSquares[j] = std::numeric_limits<double>::quiet_NaN();
+        m_targetSquares[j] = b.squaredNorm();
     }
     template <typename B> void setJointResidual(int j, const JointRows &rows, const B &b)
     {
@@ -83,6 +86,7 @@ public:
         const Eigen::VectorXd r = b - rows.a * reference;
         m_gradient[size_t(j)] = scattered(Eigen::VectorXd(rows.a.transpose() * r), rows.columns);
         m_residualSquares[j] = r.squaredNorm();
+        m_targetSquares[j] = b.squaredNorm();
     }
     void setJointShapedRows(int j, const JointRows &shaped)
     {
@@ -95,6 +99,8 @@ public:
     const Eigen::MatrixXd &gram(int j) const { return m_gram[size_t(j)]; }
     const Eigen::VectorXd &gradient(int j) const { return m_gradient[size_t(j)]; }
     double residualSquares(int j) const { return m_residualSquares[j]; }
+    /// ||b_j||^2: joint j's targets (the measured torque the rows explain); 0 until set.
+    double targetSquares(int j) const { return m_targetSquares[j]; }
     const Eigen::MatrixXd &shapedGram(int j) const { return m_shapedGram[size_t(j)]; }
     /// True when every joint's shaped rows were set.
     bool shaped() const;
@@ -132,6 +138,7 @@ private:
     std::vector<Eigen::MatrixXd> m_gram;
     std::vector<Eigen::VectorXd> m_gradient;
     Eigen::VectorXd m_residualSquares;
+    Eigen::VectorXd m_targetSquares;
     std::vector<Eigen::MatrixXd> m_shapedGram;
     Eigen::VectorXd m_weight;
 };

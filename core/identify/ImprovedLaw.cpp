@@ -141,7 +141,13 @@ ParameterUpdate ImprovedLaw::update(const RobotModel &model, const std::vector<T
     }
     const double gain =
         FilteringEstimator(settings.rho, trials.back().record->samplePeriod).zeroPhaseNoiseGain();
-    return observableUpdate(blocks, phiPrev, settings.rankTolerance, gain);
+    // A parameter's scale does not vanish with its estimate: a direction once moved near 0 stays
+    // as observable as it was with the estimate the first trial ran with (docs/method.md §2.3).
+    const Eigen::VectorXd &anchor = trials.front().plan->feedforwardParameters;
+    return observableUpdate(blocks, phiPrev, settings.rankTolerance, gain,
+                            anchor.size() == phiPrev.size() ? anchor : Eigen::VectorXd(),
+                            partialTrialStdLimit(trials.back(), settings),
+                            settings.jointLevelObservability);
 }
 
 } // namespace learnid

@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace learnid {
 
@@ -38,6 +39,17 @@ int TrialData::usedSamples() const
 {
     const int recorded = record ? record->samples() : 0;
     return rows > 0 ? std::min(rows, recorded) : recorded;
+}
+
+bool TrialData::partial() const
+{
+    return record && (!record->completed() || (plan && record->samples() < plan->samples()));
+}
+
+double partialTrialStdLimit(const TrialData &newest, const EstimatorSettings &settings)
+{
+    return newest.partial() ? settings.partialMaxRelativeStd
+                            : std::numeric_limits<double>::infinity();
 }
 
 int partialSettlingSamples(double rho, double samplePeriod)

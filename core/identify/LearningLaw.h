@@ -33,7 +33,13 @@ struct TrialData
 
     /// The samples the law learns from: rows, bounded by the record's length.
     int usedSamples() const;
+    /// The trial stopped early: the law learns from part of what was planned.
+    bool partial() const;
 };
+
+/// The largest relative standard deviation of a direction learned from after `newest`:
+/// settings.partialMaxRelativeStd after a partial trial, no limit after a completed one.
+double partialTrialStdLimit(const TrialData &newest, const EstimatorSettings &settings);
 
 /// One learning step (paper eq. 13): from a trial's plan and record and the estimate it ran
 /// with, the next estimate. Laws are stateless; all they need comes in the arguments.

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <QCoreApplication>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace learnid {
@@ -32,6 +33,21 @@ void checkSizes(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int n,
         throw nonFiniteError();
 }
 
+// 1 / (joint j's torque level) for the observability decision: the RMS of the torque the rows
+// explain (levelSquares: its sum of squares over the rows), no lower than 1e-3
+// of the strongest joint's, so that a joint the model gives no torque does not weigh without
+// bound. No torque at all leaves the rows as they are.
+Eigen::VectorXd jointLevelWeights(const Eigen::VectorXd &levelSquares, Eigen::Index samples)
+{
+    const Eigen::VectorXd level =
+        (levelSquares / double(std::max<Eigen::Index>(samples, 1))).cwiseMax(0.0).cwiseSqrt();
+    const double strongest = level.size() > 0 ? level.maxCoeff() : 0.0;
+    if (!(strongest > 0.0) || !std::isfinite(strongest))
+        return Eigen::VectorXd::Ones(levelSquares.size());
+    // Weights relative to the strongest joint (1 there) keep gramObs at gram's magnitude.
+    return (level.cwiseMax(1e-3 * strongest) / strongest).cwiseInverse();
+}
+
 // Eigen-decomposition of a symmetric Gram matrix, largest eigenvalue first.
 struct SortedEigen
 {
@@ -46,131 +62,182 @@ SortedEigen sortedEigen(const Eigen::MatrixXd &gram)
 }
 
 // The update from the Gram matrices (common to the stacked rows and the Gram blocks): gram is
-// A^T A, gramW A^T W^2 A, rhs A^T W^2 (b - A phiPrev), gramH (H^T A)^T W^2 (H^T A) or null.
-// Fills phi, rank, condition and observable; cov (m x m, scaled parameters) is the covariance of
-// the update for unit noise variance, set by finishStd().
-struct Solved
+// A^T A, gramObs the same with each joint's rows divided by its torque level, gramW
+// A^T W^2 A, rhs A^T W^2 (b - A phiPrev), gramH (H^T A)^T W^2 (H^T A) or null. Fills phi, rank,
+// condition, observable and phiStd.
+struct NormalEquations
 {
-    ParameterUpdate out;
-    Eigen::VectorXd scale;
-    Eigen::MatrixXd cov;
+    Eigen::MatrixXd gram, gramObs, gramW, gramH;
+    Eigen::VectorXd rhs;
+    bool shaped = false;
+    Eigen::Index rows = 0;     ///< rows stacked (samples x joints)
+    double varianceGain = 1.0; ///< NoiseShaping::varianceGain
+    /// ||W (b - A phi)||^2 at any phi.
+    std::function<double(const Eigen::VectorXd &)> weightedSquaresAt;
 };
 
-Solved solveNormalEquations(const Eigen::MatrixXd &gram, const Eigen::MatrixXd &gramW,
-                            const Eigen::VectorXd &rhs, const Eigen::MatrixXd *gramH,
-                            const Eigen::VectorXd &phiPrev, double tolerance)
+// Inside the subspace D V (columns: scaled directions), the weighted least-squares step x with
+// phi = phiPrev + D V x, and the covariance of x for unit noise variance.
+struct SubspaceStep
 {
-    const Eigen::Index m = gram.cols();
+    Eigen::VectorXd x;
+    Eigen::MatrixXd covX;
+};
+
+SubspaceStep solveIn(const NormalEquations &eq, const Eigen::MatrixXd &dv)
+{
+    const Eigen::Index k = dv.cols();
+    SubspaceStep step{Eigen::VectorXd::Zero(k), Eigen::MatrixXd::Zero(k, k)};
+    if (k == 0)
+        return step;
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(dv.transpose() * eq.gramW * dv);
+    step.x = ldlt.solve(dv.transpose() * eq.rhs);
+    step.covX = ldlt.solve(Eigen::MatrixXd::Identity(k, k)); // (B^T B)^-1
+    if (eq.shaped)
+        step.covX = step.covX * (dv.transpose() * eq.gramH * dv) * step.covX;
+    return step;
+}
+
+// sigma_w^2: the weighted residual variance before the rows were filtered.
+double noiseVariance(const NormalEquations &eq, const Eigen::VectorXd &phi, Eigen::Index rank)
+{
+    const double dofLeft = double(std::max<Eigen::Index>(1, eq.rows - rank));
+    return eq.weightedSquaresAt(phi) / dofLeft / std::max(eq.varianceGain, 1e-300);
+}
+
+ParameterUpdate solveNormalEquations(const NormalEquations &eq, const Eigen::VectorXd &phiPrev,
+                                     const Eigen::VectorXd &scaleFloor, double tolerance,
+                                     double maxRelativeStd)
+{
+    const Eigen::Index m = eq.gram.cols();
     // Parameter scaling: a column times its parameter is the torque it explains. Columns are
     // scaled before any decision, which keeps the conditioning of the scaled Gram matrix near
     // that of the problem (cond(W^T W) ~ 10-100 on a line, docs/design.md §1.6);
-    // rankTolerance >= 1e-6 keeps sigma^2 ratios far above rounding.
-    const Eigen::VectorXd colNorm = gram.diagonal().cwiseSqrt();
-    Solved s;
-    s.scale = phiPrev.cwiseAbs();
+    // rankTolerance >= 1e-6 keeps sigma^2 ratios far above rounding. The scale does not fall
+    // below scaleFloor (a parameter moved near 0 stays as visible as it was).
+    const Eigen::VectorXd colNorm = eq.gram.diagonal().cwiseSqrt();
+    const Eigen::VectorXd obsNorm = eq.gramObs.diagonal().cwiseSqrt();
+    Eigen::VectorXd scale = phiPrev.cwiseAbs();
+    if (scaleFloor.size() == m)
+        scale = scale.cwiseMax(scaleFloor.cwiseAbs());
     for (Eigen::Index i = 0; i < m; ++i)
-        if (!(s.scale[i] > 0.0))
-            s.scale[i] = colNorm[i] > 0.0 ? 1.0 / colNorm[i] : 1.0;
-    const Eigen::VectorXd &scale = s.scale;
+        if (!(scale[i] > 0.0))
+            scale[i] = obsNorm[i] > 0.0 ? 1.0 / obsNorm[i] : 1.0;
 
-    // Observability is a property of the trajectory: decided on the unweighted scaled regressor.
-    const SortedEigen eig = sortedEigen(scale.asDiagonal() * gram * scale.asDiagonal());
+    // 1. Observability is a property of the trajectory: decided on the unweighted scaled
+    // regressor, or with jointLevels on the one whose joints' rows are each divided by that
+    // joint's torque level (jointLevelWeights): a wrist's parameters then count by the share of
+    // the wrist's torque they explain, not by their share of the shoulder's gravity.
+    const SortedEigen eig = sortedEigen(scale.asDiagonal() * eq.gramObs * scale.asDiagonal());
     const double lambdaMax = eig.values.size() > 0 ? eig.values[0] : 0.0;
     int rank = 0;
     while (rank < m && lambdaMax > 0.0 && eig.values[rank] > tolerance * tolerance * lambdaMax)
         ++rank;
-    const Eigen::MatrixXd vr = eig.vectors.leftCols(rank);
-    const Eigen::MatrixXd kept = eig.vectors.rightCols(m - rank);
+    Eigen::MatrixXd vr = eig.vectors.leftCols(rank);
+    Eigen::MatrixXd kept = eig.vectors.rightCols(m - rank);
 
-    // Weighted least squares inside the observable subspace: phi = phiPrev + D V_r x.
-    ParameterUpdate &out = s.out;
-    out.rank = rank;
-    out.phi = phiPrev;
-    Eigen::MatrixXd covX = Eigen::MatrixXd::Zero(rank, rank);
-    if (rank > 0) {
-        const Eigen::MatrixXd dv = scale.asDiagonal() * vr;
-        const Eigen::MatrixXd btb = dv.transpose() * gramW * dv;
-        const Eigen::LDLT<Eigen::MatrixXd> ldlt(btb);
-        out.phi += dv * ldlt.solve(dv.transpose() * rhs);
-        covX = ldlt.solve(Eigen::MatrixXd::Identity(rank, rank)); // (B^T B)^-1
-        if (gramH)
-            covX = covX * (dv.transpose() * *gramH * dv) * covX;
+    // 2. Weighted least squares inside the observable subspace: phi = phiPrev + D V_r x.
+    ParameterUpdate out;
+    SubspaceStep step = solveIn(eq, scale.asDiagonal() * vr);
+    out.phi = phiPrev + scale.asDiagonal() * (vr * step.x);
+    double s2 = noiseVariance(eq, out.phi, rank);
+
+    // 3. Each direction at the weight its data deserve: a direction whose standard deviation is
+    // above maxRelativeStd of the parameters' scale is not determined by these samples (a short
+    // record, a badly fitting one) and keeps phiPrev's component too.
+    if (rank > 0 && std::isfinite(maxRelativeStd)) {
+        const SortedEigen spread = sortedEigen(s2 * step.covX); // largest variance first
+        int drop = 0;
+        while (drop < rank && spread.values[drop] > maxRelativeStd * maxRelativeStd)
+            ++drop;
+        if (drop > 0) {
+            const Eigen::MatrixXd u = spread.vectors.rightCols(rank - drop);
+            Eigen::MatrixXd moved(m, m - rank + drop);
+            moved << kept, vr * spread.vectors.leftCols(drop);
+            kept = moved;
+            vr = vr * u;
+            rank -= drop;
+            step = solveIn(eq, scale.asDiagonal() * vr);
+            out.phi = phiPrev + scale.asDiagonal() * (vr * step.x);
+            s2 = noiseVariance(eq, out.phi, rank);
+        }
     }
-    s.cov = vr * covX * vr.transpose();
+    out.rank = rank;
 
+    // Var(phi) = sigma_w^2 D V_r covX V_r^T D.
+    const Eigen::MatrixXd cov = vr * step.covX * vr.transpose();
+    out.phiStd = (s2 * cov.diagonal()).cwiseMax(0.0).cwiseSqrt().cwiseProduct(scale);
     out.observable.assign(size_t(m), true);
     for (Eigen::Index i = 0; i < m; ++i) {
         // A parameter with a noticeable share in a kept direction is not determined by the data.
-        if (kept.cols() > 0 && kept.row(i).squaredNorm() > 1e-2)
+        if (kept.cols() > 0 && kept.row(i).squaredNorm() > 1e-2) {
             out.observable[size_t(i)] = false;
+            out.phiStd[i] = std::numeric_limits<double>::infinity();
+        }
     }
 
     // Conditioning as usually quoted: cond(W^T W) with unit-norm columns.
     Eigen::VectorXd unit = colNorm;
     for (Eigen::Index i = 0; i < m; ++i)
         unit[i] = colNorm[i] > 0.0 ? 1.0 / colNorm[i] : 1.0;
-    const Eigen::VectorXd ev = sortedEigen(unit.asDiagonal() * gram * unit.asDiagonal()).values;
+    const Eigen::VectorXd ev = sortedEigen(unit.asDiagonal() * eq.gram * unit.asDiagonal()).values;
     out.condition = ev[m - 1] > 0.0 ? ev[0] / ev[m - 1] : std::numeric_limits<double>::infinity();
-    return s;
-}
-
-// Var(phi) = sigma_w^2 D V_r covX V_r^T D, with sigma_w^2 the weighted residual variance before
-// the rows were filtered: weightedSquares = ||W (b - A phi)||^2 over `rows` rows.
-ParameterUpdate finishStd(Solved s, double weightedSquares, Eigen::Index rows, double varianceGain)
-{
-    ParameterUpdate &out = s.out;
-    const double dofLeft = double(std::max<Eigen::Index>(1, rows - out.rank));
-    const double s2 = weightedSquares / dofLeft / std::max(varianceGain, 1e-300);
-    out.phiStd = (s2 * s.cov.diagonal()).cwiseMax(0.0).cwiseSqrt().cwiseProduct(s.scale);
-    for (size_t i = 0; i < out.observable.size(); ++i)
-        if (!out.observable[i])
-            out.phiStd[Eigen::Index(i)] = std::numeric_limits<double>::infinity();
-    return std::move(s.out);
+    return out;
 }
 
 } // namespace
 
 ParameterUpdate observableUpdate(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int n,
                                  const Eigen::VectorXd &phiPrev, double tolerance,
-                                 const Eigen::VectorXd &rowWeightIn, const NoiseShaping &noise)
+                                 const Eigen::VectorXd &rowWeightIn, const NoiseShaping &noise,
+                                 const Eigen::VectorXd &scaleFloor, double maxRelativeStd,
+                                 bool jointLevels)
 {
     checkSizes(a, b, n, phiPrev, rowWeightIn);
     const Eigen::Index rows = a.rows();
     const Eigen::Index m = a.cols();
+    const Eigen::Index samples = rows / n;
     const bool weighted = rowWeightIn.size() == rows;
-    const Eigen::VectorXd w2 = weighted ? rowWeightIn.cwiseAbs2() : Eigen::VectorXd();
+    const Eigen::VectorXd w2 =
+        weighted ? Eigen::VectorXd(rowWeightIn.cwiseAbs2()) : Eigen::VectorXd::Ones(rows);
 
     // Gram matrices in one pass each.
-    const Eigen::MatrixXd gram = a.transpose() * a;
-    const Eigen::MatrixXd gramW =
-        weighted ? Eigen::MatrixXd(a.transpose() * w2.asDiagonal() * a) : gram;
-    const Eigen::VectorXd residualPrev = b - a * phiPrev;
-    const Eigen::VectorXd rhs = weighted
-                                    ? Eigen::VectorXd(a.transpose() * w2.cwiseProduct(residualPrev))
-                                    : Eigen::VectorXd(a.transpose() * residualPrev);
-    Eigen::MatrixXd gramH;
-    const bool shaped =
-        noise.transposedApplied.rows() == rows && noise.transposedApplied.cols() == m;
-    if (shaped) {
+    NormalEquations eq;
+    eq.rows = rows;
+    eq.varianceGain = noise.varianceGain;
+    eq.gram = a.transpose() * a;
+    const Eigen::VectorXd predicted = a * phiPrev;
+    const Eigen::Map<const Eigen::MatrixXd> measuredPerJoint(b.data(), n, samples);
+    const Eigen::VectorXd jointWeight =
+        jointLevels ? jointLevelWeights(measuredPerJoint.rowwise().squaredNorm(), samples)
+                    : Eigen::VectorXd::Ones(n);
+    Eigen::VectorXd obsRowWeight2(rows);
+    for (Eigen::Index r = 0; r < rows; ++r)
+        obsRowWeight2[r] = jointWeight[r % n] * jointWeight[r % n];
+    eq.gramObs = a.transpose() * obsRowWeight2.asDiagonal() * a;
+    eq.gramW = weighted ? Eigen::MatrixXd(a.transpose() * w2.asDiagonal() * a) : eq.gram;
+    eq.rhs = a.transpose() * w2.cwiseProduct(b - predicted);
+    eq.shaped = noise.transposedApplied.rows() == rows && noise.transposedApplied.cols() == m;
+    if (eq.shaped) {
         // Row weights are constant per joint signal, so they commute with H.
         const Eigen::MatrixXd &h = noise.transposedApplied;
-        gramH = weighted ? Eigen::MatrixXd(h.transpose() * w2.asDiagonal() * h)
-                         : Eigen::MatrixXd(h.transpose() * h);
+        eq.gramH = h.transpose() * w2.asDiagonal() * h;
     }
-    Solved s =
-        solveNormalEquations(gram, gramW, rhs, shaped ? &gramH : nullptr, phiPrev, tolerance);
+    eq.weightedSquaresAt = [&](const Eigen::VectorXd &phi) {
+        return (b - a * phi).cwiseAbs2().dot(w2);
+    };
+    ParameterUpdate out = solveNormalEquations(eq, phiPrev, scaleFloor, tolerance, maxRelativeStd);
 
-    const Eigen::VectorXd residual = b - a * s.out.phi;
-    const Eigen::Index samples = rows / n;
+    const Eigen::VectorXd residual = b - a * out.phi;
     const Eigen::Map<const Eigen::MatrixXd> perJoint(residual.data(), n, samples);
-    s.out.residualRms = (perJoint.rowwise().squaredNorm() / double(samples)).cwiseSqrt();
-    const double weightedSquares = weighted ? residual.cwiseAbs2().dot(w2) : residual.squaredNorm();
-    return finishStd(std::move(s), weightedSquares, rows, noise.varianceGain);
+    out.residualRms = (perJoint.rowwise().squaredNorm() / double(samples)).cwiseSqrt();
+    return out;
 }
 
 ParameterUpdate observableUpdate(const std::vector<const GramBlock *> &blocks,
                                  const Eigen::VectorXd &phiPrev, double tolerance,
-                                 double varianceGain)
+                                 double varianceGain, const Eigen::VectorXd &scaleFloor,
+                                 double maxRelativeStd, bool jointLevels)
 {
     const Eigen::Index m = phiPrev.size();
     const int n = blocks.empty() ? 0 : blocks.front()->joints();
@@ -191,31 +258,51 @@ ParameterUpdate observableUpdate(const std::vector<const GramBlock *> &blocks,
     if (rows < m)
         throw sizeError(rows, m, rows, n, m);
 
-    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(m, m), gramW = gram, gramH = gram;
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
+    // Each joint's torque level: what it measured (the rows' targets, noise included, so that a
+    // joint whose torque is mostly noise does not count as strong), else what phiPrev predicts.
+    Eigen::VectorXd levelSquares = Eigen::VectorXd::Zero(n);
+    for (const GramBlock *block : blocks)
+        for (int j = 0; j < n; ++j)
+            levelSquares[j] += block->targetSquares(j) > 0.0
+                                   ? block->targetSquares(j)
+                                   : phiPrev.dot(block->gram(j) * phiPrev);
+    const Eigen::VectorXd jointWeight =
+        jointLevels ? jointLevelWeights(levelSquares, samples) : Eigen::VectorXd::Ones(n);
+
+    NormalEquations eq;
+    eq.rows = rows;
+    eq.varianceGain = varianceGain;
+    eq.shaped = shaped;
+    eq.gram = Eigen::MatrixXd::Zero(m, m);
+    eq.gramObs = eq.gramW = eq.gramH = eq.gram;
+    eq.rhs = Eigen::VectorXd::Zero(m);
     for (const GramBlock *block : blocks) {
         for (int j = 0; j < n; ++j) {
             const double w2 = block->weight(j) * block->weight(j);
-            gram += block->gram(j);
-            gramW += w2 * block->gram(j);
-            rhs += w2 * block->gradientAt(j, phiPrev);
+            eq.gram += block->gram(j);
+            eq.gramObs += jointWeight[j] * jointWeight[j] * block->gram(j);
+            eq.gramW += w2 * block->gram(j);
+            eq.rhs += w2 * block->gradientAt(j, phiPrev);
             if (shaped)
-                gramH += w2 * block->shapedGram(j);
+                eq.gramH += w2 * block->shapedGram(j);
         }
     }
-    Solved s =
-        solveNormalEquations(gram, gramW, rhs, shaped ? &gramH : nullptr, phiPrev, tolerance);
+    eq.weightedSquaresAt = [&](const Eigen::VectorXd &phi) {
+        double sum = 0.0;
+        for (const GramBlock *block : blocks) {
+            const Eigen::VectorXd r2 = block->residualSquaresAt(phi);
+            for (int j = 0; j < n; ++j)
+                sum += block->weight(j) * block->weight(j) * r2[j];
+        }
+        return sum;
+    };
+    ParameterUpdate out = solveNormalEquations(eq, phiPrev, scaleFloor, tolerance, maxRelativeStd);
 
     Eigen::VectorXd squares = Eigen::VectorXd::Zero(n);
-    double weightedSquares = 0.0;
-    for (const GramBlock *block : blocks) {
-        const Eigen::VectorXd r2 = block->residualSquaresAt(s.out.phi);
-        squares += r2;
-        for (int j = 0; j < n; ++j)
-            weightedSquares += block->weight(j) * block->weight(j) * r2[j];
-    }
-    s.out.residualRms = (squares / double(samples)).cwiseSqrt();
-    return finishStd(std::move(s), weightedSquares, rows, varianceGain);
+    for (const GramBlock *block : blocks)
+        squares += block->residualSquaresAt(out.phi);
+    out.residualRms = (squares / double(samples)).cwiseSqrt();
+    return out;
 }
 
 } // namespace learnid

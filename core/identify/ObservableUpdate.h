@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 namespace learnid {
@@ -40,7 +41,10 @@ struct NoiseShaping
 ParameterUpdate observableUpdate(const Eigen::MatrixXd &a, const Eigen::VectorXd &b, int n,
                                  const Eigen::VectorXd &phiPrev, double tolerance,
                                  const Eigen::VectorXd &rowWeight = {},
-                                 const struct NoiseShaping &noise = {});
+                                 const struct NoiseShaping &noise = {},
+                                 const Eigen::VectorXd &scaleFloor = {},
+                                 double maxRelativeStd = std::numeric_limits<double>::infinity(),
+                                 bool jointLevels = false);
 
 /// The same update from blocks of rows reduced to their Gram quantities (GramBlock; e.g. one
 /// block per trial, each joint's rows weighted by the block's weight of that joint): equal to
@@ -50,6 +54,8 @@ ParameterUpdate observableUpdate(const Eigen::MatrixXd &a, const Eigen::VectorXd
 /// Gram matrices, when every block has them, give the covariance sandwich.
 ParameterUpdate observableUpdate(const std::vector<const class GramBlock *> &blocks,
                                  const Eigen::VectorXd &phiPrev, double tolerance,
-                                 double varianceGain = 1.0);
+                                 double varianceGain = 1.0, const Eigen::VectorXd &scaleFloor = {},
+                                 double maxRelativeStd = std::numeric_limits<double>::infinity(),
+                                 bool jointLevels = false);
 
 } // namespace learnid

@@ -63,7 +63,9 @@ ParameterUpdate PaperLaw::update(const RobotModel &model, const std::vector<Tria
                 h.col(i) = filter.anticausalLowPass(h.col(i).transpose()).transpose();
         block.setJointShapedRows(j, h);
     }
-    return observableUpdate({&block}, phiPrev, settings.rankTolerance, filter.lowPassNoiseGain());
+    return observableUpdate({&block}, phiPrev, settings.rankTolerance, filter.lowPassNoiseGain(),
+                            {}, partialTrialStdLimit(trials.back(), settings),
+                            settings.jointLevelObservability);
 }
 
 } // namespace learnid

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <limits>
+
 namespace learnid {
 
 /// Settings shared by the learning laws.
@@ -7,7 +9,14 @@ struct EstimatorSettings
 {
     double rho = 40.0;           ///< bandwidth of F(s) = rho^3/(s + rho)^3 [rad/s]
     double rankTolerance = 1e-3; ///< relative singular value below which a direction is kept
-    bool accumulate = true;      ///< improved law: fit all valid trials so far, not the last
+    // Experiments on the observability rule (docs/benchmarks.md, "Realistic robots"; off by
+    // default: neither carries every robot measured there):
+    /// Decide observability on rows divided by each joint's measured torque level.
+    bool jointLevelObservability = false;
+    /// After a trial stopped early (a partial record), a direction whose standard deviation,
+    /// relative to the parameters' scale, is above this is not learned from.
+    double partialMaxRelativeStd = std::numeric_limits<double>::infinity();
+    bool accumulate = true; ///< improved law: fit all valid trials so far, not the last
 };
 
 } // namespace learnid
