@@ -106,9 +106,8 @@ ParameterFilePayload readPayloadSection(JsonObjectReader r)
         }
         p.identified[size_t(i)] = s == sourceName(true);
     }
-    p.standardUncertainty =
-        fixedNumbers<10>(r.require(key("standardUncertainty")),
-                         r.keyPath(key("standardUncertainty")), std::nan(""));
+    p.standardUncertainty = fixedNumbers<10>(r.require(key("standardUncertainty")),
+                                             r.keyPath(key("standardUncertainty")), std::nan(""));
     r.rejectUnknownKeys();
     return p;
 }

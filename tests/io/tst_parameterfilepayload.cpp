@@ -24,8 +24,8 @@ const QString source = QStringLiteral("arm+payload.json");
 // The built-in double pendulum's CAD model as an identification from logs exports it.
 ParameterFileContent armFile(const QString &model = QStringLiteral("double-pendulum"))
 {
-    const auto arm =
-        std::dynamic_pointer_cast<const ChainModel>(makeRobotModel(QStringLiteral("double-pendulum")));
+    const auto arm = std::dynamic_pointer_cast<const ChainModel>(
+        makeRobotModel(QStringLiteral("double-pendulum")));
     ParameterFileContent c;
     c.robotModel = model;
     c.robotDescription = QStringLiteral("double pendulum, identified from logs");
@@ -139,7 +139,8 @@ void TestParameterFilePayload::badSection_isRefusedNamingTheKey_data()
     QTest::addColumn<QString>("field");
     QTest::addColumn<QJsonValue>("value");
     QTest::addColumn<QString>("message");
-    QTest::newRow("zero mass") << "mass" << QJsonValue(0.0) << "payload.mass: must be a positive number";
+    QTest::newRow("zero mass") << "mass" << QJsonValue(0.0)
+                               << "payload.mass: must be a positive number";
     QTest::newRow("negative mass") << "mass" << QJsonValue(-3.0) << "payload.mass:";
     QTest::newRow("mass text") << "mass" << QJsonValue(QStringLiteral("3")) << "payload.mass:";
     QTest::newRow("com of two") << "com" << QJsonValue(QJsonArray{0.0, 0.1}) << "payload.com:";
@@ -212,7 +213,8 @@ void TestParameterFilePayload::nanOrNoLink_isRefusedOnWrite()
     v1.insert(QStringLiteral("payload"), fileObject(v2).value(QStringLiteral("payload")));
     v1.insert(QStringLiteral("schema"), QStringLiteral("learnid-parameters/1"));
     v1.remove(QStringLiteral("standardParameters"));
-    QVERIFY2(readError(v1).contains(QStringLiteral("payload: unknown key")), qPrintable(readError(v1)));
+    QVERIFY2(readError(v1).contains(QStringLiteral("payload: unknown key")),
+             qPrintable(readError(v1)));
 }
 
 void TestParameterFilePayload::urdfModel_linkIsCheckedAgainstItsChain()
@@ -222,10 +224,11 @@ void TestParameterFilePayload::urdfModel_linkIsCheckedAgainstItsChain()
     c.payload = payload();
     c.payload->link = QStringLiteral("flange");
     const ParameterFileContent back = parameterFileFromJson(parameterFileToJson(c), source);
-    const auto arm =
-        std::dynamic_pointer_cast<const ChainModel>(makeRobotModel(QStringLiteral("double-pendulum")));
-    LEARNID_VERIFY_ERROR(checkPayloadLink(*back.payload, arm->chain()),
-                         QStringLiteral("payload.link: payload link 'flange' is not a moving link"));
+    const auto arm = std::dynamic_pointer_cast<const ChainModel>(
+        makeRobotModel(QStringLiteral("double-pendulum")));
+    LEARNID_VERIFY_ERROR(
+        checkPayloadLink(*back.payload, arm->chain()),
+        QStringLiteral("payload.link: payload link 'flange' is not a moving link"));
     c.payload->link = QStringLiteral("link1");
     QCOMPARE(checkPayloadLink(*c.payload, arm->chain()), 0);
 }
