@@ -75,13 +75,13 @@ PayloadArm armFromFile(const LogIdentificationRequest &request, const QString &a
     }
     for (int i = 0; i < p; ++i) {
         if (names.at(i).name != file.standardParameters.at(i).name) {
-            throw Error(Text::tr("%1: standardParameters[%2].name: is \"%3\", the arm's model "
-                                 "from %4 has \"%5\" there: the file was not identified on this "
-                                 "URDF")
-                            .arg(path)
-                            .arg(i)
-                            .arg(file.standardParameters.at(i).name, arm.robot.source,
-                                 names.at(i).name));
+            throw Error(
+                Text::tr("%1: standardParameters[%2].name: is \"%3\", the arm's model "
+                         "from %4 has \"%5\" there: the file was not identified on this "
+                         "URDF")
+                    .arg(path)
+                    .arg(i)
+                    .arg(file.standardParameters.at(i).name, arm.robot.source, names.at(i).name));
         }
     }
     if (file.payload) {

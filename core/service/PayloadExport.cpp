@@ -74,11 +74,10 @@ QByteArray payloadIdentifiedUrdf(const PayloadIdentificationResult &r, const QSt
 {
     const LogRobot &robot = r.arm.robot;
     // A parameter file's values are not in the URDF yet; a URDF's own are the arm's.
-    const QByteArray arm =
-        r.arm.parameterFile.isEmpty()
-            ? robot.urdf
-            : urdfWithStandard(*robot.model, robot.urdf, robot.source, r.arm.standard, comment,
-                               r.arm.determined);
+    const QByteArray arm = r.arm.parameterFile.isEmpty()
+                               ? robot.urdf
+                               : urdfWithStandard(*robot.model, robot.urdf, robot.source,
+                                                  r.arm.standard, comment, r.arm.determined);
     const PayloadEstimate &e = r.fit.estimate;
     QStringList kept;
     const QStringList names = PayloadEstimate::bodyNames();

@@ -28,8 +28,7 @@ ParameterFileContent payloadParameterFile(const PayloadIdentificationResult &res
 /// parameters written in, urdfWithStandard()) plus the payload as a link fixed to its link
 /// (urdfWithPayload()). comment: who made it and when; a note on which of the payload's values
 /// were kept at the prior follows it.
-QByteArray payloadIdentifiedUrdf(const PayloadIdentificationResult &result,
-                                 const QString &comment);
+QByteArray payloadIdentifiedUrdf(const PayloadIdentificationResult &result, const QString &comment);
 
 /// The files of request (the parameter file and its DCF fragment, the URDF), built in memory
 /// so that the caller writes all or none (writeFilesAtomically). Throws Error naming what

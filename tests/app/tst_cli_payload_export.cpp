@@ -4,10 +4,10 @@
 // plus that payload; an arm identified earlier (identify --export without a payload) serves as
 // --robot; a CAD arm draws a warning; bad input writes nothing.
 
-#include "PayloadLogs.h"
 #include "../support/NumericAssert.h"
 #include "../support/SharedData.h"
 #include "../support/ToolRun.h"
+#include "PayloadLogs.h"
 #include "io/ParameterFile.h"
 #include "model/UrdfChain.h"
 
@@ -25,11 +25,16 @@ const QString cli = QStringLiteral(LEARNID_CLI_PATH);
 
 QStringList payloadArgs(const QString &robot, const QString &log)
 {
-    return {QStringLiteral("identify"),       QStringLiteral("--robot"),
-            robot,                            QStringLiteral("--log"),
-            log,                              QStringLiteral("--payload"),
-            QStringLiteral("--payload-mass"), QStringLiteral("2.5"),
-            QStringLiteral("--payload-com"),  QStringLiteral("0,0,0.05"),
+    return {QStringLiteral("identify"),
+            QStringLiteral("--robot"),
+            robot,
+            QStringLiteral("--log"),
+            log,
+            QStringLiteral("--payload"),
+            QStringLiteral("--payload-mass"),
+            QStringLiteral("2.5"),
+            QStringLiteral("--payload-com"),
+            QStringLiteral("0,0,0.05"),
             QStringLiteral("--quiet")};
 }
 
@@ -69,9 +74,9 @@ void TestCliPayloadExport::exportAndUrdf_holdTheArmPlusThePayload()
 {
     const QString json = m_dir.filePath(QStringLiteral("with-payload.json"));
     const QString urdf = m_dir.filePath(QStringLiteral("with-payload.urdf"));
-    const test::ToolRun run = test::runTool(
-        cli, payloadArgs(m_urdf, m_rich) << QStringLiteral("--export") << json
-                                         << QStringLiteral("--urdf-out") << urdf);
+    const test::ToolRun run =
+        test::runTool(cli, payloadArgs(m_urdf, m_rich) << QStringLiteral("--export") << json
+                                                       << QStringLiteral("--urdf-out") << urdf);
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     // The CAD URDF as the arm: said so.
     QVERIFY2(run.out.contains(QStringLiteral("Warning: the arm's model is")), qPrintable(run.out));
@@ -124,10 +129,10 @@ void TestCliPayloadExport::armFromAnEarlierExport_isHeldFixed()
     // The arm identified first, without the payload; then the payload on that file.
     const QString armJson = m_dir.filePath(QStringLiteral("arm.json"));
     const QString armUrdf = m_dir.filePath(QStringLiteral("arm.urdf"));
-    const test::ToolRun arm = test::runTool(
-        cli, {QStringLiteral("identify"), QStringLiteral("--robot"), m_urdf, QStringLiteral("--log"),
-              m_armOnly, QStringLiteral("--export"), armJson, QStringLiteral("--urdf-out"),
-              armUrdf, QStringLiteral("--quiet")});
+    const test::ToolRun arm =
+        test::runTool(cli, {QStringLiteral("identify"), QStringLiteral("--robot"), m_urdf,
+                            QStringLiteral("--log"), m_armOnly, QStringLiteral("--export"), armJson,
+                            QStringLiteral("--urdf-out"), armUrdf, QStringLiteral("--quiet")});
     QVERIFY2(arm.exitCode == 0, qPrintable(arm.err));
     const ParameterFileContent armFile = readParameterFile(armJson);
     // The identified URDF is an identified arm too: no warning.
@@ -138,9 +143,8 @@ void TestCliPayloadExport::armFromAnEarlierExport_isHeldFixed()
 
     const QString json = m_dir.filePath(QStringLiteral("arm+payload.json"));
     const test::ToolRun run =
-        test::runTool(cli, payloadArgs(armJson, m_rich)
-                               << QStringLiteral("--arm-urdf") << m_urdf
-                               << QStringLiteral("--export") << json);
+        test::runTool(cli, payloadArgs(armJson, m_rich) << QStringLiteral("--arm-urdf") << m_urdf
+                                                        << QStringLiteral("--export") << json);
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
     QVERIFY2(!run.out.contains(QStringLiteral("Warning: the arm's model")), qPrintable(run.out));
     QVERIFY(run.out.contains(QDir::toNativeSeparators(armJson)));
@@ -173,9 +177,9 @@ void TestCliPayloadExport::badInput_namesTheFileAndWritesNothing()
     QVERIFY(QDir().mkpath(out));
     const test::ToolRun run = test::runTool(
         cli, payloadArgs(armJson, m_rich)
-                 << QStringLiteral("--arm-urdf") << pendulum
-                 << QStringLiteral("--export") << QDir(out).filePath(QStringLiteral("p.json"))
-                 << QStringLiteral("--urdf-out") << QDir(out).filePath(QStringLiteral("p.urdf")));
+                 << QStringLiteral("--arm-urdf") << pendulum << QStringLiteral("--export")
+                 << QDir(out).filePath(QStringLiteral("p.json")) << QStringLiteral("--urdf-out")
+                 << QDir(out).filePath(QStringLiteral("p.urdf")));
     QCOMPARE(run.exitCode, 2);
     QVERIFY2(run.err.contains(QDir::toNativeSeparators(armJson)) &&
                  run.err.contains(QStringLiteral("standardParameters")),
