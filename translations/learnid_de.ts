@@ -1880,7 +1880,7 @@
         <translation>DCF-Fragment: Gelenk %1 existiert nicht; der Roboter hat %2 Gelenke</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+178"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+179"/>
         <source>must be given for every parameter or for none</source>
         <translation>muss für jeden Parameter oder für keinen angegeben sein</translation>
     </message>
@@ -1905,7 +1905,7 @@
         <translation>muss Datum und Uhrzeit wie 2024-05-01T12:00:00.000Z sein, gefunden: „%1“</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+74"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>fehlt; dies ist keine learnid-Parameterdatei</translation>
     </message>
@@ -2009,7 +2009,7 @@
         <translation>Standardabweichungen, %1</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>must name the CANopen data type</source>
         <translation>muss den CANopen-Datentyp nennen</translation>
     </message>
@@ -2017,6 +2017,37 @@
         <location line="+3"/>
         <source>must hold the bytes written</source>
         <translation>muss die geschriebenen Bytes enthalten</translation>
+    </message>
+    <message>
+        <location filename="../core/io/ParameterFilePayload.cpp" line="+49"/>
+        <location line="+49"/>
+        <source>the payload&apos;s values</source>
+        <translation>die Werte der Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>must be &quot;data&quot; (identified) or &quot;prior&quot; (kept at the prior), got &quot;%1&quot;</source>
+        <translation>muss „data“ (identifiziert) oder „prior“ (von der Vorgabe übernommen) sein, gefunden: „%1“</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>must name the link the payload is fixed to</source>
+        <translation>muss das Glied nennen, an dem die Nutzlast befestigt ist</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the model %1 has no links to fix a payload to; a payload needs a URDF robot</source>
+        <translation>das Modell %1 hat keine Glieder, an denen eine Nutzlast befestigt werden kann; eine Nutzlast braucht einen URDF-Roboter</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>is not a real body&apos;s inertia with this mass and centre of mass (its pseudo-inertia has the negative eigenvalue %1)</source>
+        <translation>ist nicht die Trägheit eines realen Körpers mit dieser Masse und diesem Schwerpunkt (seine Pseudoträgheit hat den negativen Eigenwert %1)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>must be null for a value kept at the prior (source[%1] is &quot;prior&quot;), got %2</source>
+        <translation>muss für einen von der Vorgabe übernommenen Wert null sein (source[%1] ist „prior“), gefunden: %2</translation>
     </message>
 </context>
 <context>
@@ -2119,6 +2150,44 @@
     </message>
 </context>
 <context>
+    <name>PayloadArm</name>
+    <message>
+        <location filename="../core/service/PayloadArm.cpp" line="+42"/>
+        <source>%1: standardParameters: is empty (robot.model %2): the arm&apos;s model for a payload is the whole model as standard parameters, as `learnid-cli identify --export` writes it for a URDF robot</source>
+        <translation>%1: standardParameters: ist leer (robot.model %2): das Modell des Arms für eine Nutzlast ist das ganze Modell als Standardparameter, wie `learnid-cli identify --export` es für einen URDF-Roboter schreibt</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: robot.model is &quot;urdf&quot;: the file does not carry its URDF; give the URDF the arm was identified on with %2</source>
+        <translation>%1: robot.model ist „urdf“: die Datei enthält ihr URDF nicht; geben Sie das URDF, an dem der Arm identifiziert wurde, mit %2 an</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: only for a parameter file of robot.model &quot;urdf&quot;; %2 is of the built-in %3, whose URDF is known</source>
+        <translation>%1: nur für eine Parameterdatei mit robot.model „urdf“; %2 gehört zum eingebauten %3, dessen URDF bekannt ist</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: standardParameters: has %2 entries, the arm&apos;s model from %3 has %4: the file was not identified on this URDF (or with other base and tip links)</source>
+        <translation>%1: standardParameters: hat %2 Einträge, das Modell des Arms aus %3 hat %4: die Datei wurde nicht an diesem URDF identifiziert (oder mit anderen Basis- und Endgliedern)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: standardParameters[%2].name: is &quot;%3&quot;, the arm&apos;s model from %4 has &quot;%5&quot; there: the file was not identified on this URDF</source>
+        <translation>%1: standardParameters[%2].name: ist „%3“, das Modell des Arms aus %4 hat dort „%5“: die Datei wurde nicht an diesem URDF identifiziert</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 holds a payload on %2; it is not part of the arm&apos;s model and is left out</source>
+        <translation>%1 enthält eine Nutzlast an %2; sie gehört nicht zum Modell des Arms und bleibt außen vor</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1: only for a parameter file of robot.model &quot;urdf&quot; given as the arm; %2 is a URDF or a built-in robot</source>
+        <translation>%1: nur für eine als Arm angegebene Parameterdatei mit robot.model „urdf“; %2 ist ein URDF oder ein eingebauter Roboter</translation>
+    </message>
+</context>
+<context>
     <name>PayloadEstimate</name>
     <message>
         <location filename="../core/identify/PayloadEstimate.cpp" line="+61"/>
@@ -2139,6 +2208,19 @@
         <location line="+70"/>
         <source>no direction determined: the prior</source>
         <translation>keine Richtung bestimmt: die Vorgabe</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadExport</name>
+    <message>
+        <location filename="../core/service/PayloadExport.cpp" line="+50"/>
+        <source>%1 (%2) with a payload on %3 identified from the logs %4</source>
+        <translation>%1 (%2) mit einer Nutzlast an %3, identifiziert aus den Logs %4</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
+        <translation>die Reglerverstärkungen, die die Parameterdatei festhält, gelten für %1 Gelenke, der Roboter hat %2</translation>
     </message>
 </context>
 <context>
@@ -3498,6 +3580,21 @@
         <source>%1: line %2, column %3: not XML: %4</source>
         <translation>%1: Zeile %2, Spalte %3: kein XML: %4</translation>
     </message>
+    <message>
+        <location filename="../core/io/UrdfPayload.cpp" line="+97"/>
+        <source>%1: the payload on link &quot;%2&quot; is not a real body (mass %3 kg)</source>
+        <translation>%1: die Nutzlast am Glied „%2“ ist kein realer Körper (Masse %3 kg)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: no closing &lt;/robot&gt; to add the payload before</source>
+        <translation>%1: kein schließendes &lt;/robot&gt;, vor dem die Nutzlast eingefügt werden kann</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: the URDF with the payload reads back with another body at link &quot;%2&quot; than was written</source>
+        <translation>%1: das URDF mit der Nutzlast ergibt beim Zurücklesen am Glied „%2“ einen anderen Körper, als geschrieben wurde</translation>
+    </message>
 </context>
 <context>
     <name>UrdfExtension</name>
@@ -3666,7 +3763,7 @@
         <translation>--robot: &apos;%1&apos; ist weder eine URDF-Datei noch ein eingebauter Roboter (%2)</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+58"/>
         <source>robot %1: %2, %3 moving joints</source>
         <translation>Roboter %1: %2, %3 bewegliche Gelenke</translation>
     </message>
@@ -3684,12 +3781,12 @@
         </translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+49"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>identifiziert von learnid-cli %1 identify am %2</translation>
     </message>
     <message>
-        <location line="-79"/>
+        <location line="-99"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1: vorhergesagtes und gemessenes Moment</translation>
     </message>
@@ -3699,10 +3796,10 @@
         <translation>learnid: %1 aus Logs identifiziert</translation>
     </message>
     <message>
-        <location line="+75"/>
-        <location line="+16"/>
+        <location line="+66"/>
+        <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+184"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+203"/>
         <location filename="../app/cli/RunCommand.cpp" line="+105"/>
         <location line="+9"/>
         <location line="+6"/>
@@ -3847,7 +3944,7 @@
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+218"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+214"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -4175,8 +4272,8 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 geschrieben (die Sitzung endete vorzeitig)</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-82"/>
-        <location line="+81"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
+        <location line="+93"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4236,7 +4333,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-173"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-169"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms: unbekannter Term &apos;%1&apos;; die Terme sind armature, viscous, coulomb und offset, oder none</translation>
     </message>
@@ -4266,12 +4363,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--urdf-out: nach %1 schreibt schon --export</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--%1: a payload&apos;s result is not exported yet; leave it out</source>
-        <translation>--%1: das Ergebnis einer Nutzlast wird noch nicht exportiert; lassen Sie die Option weg</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>A built-in URDF robot (e.g. double-pendulum) or a URDF file.</source>
         <translation>Ein eingebauter URDF-Roboter (z. B. double-pendulum) oder eine URDF-Datei.</translation>
     </message>
@@ -4572,7 +4664,7 @@ neue Schätzung.
         <translation>learnid-cli: Fehler: --robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-138"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-156"/>
         <source>value</source>
         <translation>Größe</translation>
     </message>
@@ -4607,14 +4699,29 @@ neue Schätzung.
         <translation>die Vorgabe (nicht identifiziert)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
+        <source>%1 on %2</source>
+        <translation>%1 auf %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Payload on %1 of %2; the arm&apos;s model (%3) held fixed.
 </source>
         <translation>Nutzlast an %1 von %2; das Modell des Arms (%3) bleibt fest.
 </translation>
     </message>
+    <message>
+        <location line="+4"/>
+        <source>Warning: the arm&apos;s model is %1 as given (its CAD values), not one identified earlier: its errors go into the payload&apos;s estimate. Identify the arm first (identify --export or --urdf-out, without the payload) and give that file as --robot.</source>
+        <translation>Warnung: das Modell des Arms ist %1 wie gegeben (seine CAD-Werte), nicht ein zuvor identifiziertes: seine Fehler gehen in die Schätzung der Nutzlast ein. Identifizieren Sie zuerst den Arm (identify --export oder --urdf-out, ohne die Nutzlast) und geben Sie diese Datei als --robot an.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Note: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
     <message numerus="yes">
-        <location line="+3"/>
+        <location line="+1"/>
         <source>Fitted to %n log(s), %1 samples: %2 of 10 directions determined (condition %3).
 </source>
         <translation>
@@ -4658,7 +4765,7 @@ neue Schätzung.
         <translation>Drehmoment-Residuum je Gelenk auf den Logs [N m]:</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>learnid-cli: fitting the payload to %1</source>
         <translation>learnid-cli: passe die Nutzlast an %1 an</translation>
     </message>
@@ -4680,12 +4787,12 @@ neue Schätzung.
         <translation>learnid: Nutzlast an %1 aus Logs identifiziert</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadOptions.cpp" line="+39"/>
-        <source>Identify only a payload fixed to the arm, the --robot URDF held fixed as the arm&apos;s model; needs --payload-mass.</source>
-        <translation>Nur eine am Arm befestigte Nutzlast identifizieren, die --robot-URDF bleibt als Modell des Arms fest; braucht --payload-mass.</translation>
+        <location filename="../app/cli/PayloadOptions.cpp" line="+40"/>
+        <source>Identify only a payload fixed to the arm, the --robot URDF or parameter file held fixed as the arm&apos;s model; needs --payload-mass.</source>
+        <translation>Nur eine am Arm befestigte Nutzlast identifizieren, das --robot-URDF oder die Parameterdatei bleibt als Modell des Arms fest; braucht --payload-mass.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>The link the payload is fixed to; default: the tip link.</source>
         <translation>Das Glied, an dem die Nutzlast befestigt ist; Standard: das Endglied.</translation>
     </message>
@@ -4715,6 +4822,11 @@ neue Schätzung.
         <translation>Oder innerhalb dieses Quaders im Gliedkoordinatensystem [m], statt der Kugel.</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>With --payload and a --robot parameter file of a URDF robot: the URDF the arm was identified on.</source>
+        <translation>Mit --payload und einer --robot-Parameterdatei eines URDF-Roboters: das URDF, an dem der Arm identifiziert wurde.</translation>
+    </message>
+    <message>
         <location line="+30"/>
         <source>--%1: needs --payload</source>
         <translation>--%1: braucht --payload</translation>
@@ -4730,7 +4842,7 @@ neue Schätzung.
         <translation>--payload-box: geben Sie entweder einen Hüllquader oder --payload-radius an, nicht beides</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
         <translation>--payload-mass: muss eine Zahl in kg sein, erhalten: „%1“</translation>
     </message>

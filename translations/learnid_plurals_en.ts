@@ -104,7 +104,7 @@
 <context>
     <name>learnid-cli</name>
     <message numerus="yes">
-        <location filename="../app/cli/IdentifyCommand.cpp" line="+133"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="+116"/>
         <source>fitting %1 standard parameters to %n log(s)</source>
         <translation>
             <numerusform>fitting %1 standard parameters to %n log</numerusform>
@@ -112,7 +112,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/PayloadCommand.cpp" line="+75"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+91"/>
         <source>Fitted to %n log(s), %1 samples: %2 of 10 directions determined (condition %3).
 </source>
         <translation>

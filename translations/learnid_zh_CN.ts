@@ -1871,7 +1871,7 @@
         <translation>DCF 片段：关节 %1 不存在；机器人有 %2 个关节</translation>
     </message>
     <message>
-        <location filename="../core/io/ParameterFile.cpp" line="+178"/>
+        <location filename="../core/io/ParameterFile.cpp" line="+179"/>
         <source>must be given for every parameter or for none</source>
         <translation>必须为每个参数都给出，或都不给出</translation>
     </message>
@@ -1896,7 +1896,7 @@
         <translation>必须是形如 2024-05-01T12:00:00.000Z 的日期时间，实际为“%1”</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+74"/>
         <source>is missing; this is not a learnid parameter file</source>
         <translation>缺失；这不是 learnid 参数文件</translation>
     </message>
@@ -2000,7 +2000,7 @@
         <translation>标准差，%1</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>must name the CANopen data type</source>
         <translation>必须指明 CANopen 数据类型</translation>
     </message>
@@ -2008,6 +2008,37 @@
         <location line="+3"/>
         <source>must hold the bytes written</source>
         <translation>必须包含写入的字节</translation>
+    </message>
+    <message>
+        <location filename="../core/io/ParameterFilePayload.cpp" line="+49"/>
+        <location line="+49"/>
+        <source>the payload&apos;s values</source>
+        <translation>负载的值</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>must be &quot;data&quot; (identified) or &quot;prior&quot; (kept at the prior), got &quot;%1&quot;</source>
+        <translation>必须是“data”（已辨识）或“prior”（保留先验），实际为“%1”</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>must name the link the payload is fixed to</source>
+        <translation>必须给出负载所固定的连杆</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the model %1 has no links to fix a payload to; a payload needs a URDF robot</source>
+        <translation>模型 %1 没有可固定负载的连杆；负载需要 URDF 机器人</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>is not a real body&apos;s inertia with this mass and centre of mass (its pseudo-inertia has the negative eigenvalue %1)</source>
+        <translation>不是具有该质量和质心的真实刚体的惯性（其伪惯性矩阵有负特征值 %1）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>must be null for a value kept at the prior (source[%1] is &quot;prior&quot;), got %2</source>
+        <translation>对保留先验的值必须为 null（source[%1] 为“prior”），实际为 %2</translation>
     </message>
 </context>
 <context>
@@ -2110,6 +2141,44 @@
     </message>
 </context>
 <context>
+    <name>PayloadArm</name>
+    <message>
+        <location filename="../core/service/PayloadArm.cpp" line="+42"/>
+        <source>%1: standardParameters: is empty (robot.model %2): the arm&apos;s model for a payload is the whole model as standard parameters, as `learnid-cli identify --export` writes it for a URDF robot</source>
+        <translation>%1：standardParameters：为空（robot.model %2）：负载所用的机械臂模型是以标准参数表示的完整模型，即 `learnid-cli identify --export` 为 URDF 机器人写出的形式</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: robot.model is &quot;urdf&quot;: the file does not carry its URDF; give the URDF the arm was identified on with %2</source>
+        <translation>%1：robot.model 为“urdf”：文件不包含其 URDF；请用 %2 给出辨识机械臂时所用的 URDF</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: only for a parameter file of robot.model &quot;urdf&quot;; %2 is of the built-in %3, whose URDF is known</source>
+        <translation>%1：仅用于 robot.model 为“urdf”的参数文件；%2 属于内置的 %3，其 URDF 已知</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: standardParameters: has %2 entries, the arm&apos;s model from %3 has %4: the file was not identified on this URDF (or with other base and tip links)</source>
+        <translation>%1：standardParameters：有 %2 项，来自 %3 的机械臂模型有 %4 项：该文件不是在此 URDF 上辨识的（或使用了其他基座和末端连杆）</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: standardParameters[%2].name: is &quot;%3&quot;, the arm&apos;s model from %4 has &quot;%5&quot; there: the file was not identified on this URDF</source>
+        <translation>%1：standardParameters[%2].name：为“%3”，来自 %4 的机械臂模型在此处为“%5”：该文件不是在此 URDF 上辨识的</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 holds a payload on %2; it is not part of the arm&apos;s model and is left out</source>
+        <translation>%1 包含 %2 上的负载；它不属于机械臂模型，已略去</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1: only for a parameter file of robot.model &quot;urdf&quot; given as the arm; %2 is a URDF or a built-in robot</source>
+        <translation>%1：仅用于作为机械臂给出的、robot.model 为“urdf”的参数文件；%2 是 URDF 或内置机器人</translation>
+    </message>
+</context>
+<context>
     <name>PayloadEstimate</name>
     <message>
         <location filename="../core/identify/PayloadEstimate.cpp" line="+61"/>
@@ -2130,6 +2199,19 @@
         <location line="+70"/>
         <source>no direction determined: the prior</source>
         <translation>没有确定的方向：采用先验</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadExport</name>
+    <message>
+        <location filename="../core/service/PayloadExport.cpp" line="+50"/>
+        <source>%1 (%2) with a payload on %3 identified from the logs %4</source>
+        <translation>%1（%2），%3 上的负载由日志 %4 辨识</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
+        <translation>参数文件记录的控制器增益适用于 %1 个关节，机器人有 %2 个</translation>
     </message>
 </context>
 <context>
@@ -3487,6 +3569,21 @@
         <source>%1: line %2, column %3: not XML: %4</source>
         <translation>%1：第 %2 行第 %3 列：不是 XML：%4</translation>
     </message>
+    <message>
+        <location filename="../core/io/UrdfPayload.cpp" line="+97"/>
+        <source>%1: the payload on link &quot;%2&quot; is not a real body (mass %3 kg)</source>
+        <translation>%1：连杆“%2”上的负载不是真实刚体（质量 %3 kg）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: no closing &lt;/robot&gt; to add the payload before</source>
+        <translation>%1：没有可在其前添加负载的结束标记 &lt;/robot&gt;</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: the URDF with the payload reads back with another body at link &quot;%2&quot; than was written</source>
+        <translation>%1：带负载的 URDF 读回后，连杆“%2”处的刚体与写入的不同</translation>
+    </message>
 </context>
 <context>
     <name>UrdfExtension</name>
@@ -3655,7 +3752,7 @@
         <translation>--robot：&apos;%1&apos; 既不是 URDF 文件，也不是内置机器人（%2）</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+58"/>
         <source>robot %1: %2, %3 moving joints</source>
         <translation>机器人 %1：%2，%3 个可动关节</translation>
     </message>
@@ -3672,12 +3769,12 @@
         </translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+49"/>
         <source>identified by learnid-cli %1 identify on %2</source>
         <translation>由 learnid-cli %1 identify 于 %2 辨识</translation>
     </message>
     <message>
-        <location line="-79"/>
+        <location line="-99"/>
         <source>%1: torque predicted and measured</source>
         <translation>%1：预测力矩与测量力矩</translation>
     </message>
@@ -3687,10 +3784,10 @@
         <translation>learnid：根据日志辨识 %1</translation>
     </message>
     <message>
-        <location line="+75"/>
-        <location line="+16"/>
+        <location line="+66"/>
+        <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+184"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+203"/>
         <location filename="../app/cli/RunCommand.cpp" line="+105"/>
         <location line="+9"/>
         <location line="+6"/>
@@ -3835,7 +3932,7 @@
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+218"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+214"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -4161,8 +4258,8 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已写入 %1（会话提前结束）</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyCommand.cpp" line="-82"/>
-        <location line="+81"/>
+        <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
+        <location line="+93"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4222,7 +4319,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-173"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-169"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms：未知项 &apos;%1&apos;；可用的项为 armature、viscous、coulomb 和 offset，或 none</translation>
     </message>
@@ -4252,12 +4349,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--urdf-out：%1 已是 --export 的写入位置</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--%1: a payload&apos;s result is not exported yet; leave it out</source>
-        <translation>--%1：负载结果暂不支持导出；请省略该选项</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>A built-in URDF robot (e.g. double-pendulum) or a URDF file.</source>
         <translation>内置 URDF 机器人（例如 double-pendulum）或 URDF 文件。</translation>
     </message>
@@ -4556,7 +4648,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：错误：--robot %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-138"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-156"/>
         <source>value</source>
         <translation>量</translation>
     </message>
@@ -4591,14 +4683,29 @@ stdout, and the next plan uses the new estimate.
         <translation>先验（未辨识）</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
+        <source>%1 on %2</source>
+        <translation>%1（基于 %2）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Payload on %1 of %2; the arm&apos;s model (%3) held fixed.
 </source>
         <translation>%2 的 %1 上的负载；机械臂模型（%3）保持固定。
 </translation>
     </message>
+    <message>
+        <location line="+4"/>
+        <source>Warning: the arm&apos;s model is %1 as given (its CAD values), not one identified earlier: its errors go into the payload&apos;s estimate. Identify the arm first (identify --export or --urdf-out, without the payload) and give that file as --robot.</source>
+        <translation>警告：机械臂模型是原样给出的 %1（其 CAD 值），而不是先前辨识的模型：其误差会进入负载估计。请先辨识机械臂（identify --export 或 --urdf-out，不带负载），再将该文件作为 --robot 给出。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Note: %1</source>
+        <translation>注意：%1</translation>
+    </message>
     <message numerus="yes">
-        <location line="+3"/>
+        <location line="+1"/>
         <source>Fitted to %n log(s), %1 samples: %2 of 10 directions determined (condition %3).
 </source>
         <translation>
@@ -4640,7 +4747,7 @@ stdout, and the next plan uses the new estimate.
         <translation>各关节在日志上的力矩残差 [N m]：</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>learnid-cli: fitting the payload to %1</source>
         <translation>learnid-cli：正在将负载拟合到 %1</translation>
     </message>
@@ -4662,12 +4769,12 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid：根据日志辨识的 %1 上的负载</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadOptions.cpp" line="+39"/>
-        <source>Identify only a payload fixed to the arm, the --robot URDF held fixed as the arm&apos;s model; needs --payload-mass.</source>
-        <translation>仅辨识固定在机械臂上的负载，--robot 的 URDF 作为机械臂模型保持固定；需要 --payload-mass。</translation>
+        <location filename="../app/cli/PayloadOptions.cpp" line="+40"/>
+        <source>Identify only a payload fixed to the arm, the --robot URDF or parameter file held fixed as the arm&apos;s model; needs --payload-mass.</source>
+        <translation>仅辨识固定在机械臂上的负载，--robot 的 URDF 或参数文件作为机械臂模型保持不变；需要 --payload-mass。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>The link the payload is fixed to; default: the tip link.</source>
         <translation>负载所固定的连杆；默认：末端连杆。</translation>
     </message>
@@ -4697,6 +4804,11 @@ stdout, and the next plan uses the new estimate.
         <translation>或位于连杆坐标系中的此长方体内 [m]，代替球。</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>With --payload and a --robot parameter file of a URDF robot: the URDF the arm was identified on.</source>
+        <translation>与 --payload 及 URDF 机器人的 --robot 参数文件一起使用：辨识机械臂时所用的 URDF。</translation>
+    </message>
+    <message>
         <location line="+30"/>
         <source>--%1: needs --payload</source>
         <translation>--%1：需要 --payload</translation>
@@ -4712,7 +4824,7 @@ stdout, and the next plan uses the new estimate.
         <translation>--payload-box：请给出包围长方体或 --payload-radius，不要同时给出</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
         <translation>--payload-mass：必须是千克数，收到“%1”</translation>
     </message>

@@ -48,19 +48,6 @@ LogRobot loadRobot(const LogIdentificationRequest &request)
     return loadLogRobot(request);
 }
 
-// The parameter file records the gains the data were recorded with when --scenario names them;
-// logs do not say, so without it the file holds the model alone.
-std::optional<ControllerSettings> exportController(const IdentifyOptions &o, int joints)
-{
-    if (o.scenarioPath.isEmpty())
-        return std::nullopt;
-    const Scenario scenario = readScenarioFile(o.scenarioPath);
-    validateControllerSettings(
-        scenario.controller, joints,
-        QStringLiteral("%1: controller").arg(QDir::toNativeSeparators(o.scenarioPath)));
-    return scenario.controller;
-}
-
 // --plots DIR: DIR/<log name>-torque.png per validation log; --report FILE: the text and the
 // plots as PDF. Images need the QGuiApplication main() makes for them (imagesWanted()).
 QList<QPair<QString, QByteArray>>
@@ -111,11 +98,7 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
         const LogIdentificationRequest request = identificationRequest(o);
         const LogRobot robot = loadRobot(request);
         const ChainModel &model = *robot.model;
-        LogExportRequest exports;
-        if (!o.exportPath.isEmpty()) {
-            exports.parameterPath = o.exportPath;
-            exports.controller = exportController(o, model.dof());
-        }
+        const LogExportRequest exports = identifyExportRequest(o, model.dof());
         progress(QCoreApplication::translate("learnid-cli", "robot %1: %2, %3 moving joints")
                      .arg(logRobotName(robot), robot.source)
                      .arg(model.dof()));
@@ -154,11 +137,6 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
         out.flush();
         files += plotFiles(o, result, text);
 
-        exports.urdfPath = o.urdfPath;
-        exports.urdfComment = QCoreApplication::translate(
-                                  "learnid-cli", "identified by learnid-cli %1 identify on %2")
-                                  .arg(QStringLiteral(LEARNID_VERSION),
-                                       QDateTime::currentDateTimeUtc().toString(Qt::ISODate));
         files += logExportFiles(result, exports);
     } catch (const Error &e) {
         out.flush();
@@ -167,6 +145,27 @@ ExitCode identifyCommand(const IdentifyOptions &o, QTextStream &out, QTextStream
         return ExitBadInput;
     }
     return writeIdentifyFiles(o, files, err);
+}
+
+LogExportRequest identifyExportRequest(const IdentifyOptions &o, int joints)
+{
+    LogExportRequest exports;
+    exports.parameterPath = o.exportPath;
+    exports.urdfPath = o.urdfPath;
+    // The parameter file records the gains the data were recorded with when --scenario names
+    // them; logs do not say, so without it the file holds the model alone.
+    if (!o.exportPath.isEmpty() && !o.scenarioPath.isEmpty()) {
+        const Scenario scenario = readScenarioFile(o.scenarioPath);
+        validateControllerSettings(
+            scenario.controller, joints,
+            QStringLiteral("%1: controller").arg(QDir::toNativeSeparators(o.scenarioPath)));
+        exports.controller = scenario.controller;
+    }
+    exports.urdfComment =
+        QCoreApplication::translate("learnid-cli", "identified by learnid-cli %1 identify on %2")
+            .arg(QStringLiteral(LEARNID_VERSION),
+                 QDateTime::currentDateTimeUtc().toString(Qt::ISODate));
+    return exports;
 }
 
 ExitCode writeIdentifyFiles(const IdentifyOptions &o,

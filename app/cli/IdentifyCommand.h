@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cli/CliOptions.h"
+#include "service/LogIdentification.h"
 
 #include <QTextStream>
 
@@ -17,5 +18,11 @@ ExitCode identifyCommand(const IdentifyOptions &options, QTextStream &out, QText
 /// payload's identification.
 ExitCode writeIdentifyFiles(const IdentifyOptions &options,
                             const QList<QPair<QString, QByteArray>> &files, QTextStream &err);
+
+/// What --export and --urdf-out ask identify to write (no files when neither is given): the
+/// paths, the --scenario's controller gains for `joints` joints (read and checked; none without
+/// --scenario: logs do not say which gains recorded them) and the URDF's comment (tool version,
+/// date). Shared by the arm's and the payload's identification; throws Error naming the file.
+LogExportRequest identifyExportRequest(const IdentifyOptions &options, int joints);
 
 } // namespace learnid::cli

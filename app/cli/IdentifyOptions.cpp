@@ -120,10 +120,6 @@ QString readValues(const QCommandLineParser &parser, IdentifyOptions *o)
     const QString payload = readPayloadOptions(parser, &o->payload);
     if (!payload.isEmpty())
         return payload;
-    if (o->payload && (isSet("export") || isSet("urdf-out")))
-        return QCoreApplication::translate(
-                   "learnid-cli", "--%1: a payload's result is not exported yet; leave it out")
-            .arg(QLatin1String(isSet("export") ? "export" : "urdf-out"));
     return {};
 }
 

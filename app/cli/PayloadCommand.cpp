@@ -8,6 +8,7 @@
 #include "io/AtomicFile.h"
 #include "model/Error.h"
 #include "service/LogIdentificationSummary.h"
+#include "service/PayloadExport.h"
 #include "service/PayloadIdentification.h"
 
 #include <QCoreApplication>
@@ -69,9 +70,24 @@ QString payloadText(const PayloadIdentificationResult &r, const QString &bound)
 {
     const PayloadEstimate &e = r.fit.estimate;
     const PayloadObservability &o = e.observability;
+    const LogRobot &robot = r.arm.robot;
+    const QString armSource = r.arm.parameterFile.isEmpty()
+                                  ? robot.source
+                                  : QCoreApplication::translate("learnid-cli", "%1 on %2")
+                                        .arg(r.arm.parameterFile, robot.source);
     QString t = QCoreApplication::translate(
                     "learnid-cli", "Payload on %1 of %2; the arm's model (%3) held fixed.\n")
-                    .arg(r.model->link(), logRobotName(r.robot), r.robot.source);
+                    .arg(r.model->link(), logRobotName(robot), armSource);
+    if (!r.arm.identified)
+        t += wrapText(QCoreApplication::translate(
+                          "learnid-cli",
+                          "Warning: the arm's model is %1 as given (its CAD values), not one "
+                          "identified earlier: its errors go into the payload's estimate. "
+                          "Identify the arm first (identify --export or --urdf-out, without the "
+                          "payload) and give that file as --robot.")
+                          .arg(robot.source));
+    for (const QString &note : r.arm.notes)
+        t += wrapText(QCoreApplication::translate("learnid-cli", "Note: %1").arg(note));
     t += QCoreApplication::translate("learnid-cli",
                                      "Fitted to %n log(s), %1 samples: %2 of 10 "
                                      "directions determined (condition %3).\n",
@@ -130,6 +146,8 @@ ExitCode payloadIdentifyCommand(const IdentifyOptions &o, QTextStream &out, QTex
         PayloadIdentificationRequest request;
         request.logs = logRequest(o);
         request.link = o.payload->link;
+        request.armUrdf = o.payload->armUrdf;
+        request.armUrdfName = QStringLiteral("--arm-urdf");
         request.prior = o.payload->prior;
         request.fit.estimate.priorShare = o.fit.priorShare;
         if (!o.quiet)
@@ -147,13 +165,13 @@ ExitCode payloadIdentifyCommand(const IdentifyOptions &o, QTextStream &out, QTex
                         "On the --validate logs: \"URDF as given\" is the arm without the payload, "
                         "\"identified\" the arm with it.\n");
         for (const LogValidation &v : r.validation)
-            text += QLatin1Char('\n') + validationTable(*r.robot.model, v.source,
+            text += QLatin1Char('\n') + validationTable(*r.arm.robot.model, v.source,
                                                         static_cast<long long>(v.samples()),
                                                         v.given, v.identified);
         out << text;
         out.flush();
         QStringList names;
-        for (const ChainJoint &j : r.robot.chain.joints)
+        for (const ChainJoint &j : r.arm.robot.chain.joints)
             names << j.name;
         QList<QByteArray> pngs;
         for (const LogValidation &v : r.validation) {
@@ -179,6 +197,7 @@ ExitCode payloadIdentifyCommand(const IdentifyOptions &o, QTextStream &out, QTex
                                        "learnid-cli", "learnid: payload on %1 identified from logs")
                                        .arg(r.model->link()),
                                    text, pngs)});
+        files += payloadExportFiles(r, identifyExportRequest(o, r.arm.robot.model->dof()));
     } catch (const Error &e) {
         out.flush();
         err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(e.message())

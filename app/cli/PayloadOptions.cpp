@@ -28,7 +28,8 @@ std::optional<std::vector<double>> numbers(const QString &text, int count)
 }
 
 const char *const payloadOptions[] = {"payload-link",    "payload-mass",   "payload-com",
-                                      "payload-inertia", "payload-radius", "payload-box"};
+                                      "payload-inertia", "payload-radius", "payload-box",
+                                      "arm-urdf"};
 
 } // namespace
 
@@ -38,7 +39,8 @@ QList<QCommandLineOption> payloadCliOptions()
         cliOption("payload",
                   QT_TRANSLATE_NOOP("learnid-cli",
                                     "Identify only a payload fixed to the arm, the --robot URDF "
-                                    "held fixed as the arm's model; needs --payload-mass.")),
+                                    "or parameter file held fixed as the arm's model; needs "
+                                    "--payload-mass.")),
         cliOption("payload-link",
                   QT_TRANSLATE_NOOP("learnid-cli",
                                     "The link the payload is fixed to; default: the tip link."),
@@ -66,6 +68,11 @@ QList<QCommandLineOption> payloadCliOptions()
                                     "Or within this box in the link frame [m], instead of the "
                                     "sphere."),
                   "X0,Y0,Z0,X1,Y1,Z1"),
+        cliOption("arm-urdf",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "With --payload and a --robot parameter file of a URDF robot: "
+                                    "the URDF the arm was identified on."),
+                  "FILE"),
     };
 }
 
@@ -106,6 +113,7 @@ QString readPayloadOptions(const QCommandLineParser &parser, std::optional<Paylo
             "--payload-box: give either a bounding box or --payload-radius, not both");
     PayloadOptions o;
     o.link = value("payload-link");
+    o.armUrdf = value("arm-urdf");
     bool ok = false;
     o.prior.mass = value("payload-mass").trimmed().toDouble(&ok);
     if (!ok)

@@ -15,6 +15,8 @@ namespace learnid::cli {
 struct PayloadOptions
 {
     QString link; ///< --payload-link; empty: the tip link
+    /// --arm-urdf: the URDF a --robot parameter file of robot.model "urdf" was identified on
+    QString armUrdf;
     PayloadPrior prior;
 };
 

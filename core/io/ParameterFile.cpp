@@ -139,9 +139,10 @@ JsonTree contentTree(const ParameterFileContent &c)
         .insert(key("controller"), c.hasController ? controllerTree(c.controller) : JsonTree())
         .insert(key("identification"), identification)
         .insert(key("parameters"), parameters)
-        .insert(key("standardParameters"), standardTree(c))
-        .insert(key("quality"), quality)
-        .insert(key("canWrites"), writes);
+        .insert(key("standardParameters"), standardTree(c));
+    if (c.payload)
+        root.insert(key("payload"), payloadSectionTree(*c.payload));
+    root.insert(key("quality"), quality).insert(key("canWrites"), writes);
     return root;
 }
 
@@ -300,8 +301,11 @@ ParameterFileContent readContent(const QJsonObject &root, bool version1)
     identification.rejectUnknownKeys();
 
     readParameters(r.require(key("parameters")), key("parameters"), c);
-    if (!version1)
+    if (!version1) {
         readStandard(r.require(key("standardParameters")), key("standardParameters"), c);
+        if (auto payload = r.optionalObject(key("payload"))) // version 1 refuses it as unknown
+            c.payload = readPayloadSection(*payload);
+    }
 
     JsonObjectReader q = r.object(key("quality"));
     const auto figures = [&q](const char *name) {

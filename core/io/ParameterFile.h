@@ -1,6 +1,7 @@
 #pragma once
 
 #include "can/SdoWrite.h"
+#include "io/ParameterFilePayload.h"
 
 #include "model/RobotModel.h"
 #include "types/ControllerSettings.h"
@@ -12,6 +13,7 @@
 #include <QJsonObject>
 #include <QList>
 #include <QString>
+#include <optional>
 #include <vector>
 
 namespace learnid {
@@ -58,6 +60,9 @@ struct ParameterFileContent
     /// 0.5: determined by the data, below: kept from the prior); NaN where not known. Empty:
     /// not known for any.
     std::vector<double> standardDetermined;
+    /// A payload fixed to a link of the arm, not part of the arm's parameters above (version 2,
+    /// optional; ParameterFilePayload.h); none: the file holds the arm alone.
+    std::optional<ParameterFilePayload> payload;
 
     /// jointNodes, or 1..n when it is empty.
     QList<int> nodes() const;

@@ -164,6 +164,8 @@ void validateParameterFileContent(const ParameterFileContent &c)
     }
 
     validateStandard(c);
+    if (c.payload)
+        validatePayloadSection(*c.payload, c.robotModel);
 
     checkOptionalVector(key("quality.maxTrackingErrorDeg"), c.maxTrackingErrorDeg, n, perJoint);
     checkOptionalVector(key("quality.rmsTrackingErrorDeg"), c.rmsTrackingErrorDeg, n, perJoint);

@@ -32,18 +32,18 @@ PayloadIdentificationResult identifyPayloadFromLogs(const PayloadIdentificationR
                                                 "no log to identify the payload from"));
     }
     PayloadIdentificationResult r;
-    r.robot = loadLogRobot(request.logs);
+    r.arm = loadPayloadArm(request.logs, request.armUrdf, request.armUrdfName);
+    const LogRobot &robot = r.arm.robot;
     try {
-        r.model = std::make_shared<const PayloadModel>(r.robot.model, r.robot.model->cadStandard(),
-                                                       request.link);
+        r.model = std::make_shared<const PayloadModel>(robot.model, r.arm.standard, request.link);
     } catch (const Error &e) {
         throw Error(QStringLiteral("%1: %2").arg(names.link, e.message()));
     }
     std::vector<FilteredLog> training, validation;
     for (const QString &path : request.logs.trainingLogs)
-        training.push_back(readLog(path, *r.robot.model, request.logs, r.readings));
+        training.push_back(readLog(path, *robot.model, request.logs, r.readings));
     for (const QString &path : request.logs.validationLogs)
-        validation.push_back(readLog(path, *r.robot.model, request.logs, r.readings));
+        validation.push_back(readLog(path, *robot.model, request.logs, r.readings));
     r.trainingLogs = request.logs.trainingLogs;
     r.fit = fitPayload(*r.model, training, request.prior, request.fit);
     for (const FilteredLog &log : validation) {

@@ -4,6 +4,7 @@
 #include "model/Payload.h"
 #include "model/PayloadPrior.h"
 #include "service/LogIdentification.h"
+#include "service/PayloadArm.h"
 
 #include <QString>
 #include <memory>
@@ -12,13 +13,16 @@
 namespace learnid {
 
 /// A payload to identify from recorded logs with the arm's model held fixed (`learnid-cli
-/// identify --payload`, docs/payload.md). The arm is request.robot (a URDF, e.g. the one an
-/// earlier identification exported, or a built-in robot) with its joint terms; the logs, their
-/// columns, filter and resampling as for the arm's own identification.
+/// identify --payload`, docs/payload.md). The arm is logs.robot (loadPayloadArm(): a URDF, e.g.
+/// the one an earlier identification exported, a built-in robot, or a parameter file an earlier
+/// identification exported); the logs, their columns, filter and resampling as for the arm's
+/// own identification.
 struct PayloadIdentificationRequest
 {
     LogIdentificationRequest logs; ///< fit settings other than the filter are not used
-    QString link;                  ///< the link the payload is fixed to; empty: the tip
+    QString armUrdf; ///< the URDF of a parameter file of robot.model "urdf"; else empty
+    QString armUrdfName = QStringLiteral("the arm's URDF"); ///< armUrdf in messages
+    QString link; ///< the link the payload is fixed to; empty: the tip
     PayloadPrior prior;
     PayloadFitSettings fit;
 };
@@ -26,7 +30,7 @@ struct PayloadIdentificationRequest
 /// What a payload identification produced; nothing is written.
 struct PayloadIdentificationResult
 {
-    LogRobot robot;
+    PayloadArm arm; ///< the arm's model held fixed, and where it came from
     std::shared_ptr<const PayloadModel> model;
     QStringList trainingLogs;
     PayloadFit fit;
@@ -36,7 +40,7 @@ struct PayloadIdentificationResult
     std::vector<LogReading> readings; ///< the training logs, then the validation logs
 };
 
-/// Reads the robot (loadLogRobot), checks the prior (validatePayloadPrior with `names`) and
+/// Reads the arm (loadPayloadArm), checks the prior (validatePayloadPrior with `names`) and
 /// the link (payloadJointOf), reads, resamples and filters every log as identifyFromLogs()
 /// does, fits the payload (fitPayload) and predicts the validation logs. Throws Error naming
 /// the file, option or field at fault.

@@ -6,9 +6,9 @@
 // only about the vertical wrist axis reports m cz and the inertia as not identified and keeps
 // the prior there; bad input is refused naming the option, and nothing is written.
 
-#include "../identify/PayloadPaths.h"
 #include "../support/SharedData.h"
 #include "../support/ToolRun.h"
+#include "PayloadLogs.h"
 #include "model/Payload.h"
 
 #include <QDir>
@@ -19,55 +19,12 @@
 #include <random>
 
 using namespace learnid;
+using learnid::test::payloadLog;
+using learnid::test::truePayload;
 
 namespace {
 
 const QString cli = QStringLiteral(LEARNID_CLI_PATH);
-
-PayloadBody truePayload()
-{
-    PayloadBody b;
-    b.mass = 3.0;
-    b.com = Eigen::Vector3d(0.05, 0.0, 0.08);
-    b.inertiaAtCom << 0.012, 0.001, 0.0, 0.001, 0.011, 0.0, 0.0, 0.0, 0.006;
-    return b;
-}
-
-// The log of the arm carrying the payload along path, as CSV (t, q, dq, tau).
-QByteArray payloadLog(const PayloadModel &model, const test::JointPath &path, unsigned seed)
-{
-    std::mt19937 random(seed);
-    std::normal_distribution<double> normal(0.0, 1.0);
-    const int n = model.dof();
-    const double count = 2.0 * M_PI / double(1 << 20);
-    const InertialParameters payload = truePayload().parameters();
-    QByteArray csv = "t";
-    for (const char *name : {"q", "dq", "tau"})
-        for (int j = 1; j <= n; ++j)
-            csv += ',' + QByteArray(name) + QByteArray::number(j);
-    csv += '\n';
-    for (Eigen::Index k = 0; k < path.q.cols(); ++k) {
-        const Eigen::VectorXd tau =
-            model.torqueAt(path.q.col(k), path.qd.col(k), path.qdd.col(k), payload);
-        QByteArray row = QByteArray::number(double(k) * path.period, 'g', 17);
-        for (int j = 0; j < n; ++j)
-            row += ',' + QByteArray::number(std::round(path.q(j, k) / count) * count, 'g', 17);
-        for (int j = 0; j < n; ++j)
-            row += ',' + QByteArray::number(path.qd(j, k), 'g', 17);
-        for (int j = 0; j < n; ++j) {
-            const double limit = model.arm().chain().joints[size_t(j)].effortLimit;
-            row += ',' + QByteArray::number(tau[j] + 0.01 * limit * normal(random), 'g', 17);
-        }
-        csv += row + '\n';
-    }
-    return csv;
-}
-
-bool write(const QString &path, const QByteArray &data)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly) && f.write(data) == data.size();
-}
 
 // The estimate on the table row whose name starts the line ("m [kg]", "cx [m]").
 double tableValue(const QString &out, const QString &name)
@@ -116,9 +73,9 @@ void TestCliPayload::initTestCase()
     m_rich = m_dir.filePath(QStringLiteral("rich.csv"));
     m_check = m_dir.filePath(QStringLiteral("check.csv"));
     m_vertical = m_dir.filePath(QStringLiteral("vertical.csv"));
-    QVERIFY(write(m_rich, payloadLog(model, test::richPath(*arm, 5.0), 1)));
-    QVERIFY(write(m_check, payloadLog(model, test::richPath(*arm, 4.0), 2)));
-    QVERIFY(write(m_vertical, payloadLog(model, test::wristTurnPath(*arm, 5.0), 3)));
+    QVERIFY(test::writeFile(m_rich, payloadLog(model, test::richPath(*arm, 5.0), 1)));
+    QVERIFY(test::writeFile(m_check, payloadLog(model, test::richPath(*arm, 4.0), 2)));
+    QVERIFY(test::writeFile(m_vertical, payloadLog(model, test::wristTurnPath(*arm, 5.0), 3)));
 }
 
 void TestCliPayload::wristTurningPath_massWithinOnePercentAndComWithinThreeMillimetres()
@@ -206,8 +163,11 @@ void TestCliPayload::badInput_namesTheOptionAndWritesNothing_data()
                              << QStringLiteral("--payload: needs --payload-mass");
     QTest::newRow("no --payload") << l({"--payload-mass", "3"})
                                   << QStringLiteral("--payload-mass: needs --payload");
-    QTest::newRow("export") << l({"--payload", "--payload-mass", "3", "--export", "p.json"})
-                            << QStringLiteral("--export: a payload's result is not exported yet");
+    QTest::newRow("arm urdf without payload")
+        << l({"--arm-urdf", "arm.urdf"}) << QStringLiteral("--arm-urdf: needs --payload");
+    QTest::newRow("arm urdf for a urdf")
+        << l({"--payload", "--payload-mass", "3", "--arm-urdf", "arm.urdf", "--export", "p.json"})
+        << QStringLiteral("--arm-urdf: only for a parameter file");
 }
 
 void TestCliPayload::badInput_namesTheOptionAndWritesNothing()

@@ -1,0 +1,121 @@
+// The exports of a payload identification (PayloadExport.h): the arm's model held fixed plus the
+// payload, as a parameter file and as a URDF.
+#include "service/PayloadExport.h"
+
+#include "can/ManufacturerObjects.h"
+#include "io/UrdfPayload.h"
+#include "model/Error.h"
+#include "service/SessionExport.h"
+#include "service/StandardExport.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFileInfo>
+#include <cmath>
+#include <limits>
+
+namespace learnid {
+
+ParameterFilePayload payloadSection(const PayloadEstimate &e, const QString &link)
+{
+    ParameterFilePayload p;
+    p.link = link;
+    p.mass = e.body.mass;
+    p.com = e.body.com;
+    const Eigen::Matrix3d &i = e.body.inertiaAtCom;
+    p.inertiaAtCom = {i(0, 0), i(0, 1), i(1, 1), i(0, 2), i(1, 2), i(2, 2)};
+    for (size_t k = 0; k < 10; ++k) {
+        p.identified[k] = e.bodyIdentified[k];
+        const double error = e.bodyStandardError[k];
+        p.standardUncertainty[k] = p.identified[k] && std::isfinite(error)
+                                       ? error
+                                       : std::numeric_limits<double>::quiet_NaN();
+    }
+    return p;
+}
+
+ParameterFileContent payloadParameterFile(const PayloadIdentificationResult &r,
+                                          const std::optional<ControllerSettings> &controller)
+{
+    QStringList logs;
+    for (const QString &log : r.trainingLogs)
+        logs << QFileInfo(log).fileName();
+    const ChainModel &model = *r.arm.robot.model;
+    ParameterFileContent c;
+    c.robotModel = r.arm.robot.modelId;
+    const QString arm = r.arm.parameterFile.isEmpty()
+                            ? r.arm.robot.source
+                            : QStringLiteral("%1, %2").arg(r.arm.robot.source, r.arm.parameterFile);
+    c.robotDescription =
+        QCoreApplication::translate("PayloadExport",
+                                    "%1 (%2) with a payload on %3 identified from the logs %4")
+            .arg(r.arm.robot.chain.name, arm, r.model->link(), logs.join(QStringLiteral(", ")));
+    c.hasController = controller.has_value();
+    if (controller)
+        c.controller = *controller;
+    for (int j = 0; j < model.dof(); ++j)
+        c.jointNodes.append(j + 1);
+    c.created = QDateTime::currentDateTimeUtc();
+    c.toolVersion = QStringLiteral(LEARNID_VERSION);
+    c.law = QStringLiteral("improved"); // its zero-phase filter F(s) prepares the logs
+    c.parameters = model.parameters();
+    c.values = model.baseFromStandard(r.arm.standard);
+    c.residualRms = r.fit.trainingRms;
+    const PayloadObservability &o = r.fit.estimate.observability;
+    c.condition = o.rank > 0 ? o.condition : std::numeric_limits<double>::infinity();
+    c.rank = o.rank;
+    c.canWrites = objects::parameterWriteSequence(c.nodes(), c.values);
+    setStandardParameters(c, model, r.arm.standard, r.arm.determined);
+    c.payload = payloadSection(r.fit.estimate, r.model->link());
+    return c;
+}
+
+QByteArray payloadIdentifiedUrdf(const PayloadIdentificationResult &r, const QString &comment)
+{
+    const LogRobot &robot = r.arm.robot;
+    // A parameter file's values are not in the URDF yet; a URDF's own are the arm's.
+    const QByteArray arm = r.arm.parameterFile.isEmpty()
+                               ? robot.urdf
+                               : urdfWithStandard(*robot.model, robot.urdf, robot.source,
+                                                  r.arm.standard, comment, r.arm.determined);
+    const PayloadEstimate &e = r.fit.estimate;
+    QStringList kept;
+    const QStringList names = PayloadEstimate::bodyNames();
+    for (int i = 0; i < 10; ++i)
+        if (!e.bodyIdentified[size_t(i)])
+            kept << names[i];
+    // English, as the file's other comments (UrdfExport.cpp).
+    QString note = QStringLiteral("The payload on %1, estimated by learnid from logs with the "
+                                  "arm's model held fixed")
+                       .arg(r.model->link());
+    if (!comment.isEmpty())
+        note += QStringLiteral(" (%1)").arg(comment);
+    note += kept.isEmpty() ? QStringLiteral(": all its values from the logs.")
+                           : QStringLiteral(": %1 kept at the prior (not seen in the logs).")
+                                 .arg(kept.join(QStringLiteral(", ")));
+    return urdfWithPayload(arm, robot.source, robot.chain, r.model->link(), e.parameters, note);
+}
+
+QList<QPair<QString, QByteArray>> payloadExportFiles(const PayloadIdentificationResult &r,
+                                                     const LogExportRequest &request)
+{
+    QList<QPair<QString, QByteArray>> files;
+    const int dof = r.arm.robot.model->dof();
+    if (!request.parameterPath.isEmpty()) {
+        if (request.controller && request.controller->dof() != dof) {
+            throw Error(QCoreApplication::translate("PayloadExport",
+                                                    "the controller gains the parameter file "
+                                                    "records are for %1 joints, the robot has %2")
+                            .arg(request.controller->dof())
+                            .arg(dof));
+        }
+        const ParameterFileContent content = payloadParameterFile(r, request.controller);
+        files.append({request.parameterPath, parameterFileToJson(content)});
+        files.append({dcfPathFor(request.parameterPath), parameterDcfFragment(content)});
+    }
+    if (!request.urdfPath.isEmpty())
+        files.append({request.urdfPath, payloadIdentifiedUrdf(r, request.urdfComment)});
+    return files;
+}
+
+} // namespace learnid
