@@ -3,6 +3,7 @@
 #include "identify/FilteringEstimator.h"
 #include "model/Error.h"
 
+#include <Eigen/QR>
 #include <QCoreApplication>
 #include <cmath>
 
@@ -41,9 +42,10 @@ std::vector<Eigen::MatrixXd> jointRows(const PayloadModel &model,
     return rows;
 }
 
-// The rows of all joints stacked, joint j's multiplied by weights[j].
+// The rows of all joints stacked, joint j's multiplied by weights[j], then projected off the
+// unseen directions U: A (E - U U^+), so that A U = 0.
 void stack(const std::vector<Eigen::MatrixXd> &rows, const Eigen::VectorXd &weights,
-           Eigen::MatrixXd &a, Eigen::VectorXd &b)
+           const Eigen::MatrixXd &unseen, Eigen::MatrixXd &a, Eigen::VectorXd &b)
 {
     const Eigen::Index per = rows.front().rows();
     a.resize(per * Eigen::Index(rows.size()), 10);
@@ -51,6 +53,10 @@ void stack(const std::vector<Eigen::MatrixXd> &rows, const Eigen::VectorXd &weig
     for (size_t j = 0; j < rows.size(); ++j) {
         a.middleRows(Eigen::Index(j) * per, per) = weights[Eigen::Index(j)] * rows[j].leftCols(10);
         b.segment(Eigen::Index(j) * per, per) = weights[Eigen::Index(j)] * rows[j].col(10);
+    }
+    if (unseen.cols() > 0) {
+        const Eigen::MatrixXd pinv = unseen.completeOrthogonalDecomposition().pseudoInverse();
+        a -= (a * unseen) * pinv;
     }
 }
 
@@ -106,14 +112,14 @@ PayloadFit fitPayload(const PayloadModel &model, const std::vector<FilteredLog> 
 
     Eigen::MatrixXd a;
     Eigen::VectorXd b;
-    stack(rows, Eigen::VectorXd::Ones(n), a, b);
+    stack(rows, Eigen::VectorXd::Ones(n), settings.unseen, a, b);
     PayloadEstimateSettings firstPass = estimateSettings;
     firstPass.plausible = !settings.weighted;
     fit.estimate = estimatePayload(a, b, prior, firstPass);
     fit.jointNoise = residualRms(rows, fit.estimate.leastSquares);
     if (settings.weighted) {
         const double floor = 1e-6 * fit.jointNoise.maxCoeff() + 1e-300;
-        stack(rows, fit.jointNoise.cwiseMax(floor).cwiseInverse(), a, b);
+        stack(rows, fit.jointNoise.cwiseMax(floor).cwiseInverse(), settings.unseen, a, b);
         fit.estimate = estimatePayload(a, b, prior, estimateSettings);
     }
     fit.trainingRms = residualRms(rows, fit.estimate.parameters);

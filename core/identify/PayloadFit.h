@@ -16,6 +16,11 @@ struct PayloadFitSettings
     /// Weigh each joint's rows by the inverse RMS of its residual after a first, unweighted fit
     /// (as LogFitSettings::weighted).
     bool weighted = true;
+    /// Directions (10 x k, the parameters' units) the fit must not learn, e.g. those the
+    /// planned paths do not observe (PayloadObservability::unseen): the rows are projected off
+    /// them, so they keep the prior and are reported as not identified however the measured
+    /// motion strayed from the plan. Empty: the rows alone decide.
+    Eigen::MatrixXd unseen;
 };
 
 /// The payload fitted to logs on top of the fixed arm.

@@ -4,6 +4,7 @@
 #include "io/JsonReader.h"
 #include "io/JsonTree.h"
 #include "io/ScenarioChain.h"
+#include "io/ScenarioPayload.h"
 #include "model/Error.h"
 #include "model/ModelFactory.h"
 
@@ -112,6 +113,8 @@ void readSimulation(JsonObjectReader r, Scenario &s)
         sim.linkSideEncoder = jsonEnum(side, r.keyPath(key("encoderSide")), encoderSides);
     r.read(key("torqueSensorOffset"), sim.torqueSensorOffset);
     r.read(key("torqueSensorLag"), sim.torqueSensorLag);
+    if (auto payload = r.optionalObject(key("payload")))
+        readSimulatedPayload(*payload, sim.payload);
     r.rejectUnknownKeys();
 }
 
@@ -143,6 +146,8 @@ Scenario readScenario(const QJsonObject &root)
         readController(*section, s.controller);
     if (auto section = r.optionalObject(key("estimator")))
         readEstimator(*section, s);
+    if (auto section = r.optionalObject(key("payload")))
+        readPayloadSection(*section, s.payload);
     if (auto section = r.optionalObject(key("simulation")))
         readSimulation(*section, s);
     if (auto section = r.optionalObject(key("safety")))
@@ -250,6 +255,8 @@ QByteArray scenarioToJson(const Scenario &s)
             .insert(key("inertiaPerturbation"), s.simulation.inertiaPerturbation);
     }
     insertJointRealism(simulation, s.simulation);
+    if (s.simulation.payload.present)
+        simulation.insert(key("payload"), simulatedPayloadJson(s.simulation.payload));
     JsonTree safety = JsonTree::object();
     safety.insert(key("maxTrackingErrorDeg"), s.maxTrackingErrorDeg)
         .insert(key("stabilityMargin"), s.stabilityMargin);
@@ -259,9 +266,10 @@ QByteArray scenarioToJson(const Scenario &s)
         .insert(key("robot"), robot)
         .insert(key("path"), path)
         .insert(key("controller"), controller)
-        .insert(key("estimator"), estimator)
-        .insert(key("simulation"), simulation)
-        .insert(key("safety"), safety);
+        .insert(key("estimator"), estimator);
+    if (s.payload.enabled)
+        root.insert(key("payload"), payloadSectionJson(s.payload));
+    root.insert(key("simulation"), simulation).insert(key("safety"), safety);
     return root.toJson();
 }
 

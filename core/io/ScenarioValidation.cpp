@@ -1,6 +1,7 @@
 #include "identify/LearningLaw.h"
 #include "io/JsonReader.h"
 #include "io/ScenarioFile.h"
+#include "io/ScenarioPayload.h"
 #include "io/ValueChecks.h"
 #include "model/Error.h"
 #include "model/ModelFactory.h"
@@ -207,6 +208,7 @@ void validateScenario(const Scenario &s)
     checkIntegerRange(key("simulation.substeps"), s.simulation.substeps, 1,
                       scenarioLimits::maxSubsteps);
     validateJointRealism(s.simulation, n, perJoint);
+    validateScenarioPayload(s, *model);
 
     checkPositive(key("safety.maxTrackingErrorDeg"), s.maxTrackingErrorDeg);
     checkNonNegative(key("safety.stabilityMargin"), s.stabilityMargin);

@@ -115,4 +115,12 @@ Eigen::VectorXd PayloadModel::standardWith(const InertialParameters &payload) co
     return pi;
 }
 
+Eigen::VectorXd payloadBaseShift(const ChainModel &arm, int joint,
+                                 const InertialParameters &payload)
+{
+    Eigen::VectorXd pi = Eigen::VectorXd::Zero(arm.standardCount());
+    pi.segment<10>(10 * joint) = payload;
+    return arm.baseFromStandard(pi);
+}
+
 } // namespace learnid

@@ -77,4 +77,10 @@ private:
     int m_joint = 0;
 };
 
+/// The base parameters a payload adds to arm's (ChainModel::baseFromStandard of the payload's
+/// 10 parameters on joint `joint`'s link, zero elsewhere): the base parameters are linear in the
+/// standard ones, so phi_arm + this is the arm carrying the payload.
+Eigen::VectorXd payloadBaseShift(const ChainModel &arm, int joint,
+                                 const InertialParameters &payload);
+
 } // namespace learnid

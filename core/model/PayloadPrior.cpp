@@ -108,4 +108,38 @@ void validatePayloadPrior(const PayloadPrior &p, const PayloadFieldNames &names)
     }
 }
 
+Eigen::Matrix3d inertiaFromEntries(const Eigen::Ref<const Eigen::VectorXd> &i)
+{
+    Eigen::Matrix3d m;
+    m << i[0], i[1], i[3], i[1], i[2], i[4], i[3], i[4], i[5];
+    return m;
+}
+
+PayloadPrior payloadPriorOf(const PayloadSettings &s)
+{
+    PayloadPrior p;
+    p.mass = s.mass;
+    p.com = s.com;
+    if (s.inertia.size() == 6)
+        p.inertiaAtCom = inertiaFromEntries(s.inertia);
+    p.bound.radius = s.radius;
+    if (s.box.size() == 6) {
+        p.bound.box = true;
+        p.bound.lower = s.box.head<3>();
+        p.bound.upper = s.box.tail<3>();
+    }
+    return p;
+}
+
+InertialParameters simulatedPayloadParameters(const SimulatedPayload &simulated,
+                                              const PayloadSettings &settings)
+{
+    if (simulated.present)
+        return inertialParameters(simulated.mass, simulated.com,
+                                  inertiaFromEntries(simulated.inertia));
+    if (settings.enabled)
+        return payloadPriorOf(settings).parameters();
+    return InertialParameters::Zero();
+}
+
 } // namespace learnid

@@ -2,6 +2,7 @@
 
 #include "model/BoundingVolume.h"
 #include "model/SerialChain.h"
+#include "types/PayloadSettings.h"
 
 #include <Eigen/Core>
 #include <QString>
@@ -74,5 +75,16 @@ struct PayloadFieldNames
 /// is not a real body (principal moments positive, triangle inequalities) or whose body does
 /// not fit in the bound.
 void validatePayloadPrior(const PayloadPrior &prior, const PayloadFieldNames &names = {});
+
+/// The prior a scenario's payload section describes (not checked: validatePayloadPrior()).
+PayloadPrior payloadPriorOf(const PayloadSettings &settings);
+
+/// The inertia about the centre of mass from its 6 entries Ixx, Ixy, Iyy, Ixz, Iyz, Izz.
+Eigen::Matrix3d inertiaFromEntries(const Eigen::Ref<const Eigen::VectorXd> &entries);
+
+/// The 10 parameters of the payload the simulated robot carries: simulation.payload, or the
+/// prior body of the payload section when the simulation gives none, or zero (no payload).
+InertialParameters simulatedPayloadParameters(const SimulatedPayload &simulated,
+                                              const PayloadSettings &settings);
 
 } // namespace learnid

@@ -5,6 +5,8 @@
 #include "model/ChainPerturbation.h"
 #include "model/Error.h"
 #include "model/ModelCheck.h"
+#include "model/Payload.h"
+#include "model/PayloadPrior.h"
 #include "model/UrdfChain.h"
 #include "session/ScenarioRobotJoints.h"
 
@@ -97,8 +99,16 @@ std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
     measurement.seed = scenario.simulation.seed;
     measurement.substeps = scenario.simulation.substeps;
     measurement.realism = simulatedJoints(scenario, *model);
-    return std::make_shared<SimulatedRobot>(std::move(model), scenario.simulation.trueParameters,
-                                            measurement);
+    // The payload it carries adds to its link's body (docs/payload.md).
+    Eigen::VectorXd truePhi = scenario.simulation.trueParameters;
+    const InertialParameters payload =
+        simulatedPayloadParameters(scenario.simulation.payload, scenario.payload);
+    if (const auto *chain = dynamic_cast<const ChainModel *>(model.get());
+        chain && !payload.isZero() && truePhi.size() == chain->parameterCount()) {
+        truePhi += payloadBaseShift(*chain, payloadJointOf(chain->chain(), scenario.payload.link),
+                                    payload);
+    }
+    return std::make_shared<SimulatedRobot>(std::move(model), truePhi, measurement);
 }
 
 } // namespace learnid

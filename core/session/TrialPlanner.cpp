@@ -69,9 +69,10 @@ TrialPlanner::TrialPlanner(const Scenario &scenario, std::shared_ptr<const Robot
     m_ruleGrid = torqueRuleGrid(*m_model, *m_kinematics, scenario.line);
 }
 
-TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ruleOut,
-                             bool gentle) const
+TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ruleOut, bool gentle,
+                             const Eigen::VectorXd *feedforwardPhi) const
 {
+    const Eigen::VectorXd &phiFeedforward = feedforwardPhi ? *feedforwardPhi : phiHat;
     clearUpperVectorState();
     TorqueRuleResult rule =
         shortestDuration(m_ruleGrid, phiHat, m_scenario.torqueLimits, m_scenario.planningFraction);
@@ -96,11 +97,11 @@ TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ru
     if (m_scenario.controller.feedforwardTime == FeedforwardTime::MidSample) {
         MotionTiming middle = timing;
         middle.sampleOffset = 0.5 * timing.samplePeriod;
-        plan.feedforward = feedforwardTorque(*m_model, sampled(middle), phiHat);
+        plan.feedforward = feedforwardTorque(*m_model, sampled(middle), phiFeedforward);
     } else {
-        plan.feedforward = feedforwardTorque(*m_model, plan.desired, phiHat);
+        plan.feedforward = feedforwardTorque(*m_model, plan.desired, phiFeedforward);
     }
-    plan.feedforwardParameters = phiHat;
+    plan.feedforwardParameters = phiFeedforward;
     plan.controller = m_scenario.controller;
     plan.torqueLimit = m_scenario.torqueLimits;
     plan.maxTrackingError = m_scenario.maxTrackingErrorDeg * M_PI / 180.0;

@@ -33,9 +33,10 @@ public:
 
     /// Throws Error when the torque rule cannot be met with phiHat. gentle: a gentle trial
     /// (path.gentleTrials), its motion duration the rule's divided by path.gentleSpeed; rule
-    /// then holds that duration.
+    /// then holds that duration. feedforwardPhi: the feedforward built with these parameters
+    /// instead, on the same timed path (a reference run of the arm without its payload).
     TrialPlan plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *rule = nullptr,
-                   bool gentle = false) const;
+                   bool gentle = false, const Eigen::VectorXd *feedforwardPhi = nullptr) const;
 
 private:
     Scenario m_scenario;

@@ -4,6 +4,7 @@
 #include "types/ChainSettings.h"
 #include "types/ControllerSettings.h"
 #include "types/EstimatorSettings.h"
+#include "types/PayloadSettings.h"
 
 #include <Eigen/Core>
 #include <QString>
@@ -36,6 +37,9 @@ struct SimulationSettings
     bool linkSideEncoder = true;        ///< elastic joints: the encoder on the link (else motor)
     Eigen::VectorXd torqueSensorOffset; ///< [N m]
     double torqueSensorLag = 0.0;       ///< first-order time constant [s]
+    /// The payload the robot carries (none by default; with a payload section and none given,
+    /// the prior body).
+    SimulatedPayload payload;
 };
 
 /// A commissioning scenario: what the technician asks for (the robot, the path, the controller,
@@ -78,6 +82,8 @@ struct Scenario
     // safety
     double maxTrackingErrorDeg = 1.0; ///< abort threshold during a trial [deg]
     double stabilityMargin = 0.0;     ///< required decay rate of the linearised loop [1/s]
+    // the payload the session learns (docs/payload.md); off by default
+    PayloadSettings payload;
     // the simulated robot
     SimulationSettings simulation;
 };

@@ -1,0 +1,170 @@
+#include "session/PayloadSession.h"
+
+#include "model/Error.h"
+#include "session/SafetyCheck.h"
+
+#include <QCoreApplication>
+#include <ctime>
+
+
+namespace learnid {
+
+namespace {
+
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(PayloadSession)
+};
+
+std::shared_ptr<const ChainModel> chainOf(const std::shared_ptr<const RobotModel> &model,
+                                          const QString &modelId)
+{
+    auto chain = std::dynamic_pointer_cast<const ChainModel>(model);
+    if (!chain) {
+        throw Error(Text::tr("payload: only a URDF robot carries a payload (the model is %1)")
+                        .arg(modelId));
+    }
+    return chain;
+}
+
+// The observability of the planned paths together (their samples stacked).
+PayloadObservability plannedObservability(const PayloadModel &model,
+                                          const std::vector<JointTrajectory> &paths)
+{
+    Eigen::Index total = 0;
+    for (const JointTrajectory &p : paths)
+        total += p.samples();
+    Eigen::MatrixXd q(model.dof(), total), qd(model.dof(), total), qdd(model.dof(), total);
+    Eigen::Index at = 0;
+    for (const JointTrajectory &p : paths) {
+        q.middleCols(at, p.samples()) = p.q;
+        qd.middleCols(at, p.samples()) = p.qd;
+        qdd.middleCols(at, p.samples()) = p.qdd;
+        at += p.samples();
+    }
+    return payloadPathObservability(model, q, qd, qdd);
+}
+
+} // namespace
+
+PayloadSession::PayloadSession(const Scenario &scenario, std::shared_ptr<const RobotModel> model,
+                               std::shared_ptr<Robot> robot)
+    : m_scenario(scenario)
+    , m_model(chainOf(model, scenario.model))
+    , m_robot(std::move(robot))
+    , m_prior(payloadPriorOf(scenario.payload))
+    , m_planner(scenario, model)
+{
+    if (scenario.initialParameters.size() != m_model->parameterCount() ||
+        scenario.torqueLimits.size() != m_model->dof() ||
+        scenario.controller.dof() != m_model->dof()) {
+        throw Error(Text::tr("scenario does not fit the %1 model: it needs %2 parameters and %3 "
+                             "joint limits and gains")
+                        .arg(m_model->id())
+                        .arg(m_model->parameterCount())
+                        .arg(m_model->dof()));
+    }
+    validatePayloadPrior(m_prior);
+    // The arm held fixed: the standard vector whose base parameters are the scenario's.
+    try {
+        m_payload = std::make_unique<PayloadModel>(
+            m_model, m_model->standardFromBase(scenario.initialParameters), scenario.payload.link);
+    } catch (const Error &e) {
+        throw Error(QStringLiteral("payload.link: %1").arg(e.message()));
+    }
+    m_filter.rho = scenario.estimator.rho;
+    m_current = m_prior.parameters();
+}
+
+Eigen::VectorXd PayloadSession::feedforwardParameters(const InertialParameters &payload) const
+{
+    return m_scenario.initialParameters + payloadBaseShift(*m_model, m_payload->joint(), payload);
+}
+
+PreTrialCheck PayloadSession::checkNextTrial() const
+{
+    PreTrialCheck check;
+    try {
+        const Eigen::VectorXd phi = feedforwardParameters(m_current);
+        const bool gentle = int(m_history.size()) < m_scenario.gentleTrials;
+        check.plan = m_planner.plan(phi, &check.rule, gentle);
+        check.verdict = checkTrial(*m_model, phi, check.plan, m_scenario.stabilityMargin);
+    } catch (const Error &e) {
+        check.planningError = e.message();
+    }
+    return check;
+}
+
+PayloadObservability PayloadSession::observability() const
+{
+    const PreTrialCheck check = checkNextTrial();
+    if (!check.planningError.isEmpty())
+        return {};
+    const JointTrajectory &d = check.plan.desired;
+    return payloadPathObservability(*m_payload, d.q, d.qd, d.qdd);
+}
+
+const PayloadTrial &PayloadSession::runTrial()
+{
+    PayloadTrial t;
+    t.index = int(m_history.size());
+    t.payloadUsed = m_current;
+    t.check = checkNextTrial();
+    if (!t.check.passed()) {
+        t.record.status = TrialStatus::Refused;
+        t.message =
+            Text::tr("trial %1 refused before motion: %2").arg(t.index).arg(t.check.reason());
+        m_history.push_back(std::move(t));
+        return m_history.back();
+    }
+    TrialMonitor monitor;
+    monitor.cancel = &m_cancel;
+    t.record = m_robot->runTrial(t.plan(), monitor);
+    trackingErrorFigures(t.plan(), t.record, t.maxTrackingErrorDeg, t.rmsTrackingErrorDeg);
+    if (!t.record.completed()) {
+        t.message = Text::tr("trial %1 did not complete (%2): the payload estimate is unchanged")
+                        .arg(t.index)
+                        .arg(t.record.message);
+        m_history.push_back(std::move(t));
+        return m_history.back();
+    }
+    try {
+        const std::clock_t start = std::clock();
+        UniformLog log;
+        log.source = Text::tr("trial %1").arg(t.index);
+        log.period = t.record.samplePeriod;
+        log.q = t.record.q;
+        log.tau = t.record.tau;
+        std::vector<FilteredLog> logs = m_logs;
+        logs.push_back(filterLog(log, m_filter));
+        std::vector<JointTrajectory> paths = m_paths;
+        paths.push_back(t.plan().desired);
+        t.planned = plannedObservability(*m_payload, paths);
+        PayloadFitSettings settings;
+        settings.unseen = t.planned.unseen;
+        PayloadFit fit = fitPayload(*m_payload, logs, m_prior, settings);
+        t.updateCpuSeconds = double(std::clock() - start) / CLOCKS_PER_SEC;
+        if (!fit.estimate.parameters.allFinite())
+            throw Error(Text::tr("the payload fit produced non-finite parameters"));
+        m_logs = std::move(logs);
+        m_paths = std::move(paths);
+        m_current = fit.estimate.parameters;
+        t.fit = std::move(fit);
+    } catch (const Error &e) {
+        t.message = Text::tr("trial %1 not learned from: %2").arg(t.index).arg(e.message());
+    }
+    m_history.push_back(std::move(t));
+    return m_history.back();
+}
+
+bool PayloadSession::runTrials(int count)
+{
+    m_cancel.store(false);
+    for (int i = 0; i < count; ++i) {
+        if (m_cancel.load() || !runTrial().learned())
+            return false;
+    }
+    return true;
+}
+
+} // namespace learnid

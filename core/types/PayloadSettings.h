@@ -1,0 +1,35 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <QString>
+
+namespace learnid {
+
+/// A scenario's payload (docs/scenario.md, payload): the body fixed to one link that the
+/// learning loop identifies with the arm's model held fixed (docs/payload.md). The fields of
+/// model/PayloadPrior.h as the scenario file holds them; payloadPriorOf() makes the prior.
+struct PayloadSettings
+{
+    bool enabled = false; ///< the scenario has a payload section: the session learns the payload
+    QString link;         ///< the moving link it is fixed to; empty: the tip
+    double mass = 0.0;    ///< the prior's mass [kg] > 0
+    Eigen::Vector3d com = Eigen::Vector3d::Zero(); ///< the prior's centre of mass [m]
+    /// The prior's inertia about its centre of mass, Ixx, Ixy, Iyy, Ixz, Iyz, Izz [kg m^2];
+    /// empty: a uniform sphere (PayloadPrior::parameters()).
+    Eigen::VectorXd inertia;
+    double radius = 0.3; ///< the bounding sphere around the link frame's origin [m]
+    Eigen::VectorXd box; ///< or the bounding box x0, y0, z0, x1, y1, z1 [m] (empty: the sphere)
+};
+
+/// The payload the simulated robot really carries (simulation.payload): a rigid body on the
+/// scenario's payload link (the tip without a payload section), in that link's frame.
+struct SimulatedPayload
+{
+    bool present = false;
+    double mass = 0.0;                             ///< [kg] > 0
+    Eigen::Vector3d com = Eigen::Vector3d::Zero(); ///< [m]
+    /// About the centre of mass, Ixx, Ixy, Iyy, Ixz, Iyz, Izz [kg m^2]; zero: a point mass.
+    Eigen::Matrix<double, 6, 1> inertia = Eigen::Matrix<double, 6, 1>::Zero();
+};
+
+} // namespace learnid
