@@ -28,10 +28,10 @@ QString number(double v, int precision, int width)
         .rightJustified(width);
 }
 
-// One row per body value: estimate, standard error, prior, identified or the prior's.
-QString payloadTable(const PayloadIdentificationResult &r)
+} // namespace
+
+QString payloadTable(const PayloadEstimate &e, const QString &dataName)
 {
-    const PayloadEstimate &e = r.fit.estimate;
     const PayloadBody prior = payloadBody(e.prior);
     const double priorValues[10] = {prior.mass,
                                     prior.com.x(),
@@ -59,12 +59,14 @@ QString payloadTable(const PayloadIdentificationResult &r)
              (seen ? number(e.bodyStandardError[size_t(i)], 2, 12)
                    : QStringLiteral("-").rightJustified(12)) +
              number(priorValues[i], 5, 12) + QStringLiteral("  ") +
-             (seen ? QCoreApplication::translate("learnid-cli", "the logs")
+             (seen ? dataName
                    : QCoreApplication::translate("learnid-cli", "the prior (not identified)")) +
              QLatin1Char('\n');
     }
     return t;
 }
+
+namespace {
 
 QString payloadText(const PayloadIdentificationResult &r, const QString &bound)
 {
@@ -95,7 +97,9 @@ QString payloadText(const PayloadIdentificationResult &r, const QString &bound)
              .arg(r.fit.samples)
              .arg(o.rank)
              .arg(o.condition, 0, 'f', 1);
-    t += QLatin1Char('\n') + payloadTable(r) + QLatin1Char('\n');
+    t += QLatin1Char('\n') +
+         payloadTable(r.fit.estimate, QCoreApplication::translate("learnid-cli", "the logs")) +
+         QLatin1Char('\n');
     if (!e.converged)
         t += QCoreApplication::translate("learnid-cli",
                                          "Warning: the plausible estimate did not converge (%1).\n")

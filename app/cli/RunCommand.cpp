@@ -1,5 +1,6 @@
 #include "cli/RunCommand.h"
 
+#include "cli/PayloadRunCommand.h"
 #include "cli/ResultTable.h"
 #include "io/ScenarioFile.h"
 #include "model/ChainModel.h"
@@ -106,6 +107,8 @@ ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
             << Qt::endl;
         return ExitBadInput;
     }
+    if (scenario.payload.enabled)
+        return runPayloadCommand(options, scenario, out, err);
     if (options.robot == QLatin1String("replay")) {
         int recorded = 0;
         try {

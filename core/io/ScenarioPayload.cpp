@@ -62,8 +62,9 @@ void readPayloadSection(JsonObjectReader r, PayloadSettings &p)
         bound->read(key("radius"), p.radius);
         readFixed(*bound, "box", p.box, 6, Text::tr("x0, y0, z0, x1, y1 and z1"));
         if (bound->contains(key("radius")) && bound->contains(key("box"))) {
-            throwAtKey(bound->keyPath(key("box")),
-                       Text::tr("give the bound either as a sphere (radius) or as a box, not both"));
+            throwAtKey(
+                bound->keyPath(key("box")),
+                Text::tr("give the bound either as a sphere (radius) or as a box, not both"));
         }
         bound->rejectUnknownKeys();
     }

@@ -6,7 +6,6 @@
 #include <QCoreApplication>
 #include <ctime>
 
-
 namespace learnid {
 
 namespace {

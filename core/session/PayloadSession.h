@@ -44,8 +44,9 @@ struct PayloadTrial
 /// payload is fitted to all completed trials so far as logs are (filterLog, fitPayload: both
 /// sides filtered alike, the nearest real body inside the bound), restricted to the directions
 /// their planned paths observe (payloadPathObservability): the others keep the prior and are
-/// reported as not identified, even where a tracking error let the measured motion see them. Trials that did not complete are kept but not learned from.
-/// Calls are synchronous and belong to one thread; requestCancel() may come from any thread.
+/// reported as not identified, even where a tracking error let the measured motion see them. Trials
+/// that did not complete are kept but not learned from. Calls are synchronous and belong to one
+/// thread; requestCancel() may come from any thread.
 class PayloadSession
 {
 public:
@@ -84,7 +85,7 @@ private:
     PayloadPrior m_prior;
     TrialPlanner m_planner;
     LogFilterSettings m_filter;
-    std::vector<FilteredLog> m_logs;     ///< the completed trials, filtered
+    std::vector<FilteredLog> m_logs;      ///< the completed trials, filtered
     std::vector<JointTrajectory> m_paths; ///< their planned paths
     std::vector<PayloadTrial> m_history;
     InertialParameters m_current = InertialParameters::Zero();

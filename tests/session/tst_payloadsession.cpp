@@ -105,10 +105,10 @@ private slots:
         Eigen::VectorXd maxDeg, rmsDeg;
         trackingErrorFigures(reference, record, maxDeg, rmsDeg);
         // The floor: the same path with the true payload in the feedforward.
-        const Eigen::VectorXd phiTrue = session.feedforwardParameters(
-            simulatedPayloadParameters(truePayload(), s.payload));
-        const TrialPlan oracle = planner.plan(session.feedforwardParameters(last.payloadUsed),
-                                              nullptr, false, &phiTrue);
+        const Eigen::VectorXd phiTrue =
+            session.feedforwardParameters(simulatedPayloadParameters(truePayload(), s.payload));
+        const TrialPlan oracle =
+            planner.plan(session.feedforwardParameters(last.payloadUsed), nullptr, false, &phiTrue);
         const TrialRecord oracleRecord = makeSimulatedRobot(s, model)->runTrial(oracle, {});
         QVERIFY(oracleRecord.completed());
         Eigen::VectorXd oracleMax, oracleRms;
@@ -155,11 +155,10 @@ private slots:
             QVERIFY(before.determined[size_t(p)] < 0.5);
             QVERIFY(!e.observability.identified(p));
             QVERIFY(!e.bodyIdentified[size_t(p)]);
-            QVERIFY2(std::abs(e.leastSquares[p] - e.anchor[p]) < 1e-9,
-                     qPrintable(QStringLiteral("%1: %2 vs %3")
-                                    .arg(p)
-                                    .arg(e.leastSquares[p])
-                                    .arg(e.anchor[p])));
+            QVERIFY2(
+                std::abs(e.leastSquares[p] - e.anchor[p]) < 1e-9,
+                qPrintable(
+                    QStringLiteral("%1: %2 vs %3").arg(p).arg(e.leastSquares[p]).arg(e.anchor[p])));
         }
         QVERIFY(!e.bodyIdentified[4] && !e.bodyIdentified[5] && !e.bodyIdentified[6]);
         // What the base turn does see: the mass, within 3 standard errors of the truth.

@@ -1,0 +1,154 @@
+#include "cli/PayloadRunCommand.h"
+
+#include "cli/PayloadCommand.h"
+#include "model/Error.h"
+#include "model/ModelFactory.h"
+#include "session/PayloadSession.h"
+#include "session/ScenarioRobot.h"
+
+#include <QCoreApplication>
+#include <csignal>
+
+namespace learnid::cli {
+
+namespace {
+
+// Ctrl-C stops the running trial at its next sample.
+PayloadSession *g_session = nullptr;
+extern "C" void onPayloadInterrupt(int)
+{
+    if (g_session)
+        g_session->requestCancel(); // an atomic store: async-signal-safe
+}
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("learnid-cli", text);
+}
+
+// The options a payload session does not offer yet, by name; empty when none is set.
+QString unsupportedOption(const RunOptions &o)
+{
+    if (o.robot != QLatin1String("sim"))
+        return QStringLiteral("--robot %1").arg(o.robot);
+    const std::pair<bool, const char *> options[] = {{!o.reportPath.isEmpty(), "--report"},
+                                                     {!o.exportPath.isEmpty(), "--export"},
+                                                     {!o.trialCsvDir.isEmpty(), "--trial-csv"},
+                                                     {o.apply, "--apply"},
+                                                     {o.consistent, "--consistent"}};
+    for (const auto &[set, name] : options)
+        if (set)
+            return QString::fromLatin1(name);
+    return {};
+}
+
+// The body values the trials identified, by name: "all", "none" or a list.
+QString identifiedValues(const PayloadEstimate &e)
+{
+    QStringList names;
+    const QStringList all = PayloadEstimate::bodyNames();
+    for (int i = 0; i < 10; ++i)
+        if (e.bodyIdentified[size_t(i)])
+            names << all.at(i);
+    if (names.size() == 10)
+        return tr("all");
+    return names.isEmpty() ? tr("none") : names.join(QStringLiteral(", "));
+}
+
+QString trialRow(const PayloadTrial &t)
+{
+    QString row = QString::number(t.index).rightJustified(5);
+    if (t.maxTrackingErrorDeg.size() > 0) {
+        row += QString::number(t.maxTrackingErrorDeg.maxCoeff(), 'f', 4).rightJustified(12) +
+               QString::number(t.rmsTrackingErrorDeg.maxCoeff(), 'f', 4).rightJustified(12);
+    } else {
+        row += QStringLiteral("-").rightJustified(12) + QStringLiteral("-").rightJustified(12);
+    }
+    if (!t.learned())
+        return row + QStringLiteral("  ") + t.message;
+    const PayloadBody &b = t.fit->estimate.body;
+    const Eigen::Vector3d mm = 1000.0 * b.com;
+    return row + QString::number(b.mass, 'f', 4).rightJustified(11) +
+           QStringLiteral("  (%1, %2, %3)")
+               .arg(mm.x(), 0, 'f', 1)
+               .arg(mm.y(), 0, 'f', 1)
+               .arg(mm.z(), 0, 'f', 1)
+               .leftJustified(24) +
+           QString::number(1000.0 * t.updateCpuSeconds, 'f', 1).rightJustified(8) +
+           QStringLiteral("  ") + identifiedValues(t.fit->estimate);
+}
+
+} // namespace
+
+ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTextStream &out,
+                           QTextStream &err)
+{
+    const auto fail = [&err](const QString &message, ExitCode code) {
+        err << tr("learnid-cli: error: %1").arg(message) << Qt::endl;
+        return code;
+    };
+    if (const QString option = unsupportedOption(options); !option.isEmpty()) {
+        return fail(tr("%1: not available with a payload section yet (the payload is learned on "
+                       "the simulated robot, and nothing is written)")
+                        .arg(option),
+                    ExitBadInput);
+    }
+    std::unique_ptr<PayloadSession> session;
+    Scenario scenario;
+    try {
+        const auto model = makeRobotModel(given.model, given.urdf);
+        scenario = withRobotDefaults(given, *model);
+        session = std::make_unique<PayloadSession>(scenario, model,
+                                                   makeSimulatedRobot(scenario, model));
+    } catch (const Error &e) {
+        return fail(e.message(), ExitBadInput);
+    }
+    const QString link = session->payloadModel().link();
+    if (!options.quiet) {
+        err << tr("learnid-cli: %1, the payload on %2 learned in %3 trials; the arm's model is "
+                  "held fixed (robot.initialParameters)")
+                   .arg(session->robot().description(), link)
+                   .arg(scenario.iterations)
+            << Qt::endl;
+        // What the path lets the trials see, before the robot moves.
+        const PayloadObservability o = session->observability();
+        err << tr("learnid-cli: the path determines %1 of the payload's 10 parameters")
+                   .arg(o.rank)
+            << Qt::endl;
+        for (const QString &line : o.advice(link))
+            err << tr("learnid-cli: %1").arg(line) << Qt::endl;
+    }
+    out << tr("trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  "
+              "identified")
+        << Qt::endl
+        << tr("          [deg]      [deg]                                       [ms]")
+        << Qt::endl;
+    g_session = session.get();
+    const auto previous = std::signal(SIGINT, onPayloadInterrupt);
+    bool completed = true;
+    for (int i = 0; i < scenario.iterations && completed; ++i) {
+        const PayloadTrial &t = session->runTrial();
+        out << trialRow(t) << Qt::endl;
+        completed = t.learned();
+    }
+    std::signal(SIGINT, previous);
+    g_session = nullptr;
+    const PayloadTrial *learned = nullptr;
+    for (const PayloadTrial &t : session->history())
+        if (t.learned())
+            learned = &t;
+    if (learned) {
+        out << Qt::endl
+            << tr("The payload after trial %1 (bound: %2):")
+                   .arg(learned->index)
+                   .arg(session->prior().bound.describe())
+            << Qt::endl
+            << payloadTable(learned->fit->estimate, tr("the trials"));
+    }
+    out.flush();
+    if (!completed)
+        return fail(session->history().back().message, ExitTrialFailed);
+    return ExitOk;
+}
+
+} // namespace learnid::cli
