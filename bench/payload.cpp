@@ -2,13 +2,15 @@
 // to a simulated 5 s log at 500 Hz (the arm's URDF from ../shared/data held fixed, 1 % of each
 // joint's limit as torque noise, 2^20-count encoders), 8 seeds: the errors of mass, centre of
 // mass and inertia, and the CPU of one payload update (filtering the log, the regressor, the
-// fit), the median of 20.
+// fit), the median of 20. With --loop: the payload learned in the learning loop instead
+// (payloadloop.cpp).
 #include "../tests/identify/PayloadPaths.h"
 #include "BenchSupport.h"
 #include "identify/LogSignals.h"
 #include "identify/PayloadFit.h"
 
 #include <cstdio>
+#include <cstring>
 #include <random>
 
 using namespace learnid;
@@ -47,8 +49,12 @@ UniformLog simulatedLog(const PayloadModel &model, const test::JointPath &path, 
 
 } // namespace
 
-int main()
+int payloadLoopBench();
+
+int main(int argc, char **argv)
 {
+    if (argc > 1 && std::strcmp(argv[1], "--loop") == 0)
+        return payloadLoopBench();
     const auto arm = test::kukaArm();
     if (!arm) {
         std::printf("%s\n", qPrintable(test::sharedDataMissing()));

@@ -98,8 +98,8 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
     try {
         const auto model = makeRobotModel(given.model, given.urdf);
         scenario = withRobotDefaults(given, *model);
-        session = std::make_unique<PayloadSession>(scenario, model,
-                                                   makeSimulatedRobot(scenario, model));
+        session =
+            std::make_unique<PayloadSession>(scenario, model, makeSimulatedRobot(scenario, model));
     } catch (const Error &e) {
         return fail(e.message(), ExitBadInput);
     }
@@ -112,8 +112,7 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
             << Qt::endl;
         // What the path lets the trials see, before the robot moves.
         const PayloadObservability o = session->observability();
-        err << tr("learnid-cli: the path determines %1 of the payload's 10 parameters")
-                   .arg(o.rank)
+        err << tr("learnid-cli: the path determines %1 of the payload's 10 parameters").arg(o.rank)
             << Qt::endl;
         for (const QString &line : o.advice(link))
             err << tr("learnid-cli: %1").arg(line) << Qt::endl;
@@ -121,8 +120,7 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
     out << tr("trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  "
               "identified")
         << Qt::endl
-        << tr("          [deg]      [deg]                                       [ms]")
-        << Qt::endl;
+        << tr("          [deg]      [deg]                                       [ms]") << Qt::endl;
     g_session = session.get();
     const auto previous = std::signal(SIGINT, onPayloadInterrupt);
     bool completed = true;

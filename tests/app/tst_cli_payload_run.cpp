@@ -3,9 +3,9 @@
 // the true arm: per trial the tracking error, the mass and centre of mass, which values the
 // trials identified; then the estimate's table. Options it does not offer are refused by name.
 
+#include "../session/PayloadScenarios.h"
 #include "../support/ToolRun.h"
 #include "io/ScenarioFile.h"
-#include "session/RobotScenario.h"
 
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -16,30 +16,6 @@ using namespace learnid;
 namespace {
 
 const QString cli = QStringLiteral(LEARNID_CLI_PATH);
-
-// The Panda's starting scenario, stiffer for the payload: its gains are the bare arm's (the
-// wrist's would let a 1.5 kg payload sag past the 5 deg limit).
-Scenario pandaWithPayload()
-{
-    Scenario s = scenarioForRobot(QStringLiteral("panda"));
-    s.simulation.inertiaPerturbation = 0.0; // the arm's model is the true arm
-    for (int j = 0; j < 7; ++j) {
-        const double wrist = j >= 4 ? 3.0 : 1.0;
-        s.controller.kp[j] *= 2.0 * wrist;
-        s.controller.kd[j] *= 1.4 * std::sqrt(wrist);
-        s.controller.ki[j] = s.controller.kp[j] / 10.0;
-    }
-    s.iterations = 3;
-    s.payload.enabled = true;
-    s.payload.link = QStringLiteral("panda_link7");
-    s.payload.mass = 1.2;
-    s.payload.com = Eigen::Vector3d(0.0, 0.0, 0.05);
-    s.simulation.payload.present = true;
-    s.simulation.payload.mass = 1.5;
-    s.simulation.payload.com = Eigen::Vector3d(0.05, 0.0, 0.08);
-    s.simulation.payload.inertia << 0.006, 0.0005, 0.0055, 0.0, 0.0, 0.003;
-    return s;
-}
 
 // The trial rows: index, max error, RMS error, mass, (cx, cy, cz) in mm, CPU, identified.
 struct Row
@@ -78,9 +54,9 @@ private slots:
     {
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("panda-payload.json"));
-        writeScenarioFile(file, pandaWithPayload());
-        const test::ToolRun run = test::runTool(cli, {QStringLiteral("run"),
-                                                      QStringLiteral("--scenario"), file});
+        writeScenarioFile(file, test::pandaWithPayload());
+        const test::ToolRun run =
+            test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         qInfo("%s", qPrintable(run.out));
         const QList<Row> rows = trialRows(run.out);
@@ -102,10 +78,10 @@ private slots:
     {
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("panda-payload.json"));
-        writeScenarioFile(file, pandaWithPayload());
-        const test::ToolRun run =
-            test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
-                                QStringLiteral("--export"), dir.filePath(QStringLiteral("p.json"))});
+        writeScenarioFile(file, test::pandaWithPayload());
+        const test::ToolRun run = test::runTool(
+            cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
+                  QStringLiteral("--export"), dir.filePath(QStringLiteral("p.json"))});
         QCOMPARE(run.exitCode, 2);
         QVERIFY2(run.err.contains(QStringLiteral("--export: not available with a payload")),
                  qPrintable(run.err));
@@ -116,11 +92,11 @@ private slots:
     {
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("panda-payload.json"));
-        Scenario s = pandaWithPayload();
+        Scenario s = test::pandaWithPayload();
         s.payload.link = QStringLiteral("gripper");
         writeScenarioFile(file, s);
-        const test::ToolRun run = test::runTool(cli, {QStringLiteral("run"),
-                                                      QStringLiteral("--scenario"), file});
+        const test::ToolRun run =
+            test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file});
         QCOMPARE(run.exitCode, 2);
         QVERIFY2(run.err.contains(QStringLiteral("payload.link: payload link 'gripper'")),
                  qPrintable(run.err));

@@ -100,8 +100,9 @@ private slots:
     void sphereByDefault_andMinimalSection()
     {
         QJsonObject o = pandaObject();
-        o.insert(QStringLiteral("payload"),
-                 QJsonObject{{QStringLiteral("prior"), QJsonObject{{QStringLiteral("mass"), 1.5}}}});
+        o.insert(
+            QStringLiteral("payload"),
+            QJsonObject{{QStringLiteral("prior"), QJsonObject{{QStringLiteral("mass"), 1.5}}}});
         const Scenario r = scenarioFromJson(QJsonDocument(o).toJson(), source);
         QVERIFY(r.payload.enabled);
         QVERIFY(r.payload.link.isEmpty());
@@ -134,7 +135,8 @@ private slots:
             "payload.prior.mass: is missing; this key is required");
         row("no prior", "payload", "prior", QJsonValue(QJsonValue::Undefined),
             "payload.prior: is missing; this key is required");
-        row("com length", "payload.prior", "com", QJsonArray{0.0, 0.1}, "payload.prior.com: must have 3 entries (x, y and z), got 2");
+        row("com length", "payload.prior", "com", QJsonArray{0.0, 0.1},
+            "payload.prior.com: must have 3 entries (x, y and z), got 2");
         row("inertia length", "payload.prior", "inertia", QJsonArray{0.1, 0.0, 0.1},
             "payload.prior.inertia: must have 6 entries (Ixx, Ixy, Iyy, Ixz, Iyz and Izz), got 3");
         row("inertia not a body", "payload.prior", "inertia",
@@ -142,18 +144,19 @@ private slots:
             "payload.prior.inertia: the inertia is not a real body's");
         row("unknown link", "payload", "link", QStringLiteral("gripper"),
             "payload.link: payload link 'gripper' is not a moving link");
-        row("box without the com", "payload.bound", "box",
-            QJsonArray{0.1, 0.1, 0.1, 0.2, 0.2, 0.2},
+        row("box without the com", "payload.bound", "box", QJsonArray{0.1, 0.1, 0.1, 0.2, 0.2, 0.2},
             "payload.bound.box: the prior centre of mass (0.01, -0.02, 0.05) m is not inside "
             "the bound");
         row("box upside down", "payload.bound", "box", QJsonArray{0.1, 0.1, 0.1, 0.0, 0.2, 0.2},
             "payload.bound.box: the box's upper corner");
-        row("unknown prior key", "payload.prior", "volume", 1.0, "payload.prior.volume: unknown key; allowed here: mass, com, inertia");
+        row("unknown prior key", "payload.prior", "volume", 1.0,
+            "payload.prior.volume: unknown key; allowed here: mass, com, inertia");
         row("sim negative mass", "simulation.payload", "mass", -3.0,
             "simulation.payload.mass: must be a positive number, got -3");
         row("sim inertia not a body", "simulation.payload", "inertia",
-            QJsonArray{-0.01, 0.0, 0.01, 0.0, 0.0, 0.01}, "simulation.payload.inertia: not a "
-                                                           "real body's inertia");
+            QJsonArray{-0.01, 0.0, 0.01, 0.0, 0.0, 0.01},
+            "simulation.payload.inertia: not a "
+            "real body's inertia");
         row("sim unknown key", "simulation.payload", "link", QStringLiteral("panda_link7"),
             "simulation.payload.link: unknown key; allowed here: mass, com, inertia");
     }
@@ -175,7 +178,8 @@ private slots:
         QJsonObject payload = o.value(QStringLiteral("payload")).toObject();
         payload.insert(QStringLiteral("bound"), QJsonObject{{QStringLiteral("radius"), 0.04}});
         o.insert(QStringLiteral("payload"), payload);
-        QString message = test::errorOf([&] { scenarioFromJson(QJsonDocument(o).toJson(), source); });
+        QString message =
+            test::errorOf([&] { scenarioFromJson(QJsonDocument(o).toJson(), source); });
         QVERIFY2(message.startsWith(QStringLiteral("scenario.json: payload.bound.radius: the prior "
                                                    "centre of mass")),
                  qPrintable(message));

@@ -3,6 +3,7 @@
 // 5 cm off the flange axis, 2^20-count encoders and 1 % torque noise.
 #include "../identify/PayloadPaths.h"
 #include "../support/SharedData.h"
+#include "PayloadScenarios.h"
 #include "model/ModelFactory.h"
 #include "session/PayloadSession.h"
 #include "session/ScenarioRobot.h"
@@ -13,52 +14,10 @@ using namespace learnid;
 
 namespace {
 
-Eigen::VectorXd joints(std::initializer_list<double> v)
-{
-    Eigen::VectorXd q(Eigen::Index(v.size()));
-    Eigen::Index i = 0;
-    for (double x : v)
-        q[i++] = x;
-    return q;
-}
-
-// The true payload: bench/payload.cpp's.
+// The true payload of kukaWithPayload().
 SimulatedPayload truePayload()
 {
-    SimulatedPayload p;
-    p.present = true;
-    p.mass = 3.0;
-    p.com = Eigen::Vector3d(0.05, 0.0, 0.08);
-    p.inertia << 0.012, 0.001, 0.011, 0.0, 0.0, 0.006;
-    return p;
-}
-
-Scenario kukaWithPayload(const QString &urdf)
-{
-    Scenario s;
-    s.model = QStringLiteral("urdf");
-    s.urdf.file = urdf;
-    s.torqueLimits.resize(0);
-    s.initialParameters.resize(0);
-    s.simulation.trueParameters.resize(0);
-    s.path.kind = PathKind::Waypoints;
-    s.path.waypoints = {joints({0, 0.3, 0, -1.2, 0, 0.5, 0}),
-                        joints({0.8, 0.8, 0.5, -0.6, 0.6, -0.4, 0.9}),
-                        joints({-0.4, 0.5, -0.5, -1.4, -0.5, 0.6, -0.7})};
-    s.planningFraction = 0.45;
-    s.controller.kp = joints({340, 600, 100, 140, 60, 60, 30});
-    s.controller.ki = s.controller.kp / 10.0;
-    s.controller.kd = joints({45, 80, 14, 19, 3, 3, 1.5});
-    s.controller.lambda = 1000;
-    s.maxTrackingErrorDeg = 5;
-    s.simulation.encoderCounts = 1 << 20;
-    s.simulation.torqueNoise = 0.01;
-    s.simulation.substeps = 5;
-    s.payload.enabled = true;
-    s.payload.mass = 2.5;
-    s.payload.com = Eigen::Vector3d(0.0, 0.0, 0.05);
-    s.simulation.payload = truePayload();
-    return s;
+    return test::kukaWithPayload(QString()).simulation.payload;
 }
 
 } // namespace
@@ -73,7 +32,7 @@ private slots:
         const QString urdf = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
         if (urdf.isEmpty())
             QSKIP(qPrintable(test::sharedDataMissing()));
-        Scenario s = kukaWithPayload(urdf);
+        Scenario s = test::kukaWithPayload(urdf);
         const auto model = makeRobotModel(s.model, s.urdf);
         s = withRobotDefaults(s, *model); // arm model = the true arm (no perturbation)
         QCOMPARE(s.initialParameters, s.simulation.trueParameters);
@@ -133,7 +92,7 @@ private slots:
         const QString urdf = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
         if (urdf.isEmpty())
             QSKIP(qPrintable(test::sharedDataMissing()));
-        Scenario s = kukaWithPayload(urdf);
+        Scenario s = test::kukaWithPayload(urdf);
         // The arm bent with the flange's axis vertical, only the base turns: gravity stays
         // along the flange's z and the payload turns about that axis only, so Ixx, Ixy, Iyy never
         // reach a joint torque.
