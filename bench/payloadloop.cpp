@@ -20,8 +20,7 @@ using namespace learnid;
 namespace {
 
 // Max tracking error over the joints [deg] of `plan` run on the robot `s` describes.
-double trackingOf(const Scenario &s, std::shared_ptr<const RobotModel> model,
-                  const TrialPlan &plan)
+double trackingOf(const Scenario &s, std::shared_ptr<const RobotModel> model, const TrialPlan &plan)
 {
     const TrialRecord record = makeSimulatedRobot(s, std::move(model))->runTrial(plan, {});
     Eigen::VectorXd maxDeg, rmsDeg;
@@ -37,6 +36,7 @@ void runRobot(const char *name, const Scenario &given)
                 "|---|---|---|---|---|---|---|---|\n",
                 name, given.simulation.payload.mass);
     std::vector<double> mass, com, inertia, ratio, cpu;
+    long long samples = 0;
     for (quint64 seed = 1; seed <= 8; ++seed) {
         Scenario s = given;
         s.simulation.seed = seed;
@@ -71,20 +71,23 @@ void runRobot(const char *name, const Scenario &given)
         const double trial2 = last.maxTrackingErrorDeg.maxCoeff();
         ratio.push_back(trial2 / alone);
         cpu.push_back(1000.0 * last.updateCpuSeconds);
+        samples = last.fit->samples;
         std::printf("| %llu | %.3f | %.2f | %.0f | %.3g / %.3g | %.3g | %.3g | %.1f |\n",
-                    static_cast<unsigned long long>(seed), mass.back(), com.back(),
-                    inertia.back(), session.history().front().maxTrackingErrorDeg.maxCoeff(),
-                    trial2, oracle, alone, cpu.back());
+                    static_cast<unsigned long long>(seed), mass.back(), com.back(), inertia.back(),
+                    session.history().front().maxTrackingErrorDeg.maxCoeff(), trial2, oracle, alone,
+                    cpu.back());
     }
     if (mass.empty())
         return;
-    std::printf("\nworst of %zu seeds: mass %.3f %%, centre of mass %.2f mm, inertia %.0f %%; "
-                "trial 2's max tracking error / the arm's without the payload: median %.2f, "
-                "worst %.2f; update CPU median %.1f ms\n",
-                mass.size(), *std::max_element(mass.begin(), mass.end()),
-                *std::max_element(com.begin(), com.end()),
-                *std::max_element(inertia.begin(), inertia.end()), bench::median(ratio),
-                *std::max_element(ratio.begin(), ratio.end()), bench::median(cpu));
+    std::printf(
+        "\nworst of %zu seeds: mass %.3f %%, centre of mass %.2f mm, inertia %.0f %%; "
+        "trial 2's max tracking error / the arm's without the payload: median %.2f, "
+        "worst %.2f; update CPU median %.1f ms (%lld samples of 3 trials, after the filter's "
+        "settling)\n",
+        mass.size(), *std::max_element(mass.begin(), mass.end()),
+        *std::max_element(com.begin(), com.end()),
+        *std::max_element(inertia.begin(), inertia.end()), bench::median(ratio),
+        *std::max_element(ratio.begin(), ratio.end()), bench::median(cpu), samples);
 }
 
 } // namespace
