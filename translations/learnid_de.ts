@@ -1341,7 +1341,7 @@
         <translation>kein abgeschlossener Versuch, aus dem gelernt werden kann</translation>
     </message>
     <message>
-        <location filename="../core/identify/LearningLaw.cpp" line="+75"/>
+        <location filename="../core/identify/LearningLaw.cpp" line="+87"/>
         <source>trial record does not match its plan: %1 of %2 samples, %3 joints recorded for a %4-joint model</source>
         <translation>Versuchsaufzeichnung passt nicht zu ihrem Plan: %1 von %2 Abtastwerten, %3 Gelenke aufgezeichnet für ein Modell mit %4 Gelenken</translation>
     </message>
@@ -1849,7 +1849,7 @@
         <translation>Größen der kleinsten Quadrate passen nicht: %1 x %2 Regressor, %3 Zielwerte, %4 Gelenke, %5 Parameter</translation>
     </message>
     <message>
-        <location filename="../core/identify/ObservableUpdate.cpp" line="+19"/>
+        <location filename="../core/identify/ObservableUpdate.cpp" line="+20"/>
         <source>the regressor or the torque contains non-finite values</source>
         <translation>der Regressor oder das Moment enthält nicht endliche Werte</translation>
     </message>
@@ -2226,7 +2226,7 @@
 <context>
     <name>PayloadFit</name>
     <message>
-        <location filename="../core/identify/PayloadFit.cpp" line="+87"/>
+        <location filename="../core/identify/PayloadFit.cpp" line="+93"/>
         <source>%1 has %2 joints, the robot %3</source>
         <translation>%1 hat %2 Gelenke, der Roboter %3</translation>
     </message>
@@ -2348,6 +2348,44 @@
         <location line="+4"/>
         <source>%1: a body with this inertia does not fit in the bound (%2)</source>
         <translation>%1: ein Körper mit dieser Trägheit passt nicht in die Grenze (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadSession</name>
+    <message>
+        <location filename="../core/session/PayloadSession.cpp" line="+23"/>
+        <source>payload: only a URDF robot carries a payload (the model is %1)</source>
+        <translation>payload: nur ein URDF-Roboter trägt eine Nutzlast (das Modell ist %1)</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
+        <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>trial %1 refused before motion: %2</source>
+        <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>trial %1 did not complete (%2): the payload estimate is unchanged</source>
+        <translation>Versuch %1 wurde nicht vollständig ausgeführt (%2): die Schätzung der Nutzlast bleibt unverändert</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>trial %1</source>
+        <translation>Versuch %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the payload fit produced non-finite parameters</source>
+        <translation>der Nutzlast-Fit ergab nicht endliche Parameter</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>trial %1 not learned from: %2</source>
+        <translation>aus Versuch %1 nicht gelernt: %2</translation>
     </message>
 </context>
 <context>
@@ -2820,12 +2858,12 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+203"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+204"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+279"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+287"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2851,7 +2889,7 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-247"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-254"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -2861,7 +2899,7 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+87"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
@@ -2930,11 +2968,42 @@
         <source>must have 3 entries (x, y, z in the base link&apos;s frame), got %1</source>
         <translation>muss 3 Einträge haben (x, y, z im Koordinatensystem des Basisglieds), gefunden: %1</translation>
     </message>
+    <message>
+        <location filename="../core/io/ScenarioPayload.cpp" line="+40"/>
+        <source>x, y and z</source>
+        <translation>x, y und z</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Ixx, Ixy, Iyy, Ixz, Iyz and Izz</source>
+        <translation>Ixx, Ixy, Iyy, Ixz, Iyz und Izz</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+62"/>
+        <source>x0, y0, z0, x1, y1 and z1</source>
+        <translation>x0, y0, z0, x1, y1 und z1</translation>
+    </message>
+    <message>
+        <location line="-58"/>
+        <source>give the bound either as a sphere (radius) or as a box, not both</source>
+        <translation>die Schranke entweder als Kugel (radius) oder als Quader (box) angeben, nicht beides</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>only a URDF robot carries a payload (the model is %1)</source>
+        <translation>nur ein URDF-Roboter trägt eine Nutzlast (das Modell ist %1)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>not a real body&apos;s inertia (principal moments %1, %2, %3 kg m^2 must not be negative and each at most the sum of the others)</source>
+        <translation>nicht die Trägheit eines realen Körpers (die Hauptträgheitsmomente %1, %2, %3 kg m^2 dürfen nicht negativ sein, und jedes höchstens die Summe der anderen)</translation>
+    </message>
 </context>
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+71"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+73"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits: Gelenk %1 (%2) hat im URDF keine Momentengrenze (effort): die Momentengrenzen im Szenario angeben</translation>
     </message>
@@ -3799,9 +3868,10 @@
         <location line="+66"/>
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+203"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+105"/>
-        <location line="+9"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+207"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+83"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+106"/>
+        <location line="+11"/>
         <location line="+6"/>
         <location line="+13"/>
         <location line="+12"/>
@@ -3876,7 +3946,7 @@
         <translation>--can-sync-timeout: muss eine ganze Zahl von ms von 1 bis 60000 sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-205"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-207"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1: %2</translation>
@@ -4242,7 +4312,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--nodes %1: %2 Knoten-IDs für einen Roboter mit %3 Gelenken: ein Knoten pro Gelenk ist nötig</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
         <translation>--iterations: %1 Versuche brauchen %1 aufgezeichnete Versuche, die Logs enthalten %2</translation>
     </message>
@@ -4274,6 +4344,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+39"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4664,7 +4735,7 @@ neue Schätzung.
         <translation>learnid-cli: Fehler: --robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-156"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-160"/>
         <source>value</source>
         <translation>Größe</translation>
     </message>
@@ -4689,17 +4760,17 @@ neue Schätzung.
         <translation>Herkunft</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+50"/>
         <source>the logs</source>
         <translation>die Logs</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-38"/>
         <source>the prior (not identified)</source>
         <translation>die Vorgabe (nicht identifiziert)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>%1 on %2</source>
         <translation>%1 auf %2</translation>
     </message>
@@ -4732,7 +4803,7 @@ neue Schätzung.
         </translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Warning: the plausible estimate did not converge (%1).
 </source>
         <translation>Warnung: die plausible Schätzung ist nicht konvergiert (%1).
@@ -4865,6 +4936,51 @@ neue Schätzung.
         <location line="+7"/>
         <source>--payload-box: must be six numbers X0,Y0,Z0,X1,Y1,Z1 [m], got &apos;%1&apos;</source>
         <translation>--payload-box: muss aus sechs Zahlen X0,Y0,Z0,X1,Y1,Z1 [m] bestehen, erhalten: „%1“</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-73"/>
+        <source>all</source>
+        <translation>alle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
+        <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten Roboter gelernt, und nichts wird geschrieben)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
+        <translation>learnid-cli: %1, die Nutzlast an %2 in %3 Versuchen gelernt; das Modell des Arms bleibt fest (robot.initialParameters)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>learnid-cli: the path determines %1 of the payload&apos;s 10 parameters</source>
+        <translation>learnid-cli: die Bahn bestimmt %1 der 10 Parameter der Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  identified</source>
+        <translation>Vers.  max. Fehl.  RMS-Fehl.  Masse[kg]  Schwerpunkt [mm]       Update  identifiziert</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>          [deg]      [deg]                                       [ms]</source>
+        <translation>          [°]        [°]                                          [ms]</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>The payload after trial %1 (bound: %2):</source>
+        <translation>Die Nutzlast nach Versuch %1 (Schranke: %2):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the trials</source>
+        <translation>die Versuche</translation>
     </message>
 </context>
 <context>

@@ -112,7 +112,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/cli/PayloadCommand.cpp" line="+91"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+93"/>
         <source>Fitted to %n log(s), %1 samples: %2 of 10 directions determined (condition %3).
 </source>
         <translation>

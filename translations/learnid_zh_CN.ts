@@ -1341,7 +1341,7 @@
         <translation>没有可供学习的已完成试验</translation>
     </message>
     <message>
-        <location filename="../core/identify/LearningLaw.cpp" line="+75"/>
+        <location filename="../core/identify/LearningLaw.cpp" line="+87"/>
         <source>trial record does not match its plan: %1 of %2 samples, %3 joints recorded for a %4-joint model</source>
         <translation>试验记录与其计划不符：%2 个采样点中记录了 %1 个，%4 关节模型记录了 %3 个关节</translation>
     </message>
@@ -1840,7 +1840,7 @@
         <translation>最小二乘维度不匹配：%1 x %2 回归矩阵，%3 个目标值，%4 个关节，%5 个参数</translation>
     </message>
     <message>
-        <location filename="../core/identify/ObservableUpdate.cpp" line="+19"/>
+        <location filename="../core/identify/ObservableUpdate.cpp" line="+20"/>
         <source>the regressor or the torque contains non-finite values</source>
         <translation>回归矩阵或力矩包含非有限值</translation>
     </message>
@@ -2217,7 +2217,7 @@
 <context>
     <name>PayloadFit</name>
     <message>
-        <location filename="../core/identify/PayloadFit.cpp" line="+87"/>
+        <location filename="../core/identify/PayloadFit.cpp" line="+93"/>
         <source>%1 has %2 joints, the robot %3</source>
         <translation>%1 有 %2 个关节，机器人有 %3 个</translation>
     </message>
@@ -2339,6 +2339,44 @@
         <location line="+4"/>
         <source>%1: a body with this inertia does not fit in the bound (%2)</source>
         <translation>%1：具有该惯量的物体无法放入边界（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadSession</name>
+    <message>
+        <location filename="../core/session/PayloadSession.cpp" line="+23"/>
+        <source>payload: only a URDF robot carries a payload (the model is %1)</source>
+        <translation>payload：只有 URDF 机器人才能携带负载（模型为 %1）</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
+        <translation>场景与 %1 模型不符：需要 %2 个参数以及 %3 个关节限值和增益</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>trial %1 refused before motion: %2</source>
+        <translation>试验 %1 在运动前被拒绝：%2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>trial %1 did not complete (%2): the payload estimate is unchanged</source>
+        <translation>试验 %1 未完成（%2）：负载估计保持不变</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>trial %1</source>
+        <translation>试验 %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the payload fit produced non-finite parameters</source>
+        <translation>负载拟合得到了非有限的参数</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>trial %1 not learned from: %2</source>
+        <translation>未从试验 %1 学习：%2</translation>
     </message>
 </context>
 <context>
@@ -2809,12 +2847,12 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+203"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+204"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+279"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+287"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2840,7 +2878,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-247"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-254"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -2850,7 +2888,7 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+87"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
@@ -2919,11 +2957,42 @@
         <source>must have 3 entries (x, y, z in the base link&apos;s frame), got %1</source>
         <translation>必须有 3 个条目（基座连杆坐标系中的 x、y、z），实际为 %1</translation>
     </message>
+    <message>
+        <location filename="../core/io/ScenarioPayload.cpp" line="+40"/>
+        <source>x, y and z</source>
+        <translation>x、y 和 z</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Ixx, Ixy, Iyy, Ixz, Iyz and Izz</source>
+        <translation>Ixx、Ixy、Iyy、Ixz、Iyz 和 Izz</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+62"/>
+        <source>x0, y0, z0, x1, y1 and z1</source>
+        <translation>x0、y0、z0、x1、y1 和 z1</translation>
+    </message>
+    <message>
+        <location line="-58"/>
+        <source>give the bound either as a sphere (radius) or as a box, not both</source>
+        <translation>边界请给出球体（radius）或长方体（box）之一，不能同时给出</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>only a URDF robot carries a payload (the model is %1)</source>
+        <translation>只有 URDF 机器人才能携带负载（模型为 %1）</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>not a real body&apos;s inertia (principal moments %1, %2, %3 kg m^2 must not be negative and each at most the sum of the others)</source>
+        <translation>不是真实物体的惯量（主惯量 %1、%2、%3 kg m^2 不得为负，且每个不得大于其余两个之和）</translation>
+    </message>
 </context>
 <context>
     <name>ScenarioRobot</name>
     <message>
-        <location filename="../core/session/ScenarioRobot.cpp" line="+71"/>
+        <location filename="../core/session/ScenarioRobot.cpp" line="+73"/>
         <source>robot.torqueLimits: joint %1 (%2) has no effort limit in the URDF: give the torque limits in the scenario</source>
         <translation>robot.torqueLimits：关节 %1（%2）在 URDF 中没有 effort 限值：请在场景中给出力矩限值</translation>
     </message>
@@ -3787,9 +3856,10 @@
         <location line="+66"/>
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+203"/>
-        <location filename="../app/cli/RunCommand.cpp" line="+105"/>
-        <location line="+9"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+207"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+83"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+106"/>
+        <location line="+11"/>
         <location line="+6"/>
         <location line="+13"/>
         <location line="+12"/>
@@ -3864,7 +3934,7 @@
         <translation>--can-sync-timeout：必须是 1 到 60000 之间的整数毫秒，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/cli/RunCommand.cpp" line="-205"/>
+        <location filename="../app/cli/RunCommand.cpp" line="-207"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+9"/>
         <source>--nodes %1: %2</source>
         <translation>--nodes %1：%2</translation>
@@ -4228,7 +4298,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--nodes %1：%2 个节点 ID，而机器人有 %3 个关节：每个关节需要一个节点</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
         <translation>--iterations：%1 次试验需要 %1 次已记录的试验，日志中有 %2 次</translation>
     </message>
@@ -4260,6 +4330,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+39"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4648,7 +4719,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：错误：--robot %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-156"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-160"/>
         <source>value</source>
         <translation>量</translation>
     </message>
@@ -4673,17 +4744,17 @@ stdout, and the next plan uses the new estimate.
         <translation>来源</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+50"/>
         <source>the logs</source>
         <translation>日志</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-38"/>
         <source>the prior (not identified)</source>
         <translation>先验（未辨识）</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>%1 on %2</source>
         <translation>%1（基于 %2）</translation>
     </message>
@@ -4714,7 +4785,7 @@ stdout, and the next plan uses the new estimate.
         </translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Warning: the plausible estimate did not converge (%1).
 </source>
         <translation>警告：合理估计未收敛（%1）。
@@ -4847,6 +4918,51 @@ stdout, and the next plan uses the new estimate.
         <location line="+7"/>
         <source>--payload-box: must be six numbers X0,Y0,Z0,X1,Y1,Z1 [m], got &apos;%1&apos;</source>
         <translation>--payload-box：必须是六个数 X0,Y0,Z0,X1,Y1,Z1 [m]，收到“%1”</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-73"/>
+        <source>all</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
+        <translation>%1：带 payload 段时尚不可用（负载在仿真机器人上学习，不写入任何文件）</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
+        <translation>learnid-cli：%1，在 %3 次试验中学习 %2 上的负载；机械臂模型保持固定（robot.initialParameters）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>learnid-cli: the path determines %1 of the payload&apos;s 10 parameters</source>
+        <translation>learnid-cli：该路径可确定负载 10 个参数中的 %1 个</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  identified</source>
+        <translation>试验   最大误差   RMS误差   质量[kg]   质心 [mm]              更新    已辨识</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>          [deg]      [deg]                                       [ms]</source>
+        <translation>          [°]        [°]                                          [ms]</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>The payload after trial %1 (bound: %2):</source>
+        <translation>试验 %1 之后的负载（边界：%2）：</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the trials</source>
+        <translation>试验</translation>
     </message>
 </context>
 <context>

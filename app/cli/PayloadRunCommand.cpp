@@ -21,11 +21,6 @@ extern "C" void onPayloadInterrupt(int)
         g_session->requestCancel(); // an atomic store: async-signal-safe
 }
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("learnid-cli", text);
-}
-
 // The options a payload session does not offer yet, by name; empty when none is set.
 QString unsupportedOption(const RunOptions &o)
 {
@@ -51,8 +46,9 @@ QString identifiedValues(const PayloadEstimate &e)
         if (e.bodyIdentified[size_t(i)])
             names << all.at(i);
     if (names.size() == 10)
-        return tr("all");
-    return names.isEmpty() ? tr("none") : names.join(QStringLiteral(", "));
+        return QCoreApplication::translate("learnid-cli", "all");
+    return names.isEmpty() ? QCoreApplication::translate("learnid-cli", "none")
+                           : names.join(QStringLiteral(", "));
 }
 
 QString trialRow(const PayloadTrial &t)
@@ -84,12 +80,15 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
                            QTextStream &err)
 {
     const auto fail = [&err](const QString &message, ExitCode code) {
-        err << tr("learnid-cli: error: %1").arg(message) << Qt::endl;
+        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(message)
+            << Qt::endl;
         return code;
     };
     if (const QString option = unsupportedOption(options); !option.isEmpty()) {
-        return fail(tr("%1: not available with a payload section yet (the payload is learned on "
-                       "the simulated robot, and nothing is written)")
+        return fail(QCoreApplication::translate(
+                        "learnid-cli",
+                        "%1: not available with a payload section yet (the payload is learned on "
+                        "the simulated robot, and nothing is written)")
                         .arg(option),
                     ExitBadInput);
     }
@@ -105,22 +104,33 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
     }
     const QString link = session->payloadModel().link();
     if (!options.quiet) {
-        err << tr("learnid-cli: %1, the payload on %2 learned in %3 trials; the arm's model is "
-                  "held fixed (robot.initialParameters)")
+        err << QCoreApplication::translate(
+                   "learnid-cli",
+                   "learnid-cli: %1, the payload on %2 learned in %3 trials; the arm's model is "
+                   "held fixed (robot.initialParameters)")
                    .arg(session->robot().description(), link)
                    .arg(scenario.iterations)
             << Qt::endl;
         // What the path lets the trials see, before the robot moves.
         const PayloadObservability o = session->observability();
-        err << tr("learnid-cli: the path determines %1 of the payload's 10 parameters").arg(o.rank)
+        err << QCoreApplication::translate(
+                   "learnid-cli",
+                   "learnid-cli: the path determines %1 of the payload's 10 parameters")
+                   .arg(o.rank)
             << Qt::endl;
         for (const QString &line : o.advice(link))
-            err << tr("learnid-cli: %1").arg(line) << Qt::endl;
+            err << QCoreApplication::translate("learnid-cli", "learnid-cli: %1").arg(line)
+                << Qt::endl;
     }
-    out << tr("trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  "
-              "identified")
+    out << QCoreApplication::translate(
+               "learnid-cli",
+               "trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  "
+               "identified")
         << Qt::endl
-        << tr("          [deg]      [deg]                                       [ms]") << Qt::endl;
+        << QCoreApplication::translate(
+               "learnid-cli",
+               "          [deg]      [deg]                                       [ms]")
+        << Qt::endl;
     g_session = session.get();
     const auto previous = std::signal(SIGINT, onPayloadInterrupt);
     bool completed = true;
@@ -137,11 +147,12 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
             learned = &t;
     if (learned) {
         out << Qt::endl
-            << tr("The payload after trial %1 (bound: %2):")
+            << QCoreApplication::translate("learnid-cli", "The payload after trial %1 (bound: %2):")
                    .arg(learned->index)
                    .arg(session->prior().bound.describe())
             << Qt::endl
-            << payloadTable(learned->fit->estimate, tr("the trials"));
+            << payloadTable(learned->fit->estimate,
+                            QCoreApplication::translate("learnid-cli", "the trials"));
     }
     out.flush();
     if (!completed)
