@@ -5,6 +5,7 @@
 // the limit; what it recorded up to the stop lets a later trial complete, and the error falls.
 // The CAD URDF is read in place from ../shared/data; skipped without it.
 #include "../support/SharedData.h"
+#include "../support/ZooRobot.h"
 #include "io/ScenarioFile.h"
 #include "model/ModelFactory.h"
 #include "service/SessionExport.h"
@@ -16,64 +17,23 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+#include <array>
 
 using namespace learnid;
 
 namespace {
 
-// Every number of attribute `name` in `xml` replaced by f(i, value), i counting the matches.
-QString scaleAttribute(const QString &xml, const QString &element, const QString &name,
-                       const std::function<QString(int, const QString &)> &f)
-{
-    const QRegularExpression re(
-        QStringLiteral("(<%1\\b[^>]*\\b%2=\")([^\"]*)(\")").arg(element, name));
-    QString out;
-    qsizetype from = 0;
-    int i = 0;
-    for (auto it = re.globalMatch(xml); it.hasNext();) {
-        const QRegularExpressionMatch m = it.next();
-        out += xml.mid(from, m.capturedStart(2) - from);
-        out += f(i++, m.captured(2));
-        from = m.capturedEnd(2);
-    }
-    return out + xml.mid(from);
-}
-
-// Robot (a) of issue 23 from the CAD URDF's text.
+// Robot (a) of issue 23 from the CAD URDF's text: masses alternately x0.8 and x1.25 (the fixed
+// base's block first), centres of mass 2 cm off along x.
 QString robotA(const QString &cad)
 {
-    // The inertial blocks in order: the fixed base's first, then links 1..7.
-    QString xml = scaleAttribute(cad, QStringLiteral("mass"), QStringLiteral("value"),
-                                 [](int i, const QString &v) {
-                                     return QString::number(v.toDouble() * (i % 2 ? 1.25 : 0.8));
-                                 });
-    for (const char *c : {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"})
-        xml = scaleAttribute(
-            xml, QStringLiteral("inertia"), QString::fromLatin1(c),
-            [](int, const QString &v) { return QString::number(v.toDouble() * 1.4); });
-    // Centres of mass 2 cm off along x: the <origin> inside each <inertial>.
-    const QRegularExpression inertialOrigin(
-        QStringLiteral("(<inertial>\\s*<mass[^>]*>\\s*<origin[^>]*xyz=\")([^\"]*)(\")"));
-    QString moved;
-    qsizetype from = 0;
-    for (auto it = inertialOrigin.globalMatch(xml); it.hasNext();) {
-        const QRegularExpressionMatch m = it.next();
-        QStringList xyz = m.captured(2).split(QLatin1Char(' '), Qt::SkipEmptyParts);
-        xyz[0] = QString::number(xyz[0].toDouble() + 0.02);
-        moved += xml.mid(from, m.capturedStart(2) - from) + xyz.join(QLatin1Char(' '));
-        from = m.capturedEnd(2);
-    }
-    xml = moved + xml.mid(from);
-    // Joint friction as real arms have it [N m], viscous [N m s/rad] half as much again.
-    const double coulomb[] = {0.94, 1.2, 0.6, 0.9, 0.93, 0.8, 0.3};
-    xml = scaleAttribute(xml, QStringLiteral("dynamics"), QStringLiteral("friction"),
-                         [&](int i, const QString &) { return QString::number(coulomb[i % 7]); });
-    xml = scaleAttribute(xml, QStringLiteral("dynamics"), QStringLiteral("damping"),
-                         [](int, const QString &v) { return QString::number(v.toDouble() * 1.5); });
-    return xml;
+    return support::robotAUrdf(
+        cad, [](int i) { return i % 2 ? 1.25 : 0.8; },
+        [](int) {
+            return std::array<double, 3>{0.02, 0.0, 0.0};
+        });
 }
 
 double maxErrorDeg(const TrialResult &t)
