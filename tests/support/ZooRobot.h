@@ -18,8 +18,7 @@ inline constexpr double kRobotACoulomb[7] = {0.94, 1.2, 0.6, 0.9, 0.93, 0.8, 0.3
 
 /// Every number of attribute `name` of `element` in `xml` replaced by f(i, value), i counting
 /// the matches in document order.
-inline QString replaceUrdfAttribute(const QString &xml, const QString &element,
-                                    const QString &name,
+inline QString replaceUrdfAttribute(const QString &xml, const QString &element, const QString &name,
                                     const std::function<QString(int, const QString &)> &f)
 {
     const QRegularExpression re(
@@ -52,8 +51,9 @@ inline QString robotAUrdf(const QString &cad, const std::function<double(int)> &
         cad, QStringLiteral("mass"), QStringLiteral("value"),
         [&](int i, const QString &v) { return urdfNumber(v.toDouble() * massFactor(i)); });
     for (const char *c : {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"})
-        xml = replaceUrdfAttribute(xml, QStringLiteral("inertia"), QString::fromLatin1(c),
-                                   [](int, const QString &v) { return urdfNumber(v.toDouble() * 1.4); });
+        xml = replaceUrdfAttribute(
+            xml, QStringLiteral("inertia"), QString::fromLatin1(c),
+            [](int, const QString &v) { return urdfNumber(v.toDouble() * 1.4); });
     // The <origin> inside each <inertial>.
     const QRegularExpression inertialOrigin(
         QStringLiteral("(<inertial>\\s*<mass[^>]*>\\s*<origin[^>]*xyz=\")([^\"]*)(\")"));
@@ -70,8 +70,9 @@ inline QString robotAUrdf(const QString &cad, const std::function<double(int)> &
         from = m.capturedEnd(2);
     }
     xml = moved + xml.mid(from);
-    xml = replaceUrdfAttribute(xml, QStringLiteral("dynamics"), QStringLiteral("friction"),
-                               [](int j, const QString &) { return urdfNumber(kRobotACoulomb[j % 7]); });
+    xml = replaceUrdfAttribute(
+        xml, QStringLiteral("dynamics"), QStringLiteral("friction"),
+        [](int j, const QString &) { return urdfNumber(kRobotACoulomb[j % 7]); });
     return replaceUrdfAttribute(
         xml, QStringLiteral("dynamics"), QStringLiteral("damping"),
         [](int, const QString &v) { return urdfNumber(v.toDouble() * 1.5); });
