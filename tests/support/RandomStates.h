@@ -7,10 +7,10 @@
 
 namespace learnid::test {
 
-inline void forRandomStates(int joints, unsigned seed, int count,
-                            const std::function<void(const Eigen::VectorXd &q,
-                                                     const Eigen::VectorXd &qd,
-                                                     const Eigen::VectorXd &qdd)> &check)
+inline void
+forRandomStates(int joints, unsigned seed, int count,
+                const std::function<void(const Eigen::VectorXd &q, const Eigen::VectorXd &qd,
+                                         const Eigen::VectorXd &qdd)> &check)
 {
     std::mt19937 random(seed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
