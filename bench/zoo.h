@@ -26,12 +26,9 @@ struct ZooOptions
     bool jointLevels = false;     ///< EstimatorSettings::jointLevelObservability
 };
 
-/// Joint Coulomb friction of the zoo robots [N m] (tst_learnfromabort's; joint 5's 0.93 N m is
-/// what the recorded logs of ../shared/data/kuka-lwr4 show, issue 23).
-extern const double kZooCoulomb[7];
-
 /// Robot (a) of issue 23 from the CAD URDF's text: link masses x0.8 or x1.25 and centres of
-/// mass moved 2 cm in a direction drawn with `seed`, inertia x1.4, kZooCoulomb, viscous x1.5.
+/// mass moved 2 cm in a direction drawn with `seed`, inertia x1.4, support::kRobotACoulomb, viscous
+/// x1.5 (tests/support/ZooRobot.h).
 QString zooRobotUrdf(const QString &cad, quint64 seed);
 
 /// The session's scenario for robot 'a'..'d' (realistic joints drawn with `seed`): 2^20 counts

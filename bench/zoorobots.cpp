@@ -2,11 +2,14 @@
 // realistic-joint variants), built from the CAD URDF's text with a seed.
 #include "zoo.h"
 
+#include "../tests/support/ZooRobot.h"
+
 #include "io/ScenarioFile.h"
 #include "session/RobotScenario.h"
 
 #include <QFile>
 #include <QRegularExpression>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -16,30 +19,6 @@
 namespace learnid::bench {
 
 namespace {
-
-// Every number of attribute `name` of `element` in `xml` replaced by f(i, value), i counting
-// the matches (as tests/service/tst_learnfromabort does).
-QString replaceAttribute(const QString &xml, const QString &element, const QString &name,
-                         const std::function<QString(int, const QString &)> &f)
-{
-    const QRegularExpression re(
-        QStringLiteral("(<%1\\b[^>]*\\b%2=\")([^\"]*)(\")").arg(element, name));
-    QString out;
-    qsizetype from = 0;
-    int i = 0;
-    for (auto it = re.globalMatch(xml); it.hasNext();) {
-        const QRegularExpressionMatch m = it.next();
-        out += xml.mid(from, m.capturedStart(2) - from);
-        out += f(i++, m.captured(2));
-        from = m.capturedEnd(2);
-    }
-    return out + xml.mid(from);
-}
-
-QString number(double v)
-{
-    return QString::number(v, 'g', 12);
-}
 
 // docs/scenario.md's KUKA LWR4+ scenario (the one tst_learnfromabort runs).
 const char *const kDocsScenario = R"({
@@ -59,42 +38,22 @@ const char *const kDocsScenario = R"({
 
 } // namespace
 
-const double kZooCoulomb[7] = {0.94, 1.2, 0.6, 0.9, 0.93, 0.8, 0.3};
-
 QString zooRobotUrdf(const QString &cad, quint64 seed)
 {
     std::mt19937_64 rng(seed * 7919u + 17u);
     std::bernoulli_distribution heavier(0.5);
     std::normal_distribution<double> gauss;
-    // Link masses x0.8 or x1.25, drawn per link (the base's block too, which never moves).
-    QString xml = replaceAttribute(
-        cad, QStringLiteral("mass"), QStringLiteral("value"),
-        [&](int, const QString &v) { return number(v.toDouble() * (heavier(rng) ? 1.25 : 0.8)); });
-    for (const char *c : {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"})
-        xml = replaceAttribute(xml, QStringLiteral("inertia"), QString::fromLatin1(c),
-                               [](int, const QString &v) { return number(v.toDouble() * 1.4); });
-    // Centres of mass moved 2 cm in a direction drawn uniformly on the sphere.
-    const QRegularExpression inertialOrigin(
-        QStringLiteral("(<inertial>\\s*<mass[^>]*>\\s*<origin[^>]*xyz=\")([^\"]*)(\")"));
-    QString moved;
-    qsizetype from = 0;
-    for (auto it = inertialOrigin.globalMatch(xml); it.hasNext();) {
-        const QRegularExpressionMatch m = it.next();
-        QStringList xyz = m.captured(2).split(QLatin1Char(' '), Qt::SkipEmptyParts);
-        double d[3] = {gauss(rng), gauss(rng), gauss(rng)};
-        const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        for (int k = 0; k < 3; ++k)
-            xyz[k] = number(xyz[k].toDouble() + 0.02 * d[k] / norm);
-        moved += xml.mid(from, m.capturedStart(2) - from) + xyz.join(QLatin1Char(' '));
-        from = m.capturedEnd(2);
-    }
-    xml = moved + xml.mid(from);
-    // Joint friction as tst_learnfromabort gives it: Coulomb kZooCoulomb, viscous CAD x1.5.
-    xml = replaceAttribute(xml, QStringLiteral("dynamics"), QStringLiteral("friction"),
-                           [&](int i, const QString &) { return number(kZooCoulomb[i % 7]); });
-    xml = replaceAttribute(xml, QStringLiteral("dynamics"), QStringLiteral("damping"),
-                           [](int, const QString &v) { return number(v.toDouble() * 1.5); });
-    return xml;
+    // Link masses x0.8 or x1.25, drawn per link (the base's block too, which never moves);
+    // centres of mass moved 2 cm in a direction drawn uniformly on the sphere.
+    return support::robotAUrdf(
+        cad, [&](int) { return heavier(rng) ? 1.25 : 0.8; },
+        [&](int) {
+            std::array<double, 3> d = {gauss(rng), gauss(rng), gauss(rng)};
+            const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            for (double &v : d)
+                v *= 0.02 / norm;
+            return d;
+        });
 }
 
 Scenario zooScenario(const ZooOptions &o, const QString &cadPath, const QString &realPath,

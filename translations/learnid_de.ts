@@ -1470,12 +1470,12 @@
         <translation>kein Log zum Identifizieren: ein Trainings-Log hinzufügen</translation>
     </message>
     <message>
-        <location filename="../core/service/LogIdentificationExport.cpp" line="+29"/>
+        <location filename="../core/service/LogIdentificationExport.cpp" line="+27"/>
         <source>%1 (%2), identified from the logs %3</source>
         <translation>%1 (%2), identifiziert aus den Logs %3</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+24"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>die Reglerverstärkungen, die die Parameterdatei festhält, gelten für %1 Gelenke, der Roboter hat %2</translation>
     </message>
@@ -2213,12 +2213,12 @@
 <context>
     <name>PayloadExport</name>
     <message>
-        <location filename="../core/service/PayloadExport.cpp" line="+50"/>
+        <location filename="../core/service/PayloadExport.cpp" line="+48"/>
         <source>%1 (%2) with a payload on %3 identified from the logs %4</source>
         <translation>%1 (%2) mit einer Nutzlast an %3, identifiziert aus den Logs %4</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+48"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>die Reglerverstärkungen, die die Parameterdatei festhält, gelten für %1 Gelenke, der Roboter hat %2</translation>
     </message>
@@ -3261,7 +3261,7 @@
 <context>
     <name>StandardExport</name>
     <message>
-        <location filename="../core/service/StandardExport.cpp" line="+37"/>
+        <location filename="../core/service/StandardExport.cpp" line="+38"/>
         <source>data</source>
         <translation>Daten</translation>
     </message>

@@ -1470,12 +1470,12 @@
         <translation>没有可用于辨识的日志：请添加一个训练日志</translation>
     </message>
     <message>
-        <location filename="../core/service/LogIdentificationExport.cpp" line="+29"/>
+        <location filename="../core/service/LogIdentificationExport.cpp" line="+27"/>
         <source>%1 (%2), identified from the logs %3</source>
         <translation>%1（%2），由日志 %3 辨识</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+24"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>参数文件记录的控制器增益适用于 %1 个关节，机器人有 %2 个</translation>
     </message>
@@ -2204,12 +2204,12 @@
 <context>
     <name>PayloadExport</name>
     <message>
-        <location filename="../core/service/PayloadExport.cpp" line="+50"/>
+        <location filename="../core/service/PayloadExport.cpp" line="+48"/>
         <source>%1 (%2) with a payload on %3 identified from the logs %4</source>
         <translation>%1（%2），%3 上的负载由日志 %4 辨识</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+48"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>参数文件记录的控制器增益适用于 %1 个关节，机器人有 %2 个</translation>
     </message>
@@ -3250,7 +3250,7 @@
 <context>
     <name>StandardExport</name>
     <message>
-        <location filename="../core/service/StandardExport.cpp" line="+37"/>
+        <location filename="../core/service/StandardExport.cpp" line="+38"/>
         <source>data</source>
         <translation>数据</translation>
     </message>

@@ -10,7 +10,6 @@
 #include "service/StandardExport.h"
 
 #include <QCoreApplication>
-#include <QDateTime>
 #include <QFileInfo>
 
 namespace learnid {
@@ -23,20 +22,11 @@ ParameterFileContent logParameterFile(const LogIdentificationResult &result,
         logs << QFileInfo(log).fileName();
     const LogFit &fit = result.fit;
     const ChainModel &model = result.model();
-    ParameterFileContent c;
-    c.robotModel = result.robot.modelId;
-    c.robotDescription =
+    ParameterFileContent c = logFileHeader(
+        model, result.robot.modelId,
         QCoreApplication::translate("LogIdentification", "%1 (%2), identified from the logs %3")
-            .arg(result.robot.chain.name, result.robot.source, logs.join(QStringLiteral(", ")));
-    c.hasController = controller.has_value();
-    if (controller)
-        c.controller = *controller;
-    for (int j = 0; j < model.dof(); ++j)
-        c.jointNodes.append(j + 1);
-    c.created = QDateTime::currentDateTimeUtc();
-    c.toolVersion = QStringLiteral(LEARNID_VERSION);
-    c.law = QStringLiteral("improved"); // its zero-phase filter F(s) prepares the logs
-    c.parameters = model.parameters();
+            .arg(result.robot.chain.name, result.robot.source, logs.join(QStringLiteral(", "))),
+        controller);
     c.values = fit.base;
     c.residualRms = fit.trainingRms;
     c.condition = fit.condition;

@@ -9,7 +9,6 @@
 #include "service/StandardExport.h"
 
 #include <QCoreApplication>
-#include <QDateTime>
 #include <QFileInfo>
 #include <cmath>
 #include <limits>
@@ -41,24 +40,15 @@ ParameterFileContent payloadParameterFile(const PayloadIdentificationResult &r,
     for (const QString &log : r.trainingLogs)
         logs << QFileInfo(log).fileName();
     const ChainModel &model = *r.arm.robot.model;
-    ParameterFileContent c;
-    c.robotModel = r.arm.robot.modelId;
     const QString arm = r.arm.parameterFile.isEmpty()
                             ? r.arm.robot.source
                             : QStringLiteral("%1, %2").arg(r.arm.robot.source, r.arm.parameterFile);
-    c.robotDescription =
+    ParameterFileContent c = logFileHeader(
+        model, r.arm.robot.modelId,
         QCoreApplication::translate("PayloadExport",
                                     "%1 (%2) with a payload on %3 identified from the logs %4")
-            .arg(r.arm.robot.chain.name, arm, r.model->link(), logs.join(QStringLiteral(", ")));
-    c.hasController = controller.has_value();
-    if (controller)
-        c.controller = *controller;
-    for (int j = 0; j < model.dof(); ++j)
-        c.jointNodes.append(j + 1);
-    c.created = QDateTime::currentDateTimeUtc();
-    c.toolVersion = QStringLiteral(LEARNID_VERSION);
-    c.law = QStringLiteral("improved"); // its zero-phase filter F(s) prepares the logs
-    c.parameters = model.parameters();
+            .arg(r.arm.robot.chain.name, arm, r.model->link(), logs.join(QStringLiteral(", "))),
+        controller);
     c.values = model.baseFromStandard(r.arm.standard);
     c.residualRms = r.fit.trainingRms;
     const PayloadObservability &o = r.fit.estimate.observability;

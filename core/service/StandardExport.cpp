@@ -3,6 +3,7 @@
 #include "model/Error.h"
 
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QLocale>
 #include <algorithm>
 #include <cmath>
@@ -121,6 +122,25 @@ void setStandardParameters(ParameterFileContent &content, const ChainModel &mode
     content.standardParameters = model.standardParameters();
     content.standardValues = pi;
     content.standardDetermined = determined;
+}
+
+ParameterFileContent logFileHeader(const ChainModel &model, const QString &robotModel,
+                                   const QString &description,
+                                   const std::optional<ControllerSettings> &controller)
+{
+    ParameterFileContent c;
+    c.robotModel = robotModel;
+    c.robotDescription = description;
+    c.hasController = controller.has_value();
+    if (controller)
+        c.controller = *controller;
+    for (int j = 0; j < model.dof(); ++j)
+        c.jointNodes.append(j + 1);
+    c.created = QDateTime::currentDateTimeUtc();
+    c.toolVersion = QStringLiteral(LEARNID_VERSION);
+    c.law = QStringLiteral("improved"); // its zero-phase filter F(s) prepares the logs
+    c.parameters = model.parameters();
+    return c;
 }
 
 } // namespace learnid

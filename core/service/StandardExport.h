@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <QStringList>
+#include <optional>
 #include <vector>
 
 namespace learnid {
@@ -37,5 +38,13 @@ QStringList determinedNotes(const ChainModel &model, const Eigen::VectorXd &pi,
 /// parameters' names and units, pi, and the shares (empty: unknown).
 void setStandardParameters(ParameterFileContent &content, const ChainModel &model,
                            const Eigen::VectorXd &pi, const std::vector<double> &determined);
+
+/// The part of a parameter file every identification from logs fills alike: the robot model's
+/// id and description, the controller (when given), joint j on node j + 1, the time and tool
+/// version, the law whose zero-phase filter prepares the logs ("improved"), and the model's
+/// parameter names.
+ParameterFileContent logFileHeader(const ChainModel &model, const QString &robotModel,
+                                   const QString &description,
+                                   const std::optional<ControllerSettings> &controller);
 
 } // namespace learnid

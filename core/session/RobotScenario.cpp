@@ -21,6 +21,20 @@ struct Text
 };
 
 constexpr double kBandwidth = 25.0; ///< closed-loop bandwidth the default gains aim at [rad/s]
+/// Share of a joint's torque limit its Coulomb friction may reach on the real robot, whatever
+/// the CAD model says: geared joints lose a few per cent of their rated torque to friction (the
+/// KUKA LWR4+'s recorded logs: 0.3 to 1.2 N m on limits of 38 to 176 N m, where its CAD model
+/// says 0.2 N m everywhere).
+constexpr double kFrictionShareOfLimit = 0.01;
+
+// The Coulomb friction the gains must hold: the CAD's, or kFrictionShareOfLimit of the joint's
+// torque limit when that is more.
+double designFriction(const ChainJoint &joint)
+{
+    const double limit = joint.effortLimit;
+    const double share = std::isfinite(limit) && limit > 0.0 ? kFrictionShareOfLimit * limit : 0.0;
+    return std::max(joint.friction, share);
+}
 /// Damping ratio: critical damping leaves the 7-axis arms' coupled loops a slow mode at the
 /// edge of stability when they move (Coriolis terms); 1.5 keeps every built-in robot stable.
 constexpr double kDamping = 1.5;
@@ -108,7 +122,7 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf)
     for (int j = 0; j < n; ++j) {
         const ChainJoint &joint = chain->chain().joints[size_t(j)];
         const double kp = std::max(inertia[j] * kBandwidth * kBandwidth + gravityStiffness[j],
-                                   joint.friction / 0.05);
+                                   designFriction(joint) / 0.05);
         const double damping = kDamping * 2.0 * std::sqrt(kp * inertia[j]);
         s.controller.kp[j] = kp;
         s.controller.kd[j] = std::max(damping - joint.damping, 0.1 * damping);

@@ -12,8 +12,9 @@ namespace learnid {
 /// the paper scenario for "paper-2link"; for a URDF robot a path of three joint waypoints
 /// around the middle of each joint's range (a fifth of the range, at most 0.5 rad or 0.05 m,
 /// alternating in sign from joint to joint) and PID gains from the CAD model along it: each
-/// joint's lightest inertia m = 1 / (M^-1)_jj, kp = max(m w^2 + max |dg_j/dq_j|, Coulomb
-/// friction / 0.05 rad) with w = 25 rad/s, kd damping it 1.5 times critically together with
+/// joint's lightest inertia m = 1 / (M^-1)_jj, kp = max(m w^2 + max |dg_j/dq_j|, f / 0.05 rad)
+/// with w = 25 rad/s and f the larger of the CAD's Coulomb friction and 1 % of the joint's
+/// torque limit (what real geared joints lose), kd damping it 1.5 times critically together with
 /// the joint's viscous friction, ki = 0.1 kp per second, the feedforward at the middle of each
 /// sample (FeedforwardTime::MidSample); the planning fraction 1.5 times the
 /// largest gravity share of a limit (30 to 80 %); the first trial gentle, at half speed

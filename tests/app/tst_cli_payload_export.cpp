@@ -5,6 +5,7 @@
 // --robot; a CAD arm draws a warning; bad input writes nothing.
 
 #include "../support/NumericAssert.h"
+#include "../support/RandomStates.h"
 #include "../support/SharedData.h"
 #include "../support/ToolRun.h"
 #include "PayloadLogs.h"
@@ -109,19 +110,11 @@ void TestCliPayloadExport::exportAndUrdf_holdTheArmPlusThePayload()
     const ChainModel loaded(readUrdfChain(urdf), m_arm->jointTerms(), QStringLiteral("urdf"));
     const PayloadModel arm(m_arm, file.standardValues);
     const InertialParameters pi = p.parameters();
-    std::mt19937 random(7);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
     Eigen::MatrixXd y(7, loaded.standardCount());
-    for (int trial = 0; trial < 10; ++trial) {
-        Eigen::VectorXd q(7), qd(7), qdd(7);
-        for (int j = 0; j < 7; ++j) {
-            q[j] = 2.0 * unit(random);
-            qd[j] = 1.5 * unit(random);
-            qdd[j] = 4.0 * unit(random);
-        }
+    test::forRandomStates(7, 7, 10, [&](const auto &q, const auto &qd, const auto &qdd) {
         loaded.standardRegressor(q, qd, qdd, y);
         LEARNID_COMPARE_MATRIX(y * loaded.cadStandard(), arm.torqueAt(q, qd, qdd, pi), 1e-9);
-    }
+    });
 }
 
 void TestCliPayloadExport::armFromAnEarlierExport_isHeldFixed()

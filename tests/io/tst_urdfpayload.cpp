@@ -4,6 +4,7 @@
 
 #include "../support/ErrorOf.h"
 #include "../support/NumericAssert.h"
+#include "../support/RandomStates.h"
 #include "../support/SharedData.h"
 #include "io/UrdfPayload.h"
 #include "model/Payload.h"
@@ -103,19 +104,11 @@ void TestUrdfPayload::readBack_givesTheArmPlusPayloadTorques()
     const ChainModel loaded(parseUrdfChain(out, QStringLiteral("with payload")), friction(),
                             QStringLiteral("lwr4"));
     const PayloadModel payload(armModel, armModel->cadStandard());
-    std::mt19937 random(25);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
     Eigen::MatrixXd y(7, loaded.standardCount());
-    for (int trial = 0; trial < 20; ++trial) {
-        Eigen::VectorXd q(7), qd(7), qdd(7);
-        for (int j = 0; j < 7; ++j) {
-            q[j] = 2.0 * unit(random);
-            qd[j] = 1.5 * unit(random);
-            qdd[j] = 4.0 * unit(random);
-        }
+    test::forRandomStates(7, 25, 20, [&](const auto &q, const auto &qd, const auto &qdd) {
         loaded.standardRegressor(q, qd, qdd, y);
         LEARNID_COMPARE_MATRIX(y * loaded.cadStandard(), payload.torqueAt(q, qd, qdd, pi), 1e-10);
-    }
+    });
 }
 
 void TestUrdfPayload::namedLink_withALeafBelow_keepsTheOtherLinks()
