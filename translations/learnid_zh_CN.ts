@@ -2771,7 +2771,7 @@
 <context>
     <name>RobotScenario</name>
     <message>
-        <location filename="../core/session/RobotScenario.cpp" line="+45"/>
+        <location filename="../core/session/RobotScenario.cpp" line="+59"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
