@@ -27,6 +27,40 @@ class TestPayloadSession : public QObject
     Q_OBJECT
 
 private slots:
+    void simulatedRobot_carriesThePayloadOnItsLink()
+    {
+        const QString urdf = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
+        if (urdf.isEmpty())
+            QSKIP(qPrintable(test::sharedDataMissing()));
+        Scenario s = test::kukaWithPayload(urdf);
+        const auto model = makeRobotModel(s.model, s.urdf);
+        s = withRobotDefaults(s, *model);
+        const auto truePhi = makeSimulatedRobot(s, model)->trueParameters();
+        QVERIFY(truePhi);
+        // Against the payload model (PayloadModel::torqueAt: the arm's standard regressor with
+        // the payload's 10 parameters on the flange link's columns), at random states.
+        const auto &chain = dynamic_cast<const ChainModel &>(*model);
+        const PayloadModel payload(std::static_pointer_cast<const ChainModel>(model),
+                                   chain.standardFromBase(s.simulation.trueParameters));
+        const InertialParameters pi = simulatedPayloadParameters(truePayload(), s.payload);
+        std::srand(3);
+        for (int k = 0; k < 5; ++k) {
+            const Eigen::VectorXd q = Eigen::VectorXd::Random(7), qd = Eigen::VectorXd::Random(7),
+                                  qdd = Eigen::VectorXd::Random(7);
+            Eigen::VectorXd tau(7);
+            model->inverseDynamics(q, qd, qdd, *truePhi, tau);
+            const Eigen::VectorXd expected = payload.torqueAt(q, qd, qdd, pi);
+            QVERIFY2((tau - expected).norm() < 1e-9 * expected.norm(),
+                     qPrintable(QString::number((tau - expected).norm())));
+        }
+        // Without simulation.payload the robot carries the prior body.
+        s.simulation.payload = SimulatedPayload();
+        Eigen::VectorXd shift =
+            *makeSimulatedRobot(s, model)->trueParameters() - s.simulation.trueParameters;
+        QVERIFY(shift.isApprox(payloadBaseShift(chain, 6, payloadPriorOf(s.payload).parameters()),
+                               1e-12));
+    }
+
     void threeTrials_learnMassAndComAndTrackNearTheTruePayloadsFeedforward()
     {
         const QString urdf = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
