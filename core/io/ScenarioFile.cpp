@@ -11,6 +11,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <cmath>
 
 namespace learnid {
 
@@ -81,6 +82,7 @@ void readEstimator(JsonObjectReader r, Scenario &s)
     r.read(key("law"), s.law);
     r.read(key("rho"), s.estimator.rho);
     r.read(key("rankTolerance"), s.estimator.rankTolerance);
+    r.read(key("partialMaxRelativeStd"), s.estimator.partialMaxRelativeStd);
     r.read(key("accumulate"), s.estimator.accumulate);
     r.readInteger(key("iterations"), s.iterations, 1, scenarioLimits::maxIterations);
     r.readInteger(key("repetitions"), s.repetitions, 1, scenarioLimits::maxRepetitions);
@@ -244,6 +246,9 @@ QByteArray scenarioToJson(const Scenario &s)
         .insert(key("accumulate"), s.estimator.accumulate)
         .insert(key("iterations"), s.iterations)
         .insert(key("repetitions"), s.repetitions);
+    // No limit (the default) is the key left out: JSON has no infinity.
+    if (std::isfinite(s.estimator.partialMaxRelativeStd))
+        estimator.insert(key("partialMaxRelativeStd"), s.estimator.partialMaxRelativeStd);
     JsonTree simulation = JsonTree::object();
     simulation.insert(key("trueParameters"), JsonTree::numbers(s.simulation.trueParameters))
         .insert(key("encoderCounts"), s.simulation.encoderCounts)

@@ -7,6 +7,7 @@
 #include "model/ModelFactory.h"
 
 #include <QCoreApplication>
+#include <cmath>
 
 namespace learnid {
 
@@ -181,6 +182,8 @@ void validateScenario(const Scenario &s)
     checkPositive(key("estimator.rho"), s.estimator.rho);
     checkInterval(key("estimator.rankTolerance"), s.estimator.rankTolerance, 0.0, 1.0,
                   Bounds::Open);
+    if (!std::isinf(s.estimator.partialMaxRelativeStd))
+        checkPositive(key("estimator.partialMaxRelativeStd"), s.estimator.partialMaxRelativeStd);
     checkIntegerRange(key("estimator.iterations"), s.iterations, 1, scenarioLimits::maxIterations);
     checkIntegerRange(key("estimator.repetitions"), s.repetitions, 1,
                       scenarioLimits::maxRepetitions);

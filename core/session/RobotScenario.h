@@ -18,7 +18,8 @@ namespace learnid {
 /// the joint's viscous friction, ki = 0.1 kp per second, the feedforward at the middle of each
 /// sample (FeedforwardTime::MidSample); the planning fraction 1.5 times the
 /// largest gravity share of a limit (30 to 80 %); the first trial gentle, at half speed
-/// (path.gentleTrials 1, path.gentleSpeed 0.5); the torque limits and initial parameters left to
+/// (path.gentleTrials 1, path.gentleSpeed 0.5); estimator.rankTolerance 1e-4 and
+/// estimator.partialMaxRelativeStd 0.3; the torque limits and initial parameters left to
 /// the robot (its URDF, its CAD base parameters) and, for the simulated robot, the CAD robot
 /// perturbed by 30 % with a 20-bit encoder and 1 % torque noise. Throws Error when the model is
 /// unknown or its URDF cannot be read.

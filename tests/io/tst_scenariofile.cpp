@@ -71,6 +71,7 @@ void compareScenarios(const Scenario &a, const Scenario &b)
     QCOMPARE(a.law, b.law);
     QVERIFY(bitEqual(a.estimator.rho, b.estimator.rho));
     QVERIFY(bitEqual(a.estimator.rankTolerance, b.estimator.rankTolerance));
+    QVERIFY(bitEqual(a.estimator.partialMaxRelativeStd, b.estimator.partialMaxRelativeStd));
     QCOMPARE(a.estimator.accumulate, b.estimator.accumulate);
     QCOMPARE(a.iterations, b.iterations);
     QCOMPARE(a.repetitions, b.repetitions);
@@ -190,6 +191,7 @@ void TestScenarioFile::changedScenario_roundTripsBitExactly()
     s.law = QStringLiteral("paper");
     s.estimator.rho = 33.3;
     s.estimator.rankTolerance = 1e-6;
+    s.estimator.partialMaxRelativeStd = 0.125;
     s.estimator.accumulate = false;
     s.iterations = 100;
     s.repetitions = 20;
@@ -340,6 +342,10 @@ void TestScenarioFile::badValue_isRejectedWithKeyPath_data()
         "estimator.rankTolerance: must be greater than 0 and less than 1, got 1");
     row("rankTolerance 0", "estimator.rankTolerance", 0,
         "estimator.rankTolerance: must be greater than 0 and less than 1, got 0");
+    row("partialMaxRelativeStd zero", "estimator.partialMaxRelativeStd", 0,
+        "estimator.partialMaxRelativeStd: must be a positive number, got 0");
+    row("partialMaxRelativeStd string", "estimator.partialMaxRelativeStd", QStringLiteral("a"),
+        "estimator.partialMaxRelativeStd: must be a number, got \"a\"");
     row("iterations 0", "estimator.iterations", 0,
         "estimator.iterations: must be an integer from 1 to 100, got 0");
     row("iterations 101", "estimator.iterations", 101,
