@@ -2797,7 +2797,7 @@
         <translation>robot.model: unbekanntes Modell „%1“</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+100"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>unbekannter Roboter „%1“; bekannt: %2 oder eine URDF-Datei (DATEI.urdf)</translation>
     </message>
@@ -2858,17 +2858,17 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+204"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+207"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+287"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+292"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-135"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-137"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
@@ -2889,7 +2889,7 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-254"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-258"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -2899,7 +2899,7 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
@@ -2959,7 +2959,7 @@
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+39"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>muss 0 (idealer Encoder) oder eine ganze Zahl von %1 bis %2 sein, gefunden: %3</translation>
     </message>

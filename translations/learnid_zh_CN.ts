@@ -2786,7 +2786,7 @@
         <translation>robot.model：未知模型“%1”</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+100"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>未知机器人“%1”；已知：%2，或一个 URDF 文件（FILE.urdf）</translation>
     </message>
@@ -2847,17 +2847,17 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+204"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+207"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+287"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+292"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-135"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-137"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
@@ -2878,7 +2878,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-254"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-258"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -2888,7 +2888,7 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
@@ -2948,7 +2948,7 @@
         <translation>必须是 1 或 -1，实际为 %1</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+39"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>必须是 0（理想编码器）或 %1 到 %2 之间的整数，实际为 %3</translation>
     </message>
