@@ -7612,7 +7612,12 @@ Verhältnis %</translation>
 <context>
     <name>learnid::SessionWorker</name>
     <message>
-        <location filename="../core/service/SessionWorker.cpp" line="+44"/>
+        <location filename="../core/service/SessionWorker.cpp" line="+46"/>
+        <source>payload: the window does not learn a payload yet; run this scenario with learnid-cli run --scenario FILE</source>
+        <translation>payload: das Fenster lernt noch keine Nutzlast; dieses Szenario mit learnid-cli run --scenario DATEI ausführen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>unbekanntes Robotermodell „%1“</translation>
     </message>

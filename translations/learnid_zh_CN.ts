@@ -7588,7 +7588,12 @@ ratio %</source>
 <context>
     <name>learnid::SessionWorker</name>
     <message>
-        <location filename="../core/service/SessionWorker.cpp" line="+44"/>
+        <location filename="../core/service/SessionWorker.cpp" line="+46"/>
+        <source>payload: the window does not learn a payload yet; run this scenario with learnid-cli run --scenario FILE</source>
+        <translation>payload：窗口尚不能学习负载；请用 learnid-cli run --scenario 文件 运行此场景</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>未知机器人模型“%1”</translation>
     </message>

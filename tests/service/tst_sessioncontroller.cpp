@@ -280,6 +280,22 @@ private slots:
         QVERIFY(!c.isBusy());
         QCOMPARE(c.storedParameters().size(), 0);
     }
+
+    void payloadScenario_isRefusedNamingTheCli()
+    {
+        // The window does not learn a payload yet: a scenario with a payload section is refused,
+        // not run as the arm's session with its payload section ignored.
+        SessionController c;
+        Scenario s;
+        s.payload.enabled = true;
+        QSignalSpy failed(&c, &SessionController::openFailed);
+        c.open(s);
+        QVERIFY(failed.wait(20000));
+        const QString message = failed.constFirst().at(0).toString();
+        QVERIFY2(message.startsWith(QStringLiteral("payload:")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("learnid-cli run")), qPrintable(message));
+        QVERIFY(!c.isOpen());
+    }
 };
 
 QTEST_MAIN(TestSessionController)
