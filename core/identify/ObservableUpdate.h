@@ -30,9 +30,12 @@ struct NoiseShaping
 /// Least-squares update that changes only what the data observe (docs/method.md §2.3):
 ///   phi = phiPrev + D V_r x,  x = argmin || Wr (b - A phiPrev - A D V_r x) ||
 /// V_r: the right singular directions of A D whose singular value is above tolerance * the
-/// largest, D = diag(|phiPrev|), so singular values compare the torque each direction explains.
+/// largest, D = diag(max(|phiPrev|, |scaleFloor|)), so singular values compare the torque each
+/// direction explains (scaleFloor, e.g. the prior: a parameter moved near 0 does not freeze).
 /// Observability is decided on the unweighted A D (a property of the trajectory, not of the
-/// noise weights); directions below the tolerance keep phiPrev's component.
+/// noise weights; with jointLevels, each joint's rows divided by the RMS of its targets);
+/// directions below the tolerance keep phiPrev's component, and so do the directions whose
+/// standard deviation, in units of D, is above maxRelativeStd (after a partial trial).
 /// A: stacked regressor rows, sample-major: row k*n + j is joint j of sample k (N n x m).
 /// b: stacked targets [N m] (N n). n: joints. rowWeight: a weight per row (N n), e.g. the
 /// inverse of the residual noise of the row's joint and trial; empty means 1.
