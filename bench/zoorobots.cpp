@@ -18,26 +18,6 @@
 
 namespace learnid::bench {
 
-namespace {
-
-// docs/scenario.md's KUKA LWR4+ scenario (the one tst_learnfromabort runs).
-const char *const kDocsScenario = R"({
-    "schema": "learnid-scenario/2",
-    "robot": { "model": "urdf", "urdf": { "file": "%1" },
-               "jointTerms": { "viscous": true, "coulomb": true } },
-    "path": { "kind": "waypoints",
-              "waypoints": [[0, 0.3, 0, -1.2, 0, 0.5, 0],
-                            [0.8, 0.8, 0.5, -0.6, 0.6, -0.4, 0.9],
-                            [-0.4, 0.5, -0.5, -1.4, -0.5, 0.6, -0.7]],
-              "planningFraction": 0.3 },
-    "controller": { "kp": [340, 600, 100, 140, 15, 14, 11],
-                    "ki": [34, 60, 10, 14, 1.5, 1.4, 1.1],
-                    "kd": [45, 80, 14, 19, 2, 1.9, 1.5], "lambda": 1000 },
-    "safety": { "maxTrackingErrorDeg": 5 }
-})";
-
-} // namespace
-
 QString zooRobotUrdf(const QString &cad, quint64 seed)
 {
     std::mt19937_64 rng(seed * 7919u + 17u);
@@ -59,10 +39,7 @@ QString zooRobotUrdf(const QString &cad, quint64 seed)
 Scenario zooScenario(const ZooOptions &o, const QString &cadPath, const QString &realPath,
                      char robot, quint64 seed, bool ideal)
 {
-    Scenario s = o.docsGains
-                     ? scenarioFromJson(QString::fromLatin1(kDocsScenario).arg(cadPath).toUtf8(),
-                                        QStringLiteral("docs/scenario.md"))
-                     : scenarioForRobotName(cadPath);
+    Scenario s = o.docsGains ? support::docsLwrScenario(cadPath) : scenarioForRobotName(cadPath);
     s.maxTrackingErrorDeg = o.limitDeg;
     s.estimator.accumulate = o.accumulate;
     if (o.rankTolerance > 0)

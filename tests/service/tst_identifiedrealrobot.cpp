@@ -4,6 +4,7 @@
 // (docs/scenario.md) with the 15 deg abort limit; learnid starts from the CAD URDF. Before the
 // plausible estimate that URDF held point masses and the arm ran away in trial 0.
 #include "../support/SharedData.h"
+#include "../support/ZooRobot.h"
 #include "io/ScenarioFile.h"
 #include "model/ModelFactory.h"
 #include "model/Plausibility.h"
@@ -65,30 +66,12 @@ void TestIdentifiedRealRobot::identifiedKuka_runsThreeTrialsAndTracksBetterEachT
             l.plausible,
             qPrintable(QStringLiteral("link %1: %2").arg(l.link + 1).arg(plausibilityProblem(l))));
 
-    // docs/scenario.md's KUKA scenario, the offsets learned too (the identified robot has them).
-    const QByteArray json = QStringLiteral(R"({
-        "schema": "learnid-scenario/2",
-        "robot": { "model": "urdf", "urdf": { "file": "%1" },
-                   "jointTerms": { "viscous": true, "coulomb": true, "offset": true } },
-        "path": { "kind": "waypoints",
-                  "waypoints": [[0, 0.3, 0, -1.2, 0, 0.5, 0],
-                                [0.8, 0.8, 0.5, -0.6, 0.6, -0.4, 0.9],
-                                [-0.4, 0.5, -0.5, -1.4, -0.5, 0.6, -0.7]],
-                  "planningFraction": 0.3 },
-        "controller": { "kp": [340, 600, 100, 140, 15, 14, 11],
-                        "ki": [34, 60, 10, 14, 1.5, 1.4, 1.1],
-                        "kd": [45, 80, 14, 19, 2, 1.9, 1.5], "lambda": 1000 },
-        "simulation": { "realUrdf": "%2", "encoderCounts": 1048576, "torqueNoise": 0.01 },
-        "safety": { "maxTrackingErrorDeg": 15 }
-    })")
-                                .arg(request.robot, urdf)
-                                .toUtf8();
-    const QString scenarioPath = dir.filePath(QStringLiteral("scenario.json"));
-    QFile scenarioFile(scenarioPath);
-    QVERIFY(scenarioFile.open(QIODevice::WriteOnly));
-    scenarioFile.write(json);
-    scenarioFile.close();
-    const Scenario requested = readScenarioFile(scenarioPath);
+    // docs/scenario.md's KUKA scenario, the offsets learned too (the identified robot has them),
+    // under a 15 deg limit.
+    Scenario requested = support::docsLwrScenario(request.robot);
+    requested.urdf.jointTerms.offset = true;
+    requested.maxTrackingErrorDeg = 15.0;
+    support::simulateRealUrdf(requested, urdf);
     const auto robotModel = makeRobotModel(requested.model, requested.urdf);
     const Scenario s = withRobotDefaults(requested, *robotModel);
     CommissioningSession session(s, robotModel, makeSimulatedRobot(s, robotModel));

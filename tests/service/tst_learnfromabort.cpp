@@ -73,29 +73,8 @@ void TestLearnFromAbort::robotA_learnsFromTheAbortedFirstTrialAndCompletesLater(
     real.close();
 
     // docs/scenario.md's KUKA scenario, the simulated robot robot (a).
-    const QByteArray json = QStringLiteral(R"({
-        "schema": "learnid-scenario/2",
-        "robot": { "model": "urdf", "urdf": { "file": "%1" },
-                   "jointTerms": { "viscous": true, "coulomb": true } },
-        "path": { "kind": "waypoints",
-                  "waypoints": [[0, 0.3, 0, -1.2, 0, 0.5, 0],
-                                [0.8, 0.8, 0.5, -0.6, 0.6, -0.4, 0.9],
-                                [-0.4, 0.5, -0.5, -1.4, -0.5, 0.6, -0.7]],
-                  "planningFraction": 0.3 },
-        "controller": { "kp": [340, 600, 100, 140, 15, 14, 11],
-                        "ki": [34, 60, 10, 14, 1.5, 1.4, 1.1],
-                        "kd": [45, 80, 14, 19, 2, 1.9, 1.5], "lambda": 1000 },
-        "simulation": { "realUrdf": "%2", "encoderCounts": 1048576, "torqueNoise": 0.01 },
-        "safety": { "maxTrackingErrorDeg": 5 }
-    })")
-                                .arg(cadPath, realPath)
-                                .toUtf8();
-    const QString scenarioPath = dir.filePath(QStringLiteral("scenario.json"));
-    QFile scenarioFile(scenarioPath);
-    QVERIFY(scenarioFile.open(QIODevice::WriteOnly));
-    scenarioFile.write(json);
-    scenarioFile.close();
-    const Scenario requested = readScenarioFile(scenarioPath);
+    Scenario requested = support::docsLwrScenario(cadPath);
+    support::simulateRealUrdf(requested, realPath);
     const auto model = makeRobotModel(requested.model, requested.urdf);
     const Scenario s = withRobotDefaults(requested, *model);
     CommissioningSession session(s, model, makeSimulatedRobot(s, model));
@@ -200,9 +179,7 @@ void TestLearnFromAbort::starterScenario_holdsRobotAsFrictionAndLearns()
                      QStringLiteral("joint %1: kp %2").arg(j + 1).arg(requested.controller.kp[j])));
     requested.simulation = SimulationSettings{};
     requested.simulation.trueParameters.resize(0);
-    requested.simulation.realUrdf = realPath;
-    requested.simulation.encoderCounts = qint64(1) << 20;
-    requested.simulation.torqueNoise = 0.01;
+    support::simulateRealUrdf(requested, realPath);
     const Scenario s = withRobotDefaults(requested, *model);
     CommissioningSession session(s, model, makeSimulatedRobot(s, model));
     QVERIFY(session.runTrials(6));

@@ -2,8 +2,10 @@
 // Robot (a) of issue 23, the simulated real KUKA LWR4+ that the CAD model describes badly, built
 // from the CAD URDF's text: every link's mass times a factor, its centre of mass moved, its
 // inertia x1.4, the joint friction real arms show. One builder for tst_learnfromabort (fixed
-// changes) and learnid-bench-zoo (changes drawn with a seed). Header-only: the tests' support
-// files are.
+// changes) and learnid-bench-zoo (changes drawn with a seed), and docs/scenario.md's KUKA
+// scenario that they and tst_identifiedrealrobot run. Header-only: the tests' support files are.
+#include "io/ScenarioFile.h"
+
 #include <QRegularExpression>
 #include <QString>
 #include <QStringList>
@@ -76,6 +78,37 @@ inline QString robotAUrdf(const QString &cad, const std::function<double(int)> &
     return replaceUrdfAttribute(
         xml, QStringLiteral("dynamics"), QStringLiteral("damping"),
         [](int, const QString &v) { return urdfNumber(v.toDouble() * 1.5); });
+}
+
+/// docs/scenario.md's KUKA LWR4+ scenario (its gains, its three waypoints, the 5 deg limit) on
+/// the CAD URDF at cadPath, viscous and Coulomb joint terms on; the simulation section left at
+/// its defaults for the caller to fill.
+inline Scenario docsLwrScenario(const QString &cadPath)
+{
+    const QString json = QStringLiteral(R"({
+        "schema": "learnid-scenario/2",
+        "robot": { "model": "urdf", "urdf": { "file": "%1" },
+                   "jointTerms": { "viscous": true, "coulomb": true } },
+        "path": { "kind": "waypoints",
+                  "waypoints": [[0, 0.3, 0, -1.2, 0, 0.5, 0],
+                                [0.8, 0.8, 0.5, -0.6, 0.6, -0.4, 0.9],
+                                [-0.4, 0.5, -0.5, -1.4, -0.5, 0.6, -0.7]],
+                  "planningFraction": 0.3 },
+        "controller": { "kp": [340, 600, 100, 140, 15, 14, 11],
+                        "ki": [34, 60, 10, 14, 1.5, 1.4, 1.1],
+                        "kd": [45, 80, 14, 19, 2, 1.9, 1.5], "lambda": 1000 },
+        "safety": { "maxTrackingErrorDeg": 5 }
+    })");
+    return scenarioFromJson(json.arg(cadPath).toUtf8(), QStringLiteral("docs/scenario.md"));
+}
+
+/// The simulated real robot of a session: the URDF at realUrdf, 2^20 encoder counts, torque
+/// noise 1 % of each joint's limit.
+inline void simulateRealUrdf(Scenario &s, const QString &realUrdf)
+{
+    s.simulation.realUrdf = realUrdf;
+    s.simulation.encoderCounts = qint64(1) << 20;
+    s.simulation.torqueNoise = 0.01;
 }
 
 } // namespace learnid::support
