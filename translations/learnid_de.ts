@@ -670,6 +670,14 @@
     </message>
 </context>
 <context>
+    <name>CommissioningSession</name>
+    <message>
+        <location filename="../core/session/TrialPlanner.cpp" line="+119"/>
+        <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
+        <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
+    </message>
+</context>
+<context>
     <name>ControllerLogCsv</name>
     <message>
         <location filename="../core/io/ControllerLogCsv.cpp" line="+56"/>
@@ -2358,12 +2366,7 @@
         <translation>payload: nur ein URDF-Roboter trägt eine Nutzlast (das Modell ist %1)</translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
-        <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
-    </message>
-    <message>
-        <location line="+55"/>
+        <location line="+84"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
@@ -3388,7 +3391,7 @@
 <context>
     <name>TrialPlanner</name>
     <message>
-        <location filename="../core/session/TrialPlanner.cpp" line="+40"/>
+        <location filename="../core/session/TrialPlanner.cpp" line="-79"/>
         <source>the path has %1 joints, the robot %2</source>
         <translation>die Bahn hat %1 Gelenke, der Roboter %2</translation>
     </message>
@@ -5450,12 +5453,7 @@ neue Schätzung.
         <translation>unbekanntes Schätzgesetz &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
-        <translation>Szenario passt nicht zum Modell %1: es braucht %2 Parameter und %3 Gelenkgrenzen und Verstärkungen</translation>
-    </message>
-    <message>
-        <location line="+67"/>
+        <location line="+64"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>

@@ -670,6 +670,14 @@
     </message>
 </context>
 <context>
+    <name>CommissioningSession</name>
+    <message>
+        <location filename="../core/session/TrialPlanner.cpp" line="+119"/>
+        <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
+        <translation>场景与 %1 模型不符：需要 %2 个参数以及 %3 个关节限值和增益</translation>
+    </message>
+</context>
+<context>
     <name>ControllerLogCsv</name>
     <message>
         <location filename="../core/io/ControllerLogCsv.cpp" line="+56"/>
@@ -2349,12 +2357,7 @@
         <translation>payload：只有 URDF 机器人才能携带负载（模型为 %1）</translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
-        <translation>场景与 %1 模型不符：需要 %2 个参数以及 %3 个关节限值和增益</translation>
-    </message>
-    <message>
-        <location line="+55"/>
+        <location line="+84"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
@@ -3377,7 +3380,7 @@
 <context>
     <name>TrialPlanner</name>
     <message>
-        <location filename="../core/session/TrialPlanner.cpp" line="+40"/>
+        <location filename="../core/session/TrialPlanner.cpp" line="-79"/>
         <source>the path has %1 joints, the robot %2</source>
         <translation>路径有 %1 个关节，机器人有 %2 个</translation>
     </message>
@@ -5432,12 +5435,7 @@ stdout, and the next plan uses the new estimate.
         <translation>未知估计律 &apos;%1&apos;（已知：%2）</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>scenario does not fit the %1 model: it needs %2 parameters and %3 joint limits and gains</source>
-        <translation>场景不适合 %1 模型：它需要 %2 个参数以及 %3 个关节的限值和增益</translation>
-    </message>
-    <message>
-        <location line="+67"/>
+        <location line="+64"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>

@@ -22,15 +22,7 @@ CommissioningSession::CommissioningSession(const Scenario &scenario,
     if (!m_law)
         throw Error(tr("unknown estimator law '%1' (known: %2)")
                         .arg(scenario.law, knownLearningLaws().join(QStringLiteral(", "))));
-    if (scenario.initialParameters.size() != m_model->parameterCount() ||
-        scenario.torqueLimits.size() != m_model->dof() ||
-        scenario.controller.dof() != m_model->dof()) {
-        throw Error(tr("scenario does not fit the %1 model: it needs %2 parameters and %3 "
-                       "joint limits and gains")
-                        .arg(m_model->id())
-                        .arg(m_model->parameterCount())
-                        .arg(m_model->dof()));
-    }
+    checkScenarioFitsModel(scenario, *m_model);
     m_estimates.append(scenario.initialParameters);
     qRegisterMetaType<learnid::TrialResult>();
 }

@@ -54,15 +54,7 @@ PayloadSession::PayloadSession(const Scenario &scenario, std::shared_ptr<const R
     , m_prior(payloadPriorOf(scenario.payload))
     , m_planner(scenario, model)
 {
-    if (scenario.initialParameters.size() != m_model->parameterCount() ||
-        scenario.torqueLimits.size() != m_model->dof() ||
-        scenario.controller.dof() != m_model->dof()) {
-        throw Error(Text::tr("scenario does not fit the %1 model: it needs %2 parameters and %3 "
-                             "joint limits and gains")
-                        .arg(m_model->id())
-                        .arg(m_model->parameterCount())
-                        .arg(m_model->dof()));
-    }
+    checkScenarioFitsModel(scenario, *m_model);
     validatePayloadPrior(m_prior);
     // The arm held fixed: the standard vector whose base parameters are the scenario's.
     try {

@@ -112,4 +112,17 @@ TrialPlan TrialPlanner::plan(const Eigen::VectorXd &phiHat, TorqueRuleResult *ru
     return plan;
 }
 
+void checkScenarioFitsModel(const Scenario &scenario, const RobotModel &model)
+{
+    if (scenario.initialParameters.size() != model.parameterCount() ||
+        scenario.torqueLimits.size() != model.dof() || scenario.controller.dof() != model.dof()) {
+        throw Error(QCoreApplication::translate("CommissioningSession",
+                                                "scenario does not fit the %1 model: it needs %2 "
+                                                "parameters and %3 joint limits and gains")
+                        .arg(model.id())
+                        .arg(model.parameterCount())
+                        .arg(model.dof()));
+    }
+}
+
 } // namespace learnid

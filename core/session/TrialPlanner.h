@@ -51,4 +51,8 @@ private:
     TorqueRuleGrid m_ruleGrid; ///< the line's geometry, computed once
 };
 
+/// Throws Error unless the scenario has the model's parameter count of initial parameters and its
+/// joint count of torque limits and gains (what a session needs before its first plan).
+void checkScenarioFitsModel(const Scenario &scenario, const RobotModel &model);
+
 } // namespace learnid
