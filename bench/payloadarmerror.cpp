@@ -33,8 +33,7 @@ Errors learn(Scenario s, int baselineTrials)
     Scenario bare = s;
     bare.simulation.payload = SimulatedPayload();
     bare.payload.enabled = false;
-    PayloadSession session(s, model, makeSimulatedRobot(s, model),
-                           makeSimulatedRobot(bare, model));
+    PayloadSession session(s, model, makeSimulatedRobot(s, model), makeSimulatedRobot(bare, model));
     Errors e;
     if (!session.runTrials(s.iterations)) {
         e.failure = session.history().back().message;

@@ -74,7 +74,8 @@ private slots:
     void subtraction_takesTheArmsErrorOutExactly()
     {
         const auto arm = pandaArm();
-        const PayloadModel model(arm, arm->cadStandard()), real(arm, perturbedStandard(*arm, 0.1, 8));
+        const PayloadModel model(arm, arm->cadStandard()),
+            real(arm, perturbedStandard(*arm, 0.1, 8));
         const test::JointPath path = pandaPath(4.0);
         const InertialParameters pi = truePayload();
         const FilteredLog carrying = exactLog(QStringLiteral("trial 1"), path, real, pi);
@@ -100,25 +101,28 @@ private slots:
         unweighted.weighted = false;
         const PayloadBody fitted = fitPayload(model, {out}, prior, unweighted).estimate.body;
         const PayloadBody ideal =
-            fitPayload(model, {exactLog(QStringLiteral("ideal"), path, model, pi)}, prior, unweighted)
+            fitPayload(model, {exactLog(QStringLiteral("ideal"), path, model, pi)}, prior,
+                       unweighted)
                 .estimate.body;
-        QVERIFY2(std::abs(fitted.mass - ideal.mass) < 1e-9 * ideal.mass,
-                 qPrintable(QStringLiteral("%1 %2").arg(fitted.mass, 0, 'g', 15).arg(ideal.mass,
-                                                                                  0, 'g', 15)));
+        QVERIFY2(
+            std::abs(fitted.mass - ideal.mass) < 1e-9 * ideal.mass,
+            qPrintable(
+                QStringLiteral("%1 %2").arg(fitted.mass, 0, 'g', 15).arg(ideal.mass, 0, 'g', 15)));
         QVERIFY((fitted.com - ideal.com).norm() < 1e-9);
         QVERIFY2(std::abs(ideal.mass - 1.5) < 1e-3 * 1.5, qPrintable(QString::number(ideal.mass)));
         const PayloadBody biased = fitPayload(model, {carrying}, prior, unweighted).estimate.body;
-        QVERIFY2(std::abs(biased.mass - 1.5) > 0.01 * 1.5, qPrintable(QString::number(biased.mass)));
+        QVERIFY2(std::abs(biased.mass - 1.5) > 0.01 * 1.5,
+                 qPrintable(QString::number(biased.mass)));
     }
 
     void aBaselineOfAnotherPath_isRefusedNamingBothLogs()
     {
         const auto arm = pandaArm();
         const PayloadModel model(arm, arm->cadStandard());
-        const FilteredLog carrying = exactLog(QStringLiteral("trial 1"), pandaPath(4.0),
-                                              model, truePayload());
-        const FilteredLog shorter = exactLog(QStringLiteral("baseline trial 0"),
-                                             pandaPath(3.0), model, {});
+        const FilteredLog carrying =
+            exactLog(QStringLiteral("trial 1"), pandaPath(4.0), model, truePayload());
+        const FilteredLog shorter =
+            exactLog(QStringLiteral("baseline trial 0"), pandaPath(3.0), model, {});
         QCOMPARE(test::errorOf([&] { withBaselineSubtracted(model, carrying, {shorter}); }),
                  QStringLiteral("baseline trial 0 (7 joints, 1501 samples of 0.002 s) is not a "
                                 "baseline of trial 1 (7 joints, 2001 samples of 0.002 s): a "
@@ -146,8 +150,8 @@ private slots:
             Scenario bare = t;
             bare.simulation.payload = SimulatedPayload();
             bare.payload.enabled = false;
-            auto session = std::make_unique<PayloadSession>(
-                t, model, makeSimulatedRobot(t, model), makeSimulatedRobot(bare, model));
+            auto session = std::make_unique<PayloadSession>(t, model, makeSimulatedRobot(t, model),
+                                                            makeSimulatedRobot(bare, model));
             return session;
         };
         const auto with = learned(1);
@@ -163,8 +167,9 @@ private slots:
 
         const PayloadBody &b = with->history().back().fit->estimate.body;
         QVERIFY2(std::abs(b.mass - 1.5) < 0.01 * 1.5, qPrintable(QString::number(b.mass)));
-        QVERIFY2((b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 0.003,
-                 qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
+        QVERIFY2(
+            (b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 0.003,
+            qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
 
         // Without it the arm's error goes into the payload.
         const auto without = learned(0);
