@@ -2198,7 +2198,12 @@
 <context>
     <name>PayloadBaseline</name>
     <message>
-        <location filename="../core/identify/PayloadBaseline.cpp" line="+31"/>
+        <location filename="../core/identify/PayloadBaseline.cpp" line="+62"/>
+        <source>%1 covers less than %2 % of %3 within a shift of %4 s: a baseline runs the same timed path without the payload</source>
+        <translation>%1 deckt innerhalb einer Verschiebung von %4 s weniger als %2 % von %3 ab: eine Referenzfahrt fährt dieselbe zeitlich geplante Bahn ohne die Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 (%2 joints, %3 samples of %4 s) is not a baseline of %5 (%6 joints, %7 samples of %8 s): a baseline runs the same timed path without the payload</source>
         <translation>%1 (%2 Gelenke, %3 Abtastwerte zu %4 s) ist keine Referenz zu %5 (%6 Gelenke, %7 Abtastwerte zu %8 s): eine Referenzfahrt fährt dieselbe zeitlich geplante Bahn ohne die Nutzlast</translation>
     </message>
@@ -2206,6 +2211,16 @@
         <location line="+13"/>
         <source>%1: the filtered signals are not finite</source>
         <translation>%1: die gefilterten Signale sind nicht endlich</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 does not follow the path of %2: their joint angles differ by %3 deg RMS (at most %4 deg) after a shift of %5 s</source>
+        <translation>%1 folgt nicht der Bahn von %2: ihre Gelenkwinkel weichen nach einer Verschiebung von %5 s um %3 Grad RMS ab (höchstens %4 Grad)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the baselines together cover less than %1 % of %2</source>
+        <translation>die Referenzen decken zusammen weniger als %1 % von %2 ab</translation>
     </message>
 </context>
 <context>
@@ -2265,7 +2280,7 @@
 <context>
     <name>PayloadIdentification</name>
     <message>
-        <location filename="../core/service/PayloadIdentification.cpp" line="+31"/>
+        <location filename="../core/service/PayloadIdentification.cpp" line="+40"/>
         <source>no log to identify the payload from</source>
         <translation>kein Log, aus dem die Nutzlast identifiziert werden kann</translation>
     </message>
@@ -3894,7 +3909,7 @@
         <location line="+66"/>
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+207"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
         <location filename="../app/cli/PayloadRunCommand.cpp" line="+88"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+11"/>
@@ -4761,7 +4776,7 @@ neue Schätzung.
         <translation>learnid-cli: Fehler: --robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-160"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-168"/>
         <source>value</source>
         <translation>Größe</translation>
     </message>
@@ -4786,12 +4801,12 @@ neue Schätzung.
         <translation>Herkunft</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+57"/>
         <source>the logs</source>
         <translation>die Logs</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-45"/>
         <source>the prior (not identified)</source>
         <translation>die Vorgabe (nicht identifiziert)</translation>
     </message>
@@ -4829,7 +4844,14 @@ neue Schätzung.
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+8"/>
+        <source>Baseline %1 taken out of %2: shifted by %3 s, joint angles %4 deg RMS apart.
+</source>
+        <translation>Referenz %1 von %2 abgezogen: um %3 s verschoben, Gelenkwinkel %4 Grad RMS auseinander.
+</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Warning: the plausible estimate did not converge (%1).
 </source>
         <translation>Warnung: die plausible Schätzung ist nicht konvergiert (%1).
@@ -4862,7 +4884,7 @@ neue Schätzung.
         <translation>Drehmoment-Residuum je Gelenk auf den Logs [N m]:</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>learnid-cli: fitting the payload to %1</source>
         <translation>learnid-cli: passe die Nutzlast an %1 an</translation>
     </message>
@@ -4924,7 +4946,12 @@ neue Schätzung.
         <translation>Mit --payload und einer --robot-Parameterdatei eines URDF-Roboters: das URDF, an dem der Arm identifiziert wurde.</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+5"/>
+        <source>With --payload: a log of the same motion without the payload, whose torque residual is taken out of every --log (may be repeated; docs/payload.md).</source>
+        <translation>Mit --payload: ein Log derselben Bewegung ohne die Nutzlast, dessen Momentenresiduum von jedem --log abgezogen wird (mehrfach möglich; docs/payload.md).</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>--%1: needs --payload</source>
         <translation>--%1: braucht --payload</translation>
     </message>
@@ -4939,7 +4966,7 @@ neue Schätzung.
         <translation>--payload-box: geben Sie entweder einen Hüllquader oder --payload-radius an, nicht beides</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
         <translation>--payload-mass: muss eine Zahl in kg sein, erhalten: „%1“</translation>
     </message>

@@ -2189,7 +2189,12 @@
 <context>
     <name>PayloadBaseline</name>
     <message>
-        <location filename="../core/identify/PayloadBaseline.cpp" line="+31"/>
+        <location filename="../core/identify/PayloadBaseline.cpp" line="+62"/>
+        <source>%1 covers less than %2 % of %3 within a shift of %4 s: a baseline runs the same timed path without the payload</source>
+        <translation>在 %4 s 的平移范围内，%1 覆盖 %3 的部分少于 %2 %：基线须在不带负载的情况下运行同一条定时路径</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 (%2 joints, %3 samples of %4 s) is not a baseline of %5 (%6 joints, %7 samples of %8 s): a baseline runs the same timed path without the payload</source>
         <translation>%1（%2 个关节，%3 个采样，周期 %4 s）不是 %5（%6 个关节，%7 个采样，周期 %8 s）的基线：基线须在不带负载的情况下运行同一条定时路径</translation>
     </message>
@@ -2197,6 +2202,16 @@
         <location line="+13"/>
         <source>%1: the filtered signals are not finite</source>
         <translation>%1：滤波后的信号不是有限值</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 does not follow the path of %2: their joint angles differ by %3 deg RMS (at most %4 deg) after a shift of %5 s</source>
+        <translation>%1 没有沿 %2 的路径运动：平移 %5 s 后两者的关节角相差 %3 度 RMS（最多允许 %4 度）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the baselines together cover less than %1 % of %2</source>
+        <translation>所有基线合起来覆盖 %2 的部分少于 %1 %</translation>
     </message>
 </context>
 <context>
@@ -2256,7 +2271,7 @@
 <context>
     <name>PayloadIdentification</name>
     <message>
-        <location filename="../core/service/PayloadIdentification.cpp" line="+31"/>
+        <location filename="../core/service/PayloadIdentification.cpp" line="+40"/>
         <source>no log to identify the payload from</source>
         <translation>没有用于辨识负载的日志</translation>
     </message>
@@ -3882,7 +3897,7 @@
         <location line="+66"/>
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+207"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
         <location filename="../app/cli/PayloadRunCommand.cpp" line="+88"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+11"/>
@@ -4745,7 +4760,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：错误：--robot %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-160"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-168"/>
         <source>value</source>
         <translation>量</translation>
     </message>
@@ -4770,12 +4785,12 @@ stdout, and the next plan uses the new estimate.
         <translation>来源</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+57"/>
         <source>the logs</source>
         <translation>日志</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-45"/>
         <source>the prior (not identified)</source>
         <translation>先验（未辨识）</translation>
     </message>
@@ -4811,7 +4826,14 @@ stdout, and the next plan uses the new estimate.
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+8"/>
+        <source>Baseline %1 taken out of %2: shifted by %3 s, joint angles %4 deg RMS apart.
+</source>
+        <translation>已从 %2 中减去基线 %1：平移 %3 s，关节角相差 %4 度 RMS。
+</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Warning: the plausible estimate did not converge (%1).
 </source>
         <translation>警告：合理估计未收敛（%1）。
@@ -4844,7 +4866,7 @@ stdout, and the next plan uses the new estimate.
         <translation>各关节在日志上的力矩残差 [N m]：</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>learnid-cli: fitting the payload to %1</source>
         <translation>learnid-cli：正在将负载拟合到 %1</translation>
     </message>
@@ -4906,7 +4928,12 @@ stdout, and the next plan uses the new estimate.
         <translation>与 --payload 及 URDF 机器人的 --robot 参数文件一起使用：辨识机械臂时所用的 URDF。</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+5"/>
+        <source>With --payload: a log of the same motion without the payload, whose torque residual is taken out of every --log (may be repeated; docs/payload.md).</source>
+        <translation>与 --payload 一起使用：同一运动不带负载的日志，其力矩残差将从每个 --log 中减去（可重复；docs/payload.md）。</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>--%1: needs --payload</source>
         <translation>--%1：需要 --payload</translation>
     </message>
@@ -4921,7 +4948,7 @@ stdout, and the next plan uses the new estimate.
         <translation>--payload-box：请给出包围长方体或 --payload-radius，不要同时给出</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
         <translation>--payload-mass：必须是千克数，收到“%1”</translation>
     </message>
