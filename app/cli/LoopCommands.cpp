@@ -1,5 +1,6 @@
 #include "cli/LoopCommands.h"
 
+#include "cli/PayloadTrialTable.h"
 #include "cli/ResultTable.h"
 #include "io/ScenarioFile.h"
 #include "model/Error.h"
@@ -98,6 +99,15 @@ ExitCode learnCommand(const LoopOptions &options, QTextStream &out, QTextStream 
         if (!options.quiet)
             err << trialSummary(learned.session->history().constLast()) << Qt::endl;
         out << resultTable(*learned.session);
+        out.flush();
+    }
+    if (learned.payloadSession) {
+        // As `run` prints a payload session: a row per trial, then the payload learned.
+        out << payloadTrialHeader();
+        for (const PayloadTrial &t : learned.payloadSession->history())
+            out << payloadTrialRow(t) << Qt::endl;
+        if (const QString result = payloadResult(*learned.payloadSession); !result.isEmpty())
+            out << Qt::endl << result;
         out.flush();
     }
     if (!learned.failure.isEmpty()) {

@@ -1,0 +1,81 @@
+// `learnid-cli plan` with a payload section (FileLoop.h, docs/cli.md): the history's trials
+// replayed through a PayloadSession, then its next trial planned and checked.
+#include "model/Error.h"
+#include "service/FileLoopParts.h"
+#include "service/FileLoopPayload.h"
+
+#include <QCoreApplication>
+
+namespace learnid::loop {
+
+namespace {
+
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(FileLoop)
+};
+
+} // namespace
+
+PlannedTrial planPayloadTrial(const LoopScenario &s, const PlanRequest &request)
+{
+    if (!request.estimatePath.isEmpty())
+        throw Error(Text::tr("--estimate: a scenario with a payload section plans with the arm's "
+                             "model it holds fixed (robot.initialParameters) and the payload its "
+                             "history has learned, the prior (payload section) first: leave out "
+                             "--estimate"));
+    const std::optional<LoopHistory> read = readLoopHistory(request.historyDir);
+    if (read)
+        checkHistoryFits(*read, request.historyDir, s);
+    const QDir dir(request.historyDir);
+    const int learned = read ? int(read->trials.size()) : 0;
+    PayloadReplay replay =
+        payloadReplay(s, read ? &*read : nullptr, request.historyDir,
+                      read ? historyRuns(*read, dir, angularJoints(*s.model)) : QList<RecordedTrialRobot::Run>());
+    // Estimate 0: the scenario's arm and prior. A history that has learned keeps its own; one
+    // that has not takes the scenario's anew (its plans so far leave it).
+    bool newInitial = !read;
+    if (read) {
+        const QString differs = payloadEstimateDiffers(dir.filePath(read->estimates.constFirst()),
+                                                       s, *replay.session, 0);
+        if (!differs.isEmpty() && learned > 0)
+            throw Error(Text::tr("%1 (give another --history to start anew)").arg(differs));
+        newInitial = !differs.isEmpty();
+    }
+    replayHistoryTrials(replay, learned, request.historyDir);
+    for (int k = 1; k <= learned; ++k) {
+        const QString differs = payloadEstimateDiffers(dir.filePath(read->estimates.at(k)), s,
+                                                       *replay.session, k);
+        if (!differs.isEmpty())
+            throw Error(differs);
+    }
+
+    const PayloadSession &session = *replay.session;
+    PlannedTrial planned;
+    planned.check = session.checkNextTrial();
+    planned.trialIndex = learned;
+    planned.estimateSource =
+        learned == 0
+            ? Text::tr("the arm's model held fixed (robot.initialParameters) and the payload's "
+                       "prior (payload section)")
+            : Text::tr("the arm's model held fixed (robot.initialParameters) and the payload "
+                       "learned from trials 0 to %1 (estimate %2 of %3)")
+                  .arg(learned - 1)
+                  .arg(learned)
+                  .arg(native(dir.filePath(read->estimates.constLast())));
+    const QStringList identifiability = planned.check.passed()
+                                            ? payloadIdentifiability(session, planned.check)
+                                            : QStringList();
+    planned.checkText = preTrialCheckText(planned.check, planned.trialIndex, planned.estimateSource,
+                                          identifiability);
+    if (!planned.passed())
+        return planned;
+
+    LoopHistory history = read ? *read : newLoopHistory(s);
+    history.payloadLink = session.payloadModel().link();
+    const QByteArray initial = newInitial ? payloadEstimateFile(s, session, 0) : QByteArray();
+    addPlanFiles(planned, s, request, history, newInitial ? &initial : nullptr);
+    return planned;
+}
+
+} // namespace learnid::loop
