@@ -53,8 +53,8 @@ LearnedTrial learnPayloadTrial(const LoopScenario &s, const LearnRequest &reques
     for (int k = 0; k <= newest; ++k) {
         if (k > 0) // estimate k: once trial k - 1 is replayed
             replayHistoryTrials(replay, 1, request.historyDir);
-        const QString differs = payloadEstimateDiffers(dir.filePath(history.estimates.at(k)), s,
-                                                       *replay.session, k);
+        const QString differs =
+            payloadEstimateDiffers(dir.filePath(history.estimates.at(k)), s, *replay.session, k);
         if (!differs.isEmpty())
             throw Error(differs);
     }

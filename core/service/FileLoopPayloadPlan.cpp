@@ -29,9 +29,9 @@ PlannedTrial planPayloadTrial(const LoopScenario &s, const PlanRequest &request)
         checkHistoryFits(*read, request.historyDir, s);
     const QDir dir(request.historyDir);
     const int learned = read ? int(read->trials.size()) : 0;
-    PayloadReplay replay =
-        payloadReplay(s, read ? &*read : nullptr, request.historyDir,
-                      read ? historyRuns(*read, dir, angularJoints(*s.model)) : QList<RecordedTrialRobot::Run>());
+    PayloadReplay replay = payloadReplay(s, read ? &*read : nullptr, request.historyDir,
+                                         read ? historyRuns(*read, dir, angularJoints(*s.model))
+                                              : QList<RecordedTrialRobot::Run>());
     // Estimate 0: the scenario's arm and prior. A history that has learned keeps its own; one
     // that has not takes the scenario's anew (its plans so far leave it).
     bool newInitial = !read;
@@ -44,8 +44,8 @@ PlannedTrial planPayloadTrial(const LoopScenario &s, const PlanRequest &request)
     }
     replayHistoryTrials(replay, learned, request.historyDir);
     for (int k = 1; k <= learned; ++k) {
-        const QString differs = payloadEstimateDiffers(dir.filePath(read->estimates.at(k)), s,
-                                                       *replay.session, k);
+        const QString differs =
+            payloadEstimateDiffers(dir.filePath(read->estimates.at(k)), s, *replay.session, k);
         if (!differs.isEmpty())
             throw Error(differs);
     }
@@ -63,9 +63,8 @@ PlannedTrial planPayloadTrial(const LoopScenario &s, const PlanRequest &request)
                   .arg(learned - 1)
                   .arg(learned)
                   .arg(native(dir.filePath(read->estimates.constLast())));
-    const QStringList identifiability = planned.check.passed()
-                                            ? payloadIdentifiability(session, planned.check)
-                                            : QStringList();
+    const QStringList identifiability =
+        planned.check.passed() ? payloadIdentifiability(session, planned.check) : QStringList();
     planned.checkText = preTrialCheckText(planned.check, planned.trialIndex, planned.estimateSource,
                                           identifiability);
     if (!planned.passed())
