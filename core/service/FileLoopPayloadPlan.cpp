@@ -29,11 +29,12 @@ PlannedTrial planPayloadTrial(const LoopScenario &s, const PlanRequest &request)
         checkHistoryFits(*read, request.historyDir, s);
     const QDir dir(request.historyDir);
     const int learned = read ? int(read->trials.size()) : 0;
-    PayloadReplay replay = payloadReplay(s, read ? &*read : nullptr, request.historyDir,
+    // A history that has learned keeps its link, arm and prior; one that has not takes the
+    // scenario's anew (estimate 0 rewritten, its plans so far leave it).
+    PayloadReplay replay = payloadReplay(s, learned > 0 ? &*read : nullptr, request.historyDir,
                                          read ? historyRuns(*read, dir, angularJoints(*s.model))
                                               : QList<RecordedTrialRobot::Run>());
-    // Estimate 0: the scenario's arm and prior. A history that has learned keeps its own; one
-    // that has not takes the scenario's anew (its plans so far leave it).
+    // Estimate 0: the scenario's link, arm and prior.
     bool newInitial = !read;
     if (read) {
         const QString differs = payloadEstimateDiffers(dir.filePath(read->estimates.constFirst()),

@@ -83,8 +83,8 @@ QStringList trialRows(const QString &out)
     QStringList rows;
     for (auto it = row.globalMatch(out); it.hasNext();) {
         const auto m = it.next();
-        rows << QStringList{m.captured(1), m.captured(2), m.captured(3), m.captured(4),
-                            m.captured(5), m.captured(7).trimmed()}
+        rows << QStringList{m.captured(1), m.captured(2), m.captured(3),
+                            m.captured(4), m.captured(5), m.captured(7).trimmed()}
                     .join(QLatin1Char(' '));
     }
     return rows;
@@ -123,15 +123,13 @@ void TestCliLoopPayload::initTestCase()
     const QStringList scenario{QStringLiteral("--scenario"), QStringLiteral("s.json")};
     const auto controller = makeSimulatedRobot(m_s.scenario, m_s.model);
     for (int k = 0; k < 2; ++k) {
-        const Result planned =
-            cli(QStringList{QStringLiteral("plan"), QStringLiteral("--out"), QStringLiteral("ex"),
-                            QStringLiteral("--quiet")} +
-                    scenario,
-                m_base.path());
+        const Result planned = cli(QStringList{QStringLiteral("plan"), QStringLiteral("--out"),
+                                               QStringLiteral("ex"), QStringLiteral("--quiet")} +
+                                       scenario,
+                                   m_base.path());
         QVERIFY2(planned.exitCode == 0, qPrintable(planned.err));
         const PlanCsv plan = readPlanCsvFile(m_base.filePath(QStringLiteral("ex/plan.csv")));
-        const TrialRecord record =
-            controller->runTrial(test::planFromCsv(plan, m_s.scenario), {});
+        const TrialRecord record = controller->runTrial(test::planFromCsv(plan, m_s.scenario), {});
         QVERIFY(record.completed());
         const QString log = QStringLiteral("ex/run-%1.csv").arg(k);
         write(m_base.filePath(log), test::logCsv(plan.planId, record));
@@ -140,11 +138,11 @@ void TestCliLoopPayload::initTestCase()
             m_record1 = record;
             break;
         }
-        const Result learned = cli(QStringList{QStringLiteral("learn"),
-                                               QStringLiteral("--trial-log"), log,
-                                               QStringLiteral("--quiet")} +
-                                       scenario,
-                                   m_base.path());
+        const Result learned =
+            cli(QStringList{QStringLiteral("learn"), QStringLiteral("--trial-log"), log,
+                            QStringLiteral("--quiet")} +
+                    scenario,
+                m_base.path());
         QVERIFY2(learned.exitCode == 0, qPrintable(learned.err));
     }
 }
@@ -152,7 +150,8 @@ void TestCliLoopPayload::initTestCase()
 void TestCliLoopPayload::trialsThroughFiles_equalThePayloadSession()
 {
     QTemporaryDir dir;
-    write(dir.filePath(QStringLiteral("s.json")), readFile(m_base.filePath(QStringLiteral("s.json"))));
+    write(dir.filePath(QStringLiteral("s.json")),
+          readFile(m_base.filePath(QStringLiteral("s.json"))));
     const QStringList scenario{QStringLiteral("--scenario"), QStringLiteral("s.json")};
     const int trials = 3;
     const auto controller = makeSimulatedRobot(m_s.scenario, m_s.model);
@@ -165,22 +164,21 @@ void TestCliLoopPayload::trialsThroughFiles_equalThePayloadSession()
         QVERIFY2(planned.exitCode == 0, qPrintable(planned.err));
         QVERIFY2(planned.out.contains(QStringLiteral("trial %1: check passed").arg(k)),
                  qPrintable(planned.out));
+        QVERIFY(planned.out.contains(QStringLiteral(
+            "the path determines 10 of the payload's 10 parameters on panda_link7")));
         QVERIFY(planned.out.contains(
-            QStringLiteral("the path determines 10 of the payload's 10 parameters on panda_link7")));
-        QVERIFY(planned.out.contains(k == 0 ? QStringLiteral("the payload's prior")
-                                            : QStringLiteral("learned from trials 0 to %1")
-                                                  .arg(k - 1)));
+            k == 0 ? QStringLiteral("the payload's prior")
+                   : QStringLiteral("learned from trials 0 to %1").arg(k - 1)));
         const QByteArray check = readFile(dir.filePath(QStringLiteral("exchange/check.txt")));
         QVERIFY(planned.out.startsWith(QString::fromUtf8(check)));
         const PlanCsv plan = readPlanCsvFile(dir.filePath(QStringLiteral("exchange/plan.csv")));
-        const TrialRecord record =
-            controller->runTrial(test::planFromCsv(plan, m_s.scenario), {});
+        const TrialRecord record = controller->runTrial(test::planFromCsv(plan, m_s.scenario), {});
         QVERIFY2(record.completed(), qPrintable(record.message));
         const QString log = QStringLiteral("exchange/run-%1.csv").arg(k);
         write(dir.filePath(log), test::logCsv(plan.planId, record));
-        learned = cli(QStringList{QStringLiteral("learn"), QStringLiteral("--trial-log"), log} +
-                          scenario,
-                      dir.path());
+        learned =
+            cli(QStringList{QStringLiteral("learn"), QStringLiteral("--trial-log"), log} + scenario,
+                dir.path());
         QVERIFY2(learned.exitCode == 0, qPrintable(learned.err));
         QVERIFY2(learned.err.contains(
                      QStringLiteral("trial %1 (plan %2) learned").arg(k).arg(plan.planId)),
@@ -209,9 +207,11 @@ void TestCliLoopPayload::trialsThroughFiles_equalThePayloadSession()
         const QString path = history.filePath(QStringLiteral("estimate-%1.json").arg(k));
         QVERIFY(readParameterFile(path).values == m_s.scenario.initialParameters);
         const ParameterFilePayload p = payloadOf(path);
-        const PayloadBody &b = k == 0 ? prior : session.history().at(size_t(k - 1)).fit->estimate.body;
+        const PayloadBody &b =
+            k == 0 ? prior : session.history().at(size_t(k - 1)).fit->estimate.body;
         QCOMPARE(p.link, QStringLiteral("panda_link7"));
-        QVERIFY2(p.mass == b.mass && p.com == b.com, qPrintable(QStringLiteral("estimate %1").arg(k)));
+        QVERIFY2(p.mass == b.mass && p.com == b.com,
+                 qPrintable(QStringLiteral("estimate %1").arg(k)));
         QCOMPARE(p.inertiaAtCom[2], b.inertiaAtCom(1, 1));
         for (size_t i = 0; i < 10; ++i)
             QCOMPARE(p.identified[i],
@@ -264,13 +264,14 @@ void TestCliLoopPayload::badInput_isRefusedNamingItAndChangesNothing_data()
     QTest::newRow("learn: another path")
         << "path" << 2 << QStringLiteral("the scenario is not the one the plan was made with");
     QTest::newRow("learn: six joints logged")
-        << "six joints" << 2 << QStringLiteral("run-1.csv: line 3: the log has 6 joints (q1..q6), the robot 7");
+        << "six joints" << 2
+        << QStringLiteral("run-1.csv: line 3: the log has 6 joints (q1..q6), the robot 7");
     QTest::newRow("learn: two logs")
-        << "two logs" << 2
-        << QStringLiteral("a payload's learning loop runs every trial once");
+        << "two logs" << 2 << QStringLiteral("a payload's learning loop runs every trial once");
     QTest::newRow("learn: ended early")
-        << "short" << 3 << QStringLiteral("trial 1 did not complete (the log ends after 1160 of the "
-                                          "plan's 1170 samples");
+        << "short" << 3
+        << QStringLiteral("trial 1 did not complete (the log ends after 1160 of the "
+                          "plan's 1170 samples");
     QTest::newRow("learn: stopped at the tracking limit")
         << "tracking limit" << 3 << QStringLiteral("trial 1 did not complete");
     QTest::newRow("plan: refused by the check")
@@ -284,7 +285,9 @@ void TestCliLoopPayload::badInput_isRefusedNamingItAndChangesNothing()
     QFETCH(QString, message);
     QTemporaryDir dir;
     copyTree(m_base.path(), dir.path());
-    const auto path = [&](const char *name) { return dir.filePath(QLatin1String(name)); };
+    const auto path = [&](const char *name) {
+        return dir.filePath(QLatin1String(name));
+    };
     Scenario changed = test::pandaWithPayload();
     QStringList args{QStringLiteral("learn"), QStringLiteral("--trial-log"),
                      QStringLiteral("ex/run-1.csv"), QStringLiteral("--scenario"),
