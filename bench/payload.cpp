@@ -3,13 +3,15 @@
 // joint's limit as torque noise, 2^20-count encoders), 8 seeds: the errors of mass, centre of
 // mass and inertia, and the CPU of one payload update (filtering the log, the regressor, the
 // fit), the median of 20. With --loop: the payload learned in the learning loop instead
-// (payloadloop.cpp).
+// (payloadloop.cpp); with --arm-error FRACTION: the bias of a wrong arm model, with and without a
+// baseline trial (payloadarmerror.cpp).
 #include "../tests/identify/PayloadPaths.h"
 #include "BenchSupport.h"
 #include "identify/LogSignals.h"
 #include "identify/PayloadFit.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <random>
 
@@ -50,11 +52,20 @@ UniformLog simulatedLog(const PayloadModel &model, const test::JointPath &path, 
 } // namespace
 
 int payloadLoopBench();
+int payloadArmErrorBench(double fraction);
 
 int main(int argc, char **argv)
 {
     if (argc > 1 && std::strcmp(argv[1], "--loop") == 0)
         return payloadLoopBench();
+    if (argc > 2 && std::strcmp(argv[1], "--arm-error") == 0) {
+        const double fraction = std::atof(argv[2]);
+        if (!(fraction >= 0.0 && fraction < 1.0)) {
+            std::printf("--arm-error: a fraction in [0, 1), not %s\n", argv[2]);
+            return 2;
+        }
+        return payloadArmErrorBench(fraction);
+    }
     const auto arm = test::kukaArm();
     if (!arm) {
         std::printf("%s\n", qPrintable(test::sharedDataMissing()));

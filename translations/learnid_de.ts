@@ -2257,6 +2257,19 @@
     </message>
 </context>
 <context>
+    <name>PayloadBaseline</name>
+    <message>
+        <location filename="../core/identify/PayloadBaseline.cpp" line="+31"/>
+        <source>%1 (%2 joints, %3 samples of %4 s) is not a baseline of %5 (%6 joints, %7 samples of %8 s): a baseline runs the same timed path without the payload</source>
+        <translation>%1 (%2 Gelenke, %3 Abtastwerte zu %4 s) ist keine Referenz zu %5 (%6 Gelenke, %7 Abtastwerte zu %8 s): eine Referenzfahrt fährt dieselbe zeitlich geplante Bahn ohne die Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: the filtered signals are not finite</source>
+        <translation>%1: die gefilterten Signale sind nicht endlich</translation>
+    </message>
+</context>
+<context>
     <name>PayloadEstimate</name>
     <message>
         <location filename="../core/identify/PayloadEstimate.cpp" line="+61"/>
@@ -2422,27 +2435,37 @@
 <context>
     <name>PayloadSession</name>
     <message>
-        <location filename="../core/session/PayloadSession.cpp" line="+23"/>
+        <location filename="../core/session/PayloadSession.cpp" line="+24"/>
         <source>payload: only a URDF robot carries a payload (the model is %1)</source>
         <translation>payload: nur ein URDF-Roboter trägt eine Nutzlast (das Modell ist %1)</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+28"/>
+        <source>baseline trial %1</source>
+        <translation>Referenzfahrt %1</translation>
+    </message>
+    <message>
+        <location line="+82"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>trial %1 did not complete (%2): the payload estimate is unchanged</source>
         <translation>Versuch %1 wurde nicht vollständig ausgeführt (%2): die Schätzung der Nutzlast bleibt unverändert</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-92"/>
         <source>trial %1</source>
         <translation>Versuch %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+103"/>
+        <source>baseline trial %1 not usable: %2</source>
+        <translation>Referenzfahrt %1 nicht verwendbar: %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>the payload fit produced non-finite parameters</source>
         <translation>der Nutzlast-Fit ergab nicht endliche Parameter</translation>
     </message>
@@ -2922,7 +2945,7 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+207"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+211"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
@@ -2932,7 +2955,7 @@
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-137"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-141"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
@@ -2943,12 +2966,12 @@
         <translation>einer pro Gelenk von %1</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+29"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>unbekanntes Lerngesetz „%1“; bekannte Gesetze: %2</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="-28"/>
         <source>one per parameter of %1</source>
         <translation>einer pro Parameter von %1</translation>
     </message>
@@ -3023,7 +3046,7 @@
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+43"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>muss 0 (idealer Encoder) oder eine ganze Zahl von %1 bis %2 sein, gefunden: %3</translation>
     </message>
@@ -3033,7 +3056,7 @@
         <translation>muss 3 Einträge haben (x, y, z im Koordinatensystem des Basisglieds), gefunden: %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioPayload.cpp" line="+40"/>
+        <location filename="../core/io/ScenarioPayload.cpp" line="+41"/>
         <source>x, y and z</source>
         <translation>x, y und z</translation>
     </message>
@@ -3044,17 +3067,17 @@
     </message>
     <message>
         <location line="+18"/>
-        <location line="+62"/>
+        <location line="+65"/>
         <source>x0, y0, z0, x1, y1 and z1</source>
         <translation>x0, y0, z0, x1, y1 und z1</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="-61"/>
         <source>give the bound either as a sphere (radius) or as a box, not both</source>
         <translation>die Schranke entweder als Kugel (radius) oder als Quader (box) angeben, nicht beides</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+54"/>
         <source>only a URDF robot carries a payload (the model is %1)</source>
         <translation>nur ein URDF-Roboter trägt eine Nutzlast (das Modell ist %1)</translation>
     </message>
@@ -4423,7 +4446,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+39"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+51"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -5027,14 +5050,24 @@ neue Schätzung.
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-34"/>
+        <location line="+30"/>
+        <source>baseline: the same path without the payload</source>
+        <translation>Referenz: dieselbe Bahn ohne die Nutzlast</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-46"/>
         <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
         <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten Roboter gelernt, und nichts wird geschrieben)</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+23"/>
         <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
         <translation>learnid-cli: %1, die Nutzlast an %2 in %3 Versuchen gelernt; das Modell des Arms bleibt fest (robot.initialParameters)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>learnid-cli: first %1 baseline trial(s) of the same timed path without the payload, taken out of every payload trial (payload.baselineTrials)</source>
+        <translation>learnid-cli: zuerst %1 Referenzfahrt(en) derselben zeitlich geplanten Bahn ohne die Nutzlast, von jeder Nutzlastfahrt abgezogen (payload.baselineTrials)</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -5042,7 +5075,7 @@ neue Schätzung.
         <translation>learnid-cli: die Bahn bestimmt %1 der 10 Parameter der Nutzlast</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadTrialTable.cpp" line="+8"/>
+        <location filename="../app/cli/PayloadTrialTable.cpp" line="-22"/>
         <source>trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  identified</source>
         <translation>Vers.  max. Fehl.  RMS-Fehl.  Masse[kg]  Schwerpunkt [mm]       Update  identifiziert</translation>
     </message>
@@ -5052,7 +5085,7 @@ neue Schätzung.
         <translation>          [°]        [°]                                          [ms]</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
         <source>The payload after trial %1 (bound: %2):</source>
         <translation>Die Nutzlast nach Versuch %1 (Schranke: %2):</translation>
     </message>

@@ -2248,6 +2248,19 @@
     </message>
 </context>
 <context>
+    <name>PayloadBaseline</name>
+    <message>
+        <location filename="../core/identify/PayloadBaseline.cpp" line="+31"/>
+        <source>%1 (%2 joints, %3 samples of %4 s) is not a baseline of %5 (%6 joints, %7 samples of %8 s): a baseline runs the same timed path without the payload</source>
+        <translation>%1（%2 个关节，%3 个采样，周期 %4 s）不是 %5（%6 个关节，%7 个采样，周期 %8 s）的基线：基线须在不带负载的情况下运行同一条定时路径</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: the filtered signals are not finite</source>
+        <translation>%1：滤波后的信号不是有限值</translation>
+    </message>
+</context>
+<context>
     <name>PayloadEstimate</name>
     <message>
         <location filename="../core/identify/PayloadEstimate.cpp" line="+61"/>
@@ -2413,27 +2426,37 @@
 <context>
     <name>PayloadSession</name>
     <message>
-        <location filename="../core/session/PayloadSession.cpp" line="+23"/>
+        <location filename="../core/session/PayloadSession.cpp" line="+24"/>
         <source>payload: only a URDF robot carries a payload (the model is %1)</source>
         <translation>payload：只有 URDF 机器人才能携带负载（模型为 %1）</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+28"/>
+        <source>baseline trial %1</source>
+        <translation>基线试验 %1</translation>
+    </message>
+    <message>
+        <location line="+82"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>trial %1 did not complete (%2): the payload estimate is unchanged</source>
         <translation>试验 %1 未完成（%2）：负载估计保持不变</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-92"/>
         <source>trial %1</source>
         <translation>试验 %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+103"/>
+        <source>baseline trial %1 not usable: %2</source>
+        <translation>基线试验 %1 不可用：%2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>the payload fit produced non-finite parameters</source>
         <translation>负载拟合得到了非有限的参数</translation>
     </message>
@@ -2911,7 +2934,7 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+207"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+211"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
@@ -2921,7 +2944,7 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-137"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-141"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
@@ -2932,12 +2955,12 @@
         <translation>%1 的每个关节一个</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+29"/>
         <source>unknown learning law &quot;%1&quot;; known laws: %2</source>
         <translation>未知学习律“%1”；已知学习律：%2</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="-28"/>
         <source>one per parameter of %1</source>
         <translation>%1 的每个参数一个</translation>
     </message>
@@ -3012,7 +3035,7 @@
         <translation>必须是 1 或 -1，实际为 %1</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+43"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>必须是 0（理想编码器）或 %1 到 %2 之间的整数，实际为 %3</translation>
     </message>
@@ -3022,7 +3045,7 @@
         <translation>必须有 3 个条目（基座连杆坐标系中的 x、y、z），实际为 %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioPayload.cpp" line="+40"/>
+        <location filename="../core/io/ScenarioPayload.cpp" line="+41"/>
         <source>x, y and z</source>
         <translation>x、y 和 z</translation>
     </message>
@@ -3033,17 +3056,17 @@
     </message>
     <message>
         <location line="+18"/>
-        <location line="+62"/>
+        <location line="+65"/>
         <source>x0, y0, z0, x1, y1 and z1</source>
         <translation>x0、y0、z0、x1、y1 和 z1</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="-61"/>
         <source>give the bound either as a sphere (radius) or as a box, not both</source>
         <translation>边界请给出球体（radius）或长方体（box）之一，不能同时给出</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+54"/>
         <source>only a URDF robot carries a payload (the model is %1)</source>
         <translation>只有 URDF 机器人才能携带负载（模型为 %1）</translation>
     </message>
@@ -4409,7 +4432,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+39"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+51"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -5009,14 +5032,24 @@ stdout, and the next plan uses the new estimate.
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-34"/>
+        <location line="+30"/>
+        <source>baseline: the same path without the payload</source>
+        <translation>基线：不带负载的同一路径</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-46"/>
         <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
         <translation>%1：带 payload 段时尚不可用（负载在仿真机器人上学习，不写入任何文件）</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+23"/>
         <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
         <translation>learnid-cli：%1，在 %3 次试验中学习 %2 上的负载；机械臂模型保持固定（robot.initialParameters）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>learnid-cli: first %1 baseline trial(s) of the same timed path without the payload, taken out of every payload trial (payload.baselineTrials)</source>
+        <translation>learnid-cli：先进行 %1 次不带负载、同一定时路径的基线试验，并从每次负载试验中减去（payload.baselineTrials）</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -5024,7 +5057,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：该路径可确定负载 10 个参数中的 %1 个</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadTrialTable.cpp" line="+8"/>
+        <location filename="../app/cli/PayloadTrialTable.cpp" line="-22"/>
         <source>trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  identified</source>
         <translation>试验   最大误差   RMS误差   质量[kg]   质心 [mm]              更新    已辨识</translation>
     </message>
@@ -5034,7 +5067,7 @@ stdout, and the next plan uses the new estimate.
         <translation>          [°]        [°]                                          [ms]</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
         <source>The payload after trial %1 (bound: %2):</source>
         <translation>试验 %1 之后的负载（边界：%2）：</translation>
     </message>

@@ -61,8 +61,12 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
     try {
         const auto model = makeRobotModel(given.model, given.urdf);
         scenario = withRobotDefaults(given, *model);
-        session =
-            std::make_unique<PayloadSession>(scenario, model, makeSimulatedRobot(scenario, model));
+        // The simulated robot without its payload runs the baseline trials.
+        Scenario bare = scenario;
+        bare.simulation.payload = SimulatedPayload();
+        bare.payload.enabled = false;
+        session = std::make_unique<PayloadSession>(
+            scenario, model, makeSimulatedRobot(scenario, model), makeSimulatedRobot(bare, model));
     } catch (const Error &e) {
         return fail(e.message(), ExitBadInput);
     }
@@ -75,6 +79,14 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
                    .arg(session->robot().description(), link)
                    .arg(scenario.iterations)
             << Qt::endl;
+        if (scenario.payload.baselineTrials > 0) {
+            err << QCoreApplication::translate(
+                       "learnid-cli",
+                       "learnid-cli: first %1 baseline trial(s) of the same timed path without "
+                       "the payload, taken out of every payload trial (payload.baselineTrials)")
+                       .arg(scenario.payload.baselineTrials)
+                << Qt::endl;
+        }
         // What the path lets the trials see, before the robot moves.
         const PayloadObservability o = session->observability();
         err << QCoreApplication::translate(
@@ -90,10 +102,11 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
     g_session = session.get();
     const auto previous = std::signal(SIGINT, onPayloadInterrupt);
     bool completed = true;
-    for (int i = 0; i < scenario.iterations && completed; ++i) {
+    const int trials = scenario.payload.baselineTrials + scenario.iterations;
+    for (int i = 0; i < trials && completed; ++i) {
         const PayloadTrial &t = session->runTrial();
         out << payloadTrialRow(t) << Qt::endl;
-        completed = t.learned();
+        completed = t.usable();
     }
     std::signal(SIGINT, previous);
     g_session = nullptr;

@@ -46,6 +46,11 @@ QString payloadTrialRow(const PayloadTrial &t)
     } else {
         row += QStringLiteral("-").rightJustified(12) + QStringLiteral("-").rightJustified(12);
     }
+    if (t.baselineKept) {
+        return row + QStringLiteral("  ") +
+               QCoreApplication::translate("learnid-cli",
+                                           "baseline: the same path without the payload");
+    }
     if (!t.learned())
         return row + QStringLiteral("  ") + t.message;
     const PayloadBody &b = t.fit->estimate.body;

@@ -1,4 +1,5 @@
 #include "io/ScenarioPayload.h"
+#include "io/ScenarioFile.h"
 
 #include "io/ValueChecks.h"
 #include "model/ChainModel.h"
@@ -68,6 +69,7 @@ void readPayloadSection(JsonObjectReader r, PayloadSettings &p)
         }
         bound->rejectUnknownKeys();
     }
+    r.readInteger(key("baselineTrials"), p.baselineTrials, 0, scenarioLimits::maxIterations);
     r.rejectUnknownKeys();
 }
 
@@ -96,6 +98,8 @@ JsonTree payloadSectionJson(const PayloadSettings &p)
         bound.insert(key("radius"), p.radius);
     JsonTree t = JsonTree::object();
     t.insert(key("link"), p.link).insert(key("prior"), prior).insert(key("bound"), bound);
+    if (p.baselineTrials > 0)
+        t.insert(key("baselineTrials"), p.baselineTrials);
     return t;
 }
 

@@ -171,6 +171,10 @@ void validateScenario(const Scenario &s)
     checkInterval(key("path.planningFraction"), s.planningFraction, 0.0, 1.0, Bounds::LeftOpen);
     checkIntegerRange(key("path.gentleTrials"), s.gentleTrials, 0, scenarioLimits::maxIterations);
     checkInterval(key("path.gentleSpeed"), s.gentleSpeed, 0.0, 1.0, Bounds::LeftOpen);
+    if (s.payload.enabled) {
+        checkIntegerRange(key("payload.baselineTrials"), s.payload.baselineTrials, 0,
+                          scenarioLimits::maxIterations);
+    }
 
     validateControllerSettings(s.controller, n, key("controller"));
 

@@ -1,5 +1,6 @@
 #include "session/PayloadSession.h"
 
+#include "identify/PayloadBaseline.h"
 #include "model/Error.h"
 #include "session/SafetyCheck.h"
 
@@ -44,13 +45,25 @@ PayloadObservability plannedObservability(const PayloadModel &model,
     return payloadPathObservability(model, q, qd, qdd);
 }
 
+UniformLog trialLog(const PayloadTrial &t)
+{
+    UniformLog log;
+    log.source =
+        t.baseline ? Text::tr("baseline trial %1").arg(t.index) : Text::tr("trial %1").arg(t.index);
+    log.period = t.record.samplePeriod;
+    log.q = t.record.q;
+    log.tau = t.record.tau;
+    return log;
+}
+
 } // namespace
 
 PayloadSession::PayloadSession(const Scenario &scenario, std::shared_ptr<const RobotModel> model,
-                               std::shared_ptr<Robot> robot)
+                               std::shared_ptr<Robot> robot, std::shared_ptr<Robot> bareRobot)
     : m_scenario(scenario)
     , m_model(chainOf(model, scenario.model))
     , m_robot(std::move(robot))
+    , m_bareRobot(std::move(bareRobot))
     , m_prior(payloadPriorOf(scenario.payload))
     , m_planner(scenario, model)
 {
@@ -72,13 +85,26 @@ Eigen::VectorXd PayloadSession::feedforwardParameters(const InertialParameters &
     return m_scenario.initialParameters + payloadBaseShift(*m_model, m_payload->joint(), payload);
 }
 
+bool PayloadSession::nextTrialIsBaseline() const
+{
+    return int(m_baselines.size()) < m_scenario.payload.baselineTrials;
+}
+
 PreTrialCheck PayloadSession::checkNextTrial() const
 {
     PreTrialCheck check;
     try {
-        const Eigen::VectorXd phi = feedforwardParameters(m_current);
-        const bool gentle = int(m_history.size()) < m_scenario.gentleTrials;
-        check.plan = m_planner.plan(phi, &check.rule, gentle);
+        const Eigen::VectorXd phi =
+            nextTrialIsBaseline() ? m_scenario.initialParameters : feedforwardParameters(m_current);
+        if (m_scenario.payload.baselineTrials > 0) {
+            // One timed path for every trial, so that the baseline's samples line up with each
+            // payload trial's: timed with the prior, gentle throughout if any trial is to be.
+            const Eigen::VectorXd timing = feedforwardParameters(m_prior.parameters());
+            check.plan = m_planner.plan(timing, &check.rule, m_scenario.gentleTrials > 0, &phi);
+        } else {
+            const bool gentle = int(m_history.size()) < m_scenario.gentleTrials;
+            check.plan = m_planner.plan(phi, &check.rule, gentle);
+        }
         check.verdict = checkTrial(*m_model, phi, check.plan, m_scenario.stabilityMargin);
     } catch (const Error &e) {
         check.planningError = e.message();
@@ -99,7 +125,8 @@ const PayloadTrial &PayloadSession::runTrial()
 {
     PayloadTrial t;
     t.index = int(m_history.size());
-    t.payloadUsed = m_current;
+    t.baseline = nextTrialIsBaseline();
+    t.payloadUsed = t.baseline ? InertialParameters::Zero() : m_current;
     t.check = checkNextTrial();
     if (!t.check.passed()) {
         t.record.status = TrialStatus::Refused;
@@ -110,7 +137,8 @@ const PayloadTrial &PayloadSession::runTrial()
     }
     TrialMonitor monitor;
     monitor.cancel = &m_cancel;
-    t.record = m_robot->runTrial(t.plan(), monitor);
+    Robot &robot = t.baseline && m_bareRobot ? *m_bareRobot : *m_robot;
+    t.record = robot.runTrial(t.plan(), monitor);
     trackingErrorFigures(t.plan(), t.record, t.maxTrackingErrorDeg, t.rmsTrackingErrorDeg);
     if (!t.record.completed()) {
         t.message = Text::tr("trial %1 did not complete (%2): the payload estimate is unchanged")
@@ -119,15 +147,21 @@ const PayloadTrial &PayloadSession::runTrial()
         m_history.push_back(std::move(t));
         return m_history.back();
     }
+    if (t.baseline) {
+        try {
+            m_baselines.push_back(filterLog(trialLog(t), m_filter));
+            t.baselineKept = true;
+        } catch (const Error &e) {
+            t.message = Text::tr("baseline trial %1 not usable: %2").arg(t.index).arg(e.message());
+        }
+        m_history.push_back(std::move(t));
+        return m_history.back();
+    }
     try {
         const std::clock_t start = std::clock();
-        UniformLog log;
-        log.source = Text::tr("trial %1").arg(t.index);
-        log.period = t.record.samplePeriod;
-        log.q = t.record.q;
-        log.tau = t.record.tau;
         std::vector<FilteredLog> logs = m_logs;
-        logs.push_back(filterLog(log, m_filter));
+        logs.push_back(
+            withBaselineSubtracted(*m_payload, filterLog(trialLog(t), m_filter), m_baselines));
         std::vector<JointTrajectory> paths = m_paths;
         paths.push_back(t.plan().desired);
         t.planned = plannedObservability(*m_payload, paths);
@@ -151,8 +185,12 @@ const PayloadTrial &PayloadSession::runTrial()
 bool PayloadSession::runTrials(int count)
 {
     m_cancel.store(false);
+    while (nextTrialIsBaseline()) {
+        if (m_cancel.load() || !runTrial().usable())
+            return false;
+    }
     for (int i = 0; i < count; ++i) {
-        if (m_cancel.load() || !runTrial().learned())
+        if (m_cancel.load() || !runTrial().usable())
             return false;
     }
     return true;

@@ -21,6 +21,10 @@ namespace learnid {
 struct PayloadTrial
 {
     int index = 0;
+    /// A baseline trial (payload.baselineTrials): the same timed path without the payload, the
+    /// arm's feedforward alone; its log is taken out of every payload trial, nothing is fitted.
+    bool baseline = false;
+    bool baselineKept = false; ///< a baseline trial that completed and whose log is kept
     InertialParameters payloadUsed = InertialParameters::Zero(); ///< the feedforward's payload
     PreTrialCheck check; ///< plan (arm + payloadUsed) and verdict before the motion
     TrialRecord record;
@@ -35,6 +39,8 @@ struct PayloadTrial
     QString message;               ///< why it was refused, ended early or not learned from
 
     bool learned() const { return fit.has_value(); }
+    /// The session may go on: a learned trial, or a baseline trial that was kept.
+    bool usable() const { return learned() || baselineKept; }
     const TrialPlan &plan() const { return check.plan; }
 };
 
@@ -45,16 +51,20 @@ struct PayloadTrial
 /// sides filtered alike, the nearest real body inside the bound), restricted to the directions
 /// their planned paths observe (payloadPathObservability): the others keep the prior and are
 /// reported as not identified, even where a tracking error let the measured motion see them. Trials
-/// that did not complete are kept but not learned from. Calls are synchronous and belong to one
-/// thread; requestCancel() may come from any thread.
+/// that did not complete are kept but not learned from. With payload.baselineTrials, the first
+/// trials run the path without the payload and every trial keeps their timing (docs/payload.md,
+/// "A wrong arm model and the baseline trial"). Calls are synchronous and belong to one thread;
+/// requestCancel() may come from any thread.
 class PayloadSession
 {
 public:
-    /// scenario: withRobotDefaults() applied, its payload section enabled. Throws Error when the
-    /// model is not a URDF robot's, the scenario does not fit it, the prior is refused or the
-    /// link is unknown (naming the payload key).
+    /// scenario: withRobotDefaults() applied, its payload section enabled. bareRobot: the robot
+    /// without its payload, for the baseline trials (the simulated robot); none: they run on
+    /// `robot`, whose payload the caller has the technician mount only after them
+    /// (nextTrialIsBaseline()). Throws Error when the model is not a URDF robot's, the scenario
+    /// does not fit it, the prior is refused or the link is unknown (naming the payload key).
     PayloadSession(const Scenario &scenario, std::shared_ptr<const RobotModel> model,
-                   std::shared_ptr<Robot> robot);
+                   std::shared_ptr<Robot> robot, std::shared_ptr<Robot> bareRobot = {});
 
     const Scenario &scenario() const { return m_scenario; }
     const PayloadModel &payloadModel() const { return *m_payload; }
@@ -65,15 +75,19 @@ public:
     const InertialParameters &currentPayload() const { return m_current; }
     /// The base parameters of the arm carrying `payload` (what the feedforward is built with).
     Eigen::VectorXd feedforwardParameters(const InertialParameters &payload) const;
-    /// The next trial planned with the arm and the current payload, and checked.
+    /// The next trial planned with the arm and the current payload (a baseline: the arm alone
+    /// on the baseline's timing), and checked.
     PreTrialCheck checkNextTrial() const;
+    /// The next trial is a baseline trial: the robot must not carry the payload.
+    bool nextTrialIsBaseline() const;
     /// What the next trial's path lets the fit see of the payload (PayloadObservability.h);
     /// rank 0 when it cannot be planned.
     PayloadObservability observability() const;
 
     /// Checks, runs and learns from one trial; see the class comment.
     const PayloadTrial &runTrial();
-    /// Runs `count` trials; stops early (false) when one is not learned from or on Stop.
+    /// Runs the baseline trials still due, then `count` payload trials; stops early (false) when
+    /// one is not usable or on Stop.
     bool runTrials(int count);
     void requestCancel() { m_cancel.store(true); }
 
@@ -81,11 +95,13 @@ private:
     Scenario m_scenario;
     std::shared_ptr<const ChainModel> m_model;
     std::shared_ptr<Robot> m_robot;
+    std::shared_ptr<Robot> m_bareRobot;
     std::unique_ptr<PayloadModel> m_payload;
     PayloadPrior m_prior;
     TrialPlanner m_planner;
     LogFilterSettings m_filter;
-    std::vector<FilteredLog> m_logs;      ///< the completed trials, filtered
+    std::vector<FilteredLog> m_baselines; ///< the completed baseline trials, filtered
+    std::vector<FilteredLog> m_logs;      ///< the completed payload trials, filtered, less them
     std::vector<JointTrajectory> m_paths; ///< their planned paths
     std::vector<PayloadTrial> m_history;
     InertialParameters m_current = InertialParameters::Zero();

@@ -19,6 +19,10 @@ struct PayloadSettings
     Eigen::VectorXd inertia;
     double radius = 0.3; ///< the bounding sphere around the link frame's origin [m]
     Eigen::VectorXd box; ///< or the bounding box x0, y0, z0, x1, y1, z1 [m] (empty: the sphere)
+    /// Trials of the same timed path run first without the payload, whose torque residual is
+    /// taken out of every payload trial: a wrong arm model then biases the payload no more
+    /// (docs/payload.md, "A wrong arm model and the baseline trial"). 0: none.
+    int baselineTrials = 0;
 };
 
 /// The payload the simulated robot really carries (simulation.payload): a rigid body on the

@@ -28,6 +28,7 @@ Scenario pandaWithPayload()
     s.payload.com = Eigen::Vector3d(0.01, -0.02, 0.05);
     s.payload.inertia = (Eigen::VectorXd(6) << 0.01, 0.001, 0.012, 0.0, 0.0, 0.008).finished();
     s.payload.box = (Eigen::VectorXd(6) << -0.1, -0.1, -0.05, 0.1, 0.1, 0.2).finished();
+    s.payload.baselineTrials = 2;
     s.simulation.payload.present = true;
     s.simulation.payload.mass = 3.0;
     s.simulation.payload.com = Eigen::Vector3d(0.05, 0.0, 0.08);
@@ -75,6 +76,7 @@ private slots:
         QVERIFY(bitEqual(Eigen::VectorXd(r.payload.com), Eigen::VectorXd(s.payload.com)));
         QVERIFY(bitEqual(r.payload.inertia, s.payload.inertia));
         QVERIFY(bitEqual(r.payload.box, s.payload.box));
+        QCOMPARE(r.payload.baselineTrials, 2);
         QVERIFY(r.simulation.payload.present);
         QVERIFY(bitEqual(r.simulation.payload.mass, s.simulation.payload.mass));
         QVERIFY(bitEqual(Eigen::VectorXd(r.simulation.payload.com),
@@ -110,6 +112,7 @@ private slots:
         QCOMPARE(r.payload.radius, defaultPayloadRadius);
         QCOMPARE(r.payload.box.size(), 0);
         QCOMPARE(r.payload.inertia.size(), 0);
+        QCOMPARE(r.payload.baselineTrials, 0);
     }
 
     void badValue_isRejectedWithKeyPath_data()
@@ -149,6 +152,10 @@ private slots:
             "the bound");
         row("box upside down", "payload.bound", "box", QJsonArray{0.1, 0.1, 0.1, 0.0, 0.2, 0.2},
             "payload.bound.box: the box's upper corner");
+        row("baselineTrials negative", "payload", "baselineTrials", -1,
+            "payload.baselineTrials: must be an integer from 0 to 100, got -1");
+        row("baselineTrials fraction", "payload", "baselineTrials", 1.5,
+            "payload.baselineTrials: must be an integer from 0 to 100, got 1.5");
         row("unknown prior key", "payload.prior", "volume", 1.0,
             "payload.prior.volume: unknown key; allowed here: mass, com, inertia");
         row("sim negative mass", "simulation.payload", "mass", -3.0,
