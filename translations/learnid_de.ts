@@ -1166,17 +1166,17 @@
         <translation>der Verlauf %1 lässt sich nicht wiedergeben: %2</translation>
     </message>
     <message>
-        <location line="+24"/>
-        <source>the arm held fixed and the payload&apos;s prior: estimate 0 of a payload&apos;s learning loop through files</source>
-        <translation>der festgehaltene Arm und die Vorgabe der Nutzlast: Schätzung 0 einer Lernschleife der Nutzlast über Dateien</translation>
+        <location line="+34"/>
+        <source>the arm held fixed and the payload learned from the trials up to trial %1: estimate %2 of a payload&apos;s learning loop through files</source>
+        <translation>der festgehaltene Arm und die aus den Versuchen bis Versuch %1 gelernte Nutzlast: Schätzung %2 einer Lernschleife der Nutzlast über Dateien</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>the arm held fixed and the payload learned from trials 0 to %1 of a payload&apos;s learning loop through files</source>
-        <translation>der festgehaltene Arm und die aus den Versuchen 0 bis %1 gelernte Nutzlast einer Lernschleife der Nutzlast über Dateien</translation>
+        <location line="+4"/>
+        <source>the arm held fixed and the payload&apos;s prior: estimate %1 of a payload&apos;s learning loop through files</source>
+        <translation>der festgehaltene Arm und die Vorgabe der Nutzlast: Schätzung %1 einer Lernschleife der Nutzlast über Dateien</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+29"/>
         <source>%1 holds another arm model than the scenario&apos;s robot.initialParameters: a history keeps the arm it learns the payload on</source>
         <translation>%1 enthält ein anderes Armmodell als robot.initialParameters des Szenarios: ein Verlauf behält den Arm, an dem er die Nutzlast lernt</translation>
     </message>
@@ -1202,6 +1202,16 @@
     </message>
     <message>
         <location filename="../core/service/FileLoopPayloadPlan.cpp" line="+23"/>
+        <source>the arm&apos;s model held fixed (robot.initialParameters) alone: trial %1 is a baseline trial (payload.baselineTrials), run it WITHOUT the payload mounted</source>
+        <translation>allein das festgehaltene Armmodell (robot.initialParameters): Versuch %1 ist eine Referenzfahrt (payload.baselineTrials), ihn OHNE montierte Nutzlast ausführen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the arm&apos;s model held fixed (robot.initialParameters) and the payload learned from the trials up to trial %1 (estimate %2 of %3)</source>
+        <translation>das festgehaltene Armmodell (robot.initialParameters) und die aus den Versuchen bis Versuch %1 gelernte Nutzlast (Schätzung %2 aus %3)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>--estimate: a scenario with a payload section plans with the arm&apos;s model it holds fixed (robot.initialParameters) and the payload its history has learned, the prior (payload section) first: leave out --estimate</source>
         <translation>--estimate: ein Szenario mit payload-Abschnitt plant mit dem Armmodell, das es festhält (robot.initialParameters), und der Nutzlast, die sein Verlauf gelernt hat, zuerst der Vorgabe (payload-Abschnitt): --estimate weglassen</translation>
     </message>
@@ -1211,14 +1221,9 @@
         <translation>%1 (für einen Neubeginn eine andere --history angeben)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="-29"/>
         <source>the arm&apos;s model held fixed (robot.initialParameters) and the payload&apos;s prior (payload section)</source>
         <translation>das festgehaltene Armmodell (robot.initialParameters) und die Vorgabe der Nutzlast (payload-Abschnitt)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the arm&apos;s model held fixed (robot.initialParameters) and the payload learned from trials 0 to %1 (estimate %2 of %3)</source>
-        <translation>das festgehaltene Armmodell (robot.initialParameters) und die aus den Versuchen 0 bis %1 gelernte Nutzlast (Schätzung %2 aus %3)</translation>
     </message>
 </context>
 <context>
@@ -4485,7 +4490,17 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>plan-id: %1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+47"/>
+        <source>learnid-cli: baseline trial %1 (plan %2) kept; the next trial is a baseline trial too, without the payload</source>
+        <translation>learnid-cli: Referenzfahrt %1 (Plan %2) übernommen; der nächste Versuch ist ebenfalls eine Referenzfahrt, ohne die Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>learnid-cli: baseline trial %1 (plan %2) kept; mount the payload before the next trial</source>
+        <translation>learnid-cli: Referenzfahrt %1 (Plan %2) übernommen; vor dem nächsten Versuch die Nutzlast montieren</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>learnid-cli: trial %1 (plan %2) learned; the next plan uses estimate %3</source>
         <translation>learnid-cli: aus Versuch %1 (Plan %2) gelernt; der nächste Plan verwendet Schätzung %3</translation>
     </message>
@@ -4500,7 +4515,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: Schätzung %1 auf den Roboter übertragen</translation>
     </message>
     <message>
-        <location filename="../app/cli/LoopCommands.cpp" line="-84"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>

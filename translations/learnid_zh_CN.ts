@@ -1166,17 +1166,17 @@
         <translation>历史 %1 无法回放：%2</translation>
     </message>
     <message>
-        <location line="+24"/>
-        <source>the arm held fixed and the payload&apos;s prior: estimate 0 of a payload&apos;s learning loop through files</source>
-        <translation>固定的机械臂与负载的先验：通过文件进行的负载学习循环的估计 0</translation>
+        <location line="+34"/>
+        <source>the arm held fixed and the payload learned from the trials up to trial %1: estimate %2 of a payload&apos;s learning loop through files</source>
+        <translation>固定的机械臂与从截至试验 %1 的各次试验学得的负载：通过文件进行的负载学习循环的估计 %2</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>the arm held fixed and the payload learned from trials 0 to %1 of a payload&apos;s learning loop through files</source>
-        <translation>固定的机械臂与从通过文件进行的负载学习循环的试验 0 至 %1 学得的负载</translation>
+        <location line="+4"/>
+        <source>the arm held fixed and the payload&apos;s prior: estimate %1 of a payload&apos;s learning loop through files</source>
+        <translation>固定的机械臂与负载的先验：通过文件进行的负载学习循环的估计 %1</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+29"/>
         <source>%1 holds another arm model than the scenario&apos;s robot.initialParameters: a history keeps the arm it learns the payload on</source>
         <translation>%1 中的机械臂模型与场景的 robot.initialParameters 不同：历史保持其学习负载时所用的机械臂不变</translation>
     </message>
@@ -1202,6 +1202,16 @@
     </message>
     <message>
         <location filename="../core/service/FileLoopPayloadPlan.cpp" line="+23"/>
+        <source>the arm&apos;s model held fixed (robot.initialParameters) alone: trial %1 is a baseline trial (payload.baselineTrials), run it WITHOUT the payload mounted</source>
+        <translation>仅固定的机械臂模型（robot.initialParameters）：试验 %1 是基线试验（payload.baselineTrials），请在未安装负载的情况下运行</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the arm&apos;s model held fixed (robot.initialParameters) and the payload learned from the trials up to trial %1 (estimate %2 of %3)</source>
+        <translation>固定的机械臂模型（robot.initialParameters）和从截至试验 %1 的各次试验学得的负载（%3 中的估计 %2）</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>--estimate: a scenario with a payload section plans with the arm&apos;s model it holds fixed (robot.initialParameters) and the payload its history has learned, the prior (payload section) first: leave out --estimate</source>
         <translation>--estimate：带 payload 部分的场景使用其固定的机械臂模型（robot.initialParameters）和其历史已学得的负载（最初为 payload 部分的先验）进行规划：请去掉 --estimate</translation>
     </message>
@@ -1211,14 +1221,9 @@
         <translation>%1（请给出另一个 --history 以重新开始）</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="-29"/>
         <source>the arm&apos;s model held fixed (robot.initialParameters) and the payload&apos;s prior (payload section)</source>
         <translation>固定的机械臂模型（robot.initialParameters）和负载的先验（payload 部分）</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the arm&apos;s model held fixed (robot.initialParameters) and the payload learned from trials 0 to %1 (estimate %2 of %3)</source>
-        <translation>固定的机械臂模型（robot.initialParameters）和从试验 0 至 %1 学得的负载（%3 中的估计 %2）</translation>
     </message>
 </context>
 <context>
@@ -4471,7 +4476,17 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>plan-id: %1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+47"/>
+        <source>learnid-cli: baseline trial %1 (plan %2) kept; the next trial is a baseline trial too, without the payload</source>
+        <translation>learnid-cli：基线试验 %1（计划 %2）已保留；下一次试验也是基线试验，不安装负载</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>learnid-cli: baseline trial %1 (plan %2) kept; mount the payload before the next trial</source>
+        <translation>learnid-cli：基线试验 %1（计划 %2）已保留；请在下一次试验前安装负载</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>learnid-cli: trial %1 (plan %2) learned; the next plan uses estimate %3</source>
         <translation>learnid-cli：已从试验 %1（计划 %2）学习；下一个计划使用估计 %3</translation>
     </message>
@@ -4486,7 +4501,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：估计 %1 已写入机器人</translation>
     </message>
     <message>
-        <location filename="../app/cli/LoopCommands.cpp" line="-84"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>

@@ -49,16 +49,25 @@ void replayHistoryTrials(PayloadReplay &replay, int count, const QString &dir)
         const PayloadTrial &t = replay.session->runTrial();
         if (!replay.robot->mismatch().isEmpty())
             throw Error(replay.robot->mismatch());
-        if (!t.learned())
+        if (!t.usable())
             throw Error(Text::tr("the history %1 does not replay: %2").arg(native(dir), t.message));
     }
+}
+
+const PayloadTrial *lastLearned(const PayloadSession &session, int k)
+{
+    const PayloadTrial *learned = nullptr;
+    for (int i = 0; i < k && i < int(session.history().size()); ++i)
+        if (session.history().at(size_t(i)).learned())
+            learned = &session.history().at(size_t(i));
+    return learned;
 }
 
 ParameterFilePayload payloadEstimateSection(const PayloadSession &session, int k)
 {
     const QString link = session.payloadModel().link();
-    if (k > 0)
-        return payloadSection(session.history().at(size_t(k - 1)).fit->estimate, link);
+    if (const PayloadTrial *t = lastLearned(session, k))
+        return payloadSection(t->fit->estimate, link);
     ParameterFilePayload p;
     p.link = link;
     const PayloadBody prior = payloadBody(session.prior().parameters());
@@ -73,12 +82,15 @@ QByteArray payloadEstimateFile(const LoopScenario &s, const PayloadSession &sess
 {
     ParameterFileContent c;
     c.robotModel = s.model->id();
+    const PayloadTrial *t = lastLearned(session, k);
     c.robotDescription =
-        k == 0 ? Text::tr("the arm held fixed and the payload's prior: estimate 0 of a payload's "
-                          "learning loop through files")
-               : Text::tr("the arm held fixed and the payload learned from trials 0 to %1 of a "
-                          "payload's learning loop through files")
-                     .arg(k - 1);
+        t ? Text::tr("the arm held fixed and the payload learned from the trials up to trial %1: "
+                     "estimate %2 of a payload's learning loop through files")
+                .arg(t->index)
+                .arg(k)
+          : Text::tr("the arm held fixed and the payload's prior: estimate %1 of a payload's "
+                     "learning loop through files")
+                .arg(k);
     c.controller = s.scenario.controller;
     c.created = QDateTime::currentDateTimeUtc();
     c.toolVersion = QStringLiteral(LEARNID_VERSION);
@@ -87,13 +99,12 @@ QByteArray payloadEstimateFile(const LoopScenario &s, const PayloadSession &sess
     c.values = s.scenario.initialParameters;
     c.canWrites = objects::parameterWriteSequence(c.nodes(), c.values);
     c.payload = payloadEstimateSection(session, k);
-    if (k > 0) {
-        const PayloadTrial &t = session.history().at(size_t(k - 1));
-        c.sourceTrial = t.index;
-        c.maxTrackingErrorDeg = t.maxTrackingErrorDeg;
-        c.rmsTrackingErrorDeg = t.rmsTrackingErrorDeg;
-        c.residualRms = t.fit->trainingRms;
-        const PayloadObservability &o = t.fit->estimate.observability;
+    if (t) {
+        c.sourceTrial = t->index;
+        c.maxTrackingErrorDeg = t->maxTrackingErrorDeg;
+        c.rmsTrackingErrorDeg = t->rmsTrackingErrorDeg;
+        c.residualRms = t->fit->trainingRms;
+        const PayloadObservability &o = t->fit->estimate.observability;
         c.condition = o.rank > 0 ? o.condition : std::numeric_limits<double>::infinity();
         c.rank = o.rank;
     }

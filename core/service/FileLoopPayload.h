@@ -31,12 +31,17 @@ PayloadReplay payloadReplay(const LoopScenario &s, const LoopHistory *history, c
                             QList<RecordedTrialRobot::Run> runs);
 
 /// Runs the first `count` trials. Throws Error when one is planned otherwise than its log ran
-/// (the robot's mismatch, naming both plan-ids) or is not learned from.
+/// (the robot's mismatch, naming both plan-ids) or is not usable (neither learned from nor a
+/// baseline kept).
 void replayHistoryTrials(PayloadReplay &replay, int count, const QString &dir);
 
+/// The last trial before trial k that was learned from; none before the first (baseline trials,
+/// payload.baselineTrials, are not).
+const PayloadTrial *lastLearned(const PayloadSession &session, int k);
+
 /// Estimate k of the session as the history stores it: the arm held fixed (the scenario's
-/// robot.initialParameters) plus the payload section, for k = 0 the prior (every value kept at
-/// it), else the fit after trial k - 1 (which must have been learned from).
+/// robot.initialParameters) plus the payload section of the payload the session had before
+/// trial k: the fit of lastLearned(), or the prior (every value kept at it) before the first.
 ParameterFilePayload payloadEstimateSection(const PayloadSession &session, int k);
 QByteArray payloadEstimateFile(const LoopScenario &s, const PayloadSession &session, int k);
 

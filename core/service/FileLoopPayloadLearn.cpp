@@ -62,7 +62,7 @@ LearnedTrial learnPayloadTrial(const LoopScenario &s, const LearnRequest &reques
     if (!replay.robot->mismatch().isEmpty())
         throw Error(replay.robot->mismatch());
     learned.payloadSession = std::move(replay.session);
-    if (!t.learned()) {
+    if (!t.usable()) {
         learned.failure = t.message;
         return learned;
     }

@@ -15,6 +15,25 @@ struct Text
     Q_DECLARE_TR_FUNCTIONS(FileLoop)
 };
 
+// In words: what the next trial's feedforward is built with, and for a baseline trial that the
+// payload must not be mounted. path: the history's newest estimate file.
+QString estimateSource(const PayloadSession &session, int k, const QString &path)
+{
+    if (session.nextTrialIsBaseline())
+        return Text::tr("the arm's model held fixed (robot.initialParameters) alone: trial %1 is "
+                        "a baseline trial (payload.baselineTrials), run it WITHOUT the payload "
+                        "mounted")
+            .arg(k);
+    if (const PayloadTrial *t = lastLearned(session, k))
+        return Text::tr("the arm's model held fixed (robot.initialParameters) and the payload "
+                        "learned from the trials up to trial %1 (estimate %2 of %3)")
+            .arg(t->index)
+            .arg(k)
+            .arg(native(path));
+    return Text::tr("the arm's model held fixed (robot.initialParameters) and the payload's "
+                    "prior (payload section)");
+}
+
 } // namespace
 
 PlannedTrial planPayloadTrial(const LoopScenario &s, const PlanRequest &request)
@@ -55,15 +74,8 @@ PlannedTrial planPayloadTrial(const LoopScenario &s, const PlanRequest &request)
     PlannedTrial planned;
     planned.check = session.checkNextTrial();
     planned.trialIndex = learned;
-    planned.estimateSource =
-        learned == 0
-            ? Text::tr("the arm's model held fixed (robot.initialParameters) and the payload's "
-                       "prior (payload section)")
-            : Text::tr("the arm's model held fixed (robot.initialParameters) and the payload "
-                       "learned from trials 0 to %1 (estimate %2 of %3)")
-                  .arg(learned - 1)
-                  .arg(learned)
-                  .arg(native(dir.filePath(read->estimates.constLast())));
+    planned.estimateSource = estimateSource(
+        session, learned, read ? dir.filePath(read->estimates.constLast()) : QString());
     const QStringList identifiability =
         planned.check.passed() ? payloadIdentifiability(session, planned.check) : QStringList();
     planned.checkText = preTrialCheckText(planned.check, planned.trialIndex, planned.estimateSource,

@@ -72,21 +72,18 @@ void copyTree(const QString &from, const QString &to)
     }
 }
 
-// The trial rows `run` and `learn` print for a payload session: the update's CPU time (field 8)
-// left out, it is the only field that is not the session's.
-QStringList trialRows(const QString &out)
+// The trial table's rows `run` and `learn` print for a payload session, each as printed but
+// for the update's CPU time (masked: the only field that is not the session's).
+QStringList tableRows(const QString &out)
 {
-    static const QRegularExpression row(
-        QStringLiteral("^\\s+(\\d+)\\s+(\\S+)\\s+(\\S+)\\s+(\\S+)\\s+(\\(\\S+, \\S+, \\S+\\))"
-                       "\\s+(\\S+)\\s+(.+)$"),
-        QRegularExpression::MultilineOption);
+    static const QRegularExpression cpu(QStringLiteral("\\)\\s+\\d+\\.\\d\\s+"));
+    const QStringList lines = out.split(QLatin1Char('\n'));
     QStringList rows;
-    for (auto it = row.globalMatch(out); it.hasNext();) {
-        const auto m = it.next();
-        rows << QStringList{m.captured(1), m.captured(2), m.captured(3),
-                            m.captured(4), m.captured(5), m.captured(7).trimmed()}
-                    .join(QLatin1Char(' '));
-    }
+    int at = lines.indexOf(QRegularExpression(QStringLiteral(".*\\[ms\\]")));
+    if (at < 0)
+        return rows;
+    for (++at; at < lines.size() && !lines.at(at).trimmed().isEmpty(); ++at)
+        rows << QString(lines.at(at)).replace(cpu, QStringLiteral(")  -  "));
     return rows;
 }
 
@@ -104,6 +101,7 @@ class TestCliLoopPayload : public QObject
 
 private slots:
     void initTestCase();
+    void trialsThroughFiles_equalThePayloadSession_data();
     void trialsThroughFiles_equalThePayloadSession();
     void badInput_isRefusedNamingItAndChangesNothing_data();
     void badInput_isRefusedNamingItAndChangesNothing();
@@ -147,14 +145,30 @@ void TestCliLoopPayload::initTestCase()
     }
 }
 
+void TestCliLoopPayload::trialsThroughFiles_equalThePayloadSession_data()
+{
+    QTest::addColumn<int>("baselineTrials");
+    QTest::newRow("3 payload trials") << 0;
+    // The controller runs trial 0 on the robot without the payload (payload.baselineTrials).
+    QTest::newRow("a baseline trial, then 2 payload trials") << 1;
+}
+
 void TestCliLoopPayload::trialsThroughFiles_equalThePayloadSession()
 {
-    QTemporaryDir dir;
-    write(dir.filePath(QStringLiteral("s.json")),
-          readFile(m_base.filePath(QStringLiteral("s.json"))));
-    const QStringList scenario{QStringLiteral("--scenario"), QStringLiteral("s.json")};
+    QFETCH(int, baselineTrials);
     const int trials = 3;
-    const auto controller = makeSimulatedRobot(m_s.scenario, m_s.model);
+    QTemporaryDir dir;
+    Scenario scenarioFile = test::pandaWithPayload();
+    scenarioFile.payload.baselineTrials = baselineTrials;
+    scenarioFile.iterations = trials - baselineTrials;
+    writeScenarioFile(dir.filePath(QStringLiteral("s.json")), scenarioFile);
+    const LoopScenario s = loopScenario(readScenarioFile(dir.filePath(QStringLiteral("s.json"))));
+    const QStringList scenario{QStringLiteral("--scenario"), QStringLiteral("s.json")};
+    Scenario bare = s.scenario; // the robot without its payload, as `run` makes it
+    bare.simulation.payload = SimulatedPayload();
+    bare.payload.enabled = false;
+    const auto controller = makeSimulatedRobot(s.scenario, s.model);
+    const auto bareController = makeSimulatedRobot(bare, s.model);
     Result learned;
     for (int k = 0; k < trials; ++k) {
         const Result planned = cli(QStringList{QStringLiteral("plan"), QStringLiteral("--out"),
@@ -166,13 +180,22 @@ void TestCliLoopPayload::trialsThroughFiles_equalThePayloadSession()
                  qPrintable(planned.out));
         QVERIFY(planned.out.contains(QStringLiteral(
             "the path determines 10 of the payload's 10 parameters on panda_link7")));
-        QVERIFY(planned.out.contains(
-            k == 0 ? QStringLiteral("the payload's prior")
-                   : QStringLiteral("learned from trials 0 to %1").arg(k - 1)));
+        const bool baseline = k < baselineTrials;
+        const int payloadTrials = k - baselineTrials; // learned from before trial k
+        QVERIFY2(planned.out.contains(
+                     baseline
+                         ? QStringLiteral("trial %1 is a baseline trial (payload.baselineTrials), "
+                                          "run it WITHOUT the payload mounted")
+                               .arg(k)
+                     : payloadTrials <= 0
+                         ? QStringLiteral("the payload's prior")
+                         : QStringLiteral("learned from the trials up to trial %1").arg(k - 1)),
+                 qPrintable(planned.out));
         const QByteArray check = readFile(dir.filePath(QStringLiteral("exchange/check.txt")));
         QVERIFY(planned.out.startsWith(QString::fromUtf8(check)));
         const PlanCsv plan = readPlanCsvFile(dir.filePath(QStringLiteral("exchange/plan.csv")));
-        const TrialRecord record = controller->runTrial(test::planFromCsv(plan, m_s.scenario), {});
+        const TrialRecord record = (baseline ? bareController : controller)
+                                       ->runTrial(test::planFromCsv(plan, s.scenario), {});
         QVERIFY2(record.completed(), qPrintable(record.message));
         const QString log = QStringLiteral("exchange/run-%1.csv").arg(k);
         write(dir.filePath(log), test::logCsv(plan.planId, record));
@@ -181,13 +204,21 @@ void TestCliLoopPayload::trialsThroughFiles_equalThePayloadSession()
                 dir.path());
         QVERIFY2(learned.exitCode == 0, qPrintable(learned.err));
         QVERIFY2(learned.err.contains(
-                     QStringLiteral("trial %1 (plan %2) learned").arg(k).arg(plan.planId)),
+                     baseline
+                         ? QStringLiteral("baseline trial %1 (plan %2) kept; mount the payload "
+                                          "before the next trial")
+                               .arg(k)
+                               .arg(plan.planId)
+                         : QStringLiteral("trial %1 (plan %2) learned").arg(k).arg(plan.planId)),
                  qPrintable(learned.err));
     }
 
-    // The session that runs the same trials on the simulated robot itself.
-    PayloadSession session(m_s.scenario, m_s.model, makeSimulatedRobot(m_s.scenario, m_s.model));
-    QVERIFY(session.runTrials(trials));
+    // The session that runs the same trials on the simulated robot itself, the baseline on the
+    // robot without its payload.
+    PayloadSession session(s.scenario, s.model, makeSimulatedRobot(s.scenario, s.model),
+                           makeSimulatedRobot(bare, s.model));
+    QVERIFY(session.runTrials(trials - baselineTrials));
+    QCOMPARE(int(session.history().size()), trials);
     const QDir history(dir.filePath(QStringLiteral("exchange/learnid-history")));
     const LoopHistory index =
         loopHistoryFromJson(readFile(history.filePath(QStringLiteral("history.json"))), {});
@@ -196,41 +227,45 @@ void TestCliLoopPayload::trialsThroughFiles_equalThePayloadSession()
     QVERIFY(index.pendingPlans.isEmpty());
     for (int k = 0; k < trials; ++k) {
         const PayloadTrial &t = session.history().at(size_t(k));
+        QCOMPARE(t.baseline, k < baselineTrials);
         QCOMPARE(index.trials.at(k).planId, planIdOf(t.plan()));
         // Bit for bit: the logs answer exactly as the simulated robot did.
         QVERIFY(index.trials.at(k).maxTrackingErrorDeg == t.maxTrackingErrorDeg);
         QVERIFY(index.trials.at(k).rmsTrackingErrorDeg == t.rmsTrackingErrorDeg);
     }
-    // Estimate k: the arm held fixed plus the payload the session had before trial k.
+    // Estimate k: the arm held fixed plus the payload the session had before trial k: the prior
+    // until a payload trial is learned from, then its fit.
     const PayloadBody prior = payloadBody(session.prior().parameters());
     for (int k = 0; k <= trials; ++k) {
         const QString path = history.filePath(QStringLiteral("estimate-%1.json").arg(k));
-        QVERIFY(readParameterFile(path).values == m_s.scenario.initialParameters);
+        QVERIFY(readParameterFile(path).values == s.scenario.initialParameters);
         const ParameterFilePayload p = payloadOf(path);
-        const PayloadBody &b =
-            k == 0 ? prior : session.history().at(size_t(k - 1)).fit->estimate.body;
+        const PayloadEstimate *fit =
+            k - 1 >= baselineTrials ? &session.history().at(size_t(k - 1)).fit->estimate : nullptr;
+        const PayloadBody &b = fit ? fit->body : prior;
         QCOMPARE(p.link, QStringLiteral("panda_link7"));
         QVERIFY2(p.mass == b.mass && p.com == b.com,
                  qPrintable(QStringLiteral("estimate %1").arg(k)));
         QCOMPARE(p.inertiaAtCom[2], b.inertiaAtCom(1, 1));
         for (size_t i = 0; i < 10; ++i)
-            QCOMPARE(p.identified[i],
-                     k > 0 && session.history().at(size_t(k - 1)).fit->estimate.bodyIdentified[i]);
+            QCOMPARE(p.identified[i], fit && fit->bodyIdentified[i]);
     }
 
     // learn prints what run prints: a row per trial, then the payload learned.
     const Result run = cli(QStringList{QStringLiteral("run")} + scenario, dir.path());
     QVERIFY2(run.exitCode == 0, qPrintable(run.err));
-    const QStringList rows = trialRows(learned.out);
+    const QStringList rows = tableRows(learned.out);
     QCOMPARE(rows.size(), trials);
-    QCOMPARE(rows, trialRows(run.out));
+    QCOMPARE(rows, tableRows(run.out));
+    QCOMPARE(rows.first().contains(QStringLiteral("baseline: the same path without the payload")),
+             baselineTrials > 0);
     QVERIFY(learned.out.contains(QStringLiteral("The payload after trial 2")));
     qInfo("%s", qPrintable(learned.out));
-    // Learning works: trial 2 ran with a mass within 1 % and tracks far better than trial 0.
-    const PayloadTrial &last = session.history().back();
-    QVERIFY(std::abs(last.payloadUsed[0] - 1.5) < 0.015);
+    // Learning works: the last trial ran with a mass within 1 % and tracks far better than the
+    // first payload trial.
+    QVERIFY(std::abs(session.history().back().payloadUsed[0] - 1.5) < 0.015);
     QVERIFY(index.trials.at(2).maxTrackingErrorDeg.maxCoeff() <
-            0.1 * index.trials.at(0).maxTrackingErrorDeg.maxCoeff());
+            0.1 * index.trials.at(baselineTrials).maxTrackingErrorDeg.maxCoeff());
 }
 
 void TestCliLoopPayload::badInput_isRefusedNamingItAndChangesNothing_data()
