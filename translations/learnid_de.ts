@@ -2328,7 +2328,7 @@
 <context>
     <name>PayloadFit</name>
     <message>
-        <location filename="../core/identify/PayloadFit.cpp" line="+93"/>
+        <location filename="../core/identify/PayloadFit.cpp" line="+99"/>
         <source>%1 has %2 joints, the robot %3</source>
         <translation>%1 hat %2 Gelenke, der Roboter %3</translation>
     </message>
@@ -2400,6 +2400,14 @@
     </message>
 </context>
 <context>
+    <name>PayloadPathChange</name>
+    <message>
+        <location filename="../core/session/PayloadPathChange.cpp" line="+56"/>
+        <source>moving %1 at waypoint %2 by %3 rad (to %4 rad, inside its limits) would let the trials measure %5</source>
+        <translation>%1 an Wegpunkt %2 um %3 rad verschoben (auf %4 rad, innerhalb seiner Grenzen) ließe die Fahrten %5 messen</translation>
+    </message>
+</context>
+<context>
     <name>PayloadPrior</name>
     <message>
         <location filename="../core/model/PayloadPrior.cpp" line="+53"/>
@@ -2465,7 +2473,7 @@
         <translation>Referenzfahrt %1</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+97"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
@@ -2475,12 +2483,12 @@
         <translation>Versuch %1 wurde nicht vollständig ausgeführt (%2): die Schätzung der Nutzlast bleibt unverändert</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-107"/>
         <source>trial %1</source>
         <translation>Versuch %1</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+118"/>
         <source>baseline trial %1 not usable: %2</source>
         <translation>Referenzfahrt %1 nicht verwendbar: %2</translation>
     </message>
@@ -4466,7 +4474,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+51"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+54"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -5097,7 +5105,7 @@ neue Schätzung.
         <translation>Referenz: dieselbe Bahn ohne die Nutzlast</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-46"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-49"/>
         <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
         <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten Roboter gelernt, und nichts wird geschrieben)</translation>
     </message>

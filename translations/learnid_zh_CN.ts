@@ -2319,7 +2319,7 @@
 <context>
     <name>PayloadFit</name>
     <message>
-        <location filename="../core/identify/PayloadFit.cpp" line="+93"/>
+        <location filename="../core/identify/PayloadFit.cpp" line="+99"/>
         <source>%1 has %2 joints, the robot %3</source>
         <translation>%1 有 %2 个关节，机器人有 %3 个</translation>
     </message>
@@ -2391,6 +2391,14 @@
     </message>
 </context>
 <context>
+    <name>PayloadPathChange</name>
+    <message>
+        <location filename="../core/session/PayloadPathChange.cpp" line="+56"/>
+        <source>moving %1 at waypoint %2 by %3 rad (to %4 rad, inside its limits) would let the trials measure %5</source>
+        <translation>将 %1 在路径点 %2 处移动 %3 rad（到 %4 rad，在其限位之内）即可让试验测得 %5</translation>
+    </message>
+</context>
+<context>
     <name>PayloadPrior</name>
     <message>
         <location filename="../core/model/PayloadPrior.cpp" line="+53"/>
@@ -2456,7 +2464,7 @@
         <translation>基线试验 %1</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+97"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
@@ -2466,12 +2474,12 @@
         <translation>试验 %1 未完成（%2）：负载估计保持不变</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-107"/>
         <source>trial %1</source>
         <translation>试验 %1</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+118"/>
         <source>baseline trial %1 not usable: %2</source>
         <translation>基线试验 %1 不可用：%2</translation>
     </message>
@@ -4452,7 +4460,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+51"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+54"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -5079,7 +5087,7 @@ stdout, and the next plan uses the new estimate.
         <translation>基线：不带负载的同一路径</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-46"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-49"/>
         <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
         <translation>%1：带 payload 段时尚不可用（负载在仿真机器人上学习，不写入任何文件）</translation>
     </message>

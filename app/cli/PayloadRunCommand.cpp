@@ -94,7 +94,10 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
                    "learnid-cli: the path determines %1 of the payload's 10 parameters")
                    .arg(o.rank)
             << Qt::endl;
-        for (const QString &line : o.advice(link))
+        QStringList lines = o.advice(link);
+        if (const PayloadPathChange change = session->pathChange(); change.valid())
+            lines << change.describe(session->payloadModel().arm());
+        for (const QString &line : lines)
             err << QCoreApplication::translate("learnid-cli", "learnid-cli: %1").arg(line)
                 << Qt::endl;
     }

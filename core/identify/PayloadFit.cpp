@@ -43,9 +43,13 @@ std::vector<Eigen::MatrixXd> jointRows(const PayloadModel &model,
 }
 
 // The rows of all joints stacked, joint j's multiplied by weights[j], then projected off the
-// unseen directions U: A (E - U U^+), so that A U = 0.
+// unseen directions U: A (E - U U^+), so that A U = 0. What the unseen directions still put into
+// the torque is taken as `held`'s (the value they keep): b - A U U^+ held. Left in b, the truth's
+// share of them would be fitted into the seen directions (a payload whose inertia about the
+// flange is unseen would move its centre of mass instead).
 void stack(const std::vector<Eigen::MatrixXd> &rows, const Eigen::VectorXd &weights,
-           const Eigen::MatrixXd &unseen, Eigen::MatrixXd &a, Eigen::VectorXd &b)
+           const Eigen::MatrixXd &unseen, const InertialParameters &held, Eigen::MatrixXd &a,
+           Eigen::VectorXd &b)
 {
     const Eigen::Index per = rows.front().rows();
     a.resize(per * Eigen::Index(rows.size()), 10);
@@ -56,7 +60,9 @@ void stack(const std::vector<Eigen::MatrixXd> &rows, const Eigen::VectorXd &weig
     }
     if (unseen.cols() > 0) {
         const Eigen::MatrixXd pinv = unseen.completeOrthogonalDecomposition().pseudoInverse();
-        a -= (a * unseen) * pinv;
+        const Eigen::MatrixXd along = a * unseen;
+        b -= along * (pinv * held);
+        a -= along * pinv;
     }
 }
 
@@ -112,14 +118,15 @@ PayloadFit fitPayload(const PayloadModel &model, const std::vector<FilteredLog> 
 
     Eigen::MatrixXd a;
     Eigen::VectorXd b;
-    stack(rows, Eigen::VectorXd::Ones(n), settings.unseen, a, b);
+    stack(rows, Eigen::VectorXd::Ones(n), settings.unseen, prior.parameters(), a, b);
     PayloadEstimateSettings firstPass = estimateSettings;
     firstPass.plausible = !settings.weighted;
     fit.estimate = estimatePayload(a, b, prior, firstPass);
     fit.jointNoise = residualRms(rows, fit.estimate.leastSquares);
     if (settings.weighted) {
         const double floor = 1e-6 * fit.jointNoise.maxCoeff() + 1e-300;
-        stack(rows, fit.jointNoise.cwiseMax(floor).cwiseInverse(), settings.unseen, a, b);
+        stack(rows, fit.jointNoise.cwiseMax(floor).cwiseInverse(), settings.unseen,
+              fit.estimate.anchor, a, b);
         fit.estimate = estimatePayload(a, b, prior, estimateSettings);
     }
     fit.trainingRms = residualRms(rows, fit.estimate.parameters);

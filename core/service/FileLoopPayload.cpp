@@ -141,10 +141,13 @@ QStringList payloadIdentifiability(const PayloadSession &session, const PreTrial
     const PayloadObservability o =
         payloadPathObservability(session.payloadModel(), d.q, d.qd, d.qdd);
     const QString link = session.payloadModel().link();
-    return QStringList{Text::tr("the path determines %1 of the payload's 10 parameters on %2")
-                           .arg(o.rank)
-                           .arg(link)} +
-           o.advice(link);
+    QStringList lines{Text::tr("the path determines %1 of the payload's 10 parameters on %2")
+                          .arg(o.rank)
+                          .arg(link)};
+    lines += o.advice(link);
+    if (const PayloadPathChange change = session.pathChange(); change.valid())
+        lines << change.describe(session.payloadModel().arm());
+    return lines;
 }
 
 } // namespace learnid::loop

@@ -121,6 +121,21 @@ PayloadObservability PayloadSession::observability() const
     return payloadPathObservability(*m_payload, d.q, d.qd, d.qdd);
 }
 
+PayloadPathChange PayloadSession::pathChange() const
+{
+    const PayloadObservability before = observability();
+    if (before.rank == 0)
+        return {}; // not planned: nothing to compare with
+    // Timed as checkNextTrial() times the next trial.
+    const bool baselines = m_scenario.payload.baselineTrials > 0;
+    const Eigen::VectorXd timing =
+        feedforwardParameters(baselines ? m_prior.parameters() : m_current);
+    const bool gentle =
+        baselines ? m_scenario.gentleTrials > 0 : int(m_history.size()) < m_scenario.gentleTrials;
+    return smallestPayloadPathChange(m_scenario, m_model, *m_payload, m_prior, timing, gentle,
+                                     before);
+}
+
 const PayloadTrial &PayloadSession::runTrial()
 {
     PayloadTrial t;

@@ -6,6 +6,7 @@
 #include "model/Payload.h"
 #include "model/PayloadPrior.h"
 #include "robot/Robot.h"
+#include "session/PayloadPathChange.h"
 #include "session/TrialPlanner.h"
 #include "session/TrialResult.h"
 #include "types/Scenario.h"
@@ -83,6 +84,10 @@ public:
     /// What the next trial's path lets the fit see of the payload (PayloadObservability.h);
     /// rank 0 when it cannot be planned.
     PayloadObservability observability() const;
+    /// The smallest change of the path's waypoints that lets the next trial see what
+    /// `observability()` says it misses (PayloadPathChange.h); not valid when none is needed or
+    /// found.
+    PayloadPathChange pathChange() const;
 
     /// Checks, runs and learns from one trial; see the class comment.
     const PayloadTrial &runTrial();
