@@ -3,9 +3,9 @@
 #include "model/Error.h"
 #include "session/TrialPlanner.h"
 
+#include <Eigen/Eigenvalues>
 #include <QCoreApplication>
 #include <QStringList>
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,8 +29,7 @@ std::array<bool, 10> measuredOfMissing(const PayloadObservability &after,
 {
     std::array<bool, 10> measured{};
     for (int p = 0; p < 10; ++p)
-        measured[size_t(p)] =
-            !before.identified(p) && after.identified(p) && errors[p] <= scale[p];
+        measured[size_t(p)] = !before.identified(p) && after.identified(p) && errors[p] <= scale[p];
     return measured;
 }
 
@@ -69,8 +68,9 @@ Eigen::Matrix<double, 10, 1> payloadPredictedStdErrors(const PayloadModel &paylo
     Eigen::Matrix<double, 10, 10> gram = Eigen::Matrix<double, 10, 10>::Zero();
     const Eigen::VectorXd weight = noise.cwiseInverse();
     for (Eigen::Index k = 0; k < path.q.cols(); ++k) {
-        const Eigen::MatrixXd y = weight.asDiagonal() *
-                                  payload.regressorAt(path.q.col(k), path.qd.col(k), path.qdd.col(k));
+        const Eigen::MatrixXd y =
+            weight.asDiagonal() *
+            payload.regressorAt(path.q.col(k), path.qd.col(k), path.qdd.col(k));
         gram.noalias() += y.transpose() * y;
     }
     // Scaled to unit diagonal so that the inverse's accuracy does not depend on the units.
@@ -79,9 +79,8 @@ Eigen::Matrix<double, 10, 1> payloadPredictedStdErrors(const PayloadModel &paylo
         d.cwiseInverse().asDiagonal() * gram * d.cwiseInverse().asDiagonal();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 10, 10>> eig(scaled);
     Eigen::Matrix<double, 10, 1> out;
-    const Eigen::Matrix<double, 10, 1> inverse = eig.eigenvalues().unaryExpr([](double l) {
-        return l > 1e-12 ? 1.0 / l : std::numeric_limits<double>::infinity();
-    });
+    const Eigen::Matrix<double, 10, 1> inverse = eig.eigenvalues().unaryExpr(
+        [](double l) { return l > 1e-12 ? 1.0 / l : std::numeric_limits<double>::infinity(); });
     for (int p = 0; p < 10; ++p) {
         double v = 0.0;
         for (int i = 0; i < 10; ++i) {
@@ -140,7 +139,8 @@ PayloadPathChange smallestPayloadPathChange(const Scenario &scenario,
                     changed.path.waypoints[w][joint] = value;
                     PayloadPathChange c;
                     try {
-                        const JointTrajectory d = TrialPlanner(changed, model).plan(phi, nullptr, gentle).desired;
+                        const JointTrajectory d =
+                            TrialPlanner(changed, model).plan(phi, nullptr, gentle).desired;
                         c.observability = payloadPathObservability(payload, d.q, d.qd, d.qdd);
                         c.measured =
                             measuredOfMissing(c.observability, before,

@@ -18,10 +18,10 @@ namespace learnid {
 /// them, if it fits the limits"; docs/payload.md).
 struct PayloadPathChange
 {
-    int waypoint = -1;   ///< index into path.waypoints; -1: no change offered
-    int joint = -1;      ///< index of the joint changed
-    double change = 0.0; ///< added to that waypoint's value of the joint [rad]
-    double value = 0.0;  ///< the waypoint's new value [rad]
+    int waypoint = -1;                  ///< index into path.waypoints; -1: no change offered
+    int joint = -1;                     ///< index of the joint changed
+    double change = 0.0;                ///< added to that waypoint's value of the joint [rad]
+    double value = 0.0;                 ///< the waypoint's new value [rad]
     PayloadObservability observability; ///< of the changed path as planned
     /// The parameters the path missed that the changed one measures.
     std::array<bool, 10> measured{};
@@ -54,9 +54,9 @@ Eigen::Matrix<double, 10, 1> payloadParameterScale(const PayloadPrior &prior);
 /// single joint gives). One of the three joints nearest the payload's link (its own first) at
 /// one waypoint, by 0.05, 0.1, 0.2, 0.3, 0.5, 0.75 or 1 rad either way, smallest first, kept
 /// 0.05 rad inside the joint's limits, planned as the session plans its next trial (the torque
-/// rule with phi, gentle or not; a change whose plan fails is skipped). Not valid when the path is not made of waypoints,
-/// identifies everything, or no change measures anything it misses. Throws nothing: the search
-/// only offers.
+/// rule with phi, gentle or not; a change whose plan fails is skipped). Not valid when the path is
+/// not made of waypoints, identifies everything, or no change measures anything it misses. Throws
+/// nothing: the search only offers.
 PayloadPathChange smallestPayloadPathChange(const Scenario &scenario,
                                             const std::shared_ptr<const ChainModel> &model,
                                             const PayloadModel &payload, const PayloadPrior &prior,

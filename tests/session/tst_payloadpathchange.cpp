@@ -87,8 +87,10 @@ private slots:
         QVERIFY2(after->runTrials(3), qPrintable(after->history().back().message));
         const PayloadEstimate &e = after->history().back().fit->estimate;
         QVERIFY(e.bodyIdentified[3]);
-        QVERIFY2(std::abs(e.body.com.z() - 0.08) < 0.003, qPrintable(QString::number(e.body.com.z())));
-        QVERIFY2(e.bodyStandardError[3] < 0.003, qPrintable(QString::number(e.bodyStandardError[3])));
+        QVERIFY2(std::abs(e.body.com.z() - 0.08) < 0.003,
+                 qPrintable(QString::number(e.body.com.z())));
+        QVERIFY2(e.bodyStandardError[3] < 0.003,
+                 qPrintable(QString::number(e.bodyStandardError[3])));
         // No smaller step of the search, of any of the three joints at either waypoint, does.
         for (double step : {0.05, 0.1, 0.2, 0.3, 0.5}) {
             if (step >= std::abs(change.change))
