@@ -33,9 +33,8 @@ SimulatedPayloadSession makeSimulatedPayloadSession(const Scenario &given)
     Scenario bare = scenario;
     bare.simulation.payload = SimulatedPayload();
     bare.payload.enabled = false;
-    run.session =
-        std::make_unique<PayloadSession>(scenario, model, makeSimulatedRobot(scenario, model),
-                                         makeSimulatedRobot(bare, model));
+    run.session = std::make_unique<PayloadSession>(
+        scenario, model, makeSimulatedRobot(scenario, model), makeSimulatedRobot(bare, model));
     return run;
 }
 

@@ -55,8 +55,8 @@ ParameterFileContent payloadRunParameterFile(const PayloadRunResult &r)
 QByteArray payloadRunUrdf(const PayloadRunResult &r, const QString &comment)
 {
     const QString source = urdfFileOf(r.scenario.model, r.scenario.urdf);
-    const QByteArray arm = urdfWithStandard(*r.model, readFile(source), source, armStandard(r),
-                                            comment);
+    const QByteArray arm =
+        urdfWithStandard(*r.model, readFile(source), source, armStandard(r), comment);
     const PayloadEstimate &e = r.fit.estimate;
     QStringList kept;
     const QStringList names = PayloadEstimate::bodyNames();
