@@ -1,18 +1,12 @@
 #include "ui/PayloadDialog.h"
 
-#include "model/Error.h"
-#include "service/PayloadRunExport.h"
 #include "service/PayloadRunJob.h"
 #include "ui/MessageBar.h"
 #include "ui/PayloadEstimateTableModel.h"
 #include "ui/PayloadForm.h"
 #include "ui/PayloadText.h"
 #include "ui/PayloadTrialTableModel.h"
-#include "ui/UiSettings.h"
 
-#include <QDateTime>
-#include <QDir>
-#include <QFileDialog>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -76,7 +70,8 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     , m_estimate(new PayloadEstimateTableModel(this))
     , m_estimateView(tableView(m_estimate, "payloadEstimateTable"))
     , m_accept(button(tr("&Accept"), "acceptPayloadButton"))
-    , m_exportParameters(button(tr("Export &parameter file\u2026"), "exportPayloadParametersButton"))
+    , m_exportParameters(
+          button(tr("Export &parameter file\u2026"), "exportPayloadParametersButton"))
     , m_exportUrdf(button(tr("Export &URDF\u2026"), "exportPayloadUrdfButton"))
     , m_job(new PayloadRunJob(this))
     , m_checkTimer(new QTimer(this))
@@ -171,7 +166,8 @@ void PayloadDialog::buildLayout()
 void PayloadDialog::connectJob()
 {
     connect(m_job, &PayloadRunJob::checked, this, [this](const PayloadPreview &p) {
-        m_preview->setText(payloadPreviewHtml(p, m_form->scenario().value_or(Scenario()).simulation.payload));
+        m_preview->setText(
+            payloadPreviewHtml(p, m_form->scenario().value_or(Scenario()).simulation.payload));
         emit previewShown(true);
     });
     connect(m_job, &PayloadRunJob::checkFailed, this, [this](const QString &message) {
@@ -181,16 +177,17 @@ void PayloadDialog::connectJob()
     connect(m_job, &PayloadRunJob::trialStarted, this, [this](int index, int total, bool baseline) {
         m_progress->setRange(0, total);
         m_progress->setValue(index);
-        m_stage->setText(baseline ? tr("Trial %1 of %2 running: baseline, without the payload\u2026")
-                                        .arg(index + 1)
-                                        .arg(total)
-                                  : tr("Trial %1 of %2 running with the payload\u2026")
-                                        .arg(index + 1)
-                                        .arg(total));
+        m_stage->setText(
+            baseline
+                ? tr("Trial %1 of %2 running: baseline, without the payload\u2026")
+                      .arg(index + 1)
+                      .arg(total)
+                : tr("Trial %1 of %2 running with the payload\u2026").arg(index + 1).arg(total));
     });
     connect(m_job, &PayloadRunJob::trialFinished, this, [this](const PayloadTrialRow &row) {
         m_trials->addRow(row);
         m_progress->setValue(row.index + 1);
+        m_trialView->resizeColumnsToContents();
         m_trialView->scrollToBottom();
     });
     connect(m_job, &PayloadRunJob::succeeded, this,
@@ -304,61 +301,6 @@ void PayloadDialog::reject()
 {
     m_job->cancel(); // closing the window stops the run
     QDialog::reject();
-}
-
-void PayloadDialog::acceptResult()
-{
-    if (!m_result || isRunning())
-        return;
-    m_accepted = true;
-    updateActions();
-    m_message->showMessage(tr("Payload accepted: export the parameter file or the URDF. It is "
-                              "not applied to a robot (the simulated robot carries it already)."),
-                           MessageBar::Severity::Info);
-}
-
-void PayloadDialog::exportParameterFile()
-{
-    writeExport(ExportKind::ParameterFile);
-}
-
-void PayloadDialog::exportUrdf()
-{
-    writeExport(ExportKind::Urdf);
-}
-
-void PayloadDialog::writeExport(ExportKind kind)
-{
-    if (!m_result || !m_accepted)
-        return;
-    const bool parameters = kind == ExportKind::ParameterFile;
-    const QString dir = m_settings ? m_settings->lastDirectory() : QDir::homePath();
-    const QString suggested = QDir(dir).filePath(parameters ? QStringLiteral("payload.json")
-                                                            : QStringLiteral("payload.urdf"));
-    const QString path =
-        m_chooser ? m_chooser(kind, suggested)
-        : parameters
-            ? QFileDialog::getSaveFileName(this, tr("Export parameter file"), suggested,
-                                           tr("Parameter files (*.json)"))
-            : QFileDialog::getSaveFileName(this, tr("Export URDF with the payload"), suggested,
-                                           tr("URDF (*.urdf)"));
-    if (path.isEmpty())
-        return;
-    LogExportRequest request;
-    (parameters ? request.parameterPath : request.urdfPath) = path;
-    request.urdfComment = tr("learnid %1, %2")
-                              .arg(QStringLiteral(LEARNID_VERSION),
-                                   QDateTime::currentDateTimeUtc().toString(Qt::ISODate));
-    try {
-        const QStringList paths = writePayloadRunExport(*m_result, request);
-        if (m_settings)
-            m_settings->setLastDirectory(QFileInfo(path).absolutePath());
-        m_message->showMessage(
-            tr("Written: %1").arg(QDir::toNativeSeparators(paths.join(QStringLiteral(", ")))),
-            MessageBar::Severity::Success);
-    } catch (const Error &e) {
-        m_message->showMessage(tr("Not written: %1").arg(e.message()), MessageBar::Severity::Error);
-    }
 }
 
 } // namespace learnid

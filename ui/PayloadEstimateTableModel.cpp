@@ -25,8 +25,8 @@ void PayloadEstimateTableModel::setEstimate(const PayloadEstimate &e)
     beginResetModel();
     const PayloadBody prior = payloadBody(e.prior);
     const Eigen::Matrix3d &i = prior.inertiaAtCom;
-    m_prior = {prior.mass,  prior.com.x(), prior.com.y(), prior.com.z(), i(0, 0),
-               i(0, 1),     i(1, 1),       i(0, 2),       i(1, 2),       i(2, 2)};
+    m_prior = {prior.mass, prior.com.x(), prior.com.y(), prior.com.z(), i(0, 0),
+               i(0, 1),    i(1, 1),       i(0, 2),       i(1, 2),       i(2, 2)};
     m_value = e.bodyValue;
     m_error = e.bodyStandardError;
     m_identified = e.bodyIdentified;

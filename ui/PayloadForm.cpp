@@ -65,35 +65,59 @@ PayloadForm::PayloadForm(QWidget *parent)
     mass.read = [](const Scenario &s) {
         return s.payload.mass > 0.0 ? one(s.payload.mass) : Eigen::VectorXd();
     };
-    mass.write = [](Scenario &s, const Eigen::VectorXd &v) { s.payload.mass = v[0]; };
+    mass.write = [](Scenario &s, const Eigen::VectorXd &v) {
+        s.payload.mass = v[0];
+    };
     addRow(mass, tr("Mass (prior)"), QStringLiteral("kg"), tr("the technician's estimate"));
     Row com = makeRow("payload.prior.com", 3);
-    com.read = [](const Scenario &s) { return Eigen::VectorXd(s.payload.com); };
-    com.write = [](Scenario &s, const Eigen::VectorXd &v) { s.payload.com = v; };
+    com.read = [](const Scenario &s) {
+        return Eigen::VectorXd(s.payload.com);
+    };
+    com.write = [](Scenario &s, const Eigen::VectorXd &v) {
+        s.payload.com = v;
+    };
     addRow(com, tr("Centre of mass (prior) x, y, z"), QStringLiteral("m"), {});
     Row inertia = makeRow("payload.prior.inertia", 6, true);
-    inertia.read = [](const Scenario &s) { return s.payload.inertia; };
-    inertia.write = [](Scenario &s, const Eigen::VectorXd &v) { s.payload.inertia = v; };
+    inertia.read = [](const Scenario &s) {
+        return s.payload.inertia;
+    };
+    inertia.write = [](Scenario &s, const Eigen::VectorXd &v) {
+        s.payload.inertia = v;
+    };
     addRow(inertia, tr("Inertia about it (prior) Ixx, Ixy, Iyy, Ixz, Iyz, Izz"),
            QStringLiteral("kg m\u00b2"), tr("empty: a solid sphere"));
     Row radius = makeRow("payload.bound.radius");
-    radius.read = [](const Scenario &s) { return one(s.payload.radius); };
-    radius.write = [](Scenario &s, const Eigen::VectorXd &v) { s.payload.radius = v[0]; };
+    radius.read = [](const Scenario &s) {
+        return one(s.payload.radius);
+    };
+    radius.write = [](Scenario &s, const Eigen::VectorXd &v) {
+        s.payload.radius = v[0];
+    };
     addRow(radius, tr("Bound: sphere around the flange, radius"), QStringLiteral("m"), {});
     Row box = makeRow("payload.bound.box", 6, true);
-    box.read = [](const Scenario &s) { return s.payload.box; };
-    box.write = [](Scenario &s, const Eigen::VectorXd &v) { s.payload.box = v; };
+    box.read = [](const Scenario &s) {
+        return s.payload.box;
+    };
+    box.write = [](Scenario &s, const Eigen::VectorXd &v) {
+        s.payload.box = v;
+    };
     addRow(box, tr("or a box x0, y0, z0, x1, y1, z1"), QStringLiteral("m"),
            tr("empty: the sphere"));
     Row baseline = makeRow("payload.baselineTrials", 1, false, true);
-    baseline.read = [](const Scenario &s) { return one(s.payload.baselineTrials); };
+    baseline.read = [](const Scenario &s) {
+        return one(s.payload.baselineTrials);
+    };
     baseline.write = [](Scenario &s, const Eigen::VectorXd &v) {
         s.payload.baselineTrials = int(v[0]);
     };
     addRow(baseline, tr("Baseline trials without the payload"), {}, {});
     Row trials = makeRow("estimator.iterations", 1, false, true);
-    trials.read = [](const Scenario &s) { return one(s.iterations); };
-    trials.write = [](Scenario &s, const Eigen::VectorXd &v) { s.iterations = int(v[0]); };
+    trials.read = [](const Scenario &s) {
+        return one(s.iterations);
+    };
+    trials.write = [](Scenario &s, const Eigen::VectorXd &v) {
+        s.iterations = int(v[0]);
+    };
     addRow(trials, tr("Payload trials"), {}, {});
     grid->addWidget(m_otherError, grid->rowCount(), 0, 1, 3);
     setScenario(Scenario{});
@@ -130,11 +154,10 @@ void PayloadForm::setScenario(const Scenario &scenario)
     }
     m_link->clear();
     try {
-        const auto chain = std::dynamic_pointer_cast<const ChainModel>(
-            makeRobotModel(m_base.model, m_base.urdf));
+        const auto chain =
+            std::dynamic_pointer_cast<const ChainModel>(makeRobotModel(m_base.model, m_base.urdf));
         if (chain && !chain->chain().joints.empty()) {
-            m_link->addItem(
-                tr("the tip (%1)").arg(chain->chain().joints.back().link), QString());
+            m_link->addItem(tr("the tip (%1)").arg(chain->chain().joints.back().link), QString());
             for (const ChainJoint &j : chain->chain().joints)
                 m_link->addItem(j.link, j.link);
         }
@@ -178,8 +201,7 @@ void PayloadForm::setEditable(bool editable)
         row.edit->setReadOnly(!editable);
 }
 
-void PayloadForm::showReason(QLabel *reason, QWidget *edit, const QString &key,
-                             const QString &text)
+void PayloadForm::showReason(QLabel *reason, QWidget *edit, const QString &key, const QString &text)
 {
     reason->setText(text);
     reason->setHidden(text.isEmpty());
@@ -204,8 +226,9 @@ void PayloadForm::revalidate()
         else
             values = parseNumberList(row.edit->text(), &error);
         if (values && values->size() > 0 && values->size() != row.count) {
-            error = row.count == 1 ? tr("enter one number")
-                                   : tr("enter %1 numbers, got %2").arg(row.count).arg(values->size());
+            error = row.count == 1
+                        ? tr("enter one number")
+                        : tr("enter %1 numbers, got %2").arg(row.count).arg(values->size());
         } else if (values && !row.emptyAllowed && values->size() == 0) {
             error = row.count == 1 ? tr("enter one number") : tr("enter %1 numbers").arg(row.count);
         } else if (values && row.integer && (*values)[0] != std::floor((*values)[0])) {
@@ -234,8 +257,7 @@ void PayloadForm::revalidate()
             }
             for (Row &row : m_rows) {
                 if (!shown && keyBelongsTo(key, row.key)) {
-                    showReason(row.reason, row.edit, row.key,
-                               key == row.key ? problem : message);
+                    showReason(row.reason, row.edit, row.key, key == row.key ? problem : message);
                     shown = true;
                 }
             }

@@ -50,7 +50,7 @@ private:
     struct Row
     {
         QString key;
-        int count = 1;          ///< values it takes
+        int count = 1;             ///< values it takes
         bool emptyAllowed = false; ///< empty: not given (a sphere's inertia, the sphere bound)
         bool integer = false;
         std::function<Eigen::VectorXd(const Scenario &)> read;

@@ -13,10 +13,12 @@ struct Text
 
 QString millimetres(const Eigen::Vector3d &c)
 {
+    // Rounded to 0.1 mm first, so that a rounding of zero shows no sign.
+    const Eigen::Vector3d mm = (10000.0 * c).array().round() / 10.0 + 0.0;
     return QStringLiteral("(%1, %2, %3)")
-        .arg(1000.0 * c.x(), 0, 'f', 1)
-        .arg(1000.0 * c.y(), 0, 'f', 1)
-        .arg(1000.0 * c.z(), 0, 'f', 1);
+        .arg(mm.x(), 0, 'f', 1)
+        .arg(mm.y(), 0, 'f', 1)
+        .arg(mm.z(), 0, 'f', 1);
 }
 
 QString seen(bool identified)
@@ -57,12 +59,11 @@ QString payloadPreviewHtml(const PayloadPreview &p, const SimulatedPayload &simu
         t += QStringLiteral("</ul>");
     }
     t += QStringLiteral("<p>");
-    t += p.checkReason.isEmpty()
-             ? Text::tr("The first trial passes its check.")
-             : QStringLiteral("<span style=\"color:#b3261e\">") +
-                   Text::tr("The first trial would be refused: %1")
-                       .arg(p.checkReason.toHtmlEscaped()) +
-                   QStringLiteral("</span>");
+    t += p.checkReason.isEmpty() ? Text::tr("The first trial passes its check.")
+                                 : QStringLiteral("<span style=\"color:#b3261e\">") +
+                                       Text::tr("The first trial would be refused: %1")
+                                           .arg(p.checkReason.toHtmlEscaped()) +
+                                       QStringLiteral("</span>");
     return t + QStringLiteral("</p>");
 }
 
@@ -72,7 +73,7 @@ QString payloadResultHtml(const PayloadRunResult &r)
     const PayloadObservability &o = e.observability;
     QString t = QStringLiteral("<p>") +
                 Text::tr("The payload after trial %1: %2 of 10 directions determined "
-                         "(condition %3), the mass inside %4.")
+                         "(condition %3); bound: %4.")
                     .arg(r.learnedTrial)
                     .arg(o.rank)
                     .arg(o.condition, 0, 'f', 1)

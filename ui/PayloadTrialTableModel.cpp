@@ -51,11 +51,9 @@ double PayloadTrialTableModel::number(const PayloadTrialRow &r, int column, int 
     case Mass:
         *decimals = 4;
         return r.mass;
-    case ComX:
-    case ComY:
-    case ComZ:
+    case Com:
         *decimals = 1;
-        return 1000.0 * r.com[column - ComX];
+        return 1000.0 * r.com.norm();
     case Update:
         *decimals = 1;
         return r.learned ? r.updateMs : std::numeric_limits<double>::quiet_NaN();
@@ -67,15 +65,18 @@ double PayloadTrialTableModel::number(const PayloadTrialRow &r, int column, int 
 QString PayloadTrialTableModel::identifiedText(const PayloadTrialRow &r) const
 {
     if (!r.learned)
-        return r.baseline && r.usable ? tr("kept: taken out of every payload trial") : r.message;
-    QStringList names;
+        return r.baseline && r.usable ? tr("kept for the payload trials") : r.message;
+    QStringList seen, kept;
     const QStringList all = PayloadEstimate::bodyNames();
     for (int i = 0; i < 10; ++i)
-        if (r.identified[size_t(i)])
-            names << all.at(i);
-    if (names.size() == 10)
+        (r.identified[size_t(i)] ? seen : kept) << all.at(i);
+    if (kept.isEmpty())
         return tr("all");
-    return names.isEmpty() ? tr("none (the prior)") : names.join(QStringLiteral(", "));
+    if (seen.isEmpty())
+        return tr("none (the prior)");
+    // The shorter list: a path that misses one inertia entry says so in a few words.
+    return seen.size() > kept.size() ? tr("all but %1").arg(kept.join(QStringLiteral(", ")))
+                                     : seen.join(QStringLiteral(", "));
 }
 
 QVariant PayloadTrialTableModel::data(const QModelIndex &index, int role) const
@@ -84,8 +85,9 @@ QVariant PayloadTrialTableModel::data(const QModelIndex &index, int role) const
         return {};
     const PayloadTrialRow &r = m_rows[size_t(index.row())];
     const int column = index.column();
-    if (column == Kind && role == Qt::DisplayRole)
-        return r.baseline ? tr("baseline (no payload)") : tr("payload");
+    if (column == Kind)
+        return role == Qt::DisplayRole ? QVariant(r.baseline ? tr("baseline") : tr("payload"))
+                                       : QVariant();
     if (column == Identified) {
         if (role == Qt::DisplayRole || role == Qt::ToolTipRole)
             return identifiedText(r);
@@ -99,6 +101,14 @@ QVariant PayloadTrialTableModel::data(const QModelIndex &index, int role) const
         return v;
     if (role == Qt::TextAlignmentRole)
         return int(Qt::AlignRight | Qt::AlignVCenter);
+    if (role == Qt::DisplayRole && column == Com && std::isfinite(v)) {
+        // Rounded to 0.1 mm first, so that a rounding of zero shows no sign.
+        const Eigen::Vector3d mm = (10000.0 * r.com).array().round() / 10.0 + 0.0;
+        return QStringLiteral("(%1, %2, %3)")
+            .arg(mm.x(), 0, 'f', 1)
+            .arg(mm.y(), 0, 'f', 1)
+            .arg(mm.z(), 0, 'f', 1);
+    }
     if (role == Qt::DisplayRole)
         return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("\u2013");
     return {};
@@ -107,7 +117,28 @@ QVariant PayloadTrialTableModel::data(const QModelIndex &index, int role) const
 QVariant PayloadTrialTableModel::headerData(int section, Qt::Orientation orientation,
                                             int role) const
 {
-    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+    if (orientation != Qt::Horizontal)
+        return {};
+    if (role == Qt::ToolTipRole) {
+        switch (section) {
+        case Kind:
+            return tr("A baseline trial runs the same timed path without the payload");
+        case MaxError:
+            return tr("The worst joint's maximum tracking error");
+        case RmsError:
+            return tr("The worst joint's RMS tracking error");
+        case Mass:
+        case Com:
+            return tr("The payload fitted to the trials so far");
+        case Update:
+            return tr("CPU time of the payload's update");
+        case Identified:
+            return tr("The payload's values the trials so far identified; the others keep the "
+                      "prior");
+        }
+        return {};
+    }
+    if (role != Qt::DisplayRole)
         return {};
     switch (section) {
     case Trial:
@@ -115,21 +146,17 @@ QVariant PayloadTrialTableModel::headerData(int section, Qt::Orientation orienta
     case Kind:
         return tr("Kind");
     case MaxError:
-        return tr("Max error [deg]");
+        return tr("Max [deg]");
     case RmsError:
-        return tr("RMS error [deg]");
+        return tr("RMS [deg]");
     case Mass:
         return tr("Mass [kg]");
-    case ComX:
-        return tr("CoM x [mm]");
-    case ComY:
-        return tr("CoM y [mm]");
-    case ComZ:
-        return tr("CoM z [mm]");
+    case Com:
+        return tr("CoM [mm]");
     case Update:
         return tr("Update [ms]");
     case Identified:
-        return tr("Identified so far");
+        return tr("Identified");
     }
     return {};
 }

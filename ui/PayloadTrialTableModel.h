@@ -11,13 +11,14 @@ namespace learnid {
 /// trial without the payload, or a payload trial), the worst joint's maximum and RMS tracking
 /// error, the payload fitted after it (mass, centre of mass in mm), the update's CPU time, and
 /// which of the payload's values the trials identified so far (or why it was not learned from).
-/// Qt::UserRole gives the raw number of a numeric cell (NaN for an empty one).
+/// Qt::UserRole gives the raw number of a numeric cell (NaN for an empty one; the centre of mass:
+/// its distance from the link frame's origin [mm]).
 class PayloadTrialTableModel : public QAbstractTableModel
 {
     Q_OBJECT
 
 public:
-    enum Column { Trial, Kind, MaxError, RmsError, Mass, ComX, ComY, ComZ, Update, Identified };
+    enum Column { Trial, Kind, MaxError, RmsError, Mass, Com, Update, Identified };
 
     explicit PayloadTrialTableModel(QObject *parent = nullptr);
 

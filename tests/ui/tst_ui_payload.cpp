@@ -67,7 +67,8 @@ private slots:
         QVERIFY(d.previewText().contains(QStringLiteral("passes its check")));
         auto *run = d.findChild<QPushButton *>(QStringLiteral("runPayloadButton"));
         auto *accept = d.findChild<QPushButton *>(QStringLiteral("acceptPayloadButton"));
-        auto *exportFile = d.findChild<QPushButton *>(QStringLiteral("exportPayloadParametersButton"));
+        auto *exportFile =
+            d.findChild<QPushButton *>(QStringLiteral("exportPayloadParametersButton"));
         auto *exportUrdf = d.findChild<QPushButton *>(QStringLiteral("exportPayloadUrdfButton"));
         QVERIFY(run->isEnabled() && !accept->isEnabled() && !exportFile->isEnabled());
 
@@ -96,8 +97,8 @@ private slots:
         for (int row = 0; row < 4; ++row) {
             const double error = cell(t, row, Column::StandardError);
             QVERIFY2(std::isfinite(error) && error > 0.0, qPrintable(QString::number(row)));
-            QVERIFY(t->index(row, Column::Source).data().toString().startsWith(
-                QStringLiteral("data")));
+            QVERIFY(
+                t->index(row, Column::Source).data().toString().startsWith(QStringLiteral("data")));
         }
         QCOMPARE(cell(t, 0, Column::Prior), 1.2);
         QCOMPARE(cell(t, 0, Column::StandardError), result->fit.estimate.bodyStandardError[0]);
@@ -166,9 +167,12 @@ private slots:
         {
             const char *key;
             const char *text;
-        } cases[] = {{"payload.prior.mass", "-1"},  {"payload.prior.mass", "0"},
-                     {"payload.prior.mass", "nan"}, {"payload.prior.mass", "heavy"},
-                     {"payload.prior.com", "0, 0"}, {"payload.bound.radius", "0.01"},
+        } cases[] = {{"payload.prior.mass", "-1"},
+                     {"payload.prior.mass", "0"},
+                     {"payload.prior.mass", "nan"},
+                     {"payload.prior.mass", "heavy"},
+                     {"payload.prior.com", "0, 0"},
+                     {"payload.bound.radius", "0.01"},
                      {"payload.prior.inertia", "1, 0, 1, 0, 0, 5"},
                      {"payload.baselineTrials", "1.5"}};
         for (const auto &c : cases) {
@@ -178,8 +182,8 @@ private slots:
             const QString before = edit->text();
             typeInto(edit, QLatin1String(c.text));
             QVERIFY2(!form->isValid(), c.text);
-            QVERIFY2(!form->reasonFor(key).isEmpty(), qPrintable(key + QLatin1Char(' ') +
-                                                                 form->firstError()));
+            QVERIFY2(!form->reasonFor(key).isEmpty(),
+                     qPrintable(key + QLatin1Char(' ') + form->firstError()));
             QVERIFY2(form->firstError().startsWith(key), qPrintable(form->firstError()));
             QVERIFY(!run->isEnabled());
             typeInto(edit, before);
