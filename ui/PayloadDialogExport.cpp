@@ -43,12 +43,11 @@ void PayloadDialog::writeExport(ExportKind kind)
     const QString suggested = QDir(dir).filePath(parameters ? QStringLiteral("payload.json")
                                                             : QStringLiteral("payload.urdf"));
     const QString path =
-        m_chooser ? m_chooser(kind, suggested)
-        : parameters
-            ? QFileDialog::getSaveFileName(this, tr("Export parameter file"), suggested,
-                                           tr("Parameter files (*.json)"))
-            : QFileDialog::getSaveFileName(this, tr("Export URDF with the payload"), suggested,
-                                           tr("URDF (*.urdf)"));
+        m_chooser    ? m_chooser(kind, suggested)
+        : parameters ? QFileDialog::getSaveFileName(this, tr("Export parameter file"), suggested,
+                                                    tr("Parameter files (*.json)"))
+                     : QFileDialog::getSaveFileName(this, tr("Export URDF with the payload"),
+                                                    suggested, tr("URDF (*.urdf)"));
     if (path.isEmpty())
         return;
     LogExportRequest request;

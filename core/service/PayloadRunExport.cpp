@@ -18,6 +18,11 @@ namespace learnid {
 
 namespace {
 
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(PayloadRunExport)
+};
+
 Eigen::VectorXd armStandard(const PayloadRunResult &r)
 {
     return r.model->standardFromBase(r.scenario.initialParameters);
@@ -30,10 +35,8 @@ ParameterFileContent payloadRunParameterFile(const PayloadRunResult &r)
     const ChainModel &model = *r.model;
     ParameterFileContent c = logFileHeader(
         model, r.scenario.model,
-        QCoreApplication::translate("PayloadRunExport",
-                                    "%1 with a payload on %2 learned in %n trial(s) with the "
-                                    "arm's model held fixed",
-                                    nullptr, r.learnedTrial + 1 - r.scenario.payload.baselineTrials)
+        Text::tr("%1 with a payload on %2 learned in %n trial(s) with the arm's model held fixed",
+                 nullptr, r.learnedTrial + 1 - r.scenario.payload.baselineTrials)
             .arg(r.robotDescription, r.link),
         r.scenario.controller);
     c.law = r.scenario.law;
