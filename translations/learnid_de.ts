@@ -1031,7 +1031,17 @@
         <translation>der Verlauf %1 gehört zum Roboter %2 (%3 Gelenke, %4 Parameter), der Roboter des Szenarios ist %5 (%6 Gelenke, %7 Parameter)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
+        <source>the history %1 was made by the arm&apos;s learning loop (a scenario without a payload section); the scenario learns a payload: give another --history for the payload&apos;s loop</source>
+        <translation>der Verlauf %1 stammt aus der Lernschleife des Arms (ein Szenario ohne payload-Abschnitt); das Szenario lernt eine Nutzlast: für die Schleife der Nutzlast eine andere --history angeben</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the history %1 learns the payload on %2 (a scenario with a payload section); the scenario learns the arm: give another --history for the arm&apos;s loop</source>
+        <translation>der Verlauf %1 lernt die Nutzlast an %2 (ein Szenario mit payload-Abschnitt); das Szenario lernt den Arm: für die Schleife des Arms eine andere --history angeben</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>the history %1 learns with the law %2, the scenario with %3: a history keeps its law (start a new history for another)</source>
         <translation>der Verlauf %1 lernt mit dem Gesetz %2, das Szenario mit %3: ein Verlauf behält sein Gesetz (für ein anderes einen neuen Verlauf beginnen)</translation>
     </message>
@@ -1076,22 +1086,7 @@
         <translation> Gel. Spitze [N m] Grenze [N m]   Ausl.</translation>
     </message>
     <message>
-        <location filename="../core/service/FileLoopLearn.cpp" line="+54"/>
-        <source>%1 ran plan %2, which the history %3 has learned from already as trial %4: plan the next trial and run that</source>
-        <translation>%1 lief mit Plan %2, aus dem der Verlauf %3 bereits als Versuch %4 gelernt hat: den nächsten Versuch planen und diesen ausführen</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>%1 ran plan %2, which the history %3 does not know; its plans to run are: %4</source>
-        <translation>%1 lief mit Plan %2, den der Verlauf %3 nicht kennt; seine auszuführenden Pläne sind: %4</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>none (plan the next trial first)</source>
-        <translation>keine (zuerst den nächsten Versuch planen)</translation>
-    </message>
-    <message>
-        <location line="+13"/>
+        <location filename="../core/service/FileLoopParts.cpp" line="+78"/>
         <source>%1: plan %2 is not the plan %3 that trial %4 of the history ran</source>
         <translation>%1: Plan %2 ist nicht der Plan %3, mit dem Versuch %4 des Verlaufs lief</translation>
     </message>
@@ -1101,12 +1096,12 @@
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+70"/>
         <source>%1 holds no learning history (no %2): plan the trial with `learnid-cli plan` into this history, or give its --history</source>
         <translation>%1 enthält keinen Lernverlauf (kein %2): den Versuch mit `learnid-cli plan` in diesen Verlauf planen oder dessen --history angeben</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-56"/>
         <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s &quot;# plan-id:&quot; line into its log</source>
         <translation>%1: keine Kommentarzeile „# plan-id:“; der Regler übernimmt die Zeile „# plan-id:“ des Plans in sein Log</translation>
     </message>
@@ -1116,7 +1111,7 @@
         <translation>%1 lief mit Plan %2, %3 mit Plan %4: die Logs eines Lernschritts gehören zu einem Plan</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location filename="../core/service/FileLoopLearn.cpp" line="+42"/>
         <source>the scenario runs every trial %1 times (repetitions): give one --trial-log per run, %2 given</source>
         <translation>das Szenario führt jeden Versuch %1-mal aus (repetitions): ein --trial-log pro Durchlauf angeben, %2 angegeben</translation>
     </message>
@@ -1141,7 +1136,7 @@
         <translation>%1 ist nicht die Schätzung %2, die die Versuche des Verlaufs mit diesem Szenario ergeben: ist sein Schätzer der des Verlaufs?</translation>
     </message>
     <message>
-        <location filename="../core/service/FileLoopPlan.cpp" line="+33"/>
+        <location filename="../core/service/FileLoopPlan.cpp" line="+31"/>
         <source>initial estimate of a learning loop through files</source>
         <translation>Anfangsschätzung einer Lernschleife über Dateien</translation>
     </message>
@@ -1159,6 +1154,76 @@
         <location line="+3"/>
         <source>the scenario&apos;s initial estimate</source>
         <translation>die Anfangsschätzung des Szenarios</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoopPayload.cpp" line="+39"/>
+        <source>the history %1 learns the payload on %2, the scenario&apos;s payload.link is %3: a history keeps its link (give another --history for another)</source>
+        <translation>der Verlauf %1 lernt die Nutzlast an %2, payload.link des Szenarios ist %3: ein Verlauf behält sein Glied (für ein anderes eine andere --history angeben)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the history %1 does not replay: %2</source>
+        <translation>der Verlauf %1 lässt sich nicht wiedergeben: %2</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>the arm held fixed and the payload learned from the trials up to trial %1: estimate %2 of a payload&apos;s learning loop through files</source>
+        <translation>der festgehaltene Arm und die aus den Versuchen bis Versuch %1 gelernte Nutzlast: Schätzung %2 einer Lernschleife der Nutzlast über Dateien</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the arm held fixed and the payload&apos;s prior: estimate %1 of a payload&apos;s learning loop through files</source>
+        <translation>der festgehaltene Arm und die Vorgabe der Nutzlast: Schätzung %1 einer Lernschleife der Nutzlast über Dateien</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1 holds another arm model than the scenario&apos;s robot.initialParameters: a history keeps the arm it learns the payload on</source>
+        <translation>%1 enthält ein anderes Armmodell als robot.initialParameters des Szenarios: ein Verlauf behält den Arm, an dem er die Nutzlast lernt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 holds another payload prior than the scenario&apos;s payload section: a history keeps its prior</source>
+        <translation>%1 enthält eine andere Vorgabe der Nutzlast als der payload-Abschnitt des Szenarios: ein Verlauf behält seine Vorgabe</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is not the payload estimate %2 that the history&apos;s trials give with this scenario: are its payload section and estimator the history&apos;s?</source>
+        <translation>%1 ist nicht die Nutzlastschätzung %2, die die Versuche des Verlaufs mit diesem Szenario ergeben: sind sein payload-Abschnitt und sein Schätzer die des Verlaufs?</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>the path determines %1 of the payload&apos;s 10 parameters on %2</source>
+        <translation>der Pfad bestimmt %1 der 10 Parameter der Nutzlast an %2</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoopPayloadLearn.cpp" line="+33"/>
+        <source>a payload&apos;s learning loop runs every trial once (estimator.repetitions does not apply to it): give one --trial-log, %1 given</source>
+        <translation>die Lernschleife einer Nutzlast führt jeden Versuch einmal aus (estimator.repetitions gilt für sie nicht): ein --trial-log angeben, %1 angegeben</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoopPayloadPlan.cpp" line="+23"/>
+        <source>the arm&apos;s model held fixed (robot.initialParameters) alone: trial %1 is a baseline trial (payload.baselineTrials), run it WITHOUT the payload mounted</source>
+        <translation>allein das festgehaltene Armmodell (robot.initialParameters): Versuch %1 ist eine Referenzfahrt (payload.baselineTrials), ihn OHNE montierte Nutzlast ausführen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the arm&apos;s model held fixed (robot.initialParameters) and the payload learned from the trials up to trial %1 (estimate %2 of %3)</source>
+        <translation>das festgehaltene Armmodell (robot.initialParameters) und die aus den Versuchen bis Versuch %1 gelernte Nutzlast (Schätzung %2 aus %3)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the arm&apos;s model held fixed (robot.initialParameters) and the payload&apos;s prior (payload section)</source>
+        <translation>das festgehaltene Armmodell (robot.initialParameters) und die Vorgabe der Nutzlast (payload-Abschnitt)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>--estimate: a scenario with a payload section plans with the arm&apos;s model it holds fixed (robot.initialParameters) and the payload its history has learned, the prior (payload section) first: leave out --estimate</source>
+        <translation>--estimate: ein Szenario mit payload-Abschnitt plant mit dem Armmodell, das es festhält (robot.initialParameters), und der Nutzlast, die sein Verlauf gelernt hat, zuerst der Vorgabe (payload-Abschnitt): --estimate weglassen</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 (give another --history to start anew)</source>
+        <translation>%1 (für einen Neubeginn eine andere --history angeben)</translation>
     </message>
 </context>
 <context>
@@ -1674,11 +1739,12 @@
     <message>
         <location line="+8"/>
         <location line="+2"/>
+        <location line="+66"/>
         <source>must not be empty</source>
         <translation>darf nicht leer sein</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-64"/>
         <source>one more than trials, the initial estimate first</source>
         <translation>einer mehr als Versuche, die Anfangsschätzung zuerst</translation>
     </message>
@@ -1703,7 +1769,7 @@
         <translation>diese Version von learnid liest „%1“, gefunden: %2</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+92"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2198,7 +2264,12 @@
 <context>
     <name>PayloadBaseline</name>
     <message>
-        <location filename="../core/identify/PayloadBaseline.cpp" line="+31"/>
+        <location filename="../core/identify/PayloadBaseline.cpp" line="+62"/>
+        <source>%1 covers less than %2 % of %3 within a shift of %4 s: a baseline runs the same timed path without the payload</source>
+        <translation>%1 deckt innerhalb einer Verschiebung von %4 s weniger als %2 % von %3 ab: eine Referenzfahrt fährt dieselbe zeitlich geplante Bahn ohne die Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 (%2 joints, %3 samples of %4 s) is not a baseline of %5 (%6 joints, %7 samples of %8 s): a baseline runs the same timed path without the payload</source>
         <translation>%1 (%2 Gelenke, %3 Abtastwerte zu %4 s) ist keine Referenz zu %5 (%6 Gelenke, %7 Abtastwerte zu %8 s): eine Referenzfahrt fährt dieselbe zeitlich geplante Bahn ohne die Nutzlast</translation>
     </message>
@@ -2206,6 +2277,16 @@
         <location line="+13"/>
         <source>%1: the filtered signals are not finite</source>
         <translation>%1: die gefilterten Signale sind nicht endlich</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 does not follow the path of %2: their joint angles differ by %3 deg RMS (at most %4 deg) after a shift of %5 s</source>
+        <translation>%1 folgt nicht der Bahn von %2: ihre Gelenkwinkel weichen nach einer Verschiebung von %5 s um %3 Grad RMS ab (höchstens %4 Grad)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the baselines together cover less than %1 % of %2</source>
+        <translation>die Referenzen decken zusammen weniger als %1 % von %2 ab</translation>
     </message>
 </context>
 <context>
@@ -2265,7 +2346,7 @@
 <context>
     <name>PayloadIdentification</name>
     <message>
-        <location filename="../core/service/PayloadIdentification.cpp" line="+31"/>
+        <location filename="../core/service/PayloadIdentification.cpp" line="+40"/>
         <source>no log to identify the payload from</source>
         <translation>kein Log, aus dem die Nutzlast identifiziert werden kann</translation>
     </message>
@@ -3444,6 +3525,21 @@
         <source>needs a URDF robot (the link&apos;s inertia about its axis); %1 has none: give simulation.armature in kg m^2</source>
         <translation>braucht einen URDF-Roboter (die Trägheit des Glieds um seine Achse); %1 hat keinen: simulation.armature in kg m^2 angeben</translation>
     </message>
+    <message>
+        <location filename="../core/service/FileLoopParts.cpp" line="-52"/>
+        <source>%1 ran plan %2, which the history %3 has learned from already as trial %4: plan the next trial and run that</source>
+        <translation>%1 lief mit Plan %2, aus dem der Verlauf %3 bereits als Versuch %4 gelernt hat: den nächsten Versuch planen und diesen ausführen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 ran plan %2, which the history %3 does not know; its plans to run are: %4</source>
+        <translation>%1 lief mit Plan %2, den der Verlauf %3 nicht kennt; seine auszuführenden Pläne sind: %4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>none (plan the next trial first)</source>
+        <translation>keine (zuerst den nächsten Versuch planen)</translation>
+    </message>
 </context>
 <context>
     <name>TorqueRule</name>
@@ -3988,9 +4084,9 @@
     <message>
         <location line="+66"/>
         <location line="+37"/>
-        <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+207"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+88"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+47"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+11"/>
         <location line="+6"/>
@@ -4493,18 +4589,28 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+35"/>
+        <location line="+44"/>
         <location filename="../app/cli/RunCommand.cpp" line="+66"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli: keine Dateien geschrieben</translation>
     </message>
     <message>
-        <location line="-27"/>
+        <location line="-36"/>
         <source>plan-id: %1</source>
         <translation>plan-id: %1</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+47"/>
+        <source>learnid-cli: baseline trial %1 (plan %2) kept; the next trial is a baseline trial too, without the payload</source>
+        <translation>learnid-cli: Referenzfahrt %1 (Plan %2) übernommen; der nächste Versuch ist ebenfalls eine Referenzfahrt, ohne die Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>learnid-cli: baseline trial %1 (plan %2) kept; mount the payload before the next trial</source>
+        <translation>learnid-cli: Referenzfahrt %1 (Plan %2) übernommen; vor dem nächsten Versuch die Nutzlast montieren</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>learnid-cli: trial %1 (plan %2) learned; the next plan uses estimate %3</source>
         <translation>learnid-cli: aus Versuch %1 (Plan %2) gelernt; der nächste Plan verwendet Schätzung %3</translation>
     </message>
@@ -4519,7 +4625,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: Schätzung %1 auf den Roboter übertragen</translation>
     </message>
     <message>
-        <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
@@ -4856,7 +4962,7 @@ neue Schätzung.
         <translation>learnid-cli: Fehler: --robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-160"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-168"/>
         <source>value</source>
         <translation>Größe</translation>
     </message>
@@ -4881,12 +4987,12 @@ neue Schätzung.
         <translation>Herkunft</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+57"/>
         <source>the logs</source>
         <translation>die Logs</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-45"/>
         <source>the prior (not identified)</source>
         <translation>die Vorgabe (nicht identifiziert)</translation>
     </message>
@@ -4924,7 +5030,14 @@ neue Schätzung.
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+8"/>
+        <source>Baseline %1 taken out of %2: shifted by %3 s, joint angles %4 deg RMS apart.
+</source>
+        <translation>Referenz %1 von %2 abgezogen: um %3 s verschoben, Gelenkwinkel %4 Grad RMS auseinander.
+</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Warning: the plausible estimate did not converge (%1).
 </source>
         <translation>Warnung: die plausible Schätzung ist nicht konvergiert (%1).
@@ -4957,7 +5070,7 @@ neue Schätzung.
         <translation>Drehmoment-Residuum je Gelenk auf den Logs [N m]:</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>learnid-cli: fitting the payload to %1</source>
         <translation>learnid-cli: passe die Nutzlast an %1 an</translation>
     </message>
@@ -5019,7 +5132,12 @@ neue Schätzung.
         <translation>Mit --payload und einer --robot-Parameterdatei eines URDF-Roboters: das URDF, an dem der Arm identifiziert wurde.</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+5"/>
+        <source>With --payload: a log of the same motion without the payload, whose torque residual is taken out of every --log (may be repeated; docs/payload.md).</source>
+        <translation>Mit --payload: ein Log derselben Bewegung ohne die Nutzlast, dessen Momentenresiduum von jedem --log abgezogen wird (mehrfach möglich; docs/payload.md).</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>--%1: needs --payload</source>
         <translation>--%1: braucht --payload</translation>
     </message>
@@ -5034,7 +5152,7 @@ neue Schätzung.
         <translation>--payload-box: geben Sie entweder einen Hüllquader oder --payload-radius an, nicht beides</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
         <translation>--payload-mass: muss eine Zahl in kg sein, erhalten: „%1“</translation>
     </message>
@@ -5059,7 +5177,7 @@ neue Schätzung.
         <translation>--payload-box: muss aus sechs Zahlen X0,Y0,Z0,X1,Y1,Z1 [m] bestehen, erhalten: „%1“</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-90"/>
+        <location filename="../app/cli/PayloadTrialTable.cpp" line="+20"/>
         <source>all</source>
         <translation>alle</translation>
     </message>
@@ -5069,12 +5187,12 @@ neue Schätzung.
         <translation>keine</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+30"/>
         <source>baseline: the same path without the payload</source>
         <translation>Referenz: dieselbe Bahn ohne die Nutzlast</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-46"/>
         <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
         <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten Roboter gelernt, und nichts wird geschrieben)</translation>
     </message>
@@ -5094,7 +5212,7 @@ neue Schätzung.
         <translation>learnid-cli: die Bahn bestimmt %1 der 10 Parameter der Nutzlast</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location filename="../app/cli/PayloadTrialTable.cpp" line="-22"/>
         <source>trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  identified</source>
         <translation>Vers.  max. Fehl.  RMS-Fehl.  Masse[kg]  Schwerpunkt [mm]       Update  identifiziert</translation>
     </message>
@@ -5104,7 +5222,7 @@ neue Schätzung.
         <translation>          [°]        [°]                                          [ms]</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+42"/>
         <source>The payload after trial %1 (bound: %2):</source>
         <translation>Die Nutzlast nach Versuch %1 (Schranke: %2):</translation>
     </message>

@@ -1031,7 +1031,17 @@
         <translation>历史 %1 属于机器人 %2（%3 个关节，%4 个参数），而场景的机器人是 %5（%6 个关节，%7 个参数）</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
+        <source>the history %1 was made by the arm&apos;s learning loop (a scenario without a payload section); the scenario learns a payload: give another --history for the payload&apos;s loop</source>
+        <translation>历史 %1 由机械臂的学习循环生成（场景没有 payload 部分）；而此场景学习负载：请为负载的循环给出另一个 --history</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the history %1 learns the payload on %2 (a scenario with a payload section); the scenario learns the arm: give another --history for the arm&apos;s loop</source>
+        <translation>历史 %1 学习 %2 上的负载（场景带 payload 部分）；而此场景学习机械臂：请为机械臂的循环给出另一个 --history</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>the history %1 learns with the law %2, the scenario with %3: a history keeps its law (start a new history for another)</source>
         <translation>历史 %1 使用学习律 %2，而场景使用 %3：一个历史始终保持其学习律（如需其他学习律，请新建一个历史）</translation>
     </message>
@@ -1076,22 +1086,7 @@
         <translation> 关节   峰值 [N m]   限值 [N m]    占用</translation>
     </message>
     <message>
-        <location filename="../core/service/FileLoopLearn.cpp" line="+54"/>
-        <source>%1 ran plan %2, which the history %3 has learned from already as trial %4: plan the next trial and run that</source>
-        <translation>%1 运行的是计划 %2，历史 %3 已将其作为试验 %4 学习过：请规划下一次试验并运行它</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>%1 ran plan %2, which the history %3 does not know; its plans to run are: %4</source>
-        <translation>%1 运行的是计划 %2，而历史 %3 中没有该计划；其待运行的计划为：%4</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>none (plan the next trial first)</source>
-        <translation>无（请先规划下一次试验）</translation>
-    </message>
-    <message>
-        <location line="+13"/>
+        <location filename="../core/service/FileLoopParts.cpp" line="+78"/>
         <source>%1: plan %2 is not the plan %3 that trial %4 of the history ran</source>
         <translation>%1：计划 %2 不是历史中试验 %4 所运行的计划 %3</translation>
     </message>
@@ -1101,12 +1096,12 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+70"/>
         <source>%1 holds no learning history (no %2): plan the trial with `learnid-cli plan` into this history, or give its --history</source>
         <translation>%1 中没有学习历史（没有 %2）：请用 `learnid-cli plan` 将试验规划到此历史中，或给出其 --history</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-56"/>
         <source>%1: no &quot;# plan-id:&quot; comment line; the controller copies the plan&apos;s &quot;# plan-id:&quot; line into its log</source>
         <translation>%1：没有“# plan-id:”注释行；控制器会把计划中的“# plan-id:”行复制到其日志中</translation>
     </message>
@@ -1116,7 +1111,7 @@
         <translation>%1 运行的是计划 %2，%3 运行的是计划 %4：同一学习步骤的日志必须属于同一个计划</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location filename="../core/service/FileLoopLearn.cpp" line="+42"/>
         <source>the scenario runs every trial %1 times (repetitions): give one --trial-log per run, %2 given</source>
         <translation>场景中每次试验运行 %1 次（repetitions）：请为每次运行给出一个 --trial-log，实际给出了 %2 个</translation>
     </message>
@@ -1141,7 +1136,7 @@
         <translation>%1 不是历史中的试验在此场景下得到的估计 %2：场景的估计器是否与历史的一致？</translation>
     </message>
     <message>
-        <location filename="../core/service/FileLoopPlan.cpp" line="+33"/>
+        <location filename="../core/service/FileLoopPlan.cpp" line="+31"/>
         <source>initial estimate of a learning loop through files</source>
         <translation>基于文件的学习循环的初始估计</translation>
     </message>
@@ -1159,6 +1154,76 @@
         <location line="+3"/>
         <source>the scenario&apos;s initial estimate</source>
         <translation>场景的初始估计</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoopPayload.cpp" line="+39"/>
+        <source>the history %1 learns the payload on %2, the scenario&apos;s payload.link is %3: a history keeps its link (give another --history for another)</source>
+        <translation>历史 %1 学习 %2 上的负载，而场景的 payload.link 为 %3：历史保持其连杆不变（换连杆请给出另一个 --history）</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the history %1 does not replay: %2</source>
+        <translation>历史 %1 无法回放：%2</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>the arm held fixed and the payload learned from the trials up to trial %1: estimate %2 of a payload&apos;s learning loop through files</source>
+        <translation>固定的机械臂与从截至试验 %1 的各次试验学得的负载：通过文件进行的负载学习循环的估计 %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the arm held fixed and the payload&apos;s prior: estimate %1 of a payload&apos;s learning loop through files</source>
+        <translation>固定的机械臂与负载的先验：通过文件进行的负载学习循环的估计 %1</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1 holds another arm model than the scenario&apos;s robot.initialParameters: a history keeps the arm it learns the payload on</source>
+        <translation>%1 中的机械臂模型与场景的 robot.initialParameters 不同：历史保持其学习负载时所用的机械臂不变</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 holds another payload prior than the scenario&apos;s payload section: a history keeps its prior</source>
+        <translation>%1 中的负载先验与场景的 payload 部分不同：历史保持其先验不变</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is not the payload estimate %2 that the history&apos;s trials give with this scenario: are its payload section and estimator the history&apos;s?</source>
+        <translation>%1 不是历史中的试验在此场景下得到的负载估计 %2：场景的 payload 部分和估计器是否与历史的一致？</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>the path determines %1 of the payload&apos;s 10 parameters on %2</source>
+        <translation>路径确定 %2 上负载 10 个参数中的 %1 个</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoopPayloadLearn.cpp" line="+33"/>
+        <source>a payload&apos;s learning loop runs every trial once (estimator.repetitions does not apply to it): give one --trial-log, %1 given</source>
+        <translation>负载的学习循环每次试验只运行一次（estimator.repetitions 对其不适用）：请给出一个 --trial-log，实际给出 %1 个</translation>
+    </message>
+    <message>
+        <location filename="../core/service/FileLoopPayloadPlan.cpp" line="+23"/>
+        <source>the arm&apos;s model held fixed (robot.initialParameters) alone: trial %1 is a baseline trial (payload.baselineTrials), run it WITHOUT the payload mounted</source>
+        <translation>仅固定的机械臂模型（robot.initialParameters）：试验 %1 是基线试验（payload.baselineTrials），请在未安装负载的情况下运行</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the arm&apos;s model held fixed (robot.initialParameters) and the payload learned from the trials up to trial %1 (estimate %2 of %3)</source>
+        <translation>固定的机械臂模型（robot.initialParameters）和从截至试验 %1 的各次试验学得的负载（%3 中的估计 %2）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the arm&apos;s model held fixed (robot.initialParameters) and the payload&apos;s prior (payload section)</source>
+        <translation>固定的机械臂模型（robot.initialParameters）和负载的先验（payload 部分）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>--estimate: a scenario with a payload section plans with the arm&apos;s model it holds fixed (robot.initialParameters) and the payload its history has learned, the prior (payload section) first: leave out --estimate</source>
+        <translation>--estimate：带 payload 部分的场景使用其固定的机械臂模型（robot.initialParameters）和其历史已学得的负载（最初为 payload 部分的先验）进行规划：请去掉 --estimate</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 (give another --history to start anew)</source>
+        <translation>%1（请给出另一个 --history 以重新开始）</translation>
     </message>
 </context>
 <context>
@@ -1665,11 +1730,12 @@
     <message>
         <location line="+8"/>
         <location line="+2"/>
+        <location line="+66"/>
         <source>must not be empty</source>
         <translation>不得为空</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-64"/>
         <source>one more than trials, the initial estimate first</source>
         <translation>比试验多一个，初始估计在最前</translation>
     </message>
@@ -1694,7 +1760,7 @@
         <translation>此版本的 learnid 读取“%1”，实际为 %2</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+92"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2189,7 +2255,12 @@
 <context>
     <name>PayloadBaseline</name>
     <message>
-        <location filename="../core/identify/PayloadBaseline.cpp" line="+31"/>
+        <location filename="../core/identify/PayloadBaseline.cpp" line="+62"/>
+        <source>%1 covers less than %2 % of %3 within a shift of %4 s: a baseline runs the same timed path without the payload</source>
+        <translation>在 %4 s 的平移范围内，%1 覆盖 %3 的部分少于 %2 %：基线须在不带负载的情况下运行同一条定时路径</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 (%2 joints, %3 samples of %4 s) is not a baseline of %5 (%6 joints, %7 samples of %8 s): a baseline runs the same timed path without the payload</source>
         <translation>%1（%2 个关节，%3 个采样，周期 %4 s）不是 %5（%6 个关节，%7 个采样，周期 %8 s）的基线：基线须在不带负载的情况下运行同一条定时路径</translation>
     </message>
@@ -2197,6 +2268,16 @@
         <location line="+13"/>
         <source>%1: the filtered signals are not finite</source>
         <translation>%1：滤波后的信号不是有限值</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 does not follow the path of %2: their joint angles differ by %3 deg RMS (at most %4 deg) after a shift of %5 s</source>
+        <translation>%1 没有沿 %2 的路径运动：平移 %5 s 后两者的关节角相差 %3 度 RMS（最多允许 %4 度）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the baselines together cover less than %1 % of %2</source>
+        <translation>所有基线合起来覆盖 %2 的部分少于 %1 %</translation>
     </message>
 </context>
 <context>
@@ -2256,7 +2337,7 @@
 <context>
     <name>PayloadIdentification</name>
     <message>
-        <location filename="../core/service/PayloadIdentification.cpp" line="+31"/>
+        <location filename="../core/service/PayloadIdentification.cpp" line="+40"/>
         <source>no log to identify the payload from</source>
         <translation>没有用于辨识负载的日志</translation>
     </message>
@@ -3431,6 +3512,21 @@
         <source>needs a URDF robot (the link&apos;s inertia about its axis); %1 has none: give simulation.armature in kg m^2</source>
         <translation>需要 URDF 机器人（连杆绕其轴的惯量）；%1 没有：请以 kg m^2 给出 simulation.armature</translation>
     </message>
+    <message>
+        <location filename="../core/service/FileLoopParts.cpp" line="-52"/>
+        <source>%1 ran plan %2, which the history %3 has learned from already as trial %4: plan the next trial and run that</source>
+        <translation>%1 运行的是计划 %2，历史 %3 已将其作为试验 %4 学习过：请规划下一次试验并运行它</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 ran plan %2, which the history %3 does not know; its plans to run are: %4</source>
+        <translation>%1 运行的是计划 %2，而历史 %3 中没有该计划；其待运行的计划为：%4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>none (plan the next trial first)</source>
+        <translation>无（请先规划下一次试验）</translation>
+    </message>
 </context>
 <context>
     <name>TorqueRule</name>
@@ -3974,9 +4070,9 @@
     <message>
         <location line="+66"/>
         <location line="+37"/>
-        <location filename="../app/cli/LoopCommands.cpp" line="+18"/>
-        <location filename="../app/cli/PayloadCommand.cpp" line="+207"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+88"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+47"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+11"/>
         <location line="+6"/>
@@ -4477,18 +4573,28 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+35"/>
+        <location line="+44"/>
         <location filename="../app/cli/RunCommand.cpp" line="+66"/>
         <source>learnid-cli: no files written</source>
         <translation>learnid-cli：未写入文件</translation>
     </message>
     <message>
-        <location line="-27"/>
+        <location line="-36"/>
         <source>plan-id: %1</source>
         <translation>plan-id: %1</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+47"/>
+        <source>learnid-cli: baseline trial %1 (plan %2) kept; the next trial is a baseline trial too, without the payload</source>
+        <translation>learnid-cli：基线试验 %1（计划 %2）已保留；下一次试验也是基线试验，不安装负载</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>learnid-cli: baseline trial %1 (plan %2) kept; mount the payload before the next trial</source>
+        <translation>learnid-cli：基线试验 %1（计划 %2）已保留；请在下一次试验前安装负载</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>learnid-cli: trial %1 (plan %2) learned; the next plan uses estimate %3</source>
         <translation>learnid-cli：已从试验 %1（计划 %2）学习；下一个计划使用估计 %3</translation>
     </message>
@@ -4503,7 +4609,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：估计 %1 已写入机器人</translation>
     </message>
     <message>
-        <location filename="../app/cli/LoopCommands.cpp" line="-75"/>
+        <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
@@ -4838,7 +4944,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：错误：--robot %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadCommand.cpp" line="-160"/>
+        <location filename="../app/cli/PayloadCommand.cpp" line="-168"/>
         <source>value</source>
         <translation>量</translation>
     </message>
@@ -4863,12 +4969,12 @@ stdout, and the next plan uses the new estimate.
         <translation>来源</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+57"/>
         <source>the logs</source>
         <translation>日志</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-45"/>
         <source>the prior (not identified)</source>
         <translation>先验（未辨识）</translation>
     </message>
@@ -4904,7 +5010,14 @@ stdout, and the next plan uses the new estimate.
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+8"/>
+        <source>Baseline %1 taken out of %2: shifted by %3 s, joint angles %4 deg RMS apart.
+</source>
+        <translation>已从 %2 中减去基线 %1：平移 %3 s，关节角相差 %4 度 RMS。
+</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Warning: the plausible estimate did not converge (%1).
 </source>
         <translation>警告：合理估计未收敛（%1）。
@@ -4937,7 +5050,7 @@ stdout, and the next plan uses the new estimate.
         <translation>各关节在日志上的力矩残差 [N m]：</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>learnid-cli: fitting the payload to %1</source>
         <translation>learnid-cli：正在将负载拟合到 %1</translation>
     </message>
@@ -4999,7 +5112,12 @@ stdout, and the next plan uses the new estimate.
         <translation>与 --payload 及 URDF 机器人的 --robot 参数文件一起使用：辨识机械臂时所用的 URDF。</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+5"/>
+        <source>With --payload: a log of the same motion without the payload, whose torque residual is taken out of every --log (may be repeated; docs/payload.md).</source>
+        <translation>与 --payload 一起使用：同一运动不带负载的日志，其力矩残差将从每个 --log 中减去（可重复；docs/payload.md）。</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>--%1: needs --payload</source>
         <translation>--%1：需要 --payload</translation>
     </message>
@@ -5014,7 +5132,7 @@ stdout, and the next plan uses the new estimate.
         <translation>--payload-box：请给出包围长方体或 --payload-radius，不要同时给出</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
         <translation>--payload-mass：必须是千克数，收到“%1”</translation>
     </message>
@@ -5039,7 +5157,7 @@ stdout, and the next plan uses the new estimate.
         <translation>--payload-box：必须是六个数 X0,Y0,Z0,X1,Y1,Z1 [m]，收到“%1”</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-90"/>
+        <location filename="../app/cli/PayloadTrialTable.cpp" line="+20"/>
         <source>all</source>
         <translation>全部</translation>
     </message>
@@ -5049,12 +5167,12 @@ stdout, and the next plan uses the new estimate.
         <translation>无</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+30"/>
         <source>baseline: the same path without the payload</source>
         <translation>基线：不带负载的同一路径</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-46"/>
         <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
         <translation>%1：带 payload 段时尚不可用（负载在仿真机器人上学习，不写入任何文件）</translation>
     </message>
@@ -5074,7 +5192,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：该路径可确定负载 10 个参数中的 %1 个</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location filename="../app/cli/PayloadTrialTable.cpp" line="-22"/>
         <source>trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  identified</source>
         <translation>试验   最大误差   RMS误差   质量[kg]   质心 [mm]              更新    已辨识</translation>
     </message>
@@ -5084,7 +5202,7 @@ stdout, and the next plan uses the new estimate.
         <translation>          [°]        [°]                                          [ms]</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+42"/>
         <source>The payload after trial %1 (bound: %2):</source>
         <translation>试验 %1 之后的负载（边界：%2）：</translation>
     </message>

@@ -1,5 +1,6 @@
 #include "cli/LoopCommands.h"
 
+#include "cli/PayloadTrialTable.h"
 #include "cli/ResultTable.h"
 #include "io/ScenarioFile.h"
 #include "model/Error.h"
@@ -100,6 +101,15 @@ ExitCode learnCommand(const LoopOptions &options, QTextStream &out, QTextStream 
         out << resultTable(*learned.session);
         out.flush();
     }
+    if (learned.payloadSession) {
+        // As `run` prints a payload session: a row per trial, then the payload learned.
+        out << payloadTrialHeader();
+        for (const PayloadTrial &t : learned.payloadSession->history())
+            out << payloadTrialRow(t) << Qt::endl;
+        if (const QString result = payloadResult(*learned.payloadSession); !result.isEmpty())
+            out << Qt::endl << result;
+        out.flush();
+    }
     if (!learned.failure.isEmpty()) {
         err << errorLine(learned.failure) << Qt::endl
             << QCoreApplication::translate("learnid-cli", "learnid-cli: no files written")
@@ -107,14 +117,31 @@ ExitCode learnCommand(const LoopOptions &options, QTextStream &out, QTextStream 
         return ExitTrialFailed;
     }
     const ExitCode written = write(learned.files, options, err);
-    if (written == ExitOk && !options.quiet)
-        err << QCoreApplication::translate("learnid-cli",
-                                           "learnid-cli: trial %1 (plan %2) learned; the next "
-                                           "plan uses estimate %3")
+    if (written != ExitOk || options.quiet)
+        return written;
+    const PayloadSession *payload = learned.payloadSession.get();
+    if (payload && payload->history().back().baseline) {
+        // The technician mounts the payload after the last baseline trial.
+        err << (payload->nextTrialIsBaseline()
+                    ? QCoreApplication::translate("learnid-cli",
+                                                  "learnid-cli: baseline trial %1 (plan %2) "
+                                                  "kept; the next trial is a baseline trial too, "
+                                                  "without the payload")
+                    : QCoreApplication::translate("learnid-cli",
+                                                  "learnid-cli: baseline trial %1 (plan %2) "
+                                                  "kept; mount the payload before the next trial"))
                    .arg(learned.trialIndex)
                    .arg(learned.planId)
-                   .arg(learned.trialIndex + 1)
             << Qt::endl;
+        return written;
+    }
+    err << QCoreApplication::translate("learnid-cli",
+                                       "learnid-cli: trial %1 (plan %2) learned; the next "
+                                       "plan uses estimate %3")
+               .arg(learned.trialIndex)
+               .arg(learned.planId)
+               .arg(learned.trialIndex + 1)
+        << Qt::endl;
     return written;
 }
 

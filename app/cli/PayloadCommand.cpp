@@ -97,6 +97,13 @@ QString payloadText(const PayloadIdentificationResult &r, const QString &bound)
              .arg(r.fit.samples)
              .arg(o.rank)
              .arg(o.condition, 0, 'f', 1);
+    for (const BaselineAlignment &a : r.baselines)
+        t += QCoreApplication::translate("learnid-cli",
+                                         "Baseline %1 taken out of %2: shifted by %3 s, joint "
+                                         "angles %4 deg RMS apart.\n")
+                 .arg(a.baseline, a.log)
+                 .arg(a.shiftSeconds, 0, 'f', 3)
+                 .arg(a.angleRmsDeg, 0, 'f', 3);
     t += QLatin1Char('\n') +
          payloadTable(r.fit.estimate, QCoreApplication::translate("learnid-cli", "the logs")) +
          QLatin1Char('\n');
@@ -153,6 +160,7 @@ ExitCode payloadIdentifyCommand(const IdentifyOptions &o, QTextStream &out, QTex
         request.armUrdf = o.payload->armUrdf;
         request.armUrdfName = QStringLiteral("--arm-urdf");
         request.prior = o.payload->prior;
+        request.baselineLogs = o.payload->baselineLogs;
         request.fit.estimate.priorShare = o.fit.priorShare;
         if (!o.quiet)
             err << QCoreApplication::translate("learnid-cli",

@@ -29,7 +29,7 @@ std::optional<std::vector<double>> numbers(const QString &text, int count)
 
 const char *const payloadOptions[] = {"payload-link",    "payload-mass",   "payload-com",
                                       "payload-inertia", "payload-radius", "payload-box",
-                                      "arm-urdf"};
+                                      "arm-urdf",        "baseline-log"};
 
 } // namespace
 
@@ -73,6 +73,12 @@ QList<QCommandLineOption> payloadCliOptions()
                                     "With --payload and a --robot parameter file of a URDF robot: "
                                     "the URDF the arm was identified on."),
                   "FILE"),
+        cliOption("baseline-log",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "With --payload: a log of the same motion without the payload, "
+                                    "whose torque residual is taken out of every --log (may be "
+                                    "repeated; docs/payload.md)."),
+                  "FILE"),
     };
 }
 
@@ -114,6 +120,7 @@ QString readPayloadOptions(const QCommandLineParser &parser, std::optional<Paylo
     PayloadOptions o;
     o.link = value("payload-link");
     o.armUrdf = value("arm-urdf");
+    o.baselineLogs = parser.values(QStringLiteral("baseline-log"));
     bool ok = false;
     o.prior.mass = value("payload-mass").trimmed().toDouble(&ok);
     if (!ok)

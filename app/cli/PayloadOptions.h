@@ -18,6 +18,8 @@ struct PayloadOptions
     /// --arm-urdf: the URDF a --robot parameter file of robot.model "urdf" was identified on
     QString armUrdf;
     PayloadPrior prior;
+    /// --baseline-log: logs of the same program run without the payload (docs/payload.md)
+    QStringList baselineLogs;
 };
 
 /// --payload and its --payload-* options, for identify's parser.

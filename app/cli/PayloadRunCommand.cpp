@@ -1,6 +1,7 @@
 #include "cli/PayloadRunCommand.h"
 
 #include "cli/PayloadCommand.h"
+#include "cli/PayloadTrialTable.h"
 #include "model/Error.h"
 #include "model/ModelFactory.h"
 #include "session/PayloadSession.h"
@@ -35,48 +36,6 @@ QString unsupportedOption(const RunOptions &o)
         if (set)
             return QString::fromLatin1(name);
     return {};
-}
-
-// The body values the trials identified, by name: "all", "none" or a list.
-QString identifiedValues(const PayloadEstimate &e)
-{
-    QStringList names;
-    const QStringList all = PayloadEstimate::bodyNames();
-    for (int i = 0; i < 10; ++i)
-        if (e.bodyIdentified[size_t(i)])
-            names << all.at(i);
-    if (names.size() == 10)
-        return QCoreApplication::translate("learnid-cli", "all");
-    return names.isEmpty() ? QCoreApplication::translate("learnid-cli", "none")
-                           : names.join(QStringLiteral(", "));
-}
-
-QString trialRow(const PayloadTrial &t)
-{
-    QString row = QString::number(t.index).rightJustified(5);
-    if (t.maxTrackingErrorDeg.size() > 0) {
-        row += QString::number(t.maxTrackingErrorDeg.maxCoeff(), 'f', 4).rightJustified(12) +
-               QString::number(t.rmsTrackingErrorDeg.maxCoeff(), 'f', 4).rightJustified(12);
-    } else {
-        row += QStringLiteral("-").rightJustified(12) + QStringLiteral("-").rightJustified(12);
-    }
-    if (t.baselineKept) {
-        return row + QStringLiteral("  ") +
-               QCoreApplication::translate("learnid-cli",
-                                           "baseline: the same path without the payload");
-    }
-    if (!t.learned())
-        return row + QStringLiteral("  ") + t.message;
-    const PayloadBody &b = t.fit->estimate.body;
-    const Eigen::Vector3d mm = 1000.0 * b.com;
-    return row + QString::number(b.mass, 'f', 4).rightJustified(11) +
-           QStringLiteral("  (%1, %2, %3)")
-               .arg(mm.x(), 0, 'f', 1)
-               .arg(mm.y(), 0, 'f', 1)
-               .arg(mm.z(), 0, 'f', 1)
-               .leftJustified(24) +
-           QString::number(1000.0 * t.updateCpuSeconds, 'f', 1).rightJustified(8) +
-           QStringLiteral("  ") + identifiedValues(t.fit->estimate);
 }
 
 } // namespace
@@ -139,39 +98,20 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
             err << QCoreApplication::translate("learnid-cli", "learnid-cli: %1").arg(line)
                 << Qt::endl;
     }
-    out << QCoreApplication::translate(
-               "learnid-cli",
-               "trial  max error  RMS error  mass [kg]  centre of mass [mm]    update  "
-               "identified")
-        << Qt::endl
-        << QCoreApplication::translate(
-               "learnid-cli",
-               "          [deg]      [deg]                                       [ms]")
-        << Qt::endl;
+    out << payloadTrialHeader();
     g_session = session.get();
     const auto previous = std::signal(SIGINT, onPayloadInterrupt);
     bool completed = true;
     const int trials = scenario.payload.baselineTrials + scenario.iterations;
     for (int i = 0; i < trials && completed; ++i) {
         const PayloadTrial &t = session->runTrial();
-        out << trialRow(t) << Qt::endl;
+        out << payloadTrialRow(t) << Qt::endl;
         completed = t.usable();
     }
     std::signal(SIGINT, previous);
     g_session = nullptr;
-    const PayloadTrial *learned = nullptr;
-    for (const PayloadTrial &t : session->history())
-        if (t.learned())
-            learned = &t;
-    if (learned) {
-        out << Qt::endl
-            << QCoreApplication::translate("learnid-cli", "The payload after trial %1 (bound: %2):")
-                   .arg(learned->index)
-                   .arg(session->prior().bound.describe())
-            << Qt::endl
-            << payloadTable(learned->fit->estimate,
-                            QCoreApplication::translate("learnid-cli", "the trials"));
-    }
+    if (const QString result = payloadResult(*session); !result.isEmpty())
+        out << Qt::endl << result;
     out.flush();
     if (!completed)
         return fail(session->history().back().message, ExitTrialFailed);

@@ -114,6 +114,12 @@ LoopHistory readHistory(const QJsonObject &root)
                                    robot.keyPath(key("parameters")), 1, maxParameters));
     robot.rejectUnknownKeys();
     h.law = jsonString(r.require(key("law")), key("law"));
+    if (std::optional<JsonObjectReader> payload = r.optionalObject(key("payload"))) {
+        h.payloadLink = jsonString(payload->require(key("link")), payload->keyPath(key("link")));
+        if (h.payloadLink.isEmpty())
+            throwAtKey(payload->keyPath(key("link")), Text::tr("must not be empty"));
+        payload->rejectUnknownKeys();
+    }
     h.estimates = readNames(r.require(key("estimates")), key("estimates"));
     const QJsonArray trials = jsonArray(r.require(key("trials")), key("trials"));
     for (int k = 0; k < int(trials.size()); ++k) {
@@ -171,8 +177,13 @@ QByteArray loopHistoryToJson(const LoopHistory &h)
     JsonTree root = JsonTree::object();
     root.insert(key("schema"), QString::fromLatin1(loopHistorySchema))
         .insert(key("robot"), robot)
-        .insert(key("law"), h.law)
-        .insert(key("estimates"), names(h.estimates))
+        .insert(key("law"), h.law);
+    if (!h.payloadLink.isEmpty()) {
+        JsonTree payload = JsonTree::object();
+        payload.insert(key("link"), h.payloadLink);
+        root.insert(key("payload"), payload);
+    }
+    root.insert(key("estimates"), names(h.estimates))
         .insert(key("trials"), trials)
         .insert(key("pendingPlans"), pending);
     return root.toJson();

@@ -36,9 +36,15 @@ struct LoopHistory
     QString robotModel; ///< model id
     int joints = 0;
     int parameters = 0;
-    QString law;           ///< learning law id
-    QStringList estimates; ///< parameter files, estimates[k] = estimate k (k = 0: the initial)
-    QList<Trial> trials;   ///< learned trials in order; trial k ran with estimate k
+    QString law; ///< learning law id (the payload's loop records it, unused)
+    /// The link whose payload the loop learns (a scenario with a payload section,
+    /// docs/payload.md); empty: the loop learns the arm. Written as "payload": {"link": ...}
+    /// only when set, so that an arm history reads and writes as before.
+    QString payloadLink;
+    /// parameter files, estimates[k] = estimate k (k = 0: the initial); the payload's loop: the
+    /// arm held fixed plus the payload section of estimate k (k = 0: the prior)
+    QStringList estimates;
+    QList<Trial> trials;             ///< learned trials in order; trial k ran with estimate k
     QList<PendingPlan> pendingPlans; ///< plans written with the newest estimate, not learned yet
 };
 
@@ -48,7 +54,8 @@ QByteArray loopHistoryToJson(const LoopHistory &history);
 
 /// Reads and checks an index: schema, every key present with the right type, no unknown keys,
 /// plan-ids of 64 hex digits, plain file names, one estimate more than trials, one figure per
-/// joint. Throws Error "<source>: <key path>: <problem>".
+/// joint; the optional "payload" object with its non-empty "link" and nothing else. Throws Error
+/// "<source>: <key path>: <problem>".
 LoopHistory loopHistoryFromJson(const QByteArray &json, const QString &source);
 
 } // namespace learnid

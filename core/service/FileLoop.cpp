@@ -74,7 +74,19 @@ void checkHistoryFits(const LoopHistory &history, const QString &dir, const Loop
                         .arg(model.dof())
                         .arg(model.parameterCount()));
     }
-    if (history.law != s.scenario.law) {
+    const bool payload = s.scenario.payload.enabled;
+    if (payload && history.payloadLink.isEmpty())
+        throw Error(Text::tr("the history %1 was made by the arm's learning loop (a scenario "
+                             "without a payload section); the scenario learns a payload: give "
+                             "another --history for the payload's loop")
+                        .arg(native(dir)));
+    if (!payload && !history.payloadLink.isEmpty())
+        throw Error(Text::tr("the history %1 learns the payload on %2 (a scenario with a payload "
+                             "section); the scenario learns the arm: give another --history for "
+                             "the arm's loop")
+                        .arg(native(dir), history.payloadLink));
+    // The payload's loop holds the arm fixed: its law learns nothing there.
+    if (!payload && history.law != s.scenario.law) {
         throw Error(Text::tr("the history %1 learns with the law %2, the scenario with %3: a "
                              "history keeps its law (start a new history for another)")
                         .arg(native(dir), history.law, s.scenario.law));

@@ -3,6 +3,7 @@
 #include "io/LoopHistory.h"
 #include "model/RobotModel.h"
 #include "session/CommissioningSession.h"
+#include "session/PayloadSession.h"
 #include "types/Scenario.h"
 
 #include <QList>
@@ -20,6 +21,8 @@ namespace learnid {
 // learnFromTrial() reads the log and learns. The history folder keeps the loop's state
 // (io/LoopHistory.h); learning replays it through a CommissioningSession whose robot answers
 // with the logged trials (RecordedTrialRobot), so the estimates are exactly a session's.
+// A scenario with a payload section runs the payload's loop the same way: planning and learning
+// replay a PayloadSession over the history's trials (FileLoopPayload*.cpp, docs/payload.md).
 
 /// A scenario as the loop runs it: its model, and the scenario with what a URDF robot leaves
 /// to the robot filled in (withRobotDefaults).
@@ -51,7 +54,8 @@ QStringList writeLoopFiles(const LoopFiles &files);
 std::optional<LoopHistory> readLoopHistory(const QString &dir);
 
 /// Throws Error when the history was not made for this scenario's robot (model, joints,
-/// parameters) and learning law, naming both.
+/// parameters), or by the other loop (the arm's for a scenario with a payload section, the
+/// payload's for one without), or for the arm by another learning law, naming both.
 void checkHistoryFits(const LoopHistory &history, const QString &dir, const LoopScenario &s);
 
 /// The values of the parameter file at path, checked against the robot: its model and its
@@ -88,6 +92,8 @@ struct PlannedTrial
 /// A plan that passes is recorded in the history as pending; a new history starts with the
 /// estimate as estimate 0. Throws Error for input it cannot use: an unreadable history or
 /// estimate, a history of another robot or law, --estimate for a history that has learned.
+/// With a payload section: planned with the arm plus the payload the history's trials give
+/// (PayloadSession::checkNextTrial() after replaying them); --estimate is refused.
 PlannedTrial planNextTrial(const LoopScenario &s, const PlanRequest &request);
 
 struct LearnRequest
@@ -100,8 +106,12 @@ struct LearnRequest
 struct LearnedTrial
 {
     /// The history's trials replayed with the new one: its history, estimates and figures are
-    /// what a session that ran these trials has. Null when the log ended early.
+    /// what a session that ran these trials has. Null when the log ended early, and for a
+    /// scenario with a payload section.
     std::unique_ptr<CommissioningSession> session;
+    /// The same for a scenario with a payload section: the payload's session (PayloadSession)
+    /// replayed over the history's trials and the new one; null otherwise.
+    std::unique_ptr<PayloadSession> payloadSession;
     int trialIndex = 0;
     QString planId;
     QString failure; ///< why nothing was learned (trial ended early, law failed); empty: learned
@@ -112,6 +122,7 @@ struct LearnedTrial
 /// learns. Throws Error for input it cannot use: no history, a log without or with an unknown
 /// plan-id, a plan already learned, a log off the plan's grid or longer than the plan, a scenario
 /// that plans the history's trials differently (naming both plan-ids), a damaged history.
+/// With a payload section: one log per trial, replayed through a PayloadSession.
 LearnedTrial learnFromTrial(const LoopScenario &s, const LearnRequest &request);
 
 } // namespace learnid

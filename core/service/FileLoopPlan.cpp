@@ -1,11 +1,9 @@
 #include "service/FileLoop.h"
 
 #include "can/ManufacturerObjects.h"
-#include "io/AtomicFile.h"
 #include "io/ParameterFile.h"
-#include "io/PlanCsv.h"
 #include "model/Error.h"
-#include "service/RecordedTrialRobot.h"
+#include "service/FileLoopParts.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -83,6 +81,8 @@ NextEstimate nextEstimate(const LoopScenario &s, const PlanRequest &request,
 
 PlannedTrial planNextTrial(const LoopScenario &s, const PlanRequest &request)
 {
+    if (s.scenario.payload.enabled)
+        return loop::planPayloadTrial(s, request);
     const std::optional<LoopHistory> read = readLoopHistory(request.historyDir);
     if (read)
         checkHistoryFits(*read, request.historyDir, s);
@@ -106,42 +106,10 @@ PlannedTrial planNextTrial(const LoopScenario &s, const PlanRequest &request)
     if (!planned.passed())
         return planned;
 
-    const QByteArray plan = planCsv(planned.check.plan, s.model->id());
-    planned.planId = planIdOf(planned.check.plan);
-    const QDir out(request.outDir);
-    const QDir dir(request.historyDir);
-    LoopFiles &files = planned.files;
-    files.folders << request.outDir << request.historyDir;
-    files.files.append({out.filePath(QStringLiteral("plan.csv")), plan});
-    files.files.append({out.filePath(QStringLiteral("check.txt")), planned.checkText.toUtf8()});
-
-    LoopHistory history;
-    if (read) {
-        history = *read;
-    } else {
-        history.robotModel = s.model->id();
-        history.joints = s.model->dof();
-        history.parameters = s.model->parameterCount();
-        history.law = s.scenario.law;
-        history.estimates << QStringLiteral("estimate-0.json");
-    }
-    if (estimate.newInitial) {
-        // Plans made with another estimate 0 are not the history's any more.
-        for (const LoopHistory::PendingPlan &p : std::as_const(history.pendingPlans))
-            files.obsolete << dir.filePath(p.plan);
-        history.pendingPlans.clear();
-        files.files.append(
-            {dir.filePath(history.estimates.constFirst()), initialEstimateFile(s, estimate.phi)});
-    }
-    const QString name = QStringLiteral("plan-%1.csv").arg(planned.planId.left(16));
-    files.obsolete.removeAll(dir.filePath(name));
-    const bool known = std::any_of(history.pendingPlans.cbegin(), history.pendingPlans.cend(),
-                                   [&](const auto &p) { return p.planId == planned.planId; });
-    if (!known)
-        history.pendingPlans.append({planned.planId, name});
-    files.files.append({dir.filePath(name), plan});
-    files.files.append(
-        {dir.filePath(QLatin1String(loopHistoryIndexName)), loopHistoryToJson(history)});
+    const LoopHistory history = read ? *read : loop::newLoopHistory(s);
+    const QByteArray initial =
+        estimate.newInitial ? initialEstimateFile(s, estimate.phi) : QByteArray();
+    loop::addPlanFiles(planned, s, request, history, estimate.newInitial ? &initial : nullptr);
     return planned;
 }
 

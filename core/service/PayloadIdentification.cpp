@@ -23,6 +23,15 @@ FilteredLog readLog(const QString &path, const ChainModel &model,
 
 } // namespace
 
+BaselineSettings recordedBaselineSettings()
+{
+    BaselineSettings s;
+    s.maxShift = 2.0;
+    s.maxAngleRmsDeg = 2.0;
+    s.minOverlap = 0.8;
+    return s;
+}
+
 PayloadIdentificationResult identifyPayloadFromLogs(const PayloadIdentificationRequest &request,
                                                     const PayloadFieldNames &names)
 {
@@ -39,9 +48,13 @@ PayloadIdentificationResult identifyPayloadFromLogs(const PayloadIdentificationR
     } catch (const Error &e) {
         throw Error(QStringLiteral("%1: %2").arg(names.link, e.message()));
     }
-    std::vector<FilteredLog> training, validation;
+    std::vector<FilteredLog> training, validation, baselines;
     for (const QString &path : request.logs.trainingLogs)
         training.push_back(readLog(path, *robot.model, request.logs, r.readings));
+    for (const QString &path : request.baselineLogs)
+        baselines.push_back(readLog(path, *robot.model, request.logs, r.readings));
+    for (FilteredLog &log : training)
+        log = withBaselineSubtracted(*r.model, log, baselines, request.baseline, &r.baselines);
     for (const QString &path : request.logs.validationLogs)
         validation.push_back(readLog(path, *robot.model, request.logs, r.readings));
     r.trainingLogs = request.logs.trainingLogs;

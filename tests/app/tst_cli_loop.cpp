@@ -1,5 +1,6 @@
 // End-to-end tests of `learnid-cli plan` and `learnid-cli learn`, the learning loop through files:
 // the simulated robot plays "another controller" that only exchanges plan and log files.
+#include "../support/OtherController.h"
 #include "../support/ToolRun.h"
 #include "io/AtomicFile.h"
 #include "io/LoopHistory.h"
@@ -50,49 +51,12 @@ private:
 
 namespace {
 
+using test::logCsv;
+using test::planFromCsv;
+
 QByteArray number(double v)
 {
-    return QByteArray::number(v, 'g', QLocale::FloatingPointShortest);
-}
-
-// What the other controller makes of plan.csv: the trajectory and feedforward it runs, with its
-// own gains and limits (here the scenario's, as the session's robot gets them).
-TrialPlan planFromCsv(const PlanCsv &csv, const Scenario &scenario)
-{
-    TrialPlan plan;
-    plan.desired.samplePeriod = csv.samplePeriod;
-    plan.desired.q = csv.qDesired;
-    plan.desired.qd = Eigen::MatrixXd::Zero(csv.joints(), csv.samples());
-    plan.desired.qdd = Eigen::MatrixXd::Zero(csv.joints(), csv.samples());
-    plan.feedforward = csv.feedforward;
-    plan.feedforwardParameters = csv.estimate;
-    plan.controller = scenario.controller;
-    plan.torqueLimit = scenario.torqueLimits;
-    plan.maxTrackingError = scenario.maxTrackingErrorDeg * M_PI / 180.0;
-    return plan;
-}
-
-// The controller's log: its own comment, the plan-id line copied from the plan, then one row per
-// sample (extra columns ignored by learn).
-QByteArray logCsv(const QString &planId, const TrialRecord &record, int samples = -1)
-{
-    const int n = int(record.q.rows());
-    QByteArray out = "# logged by the other controller\n# plan-id: " + planId.toLatin1() + '\n';
-    out += "t,status";
-    for (int j = 1; j <= n; ++j)
-        out += ",q" + QByteArray::number(j);
-    for (int j = 1; j <= n; ++j)
-        out += ",tau" + QByteArray::number(j);
-    out += '\n';
-    for (int k = 0; k < (samples < 0 ? record.samples() : samples); ++k) {
-        out += number(k * record.samplePeriod) + ",ok";
-        for (int j = 0; j < n; ++j)
-            out += ',' + number(record.q(j, k));
-        for (int j = 0; j < n; ++j)
-            out += ',' + number(record.tau(j, k));
-        out += '\n';
-    }
-    return out;
+    return test::shortestNumber(v);
 }
 
 double relativeDifference(const Eigen::VectorXd &a, const Eigen::VectorXd &b)

@@ -9,6 +9,7 @@
 #include "../support/SharedData.h"
 #include "../support/ToolRun.h"
 #include "PayloadLogs.h"
+#include "model/ChainPerturbation.h"
 #include "model/Payload.h"
 
 #include <QDir>
@@ -36,6 +37,16 @@ double tableValue(const QString &out, const QString &name)
     return m.hasMatch() ? m.captured(1).toDouble() : NAN;
 }
 
+// The standard error on that row (the column after the estimate).
+double tableStdError(const QString &out, const QString &name)
+{
+    const QRegularExpression row(
+        QStringLiteral("^%1 \\[[^\\]]*\\]\\s+\\S+\\s+(\\S+)").arg(QRegularExpression::escape(name)),
+        QRegularExpression::MultilineOption);
+    const QRegularExpressionMatch m = row.match(out);
+    return m.hasMatch() ? m.captured(1).toDouble() : NAN;
+}
+
 QString tableRow(const QString &out, const QString &name)
 {
     for (const QString &line : out.split(QLatin1Char('\n')))
@@ -54,6 +65,7 @@ private slots:
     void initTestCase();
     void wristTurningPath_massWithinOnePercentAndComWithinThreeMillimetres();
     void verticalWristPath_reportsTheUnseenAndKeepsThePrior();
+    void wrongArm_aBaselineLogTakesItsErrorOut();
     void badInput_namesTheOptionAndWritesNothing_data();
     void badInput_namesTheOptionAndWritesNothing();
 
@@ -126,6 +138,59 @@ void TestCliPayload::verticalWristPath_reportsTheUnseenAndKeepsThePrior()
     QVERIFY(run.out.contains(QStringLiteral("the inertia Ixx, Ixy, Iyy is not seen")));
 }
 
+void TestCliPayload::wrongArm_aBaselineLogTakesItsErrorOut()
+{
+    // The real arm +-10 % off the URDF held fixed; the payload log starts 0.3 s into the motion
+    // the baseline log (the same program without the payload) recorded.
+    const auto arm = test::kukaArm();
+    const PayloadModel real(arm, perturbedStandard(*arm, 0.1, 4));
+    const test::JointPath path = test::richPath(*arm, 5.6);
+    test::JointPath part = path;
+    part.q = path.q.middleCols(150, 2501);
+    part.qd = path.qd.middleCols(150, 2501);
+    part.qdd = path.qdd.middleCols(150, 2501);
+    const QString with = m_dir.filePath(QStringLiteral("with.csv")),
+                  without = m_dir.filePath(QStringLiteral("without.csv"));
+    QVERIFY(test::writeFile(with, payloadLog(real, part, 5)));
+    QVERIFY(test::writeFile(without, payloadLog(real, path, 6, InertialParameters::Zero())));
+    const QStringList args{QStringLiteral("identify"),
+                           QStringLiteral("--robot"),
+                           m_urdf,
+                           QStringLiteral("--log"),
+                           with,
+                           QStringLiteral("--payload"),
+                           QStringLiteral("--payload-mass"),
+                           QStringLiteral("2.5"),
+                           QStringLiteral("--payload-com"),
+                           QStringLiteral("0,0,0.05")};
+    const test::ToolRun plain = test::runTool(cli, args);
+    QVERIFY2(plain.exitCode == 0, qPrintable(plain.err));
+    const test::ToolRun run =
+        test::runTool(cli, args + QStringList{QStringLiteral("--baseline-log"), without});
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    qInfo("%s", qPrintable(run.out));
+    QVERIFY2(
+        run.out.contains(
+            QStringLiteral("Baseline %1 taken out of %2: shifted by 0.300 s").arg(without, with)),
+        qPrintable(run.out));
+    // Each value within 4 of its standard errors of the truth (the baseline's own noise is in
+    // them: they come from the residual after the subtraction); without the baseline the mass is
+    // off by many.
+    const double truth[] = {3.0, truePayload().com.x(), truePayload().com.y(),
+                            truePayload().com.z()};
+    const char *const names[] = {"m", "cx", "cy", "cz"};
+    for (int i = 0; i < 4; ++i) {
+        const QString name = QLatin1String(names[i]);
+        const double value = tableValue(run.out, name), error = tableStdError(run.out, name);
+        QVERIFY2(std::abs(value - truth[i]) < 4.0 * error,
+                 qPrintable(QStringLiteral("%1: %2 +- %3").arg(name).arg(value).arg(error)));
+    }
+    const double biased = tableValue(plain.out, QStringLiteral("m"));
+    const double biasedError = tableStdError(plain.out, QStringLiteral("m"));
+    qInfo("without the baseline: %g +- %g kg", biased, biasedError);
+    QVERIFY2(std::abs(biased - 3.0) > 10.0 * biasedError, qPrintable(QString::number(biased)));
+}
+
 void TestCliPayload::badInput_namesTheOptionAndWritesNothing_data()
 {
     QTest::addColumn<QStringList>("options");
@@ -168,6 +233,16 @@ void TestCliPayload::badInput_namesTheOptionAndWritesNothing_data()
     QTest::newRow("arm urdf for a urdf")
         << l({"--payload", "--payload-mass", "3", "--arm-urdf", "arm.urdf", "--export", "p.json"})
         << QStringLiteral("--arm-urdf: only for a parameter file");
+    QTest::newRow("baseline without payload")
+        << l({"--baseline-log", "b.csv"}) << QStringLiteral("--baseline-log: needs --payload");
+    QTest::newRow("baseline missing")
+        << l({"--payload", "--payload-mass", "3", "--baseline-log", "nosuch.csv"})
+        << QStringLiteral("nosuch.csv");
+    QTest::newRow("baseline of another path")
+        << QStringList{QStringLiteral("--payload"), QStringLiteral("--payload-mass"),
+                       QStringLiteral("3"), QStringLiteral("--baseline-log"), m_vertical}
+        << QStringLiteral("%1 does not follow the path of %2: their joint angles differ by")
+               .arg(m_vertical, m_rich);
 }
 
 void TestCliPayload::badInput_namesTheOptionAndWritesNothing()

@@ -15,6 +15,7 @@ private slots:
     void badIndex_namesTheKey_data();
     void badIndex_namesTheKey();
     void writer_refusesWhatTheReaderWould();
+    void payloadLink_isWrittenOnlyForThePayloadsLoop();
 };
 
 namespace {
@@ -108,6 +109,32 @@ void TestLoopHistory::writer_refusesWhatTheReaderWould()
     h = sampleHistory();
     h.trials[0].plan = QStringLiteral("/etc/passwd");
     LEARNID_VERIFY_ERROR(loopHistoryToJson(h), "trials[0].plan: must be a plain file name");
+}
+
+// The payload's loop marks its history with "payload": {"link": ...}; the arm's history stays
+// as it was (no such key), so histories of earlier versions read unchanged.
+void TestLoopHistory::payloadLink_isWrittenOnlyForThePayloadsLoop()
+{
+    const QByteArray arm = loopHistoryToJson(sampleHistory());
+    QVERIFY(!arm.contains("payload"));
+    QVERIFY(loopHistoryFromJson(arm, source).payloadLink.isEmpty());
+    LoopHistory h = sampleHistory();
+    h.payloadLink = QStringLiteral("panda_link7");
+    const QByteArray json = loopHistoryToJson(h);
+    QVERIFY2(json.contains("\"payload\": {\n        \"link\": \"panda_link7\"\n    }"),
+             json.constData());
+    QCOMPARE(loopHistoryFromJson(json, source).payloadLink, h.payloadLink);
+    QByteArray bad = json;
+    bad.replace("\"link\": \"panda_link7\"", "\"link\": \"\"");
+    LEARNID_VERIFY_ERROR(loopHistoryFromJson(bad, source),
+                         "history.json: payload.link: must not be empty");
+    bad = json;
+    bad.replace("\"link\": \"panda_link7\"", "\"link\": \"panda_link7\", \"mass\": 1");
+    LEARNID_VERIFY_ERROR(loopHistoryFromJson(bad, source), "history.json: payload.mass");
+    bad = json;
+    bad.replace("\"link\": \"panda_link7\"", "\"name\": \"panda_link7\"");
+    LEARNID_VERIFY_ERROR(loopHistoryFromJson(bad, source),
+                         "history.json: payload.link: is missing");
 }
 
 QTEST_GUILESS_MAIN(TestLoopHistory)

@@ -121,8 +121,8 @@ private slots:
         const PayloadModel model(arm, arm->cadStandard());
         const FilteredLog carrying =
             exactLog(QStringLiteral("trial 1"), pandaPath(4.0), model, truePayload());
-        const FilteredLog shorter =
-            exactLog(QStringLiteral("baseline trial 0"), pandaPath(3.0), model, {});
+        const FilteredLog shorter = exactLog(QStringLiteral("baseline trial 0"), pandaPath(3.0),
+                                             model, InertialParameters::Zero());
         QCOMPARE(test::errorOf([&] { withBaselineSubtracted(model, carrying, {shorter}); }),
                  QStringLiteral("baseline trial 0 (7 joints, 1501 samples of 0.002 s) is not a "
                                 "baseline of trial 1 (7 joints, 2001 samples of 0.002 s): a "
@@ -133,6 +133,70 @@ private slots:
         QCOMPARE(test::errorOf([&] { withBaselineSubtracted(model, carrying, {broken}); }),
                  QStringLiteral("baseline trial 0: the filtered signals are not finite"));
         QCOMPARE(withBaselineSubtracted(model, carrying, {}).tau, carrying.tau);
+    }
+
+    void recordedLogs_areAlignedByTheirAngles_andAnotherPathIsRefused()
+    {
+        // Two logs of one program that start at different moments: the payload log begins 0.24 s
+        // (120 samples) into the baseline's motion and ends before it.
+        const auto arm = pandaArm();
+        const PayloadModel model(arm, arm->cadStandard()),
+            real(arm, perturbedStandard(*arm, 0.1, 3));
+        const test::JointPath path = pandaPath(5.0);
+        test::JointPath part = path;
+        const Eigen::Index from = 120, length = 2001;
+        part.q = path.q.middleCols(from, length);
+        part.qd = path.qd.middleCols(from, length);
+        part.qdd = path.qdd.middleCols(from, length);
+        const FilteredLog carrying =
+            exactLog(QStringLiteral("with.csv"), part, real, truePayload());
+        const FilteredLog bare =
+            exactLog(QStringLiteral("without.csv"), path, real, InertialParameters::Zero());
+        BaselineSettings settings;
+        settings.maxShift = 0.5;
+        settings.maxAngleRmsDeg = 1.0;
+        std::vector<BaselineAlignment> laid;
+        const FilteredLog out = withBaselineSubtracted(model, carrying, {bare}, settings, &laid);
+        QCOMPARE(laid.size(), size_t(1));
+        QCOMPARE(laid[0].shift, from);
+        QCOMPARE(laid[0].shiftSeconds, 0.24);
+        QVERIFY(laid[0].angleRmsDeg < 1e-12);
+        QCOMPARE(out.q.cols(), length); // the baseline covers the whole log
+        double worst = 0.0;
+        for (Eigen::Index k = 0; k < length; k += 41) {
+            const Eigen::VectorXd expected =
+                model.torqueAt(part.q.col(k), part.qd.col(k), part.qdd.col(k), truePayload());
+            worst = std::max(worst, (out.tau.col(k) - expected).norm() / expected.norm());
+        }
+        QVERIFY2(worst < 1e-12, qPrintable(QString::number(worst)));
+
+        // Shifted the other way and cut short: only the part both cover is kept.
+        const FilteredLog late =
+            exactLog(QStringLiteral("late.csv"), part, real, InertialParameters::Zero());
+        FilteredLog early = carrying;
+        early.source = QStringLiteral("early.csv");
+        early.q = path.q.leftCols(length);
+        early.qd = path.qd.leftCols(length);
+        early.qdd = path.qdd.leftCols(length);
+        early.tau = bare.tau.leftCols(length);
+        laid.clear();
+        const FilteredLog kept = withBaselineSubtracted(model, early, {late}, settings, &laid);
+        QCOMPARE(laid[0].shift, -from);
+        QCOMPARE(kept.q.cols(), length - from);
+        QCOMPARE(kept.t0, early.t0 + 0.24);
+        QCOMPARE(kept.q, early.q.rightCols(length - from));
+
+        // A log of another path is no baseline.
+        test::JointPath other = part;
+        other.q.row(1).array() += 0.1;
+        const FilteredLog elsewhere =
+            exactLog(QStringLiteral("other.csv"), other, real, InertialParameters::Zero());
+        const QString message =
+            test::errorOf([&] { withBaselineSubtracted(model, carrying, {elsewhere}, settings); });
+        QVERIFY2(
+            message.startsWith(QStringLiteral("other.csv does not follow the path of with.csv: "
+                                              "their joint angles differ by 2.16 deg RMS")),
+            qPrintable(message));
     }
 
     void session_withABaselineTrial_learnsThePayloadOfAWrongArm()
