@@ -6941,7 +6941,7 @@ Verhältnis %</translation>
         <translation>Nutzlast übernommen: die Parameterdatei oder das URDF exportieren. Sie wird auf keinen Roboter angewendet (der simulierte Roboter trägt sie bereits).</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+25"/>
         <source>Export parameter file</source>
         <translation>Parameterdatei exportieren</translation>
     </message>

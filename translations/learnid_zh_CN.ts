@@ -6919,7 +6919,7 @@ ratio %</source>
         <translation>负载已接受：请导出参数文件或 URDF。它不会应用到机器人上（仿真机器人已携带该负载）。</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+25"/>
         <source>Export parameter file</source>
         <translation>导出参数文件</translation>
     </message>
