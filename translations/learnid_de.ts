@@ -2461,6 +2461,35 @@
     </message>
 </context>
 <context>
+    <name>PayloadRun</name>
+    <message>
+        <location filename="../core/service/PayloadRun.cpp" line="+24"/>
+        <source>payload: the scenario has no payload section</source>
+        <translation>payload: das Szenario hat keinen Abschnitt payload</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>robot.model: unknown robot model &quot;%1&quot;</source>
+        <translation>robot.model: unbekanntes Robotermodell &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+66"/>
+        <source>no trial was learned from: the payload is not estimated</source>
+        <translation>aus keinem Versuch wurde gelernt: die Nutzlast ist nicht geschätzt</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadRunExport</name>
+    <message numerus="yes">
+        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
+        <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
+        <translation>
+            <numerusform>%1 mit einer Nutzlast an %2, gelernt in %n Versuch mit festgehaltenem Modell des Arms</numerusform>
+            <numerusform>%1 mit einer Nutzlast an %2, gelernt in %n Versuchen mit festgehaltenem Modell des Arms</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>PayloadSession</name>
     <message>
         <location filename="../core/session/PayloadSession.cpp" line="+24"/>
@@ -2501,6 +2530,72 @@
         <location line="+6"/>
         <source>trial %1 not learned from: %2</source>
         <translation>aus Versuch %1 nicht gelernt: %2</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadText</name>
+    <message>
+        <location filename="../ui/PayloadText.cpp" line="+26"/>
+        <source>seen</source>
+        <translation>erfasst</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not seen: kept at the prior</source>
+        <translation>nicht erfasst: bleibt beim Vorwissen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1; the payload on &lt;b&gt;%2&lt;/b&gt;, the arm&apos;s model held fixed.</source>
+        <translation>%1; die Nutzlast an &lt;b&gt;%2&lt;/b&gt;, das Modell des Arms festgehalten.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The simulation carries %1 kg at %2 mm.</source>
+        <translation>Die Simulation trägt %1 kg bei %2 mm.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 baseline trial(s) of the same timed path without the payload, then %2 payload trial(s).</source>
+        <translation>%1 Basisversuch(e) auf derselben zeitlich geplanten Bahn ohne die Nutzlast, dann %2 Versuch(e) mit der Nutzlast.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n payload trial(s), no baseline trial.</source>
+        <translation>
+            <numerusform>%n Versuch mit der Nutzlast, kein Basisversuch.</numerusform>
+            <numerusform>%n Versuche mit der Nutzlast, kein Basisversuch.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The path determines &lt;b&gt;%1 of the payload&apos;s 10 parameters&lt;/b&gt;: mass %2, centre of mass %3, inertia %4.</source>
+        <translation>Die Bahn bestimmt &lt;b&gt;%1 der 10 Parameter der Nutzlast&lt;/b&gt;: Masse %2, Schwerpunkt %3, Trägheit %4.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>The first trial passes its check.</source>
+        <translation>Der erste Versuch besteht seine Prüfung.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The first trial would be refused: %1</source>
+        <translation>Der erste Versuch würde abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The payload after trial %1: %2 of 10 directions determined (condition %3); bound: %4.</source>
+        <translation>Die Nutzlast nach Versuch %1: %2 von 10 Richtungen bestimmt (Kondition %3); Schranke: %4.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Mass &lt;b&gt;%1 kg&lt;/b&gt; (standard error %2 kg), centre of mass &lt;b&gt;%3 mm&lt;/b&gt;.</source>
+        <translation>Masse &lt;b&gt;%1 kg&lt;/b&gt; (Standardfehler %2 kg), Schwerpunkt &lt;b&gt;%3 mm&lt;/b&gt;.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Its centre of mass lies outside the bound.</source>
+        <translation>Ihr Schwerpunkt liegt außerhalb der Schranke.</translation>
     </message>
 </context>
 <context>
@@ -6207,6 +6302,16 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Learn a &amp;payload…</source>
+        <translation>&amp;Nutzlast lernen…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Learn the payload the robot carries with the arm&apos;s model held fixed (simulated robot)</source>
+        <translation>Die Nutzlast lernen, die der Roboter trägt, mit festgehaltenem Modell des Arms (simulierter Roboter)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Open scenario...</source>
         <translation>Szenario ö&amp;ffnen...</translation>
     </message>
@@ -6454,7 +6559,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::MainWindow</name>
     <message>
-        <location filename="../ui/MainWindow.cpp" line="+79"/>
+        <location filename="../ui/MainWindow.cpp" line="+80"/>
         <source>learnid – commissioning</source>
         <translation>learnid – Inbetriebnahme</translation>
     </message>
@@ -6499,12 +6604,12 @@ Verhältnis %</translation>
         <translation>Parameterkonvergenz</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+53"/>
         <source>The language changes when learnid is started again.</source>
         <translation>Die Sprache wechselt beim nächsten Start von learnid.</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+37"/>
         <source>Dis&amp;connect robot</source>
         <translation>Roboter &amp;trennen</translation>
     </message>
@@ -6572,6 +6677,11 @@ Verhältnis %</translation>
         <location line="+1"/>
         <source>&lt;h3&gt;learnid %1&lt;/h3&gt;&lt;p&gt;Learning identification of robot dynamics: a commissioning tool.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;learnid %1&lt;/h3&gt;&lt;p&gt;Lernende Identifikation der Roboterdynamik: ein Inbetriebnahmewerkzeug.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The scenario has a payload section: its payload is learned here, in the payload step; the arm&apos;s session is not opened with it.</source>
+        <translation>Das Szenario hat einen Abschnitt payload: seine Nutzlast wird hier gelernt, im Nutzlast-Schritt; die Sitzung des Arms wird damit nicht geöffnet.</translation>
     </message>
 </context>
 <context>
@@ -6719,6 +6829,395 @@ Verhältnis %</translation>
         <location line="+2"/>
         <source>Truth</source>
         <translation>Wahrer Wert</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::PayloadDialog</name>
+    <message>
+        <location filename="../ui/PayloadDialog.cpp" line="+63"/>
+        <source>&amp;Run trials</source>
+        <translation>Versuche &amp;ausführen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Stop</source>
+        <translation>&amp;Stopp</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Accept</source>
+        <translation>&amp;Übernehmen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export &amp;parameter file…</source>
+        <translation>&amp;Parameterdatei exportieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export &amp;URDF…</source>
+        <translation>&amp;URDF exportieren…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Learn a payload (simulated robot)</source>
+        <translation>Nutzlast lernen (simulierter Roboter)</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>Payload and prior</source>
+        <translation>Nutzlast und Vorwissen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>What the path lets the trials see</source>
+        <translation>Was die Bahn die Versuche erfassen lässt</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Trials</source>
+        <translation>Versuche</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Payload estimate</source>
+        <translation>Schätzung der Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>The trials cannot be planned: %1</source>
+        <translation>Die Versuche lassen sich nicht planen: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Trial %1 of %2 running: baseline, without the payload…</source>
+        <translation>Versuch %1 von %2 läuft: Basisversuch, ohne die Nutzlast…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Trial %1 of %2 running with the payload…</source>
+        <translation>Versuch %1 von %2 läuft mit der Nutzlast…</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Payload learned: check the estimate, then accept it to export.</source>
+        <translation>Nutzlast gelernt: die Schätzung prüfen, dann zum Exportieren übernehmen.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Payload not learned: %1</source>
+        <translation>Nutzlast nicht gelernt: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Stopped; nothing of this run is kept or written.</source>
+        <translation>Gestoppt; von diesem Lauf wird nichts behalten oder geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Run the trials to learn the payload.</source>
+        <translation>Die Versuche ausführen, um die Nutzlast zu lernen.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Planning the first trial…</source>
+        <translation>Der erste Versuch wird geplant…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Correct the payload first: %1</source>
+        <translation>Zuerst die Nutzlast korrigieren: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot run: %1</source>
+        <translation>Ausführen nicht möglich: %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Stopping the running trial…</source>
+        <translation>Der laufende Versuch wird gestoppt…</translation>
+    </message>
+    <message>
+        <location filename="../ui/PayloadDialogExport.cpp" line="+22"/>
+        <source>Payload accepted: export the parameter file or the URDF. It is not applied to a robot (the simulated robot carries it already).</source>
+        <translation>Nutzlast übernommen: die Parameterdatei oder das URDF exportieren. Sie wird auf keinen Roboter angewendet (der simulierte Roboter trägt sie bereits).</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Export parameter file</source>
+        <translation>Parameterdatei exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter files (*.json)</source>
+        <translation>Parameterdateien (*.json)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export URDF with the payload</source>
+        <translation>URDF mit der Nutzlast exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF (*.urdf)</source>
+        <translation>URDF (*.urdf)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>learnid %1, %2</source>
+        <translation>learnid %1, %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Written: %1</source>
+        <translation>Geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not written: %1</source>
+        <translation>Nicht geschrieben: %1</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::PayloadEstimateTableModel</name>
+    <message>
+        <location filename="../ui/PayloadEstimateTableModel.cpp" line="+86"/>
+        <source>data (the trials)</source>
+        <translation>Daten (die Versuche)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>prior (not identified)</source>
+        <translation>Vorwissen (nicht identifiziert)</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Estimate</source>
+        <translation>Schätzung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Std. error</source>
+        <translation>Std.-Fehler</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Prior</source>
+        <translation>Vorwissen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>From</source>
+        <translation>Aus</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::PayloadForm</name>
+    <message>
+        <location filename="../ui/PayloadForm.cpp" line="+42"/>
+        <location line="+91"/>
+        <source>Scenario key %1</source>
+        <translation>Szenario-Schlüssel %1</translation>
+    </message>
+    <message>
+        <location line="-85"/>
+        <source>Mounted on link</source>
+        <translation>Montiert an Glied</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Mass (prior)</source>
+        <translation>Masse (Vorwissen)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the technician&apos;s estimate</source>
+        <translation>die Schätzung des Technikers</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Centre of mass (prior) x, y, z</source>
+        <translation>Schwerpunkt (Vorwissen) x, y, z</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Inertia about it (prior) Ixx, Ixy, Iyy, Ixz, Iyz, Izz</source>
+        <translation>Trägheit um ihn (Vorwissen) Ixx, Ixy, Iyy, Ixz, Iyz, Izz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>empty: a solid sphere</source>
+        <translation>leer: eine Vollkugel</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Bound: sphere around the flange, radius</source>
+        <translation>Schranke: Kugel um den Flansch, Radius</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>or a box x0, y0, z0, x1, y1, z1</source>
+        <translation>oder ein Quader x0, y0, z0, x1, y1, z1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>empty: the sphere</source>
+        <translation>leer: die Kugel</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Baseline trials without the payload</source>
+        <translation>Basisversuche ohne die Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Payload trials</source>
+        <translation>Versuche mit der Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>the tip (%1)</source>
+        <translation>die Spitze (%1)</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <location line="+3"/>
+        <source>enter one number</source>
+        <translation>eine Zahl eingeben</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>enter %1 numbers, got %2</source>
+        <translation>%1 Zahlen eingeben, erhalten: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>enter %1 numbers</source>
+        <translation>%1 Zahlen eingeben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>enter a whole number</source>
+        <translation>eine ganze Zahl eingeben</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::PayloadTrialTableModel</name>
+    <message>
+        <location filename="../ui/PayloadTrialTableModel.cpp" line="+68"/>
+        <source>kept for the payload trials</source>
+        <translation>behalten, wird abgezogen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>all</source>
+        <translation>alle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none (the prior)</source>
+        <translation>keine (das Vorwissen)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>all but %1</source>
+        <translation>alle außer %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>baseline</source>
+        <translation>Basis</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>payload</source>
+        <translation>Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>A baseline trial runs the same timed path without the payload</source>
+        <translation>Ein Basisversuch fährt dieselbe zeitlich geplante Bahn ohne die Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The worst joint&apos;s maximum tracking error</source>
+        <translation>Der maximale Folgefehler des schlechtesten Gelenks</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The worst joint&apos;s RMS tracking error</source>
+        <translation>Der RMS-Folgefehler des schlechtesten Gelenks</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The payload fitted to the trials so far</source>
+        <translation>Die an die bisherigen Versuche angepasste Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CPU time of the payload&apos;s update</source>
+        <translation>CPU-Zeit der Aktualisierung der Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The payload&apos;s values the trials so far identified; the others keep the prior</source>
+        <translation>Die Werte der Nutzlast, die die bisherigen Versuche identifiziert haben; die übrigen behalten das Vorwissen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Trial</source>
+        <translation>Versuch</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Max [deg]</source>
+        <translation>Max [°]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS [deg]</source>
+        <translation>RMS [°]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mass [kg]</source>
+        <translation>Masse [kg]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CoM [mm]</source>
+        <translation>Schwerpunkt [mm]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Update [ms]</source>
+        <translation>Rechenzeit [ms]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identified</source>
+        <translation>Identifiziert</translation>
     </message>
 </context>
 <context>
@@ -7770,11 +8269,11 @@ Verhältnis %</translation>
     <name>learnid::SessionWorker</name>
     <message>
         <location filename="../core/service/SessionWorker.cpp" line="+46"/>
-        <source>payload: the window does not learn a payload yet; run this scenario with learnid-cli run --scenario FILE</source>
-        <translation>payload: das Fenster lernt noch keine Nutzlast; dieses Szenario mit learnid-cli run --scenario DATEI ausführen</translation>
+        <source>payload: the arm&apos;s session does not learn a payload; learn it in the payload step (Robot &gt; Learn a payload) or with learnid-cli run --scenario FILE</source>
+        <translation>payload: die Sitzung des Arms lernt keine Nutzlast; sie im Nutzlast-Schritt lernen (Roboter &gt; Nutzlast lernen) oder mit learnid-cli run --scenario DATEI</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>unbekanntes Robotermodell „%1“</translation>
     </message>

@@ -80,6 +80,28 @@
     </message>
 </context>
 <context>
+    <name>PayloadRunExport</name>
+    <message numerus="yes">
+        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
+        <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
+        <translation>
+            <numerusform>%1 with a payload on %2 learned in %n trial with the arm&apos;s model held fixed</numerusform>
+            <numerusform>%1 with a payload on %2 learned in %n trials with the arm&apos;s model held fixed</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>PayloadText</name>
+    <message numerus="yes">
+        <location filename="../ui/PayloadText.cpp" line="+47"/>
+        <source>%n payload trial(s), no baseline trial.</source>
+        <translation>
+            <numerusform>%n payload trial, no baseline trial.</numerusform>
+            <numerusform>%n payload trials, no baseline trial.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>PlausibleEstimate</name>
     <message numerus="yes">
         <location filename="../core/model/PlausibleEstimate.cpp" line="+190"/>

@@ -2452,6 +2452,34 @@
     </message>
 </context>
 <context>
+    <name>PayloadRun</name>
+    <message>
+        <location filename="../core/service/PayloadRun.cpp" line="+24"/>
+        <source>payload: the scenario has no payload section</source>
+        <translation>payload：场景没有 payload 部分</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>robot.model: unknown robot model &quot;%1&quot;</source>
+        <translation>robot.model：未知的机器人模型“%1”</translation>
+    </message>
+    <message>
+        <location line="+66"/>
+        <source>no trial was learned from: the payload is not estimated</source>
+        <translation>没有从任何试验中学习：未估计负载</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadRunExport</name>
+    <message numerus="yes">
+        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
+        <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
+        <translation>
+            <numerusform>%1，负载位于 %2，在手臂模型保持不变的情况下经 %n 次试验学习</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>PayloadSession</name>
     <message>
         <location filename="../core/session/PayloadSession.cpp" line="+24"/>
@@ -2492,6 +2520,71 @@
         <location line="+6"/>
         <source>trial %1 not learned from: %2</source>
         <translation>未从试验 %1 学习：%2</translation>
+    </message>
+</context>
+<context>
+    <name>PayloadText</name>
+    <message>
+        <location filename="../ui/PayloadText.cpp" line="+26"/>
+        <source>seen</source>
+        <translation>可见</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not seen: kept at the prior</source>
+        <translation>不可见：保持先验值</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1; the payload on &lt;b&gt;%2&lt;/b&gt;, the arm&apos;s model held fixed.</source>
+        <translation>%1；负载位于 &lt;b&gt;%2&lt;/b&gt;，手臂模型保持不变。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The simulation carries %1 kg at %2 mm.</source>
+        <translation>仿真携带 %1 kg，位于 %2 mm。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 baseline trial(s) of the same timed path without the payload, then %2 payload trial(s).</source>
+        <translation>先在同一定时路径上不带负载进行 %1 次基线试验，然后进行 %2 次负载试验。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n payload trial(s), no baseline trial.</source>
+        <translation>
+            <numerusform>%n 次负载试验，无基线试验。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The path determines &lt;b&gt;%1 of the payload&apos;s 10 parameters&lt;/b&gt;: mass %2, centre of mass %3, inertia %4.</source>
+        <translation>该路径确定&lt;b&gt;负载 10 个参数中的 %1 个&lt;/b&gt;：质量%2，质心%3，惯量%4。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>The first trial passes its check.</source>
+        <translation>第一次试验通过检查。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The first trial would be refused: %1</source>
+        <translation>第一次试验将被拒绝：%1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The payload after trial %1: %2 of 10 directions determined (condition %3); bound: %4.</source>
+        <translation>试验 %1 后的负载：10 个方向中确定了 %2 个（条件数 %3）；边界：%4。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Mass &lt;b&gt;%1 kg&lt;/b&gt; (standard error %2 kg), centre of mass &lt;b&gt;%3 mm&lt;/b&gt;.</source>
+        <translation>质量 &lt;b&gt;%1 kg&lt;/b&gt;（标准误差 %2 kg），质心 &lt;b&gt;%3 mm&lt;/b&gt;。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Its centre of mass lies outside the bound.</source>
+        <translation>其质心位于边界之外。</translation>
     </message>
 </context>
 <context>
@@ -6187,6 +6280,16 @@ ratio %</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>Learn a &amp;payload…</source>
+        <translation>学习负载(&amp;P)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Learn the payload the robot carries with the arm&apos;s model held fixed (simulated robot)</source>
+        <translation>在手臂模型保持不变的情况下学习机器人携带的负载（仿真机器人）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Open scenario...</source>
         <translation>打开场景(&amp;O)...</translation>
     </message>
@@ -6434,7 +6537,7 @@ ratio %</source>
 <context>
     <name>learnid::MainWindow</name>
     <message>
-        <location filename="../ui/MainWindow.cpp" line="+79"/>
+        <location filename="../ui/MainWindow.cpp" line="+80"/>
         <source>learnid – commissioning</source>
         <translation>learnid – 调试</translation>
     </message>
@@ -6479,12 +6582,12 @@ ratio %</source>
         <translation>参数收敛</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+53"/>
         <source>The language changes when learnid is started again.</source>
         <translation>语言将在下次启动 learnid 时切换。</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+37"/>
         <source>Dis&amp;connect robot</source>
         <translation>断开机器人(&amp;C)</translation>
     </message>
@@ -6552,6 +6655,11 @@ ratio %</source>
         <location line="+1"/>
         <source>&lt;h3&gt;learnid %1&lt;/h3&gt;&lt;p&gt;Learning identification of robot dynamics: a commissioning tool.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;learnid %1&lt;/h3&gt;&lt;p&gt;机器人动力学的学习辨识：调试工具。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The scenario has a payload section: its payload is learned here, in the payload step; the arm&apos;s session is not opened with it.</source>
+        <translation>该场景含有 payload 部分：其负载在此负载步骤中学习；不会用它打开手臂的会话。</translation>
     </message>
 </context>
 <context>
@@ -6699,6 +6807,395 @@ ratio %</source>
         <location line="+2"/>
         <source>Truth</source>
         <translation>真值</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::PayloadDialog</name>
+    <message>
+        <location filename="../ui/PayloadDialog.cpp" line="+63"/>
+        <source>&amp;Run trials</source>
+        <translation>运行试验(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Stop</source>
+        <translation>停止(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Accept</source>
+        <translation>接受(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export &amp;parameter file…</source>
+        <translation>导出参数文件(&amp;P)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export &amp;URDF…</source>
+        <translation>导出 URDF(&amp;U)…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Learn a payload (simulated robot)</source>
+        <translation>学习负载（仿真机器人）</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>Payload and prior</source>
+        <translation>负载与先验</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>What the path lets the trials see</source>
+        <translation>该路径让试验看到什么</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Trials</source>
+        <translation>试验</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Payload estimate</source>
+        <translation>负载估计</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>The trials cannot be planned: %1</source>
+        <translation>无法规划试验：%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Trial %1 of %2 running: baseline, without the payload…</source>
+        <translation>正在运行第 %1/%2 次试验：基线试验，不带负载…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Trial %1 of %2 running with the payload…</source>
+        <translation>正在运行第 %1/%2 次试验，带负载…</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Payload learned: check the estimate, then accept it to export.</source>
+        <translation>负载已学习：请检查估计值，然后接受以导出。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Payload not learned: %1</source>
+        <translation>负载未学习：%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Stopped; nothing of this run is kept or written.</source>
+        <translation>已停止；本次运行的任何结果都不会保留或写入。</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Run the trials to learn the payload.</source>
+        <translation>运行试验以学习负载。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Planning the first trial…</source>
+        <translation>正在规划第一次试验…</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Correct the payload first: %1</source>
+        <translation>请先更正负载：%1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot run: %1</source>
+        <translation>无法运行：%1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Stopping the running trial…</source>
+        <translation>正在停止当前试验…</translation>
+    </message>
+    <message>
+        <location filename="../ui/PayloadDialogExport.cpp" line="+22"/>
+        <source>Payload accepted: export the parameter file or the URDF. It is not applied to a robot (the simulated robot carries it already).</source>
+        <translation>负载已接受：请导出参数文件或 URDF。它不会应用到机器人上（仿真机器人已携带该负载）。</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Export parameter file</source>
+        <translation>导出参数文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter files (*.json)</source>
+        <translation>参数文件 (*.json)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export URDF with the payload</source>
+        <translation>导出带负载的 URDF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URDF (*.urdf)</source>
+        <translation>URDF (*.urdf)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>learnid %1, %2</source>
+        <translation>learnid %1，%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Written: %1</source>
+        <translation>已写入：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not written: %1</source>
+        <translation>未写入：%1</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::PayloadEstimateTableModel</name>
+    <message>
+        <location filename="../ui/PayloadEstimateTableModel.cpp" line="+86"/>
+        <source>data (the trials)</source>
+        <translation>数据（试验）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>prior (not identified)</source>
+        <translation>先验（未辨识）</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Value</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Estimate</source>
+        <translation>估计值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Std. error</source>
+        <translation>标准误差</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Prior</source>
+        <translation>先验</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>From</source>
+        <translation>来源</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::PayloadForm</name>
+    <message>
+        <location filename="../ui/PayloadForm.cpp" line="+42"/>
+        <location line="+91"/>
+        <source>Scenario key %1</source>
+        <translation>场景键 %1</translation>
+    </message>
+    <message>
+        <location line="-85"/>
+        <source>Mounted on link</source>
+        <translation>安装在连杆</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Mass (prior)</source>
+        <translation>质量（先验）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the technician&apos;s estimate</source>
+        <translation>技术人员的估计</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Centre of mass (prior) x, y, z</source>
+        <translation>质心（先验）x, y, z</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Inertia about it (prior) Ixx, Ixy, Iyy, Ixz, Iyz, Izz</source>
+        <translation>绕质心的惯量（先验）Ixx, Ixy, Iyy, Ixz, Iyz, Izz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>empty: a solid sphere</source>
+        <translation>留空：实心球</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Bound: sphere around the flange, radius</source>
+        <translation>边界：以法兰为中心的球，半径</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>or a box x0, y0, z0, x1, y1, z1</source>
+        <translation>或长方体 x0, y0, z0, x1, y1, z1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>empty: the sphere</source>
+        <translation>留空：使用球</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Baseline trials without the payload</source>
+        <translation>不带负载的基线试验</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Payload trials</source>
+        <translation>负载试验</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>the tip (%1)</source>
+        <translation>末端（%1）</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <location line="+3"/>
+        <source>enter one number</source>
+        <translation>请输入一个数</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>enter %1 numbers, got %2</source>
+        <translation>请输入 %1 个数，实际为 %2 个</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>enter %1 numbers</source>
+        <translation>请输入 %1 个数</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>enter a whole number</source>
+        <translation>请输入整数</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::PayloadTrialTableModel</name>
+    <message>
+        <location filename="../ui/PayloadTrialTableModel.cpp" line="+68"/>
+        <source>kept for the payload trials</source>
+        <translation>保留用于负载试验</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>all</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none (the prior)</source>
+        <translation>无（先验）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>all but %1</source>
+        <translation>除 %1 外全部</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>baseline</source>
+        <translation>基线</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>payload</source>
+        <translation>负载</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>A baseline trial runs the same timed path without the payload</source>
+        <translation>基线试验在不带负载的情况下运行同一定时路径</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The worst joint&apos;s maximum tracking error</source>
+        <translation>最差关节的最大跟踪误差</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The worst joint&apos;s RMS tracking error</source>
+        <translation>最差关节的 RMS 跟踪误差</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The payload fitted to the trials so far</source>
+        <translation>根据目前试验拟合的负载</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CPU time of the payload&apos;s update</source>
+        <translation>负载更新的 CPU 时间</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The payload&apos;s values the trials so far identified; the others keep the prior</source>
+        <translation>目前试验已辨识的负载量；其余保持先验值</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Trial</source>
+        <translation>试验</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kind</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Max [deg]</source>
+        <translation>最大 [°]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS [deg]</source>
+        <translation>RMS [°]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mass [kg]</source>
+        <translation>质量 [kg]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CoM [mm]</source>
+        <translation>质心 [mm]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Update [ms]</source>
+        <translation>更新 [ms]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identified</source>
+        <translation>已辨识</translation>
     </message>
 </context>
 <context>
@@ -7746,11 +8243,11 @@ ratio %</source>
     <name>learnid::SessionWorker</name>
     <message>
         <location filename="../core/service/SessionWorker.cpp" line="+46"/>
-        <source>payload: the window does not learn a payload yet; run this scenario with learnid-cli run --scenario FILE</source>
-        <translation>payload：窗口尚不能学习负载；请用 learnid-cli run --scenario 文件 运行此场景</translation>
+        <source>payload: the arm&apos;s session does not learn a payload; learn it in the payload step (Robot &gt; Learn a payload) or with learnid-cli run --scenario FILE</source>
+        <translation>payload：手臂的会话不学习负载；请在负载步骤中学习（机器人 &gt; 学习负载），或使用 learnid-cli run --scenario FILE</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>unknown robot model &quot;%1&quot;</source>
         <translation>未知机器人模型“%1”</translation>
     </message>

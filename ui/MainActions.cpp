@@ -42,6 +42,9 @@ MainActions::MainActions(QObject *parent)
     identifyFromLogs =
         make(this, QString(), tr("Identify from recorded &data\u2026"), QKeySequence(),
              tr("Identify a robot's parameters from logs its controller recorded"));
+    learnPayload = make(this, QString(), tr("Learn a &payload\u2026"), QKeySequence(),
+                        tr("Learn the payload the robot carries with the arm's model held fixed "
+                           "(simulated robot)"));
     openScenario = make(this, QStringLiteral("open"), tr("&Open scenario..."), QKeySequence::Open,
                         tr("Load a scenario file into the form"));
     saveScenario = make(this, QStringLiteral("save"), tr("&Save scenario..."), QKeySequence::Save,
@@ -111,7 +114,7 @@ void MainActions::populate(QMenuBar *menuBar, QToolBar *toolBar)
     QMenu *robot = menuBar->addMenu(tr("&Robot"));
     robot->addActions({connectRobot, newSession});
     robot->addSeparator();
-    robot->addAction(identifyFromLogs);
+    robot->addActions({identifyFromLogs, learnPayload});
     QMenu *trials = menuBar->addMenu(tr("&Trials"));
     trials->addActions({runTrial, runAll, stop});
     QMenu *params = menuBar->addMenu(tr("&Parameters"));

@@ -25,6 +25,7 @@ public:
     QAction *connectRobot;
     QAction *newSession;
     QAction *identifyFromLogs;
+    QAction *learnPayload;
     QAction *openScenario;
     QAction *saveScenario;
     QAction *exportParameters;

@@ -10,6 +10,7 @@
 #include "ui/MainActions.h"
 #include "ui/MessageBar.h"
 #include "ui/ParameterTableModel.h"
+#include "ui/PayloadDialog.h"
 #include "ui/PreTrialCheckView.h"
 #include "ui/RecordedDataDialog.h"
 #include "ui/RobotPanel.h"
@@ -150,6 +151,8 @@ void MainWindow::connectViews()
         m_recordedData->show();
         m_recordedData->raise();
     });
+    connect(a->learnPayload, &QAction::triggered, this,
+            [this] { openPayloadStep(m_form->scenario().value_or(m_settings.scenario())); });
     connect(a->runTrial, &QAction::triggered, this, [this] {
         m_run->startSeries(1);
         m_controller->runTrial();
@@ -183,6 +186,10 @@ void MainWindow::connectViews()
     connect(m_plot, &TrackingErrorPlot::autoScaleChanged, this,
             [this](bool on) { m_settings.setPlotAutoScale(on); });
     connect(m_files, &FileController::scenarioLoaded, m_form, &ScenarioForm::setScenario);
+    connect(m_files, &FileController::scenarioLoaded, this, [this](const Scenario &s) {
+        if (s.payload.enabled)
+            openPayloadStep(s);
+    });
     connect(m_files, &FileController::finished, this, [this](const QString &text, bool ok) {
         m_message->showMessage(text,
                                ok ? MessageBar::Severity::Success : MessageBar::Severity::Error);
@@ -195,8 +202,9 @@ void MainWindow::connectViews()
         m_settings.setScenario(*m_form->scenario());
         // Before the first trial the new settings replace the session, so the check is current.
         const SessionState state = m_controller->state();
+        // A payload is learned in the payload step: the arm's session refuses its scenario.
         if ((state == SessionState::Idle || state == SessionState::Connecting) &&
-            m_controller->history().isEmpty())
+            m_controller->history().isEmpty() && !m_form->scenario()->payload.enabled)
             m_controller->open(*m_form->scenario());
         updateActions();
     });
@@ -283,6 +291,20 @@ void MainWindow::showAbout()
                        tr("<h3>learnid %1</h3><p>Learning identification of robot dynamics: "
                           "a commissioning tool.</p><p>Built with Qt %2.</p>")
                            .arg(QStringLiteral(LEARNID_VERSION), QString::fromLatin1(qVersion())));
+}
+
+void MainWindow::openPayloadStep(const Scenario &scenario)
+{
+    if (!m_payload)
+        m_payload = new PayloadDialog(&m_settings, this);
+    m_payload->setScenario(scenario);
+    m_payload->show();
+    m_payload->raise();
+    if (scenario.payload.enabled)
+        m_payload->messageBar()->showMessage(
+            tr("The scenario has a payload section: its payload is learned here, in the payload "
+               "step; the arm's session is not opened with it."),
+            MessageBar::Severity::Info);
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

@@ -19,6 +19,7 @@ class MainActions;
 class MessageBar;
 class ParameterTableModel;
 class PreTrialCheckView;
+class PayloadDialog;
 class RecordedDataDialog;
 class RobotPanel;
 class RunPanel;
@@ -57,6 +58,8 @@ public:
     MessageBar *messageBar() const { return m_message; }
     /// "Identify from recorded data", made when first opened (null before).
     RecordedDataDialog *recordedDataDialog() const { return m_recordedData; }
+    /// The payload step (null until it is first opened).
+    PayloadDialog *payloadDialog() const { return m_payload; }
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -68,6 +71,9 @@ private:
     void connectOrDisconnect();
     void requestApply();
     void showAbout();
+    /// Opens the payload step with the scenario (Robot > Learn a payload, or a scenario file with
+    /// a payload section: the arm's session does not learn one).
+    void openPayloadStep(const Scenario &scenario);
 
     UiSettings m_settings;
     SessionController *m_controller;
@@ -86,6 +92,7 @@ private:
     SessionPresenter *m_presenter;
     QLabel *m_statusRobot;
     RecordedDataDialog *m_recordedData = nullptr;
+    PayloadDialog *m_payload = nullptr;
     ApplyConfirmation m_confirm;
 };
 

@@ -6,6 +6,7 @@
 #include "ui/MainActions.h"
 #include "ui/MainWindow.h"
 #include "ui/MessageBar.h"
+#include "ui/PayloadDialog.h"
 #include "ui/RecordedDataDialog.h"
 #include "ui/RobotChooser.h"
 #include "ui/RobotPanel.h"
@@ -26,9 +27,9 @@ namespace learnid {
 
 namespace {
 
-const QStringList kViewNames = {QStringLiteral("main"), QStringLiteral("apply-dialog"),
+const QStringList kViewNames = {QStringLiteral("main"),          QStringLiteral("apply-dialog"),
                                 QStringLiteral("refused-check"), QStringLiteral("recorded-data"),
-                                QStringLiteral("seven-axis")};
+                                QStringLiteral("seven-axis"),    QStringLiteral("payload")};
 
 } // namespace
 
@@ -54,6 +55,8 @@ void ScreenshotRun::start()
 {
     if (m_view == View::RecordedData)
         return startRecordedData();
+    if (m_view == View::Payload)
+        return startPayload();
     SessionController *c = m_window->controller();
     m_window->setApplyConfirmation(
         [this](const ApplyPreview &preview) { return confirmByScreenshot(preview); });
@@ -138,6 +141,32 @@ void ScreenshotRun::startRecordedData()
     });
     QTimer::singleShot(180000, this, [this] { finish(QStringLiteral("timed out")); });
     dialog->identify();
+}
+
+void ScreenshotRun::startPayload()
+{
+    PayloadDialog *dialog = m_window->payloadDialog(); // opened by --scenario with a payload
+    if (!dialog) {
+        QTimer::singleShot(0, this, [this] {
+            finish(QStringLiteral("give --scenario FILE with a payload section"));
+        });
+        return;
+    }
+    dialog->resize(1280, 860);
+    connect(dialog, &PayloadDialog::runFinished, this, [this, dialog](bool ok) {
+        if (!ok)
+            return finish(dialog->messageBar()->text());
+        QTimer::singleShot(300, this, [this, dialog] {
+            const bool saved = dialog->grab().save(m_path, "PNG");
+            finish(saved ? QString() : QStringLiteral("cannot write %1").arg(m_path));
+        });
+    });
+    QTimer::singleShot(180000, this, [this] { finish(QStringLiteral("timed out")); });
+    // After the preview of what the path sees is shown.
+    connect(dialog, &PayloadDialog::previewShown, this, [dialog](bool) {
+        if (!dialog->isRunning() && !dialog->result())
+            dialog->run();
+    });
 }
 
 void ScreenshotRun::grabWindowLater()

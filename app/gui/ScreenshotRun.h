@@ -18,13 +18,14 @@ struct ApplyPreview;
 /// - `refused-check`: the window after a session with the paper's lambda = 40, whose pre-trial
 ///   check refuses the second trial;
 /// - `recorded-data`: the "Identify from recorded data" dialog after identifying the KUKA LWR4+
-///   from its runs 1 + 2, validated on run 3 (the recorded data in the folder LEARNID_DATA).
+///   from its runs 1 + 2, validated on run 3 (the recorded data in the folder LEARNID_DATA);
+/// - `payload`: the payload step after its trials, for `--scenario FILE` with a payload section.
 class ScreenshotRun : public QObject
 {
     Q_OBJECT
 
 public:
-    enum class View { Main, ApplyDialog, RefusedCheck, RecordedData, SevenAxis };
+    enum class View { Main, ApplyDialog, RefusedCheck, RecordedData, SevenAxis, Payload };
 
     ScreenshotRun(MainWindow *window, QString path, View view = View::Main);
     void start();
@@ -35,6 +36,7 @@ public:
 
 private:
     void startRecordedData();
+    void startPayload();
     void grabWindowLater();
     bool confirmByScreenshot(const ApplyPreview &preview);
     void finish(const QString &error);

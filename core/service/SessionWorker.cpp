@@ -39,12 +39,13 @@ void SessionWorker::open(const Scenario &requested)
     close();
     Scenario scenario = requested;
     try {
-        // The window runs the arm's session; a payload is learned by `learnid-cli run` for now
-        // (docs/payload.md). Refused rather than ignored, so that nobody takes the arm's
-        // estimate for one learned with the payload.
+        // The arm's session does not learn a payload: the payload step does (PayloadRunJob), or
+        // `learnid-cli run`. Refused rather than ignored, so that nobody takes the arm's estimate
+        // for one learned with the payload.
         if (scenario.payload.enabled)
-            throw Error(tr("payload: the window does not learn a payload yet; run this scenario "
-                           "with learnid-cli run --scenario FILE"));
+            throw Error(tr("payload: the arm's session does not learn a payload; learn it in the "
+                           "payload step (Robot > Learn a payload) or with learnid-cli run "
+                           "--scenario FILE"));
         const auto model = makeRobotModel(scenario.model, scenario.urdf);
         if (!model)
             throw Error(tr("unknown robot model \"%1\"").arg(scenario.model));

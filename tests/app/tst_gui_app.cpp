@@ -88,6 +88,28 @@ private slots:
         QVERIFY2(without.err.contains(QStringLiteral("set LEARNID_DATA")), qPrintable(without.err));
     }
 
+    // docs/images/payload.png: the payload step after its trials on the simulated Panda.
+    void screenshot_payload_rendersTheLearnedPayload()
+    {
+        const QString scenario = QFINDTESTDATA("../fuzz/corpus/scenario/valid-payload.json");
+        QVERIFY(!scenario.isEmpty());
+        QTemporaryDir dir;
+        const QString png = dir.filePath(QStringLiteral("payload.png"));
+        const QStringList args{QStringLiteral("--screenshot"), png,
+                               QStringLiteral("--screenshot-view"), QStringLiteral("payload")};
+        const Run run = learnid(args + QStringList{QStringLiteral("--scenario"), scenario});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        const QImage image(png);
+        QVERIFY2(image.width() >= 1000 && image.height() >= 600,
+                 qPrintable(QStringLiteral("%1 x %2").arg(image.width()).arg(image.height())));
+        QVERIFY2(distinctColours(image) > 40, qPrintable(QString::number(distinctColours(image))));
+
+        const Run without = learnid(args); // the window's own scenario has no payload
+        QCOMPARE(without.exitCode, 1);
+        QVERIFY2(without.err.contains(QStringLiteral("with a payload section")),
+                 qPrintable(without.err));
+    }
+
     void badOptions_endWithAClearMessage_data()
     {
         QTest::addColumn<QStringList>("arguments");

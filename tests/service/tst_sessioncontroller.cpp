@@ -281,10 +281,11 @@ private slots:
         QCOMPARE(c.storedParameters().size(), 0);
     }
 
-    void payloadScenario_isRefusedNamingTheCli()
+    void payloadScenario_isRefusedNamingThePayloadStepAndTheCli()
     {
-        // The window does not learn a payload yet: a scenario with a payload section is refused,
-        // not run as the arm's session with its payload section ignored.
+        // The arm's session does not learn a payload (the payload step does, PayloadRunJob): a
+        // scenario with a payload section is refused, not run as the arm's session with its
+        // payload section ignored.
         SessionController c;
         Scenario s;
         s.payload.enabled = true;
@@ -293,6 +294,7 @@ private slots:
         QVERIFY(failed.wait(20000));
         const QString message = failed.constFirst().at(0).toString();
         QVERIFY2(message.startsWith(QStringLiteral("payload:")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("payload step")), qPrintable(message));
         QVERIFY2(message.contains(QStringLiteral("learnid-cli run")), qPrintable(message));
         QVERIFY(!c.isOpen());
     }

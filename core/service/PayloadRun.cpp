@@ -1,0 +1,103 @@
+#include "service/PayloadRun.h"
+
+#include "io/ScenarioFile.h"
+#include "model/Error.h"
+#include "model/ModelFactory.h"
+#include "session/ScenarioRobot.h"
+
+#include <QCoreApplication>
+
+namespace learnid {
+
+namespace {
+
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(PayloadRun)
+};
+
+} // namespace
+
+SimulatedPayloadSession makeSimulatedPayloadSession(const Scenario &given)
+{
+    if (!given.payload.enabled)
+        throw Error(Text::tr("payload: the scenario has no payload section"));
+    validateScenario(given); // every key, the payload's on its robot's model, named
+    SimulatedPayloadSession run;
+    const auto model = makeRobotModel(given.model, given.urdf);
+    if (!model)
+        throw Error(Text::tr("robot.model: unknown robot model \"%1\"").arg(given.model));
+    run.model = std::dynamic_pointer_cast<const ChainModel>(model);
+    const Scenario scenario = withRobotDefaults(given, *model);
+    // The simulated robot without its payload runs the baseline trials (learnid-cli run alike).
+    Scenario bare = scenario;
+    bare.simulation.payload = SimulatedPayload();
+    bare.payload.enabled = false;
+    run.session = std::make_unique<PayloadSession>(
+        scenario, model, makeSimulatedRobot(scenario, model), makeSimulatedRobot(bare, model));
+    return run;
+}
+
+PayloadPreview payloadPreview(PayloadSession &session)
+{
+    PayloadPreview p;
+    p.robotDescription = session.robot().description();
+    p.link = session.payloadModel().link();
+    p.bound = session.prior().bound.describe();
+    p.baselineTrials = session.scenario().payload.baselineTrials;
+    p.trials = session.scenario().iterations;
+    p.observability = session.observability();
+    p.advice = p.observability.advice(p.link);
+    const PreTrialCheck check = session.checkNextTrial();
+    if (!check.passed())
+        p.checkReason = check.reason();
+    return p;
+}
+
+PayloadTrialRow payloadTrialRow(const PayloadTrial &t)
+{
+    PayloadTrialRow row;
+    row.index = t.index;
+    row.baseline = t.baseline;
+    row.usable = t.usable();
+    row.learned = t.learned();
+    if (t.maxTrackingErrorDeg.size() > 0) {
+        row.maxTrackingErrorDeg = t.maxTrackingErrorDeg.maxCoeff();
+        row.rmsTrackingErrorDeg = t.rmsTrackingErrorDeg.maxCoeff();
+    }
+    if (t.fit) {
+        const PayloadEstimate &e = t.fit->estimate;
+        row.mass = e.body.mass;
+        row.com = e.body.com;
+        row.identified = e.bodyIdentified;
+        row.updateMs = 1000.0 * t.updateCpuSeconds;
+    }
+    row.message = t.message;
+    return row;
+}
+
+PayloadRunResult payloadRunResult(const SimulatedPayloadSession &run)
+{
+    const PayloadSession &s = *run.session;
+    PayloadRunResult r;
+    r.scenario = s.scenario();
+    r.model = run.model;
+    r.robotDescription = run.session->robot().description();
+    r.link = s.payloadModel().link();
+    r.prior = s.prior();
+    const PayloadTrial *learned = nullptr;
+    for (const PayloadTrial &t : s.history()) {
+        r.trials.push_back(payloadTrialRow(t));
+        if (t.learned())
+            learned = &t;
+    }
+    if (!learned)
+        throw Error(Text::tr("no trial was learned from: the payload is not estimated"));
+    r.learnedTrial = learned->index;
+    r.fit = *learned->fit;
+    r.maxTrackingErrorDeg = learned->maxTrackingErrorDeg;
+    r.rmsTrackingErrorDeg = learned->rmsTrackingErrorDeg;
+    return r;
+}
+
+} // namespace learnid

@@ -1,0 +1,89 @@
+#pragma once
+
+#include "identify/PayloadFit.h"
+#include "model/ChainModel.h"
+#include "model/PayloadPrior.h"
+#include "session/PayloadSession.h"
+#include "types/Scenario.h"
+
+#include <Eigen/Core>
+#include <QString>
+#include <QStringList>
+#include <array>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace learnid {
+
+// The window's payload step (docs/payload.md, "In the window"): the learning loop with the
+// payload mounted on the simulated robot, as `learnid-cli run` runs a scenario's payload section.
+// Value types only, so that they cross from the job's thread to the window's.
+
+/// A payload session on the simulated robot and the arm's model it holds fixed.
+struct SimulatedPayloadSession
+{
+    std::shared_ptr<const ChainModel> model;
+    std::unique_ptr<PayloadSession> session;
+};
+
+/// The session of scenario `given` (its payload section enabled) as `learnid-cli run` builds it:
+/// withRobotDefaults(), the simulated robot carrying simulation.payload, and the same robot
+/// without it for the baseline trials (payload.baselineTrials). Throws Error naming the key:
+/// no payload section, an unknown robot model, a scenario that does not fit, a refused prior.
+SimulatedPayloadSession makeSimulatedPayloadSession(const Scenario &given);
+
+/// What the path lets the trials see before any motion (PayloadSession::observability()), and
+/// the next trial's check.
+struct PayloadPreview
+{
+    QString robotDescription; ///< the simulated robot in words
+    QString link;             ///< the payload's link (the tip when the scenario names none)
+    QString bound;            ///< PayloadBound::describe()
+    int baselineTrials = 0;
+    int trials = 0; ///< payload trials (scenario iterations)
+    PayloadObservability observability;
+    QStringList advice;  ///< observability.advice(link): what the path does not see and why
+    QString checkReason; ///< why the first trial would be refused; empty: it passes
+};
+
+/// The preview of a session that has run no trial yet (plans its first trial).
+PayloadPreview payloadPreview(PayloadSession &session);
+
+/// One trial of a run as the window's table shows it.
+struct PayloadTrialRow
+{
+    int index = 0;
+    bool baseline = false; ///< a baseline trial without the payload
+    bool usable = false;   ///< learned from, or a baseline kept
+    bool learned = false;
+    double maxTrackingErrorDeg = std::numeric_limits<double>::quiet_NaN(); ///< worst joint
+    double rmsTrackingErrorDeg = std::numeric_limits<double>::quiet_NaN(); ///< worst joint
+    double mass = std::numeric_limits<double>::quiet_NaN(); ///< the fit after it [kg]
+    Eigen::Vector3d com = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+    std::array<bool, 10> identified{}; ///< PayloadEstimate::bodyIdentified
+    double updateMs = 0.0;             ///< CPU time of the payload's update [ms]
+    QString message;                   ///< why it was refused, ended early or not learned from
+};
+
+PayloadTrialRow payloadTrialRow(const PayloadTrial &trial);
+
+/// A run that completed all its trials: the payload after the last one.
+struct PayloadRunResult
+{
+    Scenario scenario; ///< with withRobotDefaults()
+    std::shared_ptr<const ChainModel> model;
+    QString robotDescription;
+    QString link;
+    PayloadPrior prior;
+    std::vector<PayloadTrialRow> trials;
+    int learnedTrial = -1; ///< the trial whose fit is the result
+    PayloadFit fit;
+    Eigen::VectorXd maxTrackingErrorDeg; ///< that trial's, per joint [deg] (n)
+    Eigen::VectorXd rmsTrackingErrorDeg; ///< per joint [deg] (n)
+};
+
+/// The result of a session whose trials all completed; throws Error when none was learned from.
+PayloadRunResult payloadRunResult(const SimulatedPayloadSession &run);
+
+} // namespace learnid

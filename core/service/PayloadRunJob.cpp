@@ -1,0 +1,158 @@
+#include "service/PayloadRunJob.h"
+
+#include "model/Error.h"
+#include "service/ServiceLogging.h"
+
+#include <QMetaObject>
+#include <exception>
+
+namespace learnid {
+
+PayloadRunJob::PayloadRunJob(QObject *parent)
+    : QObject(parent)
+    , m_context(new QObject)
+{
+    m_thread.setObjectName(QStringLiteral("learnid-payload"));
+    m_context->moveToThread(&m_thread);
+    connect(&m_thread, &QThread::finished, m_context, &QObject::deleteLater);
+    m_thread.start();
+}
+
+PayloadRunJob::~PayloadRunJob()
+{
+    cancel();
+    m_thread.quit();
+    m_thread.wait();
+}
+
+bool PayloadRunJob::check(const Scenario &scenario)
+{
+    if (m_running)
+        return false;
+    const int id = ++m_check;
+    QMetaObject::invokeMethod(m_context, [this, scenario, id] { checkInThread(scenario, id); });
+    return true;
+}
+
+void PayloadRunJob::checkInThread(const Scenario &scenario, int id)
+{
+    if (id != m_check.load())
+        return; // a newer check is queued behind this one
+    std::optional<PayloadPreview> preview;
+    QString error;
+    try {
+        SimulatedPayloadSession run = makeSimulatedPayloadSession(scenario);
+        preview = payloadPreview(*run.session);
+    } catch (const Error &e) {
+        error = e.message();
+    } catch (const std::exception &e) {
+        error = QString::fromLocal8Bit(e.what());
+    }
+    QMetaObject::invokeMethod(
+        this,
+        [this, id, preview, error] {
+            if (id != m_check.load())
+                return;
+            if (preview)
+                emit checked(*preview);
+            else
+                emit checkFailed(error);
+        },
+        Qt::QueuedConnection);
+}
+
+bool PayloadRunJob::start(const Scenario &scenario)
+{
+    if (m_running)
+        return false;
+    m_running = true;
+    ++m_check; // a check still queued is about the scenario before this run
+    const int run = ++m_run;
+    m_cancel = std::make_shared<std::atomic<bool>>(false);
+    QMetaObject::invokeMethod(m_context, [this, scenario, run, cancel = m_cancel] {
+        runInThread(scenario, run, cancel);
+    });
+    return true;
+}
+
+void PayloadRunJob::runInThread(const Scenario &scenario, int run,
+                                std::shared_ptr<std::atomic<bool>> cancel)
+{
+    // Value copies only cross the threads: the scenario in, the rows and the result out.
+    const auto post = [this, run](auto emitter) {
+        QMetaObject::invokeMethod(
+            this,
+            [this, run, emitter] {
+                if (run == m_run && m_running)
+                    emitter();
+            },
+            Qt::QueuedConnection);
+    };
+    std::shared_ptr<const PayloadRunResult> result;
+    QString error;
+    try {
+        SimulatedPayloadSession s = makeSimulatedPayloadSession(scenario);
+        // cancel() reaches the session while it lives, however this block is left.
+        struct Registration
+        {
+            PayloadRunJob *job;
+            Registration(PayloadRunJob *j, PayloadSession *session)
+                : job(j)
+            {
+                QMutexLocker lock(&job->m_sessionMutex);
+                job->m_session = session;
+            }
+            ~Registration()
+            {
+                QMutexLocker lock(&job->m_sessionMutex);
+                job->m_session = nullptr;
+            }
+        } registration(this, s.session.get());
+        const int total = s.session->scenario().payload.baselineTrials + scenario.iterations;
+        for (int i = 0; i < total && !cancel->load(); ++i) {
+            const bool baseline = s.session->nextTrialIsBaseline();
+            post([this, i, total, baseline] { emit trialStarted(i, total, baseline); });
+            const PayloadTrial &t = s.session->runTrial();
+            const PayloadTrialRow row = payloadTrialRow(t);
+            post([this, row] { emit trialFinished(row); });
+            if (!t.usable()) {
+                error = t.message;
+                break;
+            }
+        }
+        if (error.isEmpty() && !cancel->load())
+            result = std::make_shared<const PayloadRunResult>(payloadRunResult(s));
+    } catch (const Error &e) {
+        error = e.message();
+    } catch (const std::exception &e) {
+        error = QString::fromLocal8Bit(e.what());
+    }
+    QMetaObject::invokeMethod(
+        this,
+        [this, run, result, error, cancel] {
+            if (run != m_run)
+                return;
+            m_running = false;
+            // A cancel that came after the last trial still wins: the window asked for no result.
+            if (cancel->load())
+                emit cancelled();
+            else if (result)
+                emit succeeded(result);
+            else
+                emit failed(error);
+        },
+        Qt::QueuedConnection);
+}
+
+void PayloadRunJob::cancel()
+{
+    if (!m_running || !m_cancel)
+        return;
+    qCInfo(lcService) << "payload run cancel requested";
+    m_cancel->store(true);
+    QMutexLocker lock(&m_sessionMutex);
+    if (m_session)
+        m_session->requestCancel();
+}
+
+} // namespace learnid

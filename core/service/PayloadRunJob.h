@@ -1,0 +1,66 @@
+#pragma once
+
+#include "service/PayloadRun.h"
+
+#include <QMutex>
+#include <QObject>
+#include <QThread>
+#include <atomic>
+#include <memory>
+
+namespace learnid {
+
+/// Runs the window's payload step (PayloadRun.h) in a thread of its own, so that the window stays
+/// responsive. check() plans the scenario's first trial and reports what its path lets the trials
+/// see (checked() or checkFailed()); start() runs the baseline trials and then the payload trials
+/// on a new simulated robot, reporting trialStarted() and trialFinished() per trial, then one of
+/// succeeded(), failed() or cancelled(). Everything comes back queued, in the thread the job
+/// lives in. One run at a time. cancel() stops the running trial at its next sample
+/// (PayloadSession::requestCancel()); a cancelled or failed run has no result, so nothing of it
+/// can be accepted or exported, and a check superseded by a newer one is dropped.
+class PayloadRunJob : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit PayloadRunJob(QObject *parent = nullptr);
+    /// Cancels a run and waits for it to end (at its next sample).
+    ~PayloadRunJob() override;
+
+    bool isRunning() const { return m_running; }
+
+public slots:
+    /// Plans the scenario's first trial in the job's thread; ignored (false) while a run runs.
+    bool check(const learnid::Scenario &scenario);
+    /// Starts a run of the scenario; ignored (false) while one runs.
+    bool start(const learnid::Scenario &scenario);
+    /// Asks the running trial to stop at its next sample; cancelled() follows.
+    void cancel();
+
+signals:
+    void checked(const learnid::PayloadPreview &preview);
+    /// message: the core's, naming the scenario key.
+    void checkFailed(const QString &message);
+    /// index counts from 0 over all trials (the baseline trials first), of `total`.
+    void trialStarted(int index, int total, bool baseline);
+    void trialFinished(const learnid::PayloadTrialRow &row);
+    void succeeded(std::shared_ptr<const learnid::PayloadRunResult> result);
+    /// A trial was refused or not usable, or the session could not be made: message says why.
+    void failed(const QString &message);
+    void cancelled();
+
+private:
+    void runInThread(const Scenario &scenario, int run, std::shared_ptr<std::atomic<bool>> cancel);
+    void checkInThread(const Scenario &scenario, int check);
+
+    QThread m_thread;
+    QObject *m_context; ///< lives in m_thread: the queued calls run there
+    QMutex m_sessionMutex;
+    PayloadSession *m_session = nullptr; ///< the running run's, for cancel(); under the mutex
+    std::shared_ptr<std::atomic<bool>> m_cancel;
+    int m_run = 0;
+    std::atomic<int> m_check{0}; ///< the newest check; older ones are dropped
+    bool m_running = false;
+};
+
+} // namespace learnid

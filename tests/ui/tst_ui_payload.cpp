@@ -1,0 +1,242 @@
+// The payload step through its real widgets (PayloadDialog, offscreen): the simulated Panda
+// carrying 1.5 kg 5 cm off the flange axis (test::pandaWithPayload()) learned to the issue's
+// targets by clicking, the estimate table against the run's result, the exports read back, Stop
+// leaving no result, refused values named at their fields, and the window routing a scenario file
+// with a payload section to the payload step instead of the arm's session.
+#include "../session/PayloadScenarios.h"
+#include "UiTestSupport.h"
+#include "io/ParameterFile.h"
+#include "io/ScenarioFile.h"
+#include "service/PayloadRun.h"
+#include "service/SessionController.h"
+#include "ui/FileController.h"
+#include "ui/MainActions.h"
+#include "ui/MessageBar.h"
+#include "ui/PayloadDialog.h"
+#include "ui/PayloadEstimateTableModel.h"
+#include "ui/PayloadForm.h"
+#include "ui/PayloadTrialTableModel.h"
+#include "ui/ScenarioForm.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace learnid;
+using Column = PayloadEstimateTableModel::Column;
+
+namespace {
+
+void typeInto(QLineEdit *edit, const QString &text)
+{
+    edit->selectAll();
+    QTest::keyClicks(edit, text);
+    if (text.isEmpty())
+        QTest::keyClick(edit, Qt::Key_Delete);
+}
+
+double cell(const QAbstractItemModel *m, int row, int column)
+{
+    return m->index(row, column).data(Qt::UserRole).toDouble();
+}
+
+} // namespace
+
+class TestUiPayload : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void pandaPayload_learnedByClicking_andExported()
+    {
+        const Scenario s = test::pandaWithPayload();
+        PayloadDialog d(nullptr);
+        QSignalSpy preview(&d, &PayloadDialog::previewShown);
+        d.setScenario(s);
+        d.show();
+        QVERIFY(preview.wait(20000));
+        QCOMPARE(preview.constLast().at(0).toBool(), true);
+        // What the path sees, as PayloadSession::observability() says before any motion.
+        const int rank = makeSimulatedPayloadSession(s).session->observability().rank;
+        QVERIFY2(d.previewText().contains(
+                     QStringLiteral("<b>%1 of the payload's 10 parameters</b>").arg(rank)),
+                 qPrintable(d.previewText()));
+        QVERIFY(d.previewText().contains(QStringLiteral("passes its check")));
+        auto *run = d.findChild<QPushButton *>(QStringLiteral("runPayloadButton"));
+        auto *accept = d.findChild<QPushButton *>(QStringLiteral("acceptPayloadButton"));
+        auto *exportFile =
+            d.findChild<QPushButton *>(QStringLiteral("exportPayloadParametersButton"));
+        auto *exportUrdf = d.findChild<QPushButton *>(QStringLiteral("exportPayloadUrdfButton"));
+        QVERIFY(run->isEnabled() && !accept->isEnabled() && !exportFile->isEnabled());
+
+        QSignalSpy finished(&d, &PayloadDialog::runFinished);
+        QTest::mouseClick(run, Qt::LeftButton);
+        QVERIFY(!run->isEnabled()); // one run at a time
+        QVERIFY(finished.wait(30000));
+        QCOMPARE(finished.constFirst().at(0).toBool(), true);
+        const auto result = d.result();
+        QVERIFY(result);
+        QCOMPARE(d.trialTable()->rowCount(), 3);
+        QCOMPARE(cell(d.trialTable(), 2, PayloadTrialTableModel::Mass),
+                 result->fit.estimate.body.mass);
+
+        // The estimate table: mass within 1 % and centre of mass within 3 mm of the simulated
+        // payload, each with a standard error, from the trials' data.
+        const PayloadEstimateTableModel *t = d.estimateTable();
+        QCOMPARE(t->rowCount(), 10);
+        const double mass = cell(t, 0, Column::Estimate);
+        QVERIFY2(std::abs(mass - 1.5) < 0.015, qPrintable(QString::number(mass)));
+        Eigen::Vector3d comMm;
+        for (int a = 0; a < 3; ++a)
+            comMm[a] = cell(t, 1 + a, Column::Estimate);
+        const double comError = (comMm - 1000.0 * s.simulation.payload.com).norm();
+        QVERIFY2(comError < 3.0, qPrintable(QString::number(comError)));
+        for (int row = 0; row < 4; ++row) {
+            const double error = cell(t, row, Column::StandardError);
+            QVERIFY2(std::isfinite(error) && error > 0.0, qPrintable(QString::number(row)));
+            QVERIFY(
+                t->index(row, Column::Source).data().toString().startsWith(QStringLiteral("data")));
+        }
+        QCOMPARE(cell(t, 0, Column::Prior), 1.2);
+        QCOMPARE(cell(t, 0, Column::StandardError), result->fit.estimate.bodyStandardError[0]);
+
+        // Accept, then both exports, written where the chooser says; they read back.
+        QVERIFY(accept->isEnabled() && !exportFile->isEnabled());
+        QTest::mouseClick(accept, Qt::LeftButton);
+        QVERIFY(exportFile->isEnabled() && exportUrdf->isEnabled());
+        QTemporaryDir dir;
+        d.setPathChooser([&dir](PayloadDialog::ExportKind kind, const QString &) {
+            return dir.filePath(kind == PayloadDialog::ExportKind::ParameterFile
+                                    ? QStringLiteral("panda-payload.json")
+                                    : QStringLiteral("panda-payload.urdf"));
+        });
+        QTest::mouseClick(exportFile, Qt::LeftButton);
+        QCOMPARE(d.messageBar()->severity(), MessageBar::Severity::Success);
+        const ParameterFileContent file =
+            readParameterFile(dir.filePath(QStringLiteral("panda-payload.json")));
+        QVERIFY(file.payload);
+        QCOMPARE(file.payload->mass, result->fit.estimate.body.mass);
+        QCOMPARE(file.payload->link, QStringLiteral("panda_link7"));
+        QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("panda-payload.dcf"))));
+        QTest::mouseClick(exportUrdf, Qt::LeftButton);
+        QCOMPARE(d.messageBar()->severity(), MessageBar::Severity::Success);
+        QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("panda-payload.urdf"))));
+
+        // An edit makes the result stale: it is dropped, nothing left to export.
+        typeInto(d.form()->field(QStringLiteral("payload.prior.mass")), QStringLiteral("1.3"));
+        QVERIFY(!d.result());
+        QVERIFY(!exportFile->isEnabled() && !accept->isEnabled());
+        QCOMPARE(d.estimateTable()->rowCount(), 0);
+    }
+
+    void stop_leavesNoResult()
+    {
+        Scenario s = test::pandaWithPayload();
+        s.iterations = 5;
+        PayloadDialog d(nullptr);
+        d.setScenario(s);
+        d.show();
+        QSignalSpy finished(&d, &PayloadDialog::runFinished);
+        auto *stop = d.findChild<QPushButton *>(QStringLiteral("stopPayloadButton"));
+        QVERIFY(!stop->isEnabled());
+        d.run();
+        QVERIFY(stop->isEnabled());
+        QTest::mouseClick(stop, Qt::LeftButton);
+        QVERIFY(finished.wait(30000));
+        QCOMPARE(finished.constFirst().at(0).toBool(), false);
+        QVERIFY(!d.result());
+        QCOMPARE(d.estimateTable()->rowCount(), 0);
+        QVERIFY(d.trialTable()->rowCount() < 5);
+        QVERIFY(!d.findChild<QPushButton *>(QStringLiteral("acceptPayloadButton"))->isEnabled());
+        QVERIFY(d.findChild<QPushButton *>(QStringLiteral("runPayloadButton"))->isEnabled());
+        QCOMPARE(d.messageBar()->severity(), MessageBar::Severity::Info);
+    }
+
+    void badInput_isShownAtItsField()
+    {
+        PayloadDialog d(nullptr);
+        d.setScenario(test::pandaWithPayload());
+        PayloadForm *form = d.form();
+        auto *run = d.findChild<QPushButton *>(QStringLiteral("runPayloadButton"));
+        QVERIFY(form->isValid() && run->isEnabled());
+        const QString massKey = QStringLiteral("payload.prior.mass");
+        const struct
+        {
+            const char *key;
+            const char *text;
+        } cases[] = {{"payload.prior.mass", "-1"},
+                     {"payload.prior.mass", "0"},
+                     {"payload.prior.mass", "nan"},
+                     {"payload.prior.mass", "heavy"},
+                     {"payload.prior.com", "0, 0"},
+                     {"payload.bound.radius", "0.01"},
+                     {"payload.prior.inertia", "1, 0, 1, 0, 0, 5"},
+                     {"payload.baselineTrials", "1.5"}};
+        for (const auto &c : cases) {
+            const QString key = QLatin1String(c.key);
+            QLineEdit *edit = form->field(key);
+            QVERIFY(edit);
+            const QString before = edit->text();
+            typeInto(edit, QLatin1String(c.text));
+            QVERIFY2(!form->isValid(), c.text);
+            QVERIFY2(!form->reasonFor(key).isEmpty(),
+                     qPrintable(key + QLatin1Char(' ') + form->firstError()));
+            QVERIFY2(form->firstError().startsWith(key), qPrintable(form->firstError()));
+            QVERIFY(!run->isEnabled());
+            typeInto(edit, before);
+            QVERIFY2(form->isValid(), qPrintable(form->firstError()));
+        }
+        // The prior outside its own bound: the box that does not contain it is named.
+        typeInto(form->field(QStringLiteral("payload.bound.box")),
+                 QStringLiteral("0.1, 0.1, 0.1, 0.2, 0.2, 0.2"));
+        QVERIFY(!form->isValid());
+        QVERIFY2(form->firstError().startsWith(QStringLiteral("payload.")),
+                 qPrintable(form->firstError()));
+        // An unknown link from a scenario file is shown at the link.
+        Scenario s = test::pandaWithPayload();
+        s.payload.link = QStringLiteral("panda_gripper");
+        d.setScenario(s);
+        QVERIFY(!form->isValid());
+        QVERIFY2(!form->reasonFor(QStringLiteral("payload.link")).isEmpty(),
+                 qPrintable(form->firstError()));
+        QVERIFY(form->reasonFor(massKey).isEmpty());
+        QVERIFY(form->linkChoice()->currentText() == QStringLiteral("panda_gripper"));
+        form->linkChoice()->setCurrentIndex(0); // the tip
+        emit form->linkChoice()->activated(0);
+        QVERIFY2(form->isValid(), qPrintable(form->firstError()));
+        QCOMPARE(form->scenario()->payload.link, QString());
+    }
+
+    void window_routesAPayloadScenarioToThePayloadStep()
+    {
+        test::WindowFixture f;
+        const QString path = f.dir.filePath(QStringLiteral("panda-payload.json"));
+        writeScenarioFile(path, test::pandaWithPayload());
+        QSignalSpy openFailed(f.window->controller(), &SessionController::openFailed);
+        f.window->files()->openScenarioFrom(path);
+        QVERIFY(f.window->payloadDialog());
+        QTRY_VERIFY(f.window->payloadDialog()->isVisible());
+        const auto s = f.window->payloadDialog()->form()->scenario();
+        QVERIFY(s);
+        QCOMPARE(s->payload.mass, 1.2);
+        QCOMPARE(s->payload.link, QStringLiteral("panda_link7"));
+        const QString note = f.window->payloadDialog()->messageBar()->text();
+        QVERIFY2(note.contains(QStringLiteral("payload step")), qPrintable(note));
+        // The arm's session was not opened with it (it would refuse it).
+        QTest::qWait(200);
+        QVERIFY(openFailed.isEmpty());
+        QVERIFY(!f.window->controller()->isOpen());
+        f.window->payloadDialog()->close();
+
+        // Robot > Learn a payload opens the step with the form's scenario.
+        f.window->actions()->learnPayload->trigger();
+        QVERIFY(f.window->payloadDialog()->isVisible());
+        QCOMPARE(f.window->payloadDialog()->form()->scenario()->payload.mass, 1.2);
+    }
+};
+
+QTEST_MAIN(TestUiPayload)
+#include "tst_ui_payload.moc"

@@ -1,0 +1,306 @@
+#include "ui/PayloadDialog.h"
+
+#include "service/PayloadRunJob.h"
+#include "ui/MessageBar.h"
+#include "ui/PayloadEstimateTableModel.h"
+#include "ui/PayloadForm.h"
+#include "ui/PayloadText.h"
+#include "ui/PayloadTrialTableModel.h"
+
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScreen>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QTableView>
+#include <QTimer>
+#include <QVBoxLayout>
+
+namespace learnid {
+
+namespace {
+
+QPushButton *button(const QString &text, const char *name)
+{
+    auto *b = new QPushButton(text);
+    b->setObjectName(QLatin1String(name));
+    return b;
+}
+
+QTableView *tableView(QAbstractItemModel *model, const char *name)
+{
+    auto *view = new QTableView;
+    view->setObjectName(QLatin1String(name));
+    view->setModel(model);
+    view->setAlternatingRowColors(true);
+    view->verticalHeader()->hide();
+    view->verticalHeader()->setDefaultSectionSize(view->fontMetrics().height() + 6);
+    view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    view->horizontalHeader()->setStretchLastSection(true);
+    return view;
+}
+
+QGroupBox *group(const QString &title, QWidget *content)
+{
+    auto *box = new QGroupBox(title);
+    auto *layout = new QVBoxLayout(box);
+    layout->addWidget(content);
+    return box;
+}
+
+} // namespace
+
+PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
+    : QDialog(parent)
+    , m_settings(settings)
+    , m_message(new MessageBar)
+    , m_form(new PayloadForm)
+    , m_preview(new QLabel)
+    , m_run(button(tr("&Run trials"), "runPayloadButton"))
+    , m_stop(button(tr("&Stop"), "stopPayloadButton"))
+    , m_progress(new QProgressBar)
+    , m_stage(new QLabel)
+    , m_trials(new PayloadTrialTableModel(this))
+    , m_trialView(tableView(m_trials, "payloadTrialTable"))
+    , m_summary(new QLabel)
+    , m_estimate(new PayloadEstimateTableModel(this))
+    , m_estimateView(tableView(m_estimate, "payloadEstimateTable"))
+    , m_accept(button(tr("&Accept"), "acceptPayloadButton"))
+    , m_exportParameters(
+          button(tr("Export &parameter file\u2026"), "exportPayloadParametersButton"))
+    , m_exportUrdf(button(tr("Export &URDF\u2026"), "exportPayloadUrdfButton"))
+    , m_job(new PayloadRunJob(this))
+    , m_checkTimer(new QTimer(this))
+{
+    setObjectName(QStringLiteral("payloadDialog"));
+    setWindowTitle(tr("Learn a payload (simulated robot)"));
+    m_preview->setObjectName(QStringLiteral("payloadPreview"));
+    m_summary->setObjectName(QStringLiteral("payloadSummary"));
+    m_stage->setObjectName(QStringLiteral("payloadStage"));
+    m_progress->setObjectName(QStringLiteral("payloadProgress"));
+    for (QLabel *label : {m_preview, m_summary, m_stage}) {
+        label->setWordWrap(true);
+        label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        label->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    }
+    m_run->setDefault(true);
+    m_checkTimer->setSingleShot(true);
+    m_checkTimer->setInterval(250); // one plan after a burst of typing
+    buildLayout();
+    connectJob();
+    connect(m_form, &PayloadForm::edited, this, [this] {
+        clearResult();
+        updateActions();
+        m_checkTimer->start();
+    });
+    connect(m_checkTimer, &QTimer::timeout, this, &PayloadDialog::requestCheck);
+    connect(m_run, &QPushButton::clicked, this, &PayloadDialog::run);
+    connect(m_stop, &QPushButton::clicked, this, &PayloadDialog::stop);
+    connect(m_accept, &QPushButton::clicked, this, &PayloadDialog::acceptResult);
+    connect(m_exportParameters, &QPushButton::clicked, this, &PayloadDialog::exportParameterFile);
+    connect(m_exportUrdf, &QPushButton::clicked, this, &PayloadDialog::exportUrdf);
+    setBusy(false);
+    clearResult();
+    const QSize available = screen() ? screen()->availableGeometry().size() : QSize(1280, 860);
+    resize(QSize(1280, 860).boundedTo(available * 0.95));
+}
+
+PayloadDialog::~PayloadDialog() = default;
+
+void PayloadDialog::buildLayout()
+{
+    auto *previewScroll = new QScrollArea;
+    previewScroll->setWidget(m_preview);
+    previewScroll->setWidgetResizable(true);
+    previewScroll->setFrameShape(QFrame::NoFrame);
+    auto *left = new QWidget;
+    auto *leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->addWidget(group(tr("Payload and prior"), m_form));
+    leftLayout->addWidget(group(tr("What the path lets the trials see"), previewScroll), 1);
+    left->setMinimumWidth(460);
+
+    auto *runRow = new QHBoxLayout;
+    runRow->addWidget(m_run);
+    runRow->addWidget(m_stop);
+    runRow->addWidget(m_progress, 1);
+    auto *trials = new QGroupBox(tr("Trials"));
+    auto *trialLayout = new QVBoxLayout(trials);
+    trialLayout->addLayout(runRow);
+    trialLayout->addWidget(m_stage);
+    trialLayout->addWidget(m_trialView, 1);
+    auto *estimate = new QGroupBox(tr("Payload estimate"));
+    auto *estimateLayout = new QVBoxLayout(estimate);
+    estimateLayout->addWidget(m_summary);
+    estimateLayout->addWidget(m_estimateView, 1);
+    auto *right = new QSplitter(Qt::Vertical);
+    right->setChildrenCollapsible(false);
+    right->addWidget(trials);
+    right->addWidget(estimate);
+    right->setSizes({1, 2});
+
+    auto *main = new QSplitter(Qt::Horizontal);
+    main->addWidget(left);
+    main->addWidget(right);
+    main->setStretchFactor(1, 1);
+    main->setSizes({480, 800});
+
+    auto *close = button(tr("Close"), "closePayloadButton");
+    connect(close, &QPushButton::clicked, this, &PayloadDialog::reject);
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_accept);
+    buttons->addWidget(m_exportParameters);
+    buttons->addWidget(m_exportUrdf);
+    buttons->addStretch(1);
+    buttons->addWidget(close);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_message);
+    layout->addWidget(main, 1);
+    layout->addLayout(buttons);
+}
+
+void PayloadDialog::connectJob()
+{
+    connect(m_job, &PayloadRunJob::checked, this, [this](const PayloadPreview &p) {
+        m_preview->setText(
+            payloadPreviewHtml(p, m_form->scenario().value_or(Scenario()).simulation.payload));
+        emit previewShown(true);
+    });
+    connect(m_job, &PayloadRunJob::checkFailed, this, [this](const QString &message) {
+        m_preview->setText(tr("The trials cannot be planned: %1").arg(message.toHtmlEscaped()));
+        emit previewShown(false);
+    });
+    connect(m_job, &PayloadRunJob::trialStarted, this, [this](int index, int total, bool baseline) {
+        m_progress->setRange(0, total);
+        m_progress->setValue(index);
+        m_stage->setText(
+            baseline
+                ? tr("Trial %1 of %2 running: baseline, without the payload\u2026")
+                      .arg(index + 1)
+                      .arg(total)
+                : tr("Trial %1 of %2 running with the payload\u2026").arg(index + 1).arg(total));
+    });
+    connect(m_job, &PayloadRunJob::trialFinished, this, [this](const PayloadTrialRow &row) {
+        m_trials->addRow(row);
+        m_progress->setValue(row.index + 1);
+        m_trialView->resizeColumnsToContents();
+        m_trialView->scrollToBottom();
+    });
+    connect(m_job, &PayloadRunJob::succeeded, this,
+            [this](std::shared_ptr<const PayloadRunResult> result) {
+                m_result = std::move(result);
+                setBusy(false);
+                m_summary->setText(payloadResultHtml(*m_result));
+                m_estimate->setEstimate(m_result->fit.estimate);
+                m_message->showMessage(tr("Payload learned: check the estimate, then accept it to "
+                                          "export."),
+                                       MessageBar::Severity::Success);
+                emit runFinished(true);
+            });
+    connect(m_job, &PayloadRunJob::failed, this, [this](const QString &message) {
+        setBusy(false);
+        m_message->showMessage(tr("Payload not learned: %1").arg(message),
+                               MessageBar::Severity::Error);
+        emit runFinished(false);
+    });
+    connect(m_job, &PayloadRunJob::cancelled, this, [this] {
+        setBusy(false);
+        m_message->showMessage(tr("Stopped; nothing of this run is kept or written."),
+                               MessageBar::Severity::Info);
+        emit runFinished(false);
+    });
+}
+
+void PayloadDialog::setScenario(const Scenario &scenario)
+{
+    if (isRunning())
+        return;
+    m_form->setScenario(scenario);
+    m_trials->clear();
+    m_message->hide();
+}
+
+QString PayloadDialog::previewText() const
+{
+    return m_preview->text();
+}
+
+bool PayloadDialog::isRunning() const
+{
+    return m_job->isRunning();
+}
+
+void PayloadDialog::setBusy(bool busy)
+{
+    m_form->setEditable(!busy);
+    m_stop->setEnabled(busy);
+    m_progress->setVisible(busy);
+    if (!busy)
+        m_stage->clear();
+    updateActions();
+}
+
+void PayloadDialog::updateActions()
+{
+    const bool running = isRunning();
+    m_run->setEnabled(!running && m_form->isValid());
+    const bool result = m_result && !running;
+    m_accept->setEnabled(result && !m_accepted);
+    m_exportParameters->setEnabled(result && m_accepted);
+    m_exportUrdf->setEnabled(result && m_accepted);
+}
+
+void PayloadDialog::clearResult()
+{
+    m_result.reset();
+    m_accepted = false;
+    m_estimate->clear();
+    m_summary->setText(tr("Run the trials to learn the payload."));
+    updateActions();
+}
+
+void PayloadDialog::requestCheck()
+{
+    if (const auto s = m_form->scenario()) {
+        m_preview->setText(tr("Planning the first trial\u2026"));
+        m_job->check(*s);
+    } else {
+        m_preview->setText(
+            tr("Correct the payload first: %1").arg(m_form->firstError().toHtmlEscaped()));
+        emit previewShown(false);
+    }
+}
+
+void PayloadDialog::run()
+{
+    const auto s = m_form->scenario();
+    if (!s) {
+        m_message->showMessage(tr("Cannot run: %1").arg(m_form->firstError()),
+                               MessageBar::Severity::Error);
+        return;
+    }
+    clearResult();
+    m_trials->clear();
+    m_message->hide();
+    m_progress->setRange(0, 0);
+    if (m_job->start(*s))
+        setBusy(true);
+}
+
+void PayloadDialog::stop()
+{
+    m_job->cancel();
+    m_stage->setText(tr("Stopping the running trial\u2026"));
+}
+
+void PayloadDialog::reject()
+{
+    m_job->cancel(); // closing the window stops the run
+    QDialog::reject();
+}
+
+} // namespace learnid

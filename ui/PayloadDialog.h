@@ -1,0 +1,108 @@
+#pragma once
+
+#include "service/PayloadRun.h"
+
+#include <QDialog>
+#include <functional>
+#include <memory>
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTableView;
+class QTimer;
+
+namespace learnid {
+
+class MessageBar;
+class PayloadEstimateTableModel;
+class PayloadForm;
+class PayloadRunJob;
+class PayloadTrialTableModel;
+class UiSettings;
+
+/// The payload step (docs/payload.md, "In the window"): a payload learned on the simulated robot
+/// with the arm's model held fixed. The form (PayloadForm) gives the link, the prior, the bound
+/// and the trials, each refused value named at its field; before any motion the dialog shows what
+/// the path lets the trials see and whether the first trial passes its check (PayloadRunJob::
+/// check(), redone after each edit). Run runs the baseline and payload trials in a worker thread
+/// (PayloadRunJob) with progress per trial and Stop; each finished trial adds a row
+/// (PayloadTrialTableModel). A run that completes shows the estimate with each value's standard
+/// error, prior and source (PayloadEstimateTableModel); Accept enables the exports: the parameter
+/// file with a payload section (and its DCF) and the URDF with a fixed payload link, written all
+/// or none (writePayloadRunExport). A stopped or failed run leaves no result.
+class PayloadDialog : public QDialog
+{
+    Q_OBJECT
+
+public:
+    enum class ExportKind { ParameterFile, Urdf };
+    /// Asks for a path to write (empty: cancelled); the default shows a file dialog.
+    using PathChooser = std::function<QString(ExportKind kind, const QString &suggested)>;
+
+    /// settings: where the last folder is remembered (may be null).
+    explicit PayloadDialog(UiSettings *settings, QWidget *parent = nullptr);
+    ~PayloadDialog() override;
+
+    /// The scenario whose payload is learned (a scenario without a payload section gets one).
+    void setScenario(const Scenario &scenario);
+    void setPathChooser(PathChooser chooser) { m_chooser = std::move(chooser); }
+
+    PayloadForm *form() const { return m_form; }
+    PayloadTrialTableModel *trialTable() const { return m_trials; }
+    PayloadEstimateTableModel *estimateTable() const { return m_estimate; }
+    MessageBar *messageBar() const { return m_message; }
+    /// The rich text of what the path lets the trials see (or why it cannot be planned).
+    QString previewText() const;
+    /// The last completed run's result (null before one, after a stopped or failed one).
+    std::shared_ptr<const PayloadRunResult> result() const { return m_result; }
+    bool isRunning() const;
+    bool isAccepted() const { return m_accepted; }
+
+public slots:
+    void run();
+    void stop();
+    void acceptResult();
+    void exportParameterFile();
+    void exportUrdf();
+    void reject() override;
+
+signals:
+    /// The preview after an edit is shown (ok false: the scenario cannot be planned).
+    void previewShown(bool ok);
+    /// A run ended: with a result, or not (failed or stopped).
+    void runFinished(bool succeeded);
+
+private:
+    void buildLayout();
+    void connectJob();
+    void setBusy(bool busy);
+    void clearResult();
+    void updateActions();
+    void requestCheck();
+    void writeExport(ExportKind kind);
+
+    UiSettings *m_settings;
+    MessageBar *m_message;
+    PayloadForm *m_form;
+    QLabel *m_preview;
+    QPushButton *m_run;
+    QPushButton *m_stop;
+    QProgressBar *m_progress;
+    QLabel *m_stage;
+    PayloadTrialTableModel *m_trials;
+    QTableView *m_trialView;
+    QLabel *m_summary;
+    PayloadEstimateTableModel *m_estimate;
+    QTableView *m_estimateView;
+    QPushButton *m_accept;
+    QPushButton *m_exportParameters;
+    QPushButton *m_exportUrdf;
+    PayloadRunJob *m_job;
+    QTimer *m_checkTimer;
+    PathChooser m_chooser;
+    std::shared_ptr<const PayloadRunResult> m_result;
+    bool m_accepted = false;
+};
+
+} // namespace learnid
