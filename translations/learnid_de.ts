@@ -2402,7 +2402,7 @@
 <context>
     <name>PayloadPathChange</name>
     <message>
-        <location filename="../core/session/PayloadPathChange.cpp" line="+56"/>
+        <location filename="../core/session/PayloadPathChange.cpp" line="+55"/>
         <source>moving %1 at waypoint %2 by %3 rad (to %4 rad, inside its limits) would let the trials measure %5</source>
         <translation>%1 an Wegpunkt %2 um %3 rad verschoben (auf %4 rad, innerhalb seiner Grenzen) ließe die Fahrten %5 messen</translation>
     </message>

@@ -2393,7 +2393,7 @@
 <context>
     <name>PayloadPathChange</name>
     <message>
-        <location filename="../core/session/PayloadPathChange.cpp" line="+56"/>
+        <location filename="../core/session/PayloadPathChange.cpp" line="+55"/>
         <source>moving %1 at waypoint %2 by %3 rad (to %4 rad, inside its limits) would let the trials measure %5</source>
         <translation>将 %1 在路径点 %2 处移动 %3 rad（到 %4 rad，在其限位之内）即可让试验测得 %5</translation>
     </message>
