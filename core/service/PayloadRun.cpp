@@ -48,6 +48,8 @@ PayloadPreview payloadPreview(PayloadSession &session)
     p.trials = session.scenario().iterations;
     p.observability = session.observability();
     p.advice = p.observability.advice(p.link);
+    if (const PayloadPathChange change = session.pathChange(); change.valid())
+        p.advice << change.describe(session.payloadModel().arm());
     const PreTrialCheck check = session.checkNextTrial();
     if (!check.passed())
         p.checkReason = check.reason();

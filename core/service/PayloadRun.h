@@ -43,7 +43,9 @@ struct PayloadPreview
     int baselineTrials = 0;
     int trials = 0; ///< payload trials (scenario iterations)
     PayloadObservability observability;
-    QStringList advice;  ///< observability.advice(link): what the path does not see and why
+    /// observability.advice(link): what the path does not see and why; then the smallest
+    /// change of the path that would measure it (PayloadSession::pathChange), if one does
+    QStringList advice;
     QString checkReason; ///< why the first trial would be refused; empty: it passes
 };
 
