@@ -4,7 +4,8 @@
 // mass and inertia, and the CPU of one payload update (filtering the log, the regressor, the
 // fit), the median of 20. With --loop: the payload learned in the learning loop instead
 // (payloadloop.cpp); with --arm-error FRACTION: the bias of a wrong arm model, with and without a
-// baseline trial (payloadarmerror.cpp).
+// baseline trial (payloadarmerror.cpp); with --starter: the starting scenario for an arm with a
+// payload (payloadstarter.cpp).
 #include "../tests/identify/PayloadPaths.h"
 #include "BenchSupport.h"
 #include "identify/LogSignals.h"
@@ -101,11 +102,14 @@ void armErrorFromLogs(const std::shared_ptr<const ChainModel> &arm, double fract
 
 int payloadLoopBench();
 int payloadArmErrorBench(double fraction);
+int payloadStarterBench();
 
 int main(int argc, char **argv)
 {
     if (argc > 1 && std::strcmp(argv[1], "--loop") == 0)
         return payloadLoopBench();
+    if (argc > 1 && std::strcmp(argv[1], "--starter") == 0)
+        return payloadStarterBench();
     if (argc > 2 && std::strcmp(argv[1], "--arm-error") == 0) {
         const double fraction = std::atof(argv[2]);
         if (!(fraction >= 0.0 && fraction < 1.0)) {

@@ -2473,7 +2473,7 @@
         <translation>robot.model: unbekanntes Robotermodell &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+68"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>aus keinem Versuch wurde gelernt: die Nutzlast ist nicht geschätzt</translation>
     </message>
@@ -2992,7 +2992,7 @@
 <context>
     <name>RobotScenario</name>
     <message>
-        <location filename="../core/session/RobotScenario.cpp" line="+59"/>
+        <location filename="../core/session/RobotScenario.cpp" line="+65"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -3002,12 +3002,17 @@
         <translation>%1 deg</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>robot.model: unknown model &quot;%1&quot;</source>
         <translation>robot.model: unbekanntes Modell „%1“</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+2"/>
+        <source>payload: only a URDF robot carries a payload</source>
+        <translation>payload: nur ein URDF-Roboter trägt eine Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+144"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>unbekannter Roboter „%1“; bekannt: %2 oder eine URDF-Datei (DATEI.urdf)</translation>
     </message>
@@ -4117,7 +4122,7 @@
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+68"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+70"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -4183,12 +4188,12 @@
         <translation>--robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+73"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+78"/>
         <source>Show this command&apos;s options.</source>
         <translation>Die Optionen dieses Befehls anzeigen.</translation>
     </message>
     <message>
-        <location line="-49"/>
+        <location line="-54"/>
         <source>Print the default scenario.</source>
         <translation>Standardszenario ausgeben.</translation>
     </message>
@@ -4291,13 +4296,15 @@
         <translation>Ein aufgezeichneter Versuch (candump-Log); einmal pro Versuch, der Reihe nach.</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="-73"/>
+        <location filename="../app/cli/CliOptions.cpp" line="-75"/>
         <source>Usage:
   learnid-cli scenario --print [--robot ROBOT]
       Print a complete scenario as JSON. ROBOT: paper (the default: the paper
       scenario), panda, puma560, double-pendulum or a URDF file; for a robot
       other than paper, the gains the window designs for it and a path of
-      joint waypoints inside its limits.
+      joint waypoints inside its limits. With --payload --payload-mass KG
+      [--payload-com X,Y,Z] [--payload-link LINK] ...: a scenario that learns
+      that payload, the gains designed for the arm carrying it.
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--consistent] [--workspace DIR] [--quiet]
@@ -4339,6 +4346,8 @@
       Szenario des Artikels), panda, puma560, double-pendulum oder eine URDF-Datei;
       für einen anderen Roboter als paper die Verstärkungen, die das Fenster für ihn
       auslegt, und eine Bahn aus Gelenk-Stützpunkten innerhalb seiner Grenzen.
+      Mit --payload --payload-mass KG [--payload-com X,Y,Z] [--payload-link LINK] ...:
+      ein Szenario, das diese Nutzlast lernt, mit Verstärkungen für den Arm, der sie trägt.
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--consistent] [--workspace DIR] [--quiet]
@@ -4377,12 +4386,12 @@
 </translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+78"/>
         <source>The robot: paper (default), panda, puma560, double-pendulum, or a URDF file.</source>
         <translation>Der Roboter: paper (Standard), panda, puma560, double-pendulum oder eine URDF-Datei.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Print a complete scenario for a robot as JSON.</source>
         <translation>Ein vollständiges Szenario für einen Roboter als JSON ausgeben.</translation>
     </message>
@@ -4392,7 +4401,7 @@
         <translation>&apos;scenario&apos; braucht --print</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+25"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
@@ -4965,7 +4974,7 @@ neue Schätzung.
         <translation>t [s]</translation>
     </message>
     <message>
-        <location filename="../app/cli/ScenarioCommand.cpp" line="+20"/>
+        <location filename="../app/cli/ScenarioCommand.cpp" line="+50"/>
         <source>learnid-cli: error: --robot %1: %2</source>
         <translation>learnid-cli: Fehler: --robot %1: %2</translation>
     </message>
@@ -5100,7 +5109,7 @@ neue Schätzung.
         <translation>learnid: Nutzlast an %1 aus Logs identifiziert</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadOptions.cpp" line="+40"/>
+        <location filename="../app/cli/PayloadOptions.cpp" line="+42"/>
         <source>Identify only a payload fixed to the arm, the --robot URDF or parameter file held fixed as the arm&apos;s model; needs --payload-mass.</source>
         <translation>Nur eine am Arm befestigte Nutzlast identifizieren, das --robot-URDF oder die Parameterdatei bleibt als Modell des Arms fest; braucht --payload-mass.</translation>
     </message>
@@ -5145,7 +5154,12 @@ neue Schätzung.
         <translation>Mit --payload: ein Log derselben Bewegung ohne die Nutzlast, dessen Momentenresiduum von jedem --log abgezogen wird (mehrfach möglich; docs/payload.md).</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+10"/>
+        <source>A scenario that learns a payload fixed to the arm, the gains designed for the arm carrying the prior; needs --payload-mass.</source>
+        <translation>Ein Szenario, das eine am Arm befestigte Nutzlast lernt, mit Verstärkungen für den Arm, der die Annahme trägt; braucht --payload-mass.</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>--%1: needs --payload</source>
         <translation>--%1: braucht --payload</translation>
     </message>
@@ -5160,7 +5174,7 @@ neue Schätzung.
         <translation>--payload-box: geben Sie entweder einen Hüllquader oder --payload-radius an, nicht beides</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
         <translation>--payload-mass: muss eine Zahl in kg sein, erhalten: „%1“</translation>
     </message>

@@ -2464,7 +2464,7 @@
         <translation>robot.model：未知的机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+68"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>没有从任何试验中学习：未估计负载</translation>
     </message>
@@ -2979,7 +2979,7 @@
 <context>
     <name>RobotScenario</name>
     <message>
-        <location filename="../core/session/RobotScenario.cpp" line="+59"/>
+        <location filename="../core/session/RobotScenario.cpp" line="+65"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -2989,12 +2989,17 @@
         <translation>%1 deg</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>robot.model: unknown model &quot;%1&quot;</source>
         <translation>robot.model：未知模型“%1”</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+2"/>
+        <source>payload: only a URDF robot carries a payload</source>
+        <translation>payload：只有 URDF 机器人才能携带负载</translation>
+    </message>
+    <message>
+        <location line="+144"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>未知机器人“%1”；已知：%2，或一个 URDF 文件（FILE.urdf）</translation>
     </message>
@@ -4103,7 +4108,7 @@
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+68"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+70"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -4169,12 +4174,12 @@
         <translation>--robot %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+73"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+78"/>
         <source>Show this command&apos;s options.</source>
         <translation>显示此命令的选项。</translation>
     </message>
     <message>
-        <location line="-49"/>
+        <location line="-54"/>
         <source>Print the default scenario.</source>
         <translation>输出默认场景。</translation>
     </message>
@@ -4277,13 +4282,15 @@
         <translation>一次记录的试验（candump 日志）；每次试验一个，按顺序。</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="-73"/>
+        <location filename="../app/cli/CliOptions.cpp" line="-75"/>
         <source>Usage:
   learnid-cli scenario --print [--robot ROBOT]
       Print a complete scenario as JSON. ROBOT: paper (the default: the paper
       scenario), panda, puma560, double-pendulum or a URDF file; for a robot
       other than paper, the gains the window designs for it and a path of
-      joint waypoints inside its limits.
+      joint waypoints inside its limits. With --payload --payload-mass KG
+      [--payload-com X,Y,Z] [--payload-link LINK] ...: a scenario that learns
+      that payload, the gains designed for the arm carrying it.
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--consistent] [--workspace DIR] [--quiet]
@@ -4324,6 +4331,8 @@
       以 JSON 格式输出完整场景。ROBOT：paper（默认：论文场景）、panda、puma560、
       double-pendulum 或一个 URDF 文件；对于 paper 以外的机器人，给出窗口为其设计的
       增益，以及一条位于其关节限位内的关节路点路径。
+      使用 --payload --payload-mass KG [--payload-com X,Y,Z] [--payload-link LINK] ...：
+      生成学习该负载的场景，增益按携带该负载的机械臂设计。
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--consistent] [--workspace DIR] [--quiet]
@@ -4361,12 +4370,12 @@
 </translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+78"/>
         <source>The robot: paper (default), panda, puma560, double-pendulum, or a URDF file.</source>
         <translation>机器人：paper（默认）、panda、puma560、double-pendulum 或一个 URDF 文件。</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Print a complete scenario for a robot as JSON.</source>
         <translation>以 JSON 格式输出某个机器人的完整场景。</translation>
     </message>
@@ -4376,7 +4385,7 @@
         <translation>&apos;scenario&apos; 需要 --print</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+25"/>
         <source>no command given</source>
         <translation>未给出命令</translation>
     </message>
@@ -4947,7 +4956,7 @@ stdout, and the next plan uses the new estimate.
         <translation>t [s]</translation>
     </message>
     <message>
-        <location filename="../app/cli/ScenarioCommand.cpp" line="+20"/>
+        <location filename="../app/cli/ScenarioCommand.cpp" line="+50"/>
         <source>learnid-cli: error: --robot %1: %2</source>
         <translation>learnid-cli：错误：--robot %1：%2</translation>
     </message>
@@ -5080,7 +5089,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid：根据日志辨识的 %1 上的负载</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadOptions.cpp" line="+40"/>
+        <location filename="../app/cli/PayloadOptions.cpp" line="+42"/>
         <source>Identify only a payload fixed to the arm, the --robot URDF or parameter file held fixed as the arm&apos;s model; needs --payload-mass.</source>
         <translation>仅辨识固定在机械臂上的负载，--robot 的 URDF 或参数文件作为机械臂模型保持不变；需要 --payload-mass。</translation>
     </message>
@@ -5125,7 +5134,12 @@ stdout, and the next plan uses the new estimate.
         <translation>与 --payload 一起使用：同一运动不带负载的日志，其力矩残差将从每个 --log 中减去（可重复；docs/payload.md）。</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+10"/>
+        <source>A scenario that learns a payload fixed to the arm, the gains designed for the arm carrying the prior; needs --payload-mass.</source>
+        <translation>生成学习固定在机械臂上的负载的场景，增益按携带先验负载的机械臂设计；需要 --payload-mass。</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>--%1: needs --payload</source>
         <translation>--%1：需要 --payload</translation>
     </message>
@@ -5140,7 +5154,7 @@ stdout, and the next plan uses the new estimate.
         <translation>--payload-box：请给出包围长方体或 --payload-radius，不要同时给出</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>--payload-mass: must be a number of kg, got &apos;%1&apos;</source>
         <translation>--payload-mass：必须是千克数，收到“%1”</translation>
     </message>

@@ -23,7 +23,9 @@ QString usageText()
         "      Print a complete scenario as JSON. ROBOT: paper (the default: the paper\n"
         "      scenario), panda, puma560, double-pendulum or a URDF file; for a robot\n"
         "      other than paper, the gains the window designs for it and a path of\n"
-        "      joint waypoints inside its limits.\n"
+        "      joint waypoints inside its limits. With --payload --payload-mass KG\n"
+        "      [--payload-com X,Y,Z] [--payload-link LINK] ...: a scenario that learns\n"
+        "      that payload, the gains designed for the arm carrying it.\n"
         "  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]\n"
         "                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]\n"
         "                  [--consistent] [--workspace DIR] [--quiet]\n"
@@ -98,6 +100,7 @@ CommandLine parseCommandLine(const QStringList &args)
         QStringLiteral("robot"));
     if (command == QLatin1String("scenario")) {
         parser.addOptions({print, robot, help});
+        parser.addOptions(payloadCliOptions(false));
         if (!parser.parse(args.mid(1))) {
             cl.error = parser.errorText();
         } else if (parser.isSet(help)) {
@@ -109,6 +112,10 @@ CommandLine parseCommandLine(const QStringList &args)
                             parser);
         } else if (!parser.isSet(print) || !parser.positionalArguments().isEmpty()) {
             cl.error = QCoreApplication::translate("learnid-cli", "'scenario' needs --print");
+        } else if (const QString error = readPayloadOptions(parser, &cl.scenarioPayload, false);
+                   !error.isEmpty()) {
+            cl.error = error;
+            cl.errorCode = ExitBadInput;
         } else {
             cl.command = CommandLine::Command::PrintScenario;
             cl.scenarioRobot = parser.value(robot);

@@ -60,6 +60,8 @@ struct CommandLine
     /// `scenario --print --robot R`: paper, panda, puma560, double-pendulum or a URDF file;
     /// empty: the paper scenario.
     QString scenarioRobot;
+    /// `scenario --print --payload ...`: a payload section, the gains for the arm carrying it.
+    std::optional<PayloadOptions> scenarioPayload;
     QString error;
     ExitCode errorCode = ExitUsage; ///< ExitUsage for syntax, ExitBadInput for a bad value
     QString usage;

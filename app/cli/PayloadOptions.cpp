@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 #include <QStringList>
+#include <iterator>
 #include <vector>
 
 namespace learnid::cli {
@@ -30,12 +31,13 @@ std::optional<std::vector<double>> numbers(const QString &text, int count)
 const char *const payloadOptions[] = {"payload-link",    "payload-mass",   "payload-com",
                                       "payload-inertia", "payload-radius", "payload-box",
                                       "arm-urdf",        "baseline-log"};
+constexpr int identifyOnly = 2; // the last two: identify's alone
 
 } // namespace
 
-QList<QCommandLineOption> payloadCliOptions()
+QList<QCommandLineOption> payloadCliOptions(bool identify)
 {
-    return {
+    QList<QCommandLineOption> options{
         cliOption("payload",
                   QT_TRANSLATE_NOOP("learnid-cli",
                                     "Identify only a payload fixed to the arm, the --robot URDF "
@@ -80,6 +82,16 @@ QList<QCommandLineOption> payloadCliOptions()
                                     "repeated; docs/payload.md)."),
                   "FILE"),
     };
+    if (!identify) {
+        options.removeLast();
+        options.removeLast();
+        options.first() = cliOption(
+            "payload", QT_TRANSLATE_NOOP("learnid-cli",
+                                         "A scenario that learns a payload fixed to the arm, the "
+                                         "gains designed for the arm carrying the prior; needs "
+                                         "--payload-mass."));
+    }
+    return options;
 }
 
 PayloadFieldNames payloadOptionNames()
@@ -94,8 +106,10 @@ PayloadFieldNames payloadOptionNames()
     return names;
 }
 
-QString readPayloadOptions(const QCommandLineParser &parser, std::optional<PayloadOptions> *payload)
+QString readPayloadOptions(const QCommandLineParser &parser, std::optional<PayloadOptions> *payload,
+                           bool identify)
 {
+    const int known = int(std::size(payloadOptions)) - (identify ? 0 : identifyOnly);
     const auto value = [&parser](const char *name) {
         return parser.value(QLatin1String(name));
     };
@@ -103,8 +117,8 @@ QString readPayloadOptions(const QCommandLineParser &parser, std::optional<Paylo
         return parser.isSet(QLatin1String(name));
     };
     if (!isSet("payload")) {
-        for (const char *name : payloadOptions)
-            if (isSet(name))
+        for (int i = 0; i < known; ++i)
+            if (const char *name = payloadOptions[i]; isSet(name))
                 return QCoreApplication::translate("learnid-cli", "--%1: needs --payload")
                     .arg(QLatin1String(name));
         return {};
@@ -119,8 +133,10 @@ QString readPayloadOptions(const QCommandLineParser &parser, std::optional<Paylo
             "--payload-box: give either a bounding box or --payload-radius, not both");
     PayloadOptions o;
     o.link = value("payload-link");
-    o.armUrdf = value("arm-urdf");
-    o.baselineLogs = parser.values(QStringLiteral("baseline-log"));
+    if (identify) {
+        o.armUrdf = value("arm-urdf");
+        o.baselineLogs = parser.values(QStringLiteral("baseline-log"));
+    }
     bool ok = false;
     o.prior.mass = value("payload-mass").trimmed().toDouble(&ok);
     if (!ok)

@@ -22,8 +22,9 @@ struct PayloadOptions
     QStringList baselineLogs;
 };
 
-/// --payload and its --payload-* options, for identify's parser.
-QList<QCommandLineOption> payloadCliOptions();
+/// --payload and its --payload-* options, for identify's parser (with --arm-urdf and
+/// --baseline-log), or for `scenario --print` (the prior and its bound only).
+QList<QCommandLineOption> payloadCliOptions(bool identify = true);
 
 /// The field names of the options, for messages.
 PayloadFieldNames payloadOptionNames();
@@ -32,7 +33,7 @@ PayloadFieldNames payloadOptionNames();
 /// option, or an empty string. A --payload-* option without --payload, a missing
 /// --payload-mass, a value that is not a number list of the right length, and every refusal of
 /// validatePayloadPrior() are errors.
-QString readPayloadOptions(const QCommandLineParser &parser,
-                           std::optional<PayloadOptions> *payload);
+QString readPayloadOptions(const QCommandLineParser &parser, std::optional<PayloadOptions> *payload,
+                           bool identify = true);
 
 } // namespace learnid::cli

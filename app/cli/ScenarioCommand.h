@@ -9,6 +9,7 @@ namespace learnid::cli {
 /// `learnid-cli scenario --print [--robot ROBOT]`: the complete scenario for the robot as JSON
 /// on out (the paper scenario without --robot). A robot that is unknown or a URDF that cannot be
 /// read is named on err with ExitBadInput, and nothing goes to out.
-ExitCode printScenarioCommand(const QString &robot, QTextStream &out, QTextStream &err);
+ExitCode printScenarioCommand(const QString &robot, const std::optional<PayloadOptions> &payload,
+                              QTextStream &out, QTextStream &err);
 
 } // namespace learnid::cli

@@ -3,6 +3,8 @@
 #include "model/ChainModel.h"
 #include "model/Error.h"
 #include "model/ModelFactory.h"
+#include "model/Payload.h"
+#include "model/PayloadPrior.h"
 
 #include <Eigen/LU>
 #include <QCoreApplication>
@@ -26,6 +28,10 @@ constexpr double kBandwidth = 25.0; ///< closed-loop bandwidth the default gains
 /// KUKA LWR4+'s recorded logs: 0.3 to 1.2 N m on limits of 38 to 176 N m, where its CAD model
 /// says 0.2 N m everywhere).
 constexpr double kFrictionShareOfLimit = 0.01;
+/// What the gains must hold of a payload on top of friction: half the prior's gravity torque (the
+/// technician's mass may well be off by half) plus its weight at a centre of mass moved by
+/// payloadPriorShare of the bound's size (10 cm in the default sphere) in any direction.
+constexpr double kPayloadPriorError = 0.5;
 
 // The Coulomb friction the gains must hold: the CAD's, or kFrictionShareOfLimit of the joint's
 // torque limit when that is more.
@@ -62,12 +68,15 @@ QString valueText(double v, bool prismatic)
 
 } // namespace
 
-Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf)
+Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
+                          const PayloadSettings &payload)
 {
     Scenario s;
     if (!isUrdfModel(modelId)) {
         if (!knownRobotModels().contains(modelId))
             throw Error(Text::tr("robot.model: unknown model \"%1\"").arg(modelId));
+        if (payload.enabled)
+            throw Error(Text::tr("payload: only a URDF robot carries a payload"));
         return s; // the paper scenario
     }
     s.model = modelId;
@@ -89,10 +98,38 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf)
     // halfway), with the CAD parameters: 1 / (M^-1)_jj, the joint's inertia when the others
     // give way (the other controllers are as soft as its own). Gains sized for it keep the
     // loop within its bandwidth where the joint is lightest.
-    const Eigen::VectorXd cad = chain->baseFromStandard(chain->cadStandard());
+    const Eigen::VectorXd bare = chain->baseFromStandard(chain->cadStandard());
+    // With a payload, the arm carrying the technician's prior body.
+    Eigen::VectorXd cad = bare;
+    // The gravity torque a prior centre of mass moved by `offset` in any direction adds at each
+    // joint: m offset |dg_j/d(m c)| (the payload regressor's first-moment columns at rest).
+    Eigen::VectorXd payloadOffsetTorque = Eigen::VectorXd::Zero(n);
+    std::unique_ptr<PayloadModel> payloadModel;
+    double offsetMass = 0.0;
+    if (payload.enabled) {
+        const PayloadPrior prior = payloadPriorOf(payload);
+        validatePayloadPrior(prior);
+        int joint = 0;
+        try {
+            joint = payloadJointOf(chain->chain(), payload.link);
+        } catch (const Error &e) {
+            throw Error(QStringLiteral("payload.link: %1").arg(e.message()));
+        }
+        cad += payloadBaseShift(*chain, joint, prior.parameters());
+        const double size = prior.bound.box
+                                ? 0.5 * (prior.bound.upper - prior.bound.lower).minCoeff()
+                                : prior.bound.radius;
+        offsetMass = prior.mass * payloadPriorShare * size;
+        payloadModel = std::make_unique<PayloadModel>(
+            std::dynamic_pointer_cast<const ChainModel>(model), chain->cadStandard(), payload.link);
+        s.payload = payload;
+    }
     Eigen::VectorXd inertia = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
+    Eigen::VectorXd heaviest = Eigen::VectorXd::Zero(n); ///< max M_jj along the path
     Eigen::VectorXd gravityShare = Eigen::VectorXd::Zero(n), gravity(n), shifted(n);
     Eigen::VectorXd gravityStiffness = Eigen::VectorXd::Zero(n); ///< max |dg_j/dq_j| [N m/rad]
+    Eigen::VectorXd payloadGravity = Eigen::VectorXd::Zero(n);   ///< max |g_j - g_j(bare)| [N m]
+    Eigen::VectorXd bareGravity(n);
     Eigen::MatrixXd mass(n, n);
     for (size_t w = 0; w < s.path.waypoints.size(); ++w) {
         const Eigen::VectorXd &a = s.path.waypoints[w];
@@ -100,7 +137,16 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf)
         for (const Eigen::VectorXd &q : {a, Eigen::VectorXd(0.5 * (a + b))}) {
             model->massMatrix(q, cad, mass);
             inertia = inertia.cwiseMin(mass.inverse().diagonal().cwiseInverse());
+            heaviest = heaviest.cwiseMax(mass.diagonal());
             model->biasTorque(q, Eigen::VectorXd::Zero(n), cad, gravity);
+            model->biasTorque(q, Eigen::VectorXd::Zero(n), bare, bareGravity);
+            payloadGravity = payloadGravity.cwiseMax((gravity - bareGravity).cwiseAbs());
+            if (payloadModel) {
+                const Eigen::MatrixXd y = payloadModel->regressorAt(q, Eigen::VectorXd::Zero(n),
+                                                                    Eigen::VectorXd::Zero(n));
+                payloadOffsetTorque =
+                    payloadOffsetTorque.cwiseMax(offsetMass * y.middleCols(1, 3).rowwise().norm());
+            }
             for (int j = 0; j < n; ++j) {
                 Eigen::VectorXd qj = q;
                 qj[j] += 1e-6;
@@ -115,15 +161,22 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf)
     }
     // Each joint as m s^2 + (fv + kd) s + kp: the bandwidth's m w^2 on top of what gravity
     // takes away where the link hangs above its joint (dg_j/dq_j), or stiff enough that the
-    // CAD's Coulomb friction would move it by at most 0.05 rad; then damped (kDamping) by the
-    // joint's own viscous friction and kd together.
+    // CAD's Coulomb friction (and what a payload's prior may be off by) would move it by at most
+    // 0.05 rad; then damped (kDamping) by the joint's own viscous friction and kd together. With
+    // a payload the joint's inertia varies more along the path: the damping is sized for the
+    // geometric mean of its lightest and its heaviest (M_jj), not the lightest alone (a Panda
+    // with 1.5 kg, damped for the lightest, had a slow unstable pole at full speed).
     s.controller.kp.resize(n);
     s.controller.kd.resize(n);
     for (int j = 0; j < n; ++j) {
         const ChainJoint &joint = chain->chain().joints[size_t(j)];
         const double kp = std::max(inertia[j] * kBandwidth * kBandwidth + gravityStiffness[j],
-                                   designFriction(joint) / 0.05);
-        const double damping = kDamping * 2.0 * std::sqrt(kp * inertia[j]);
+                                   (designFriction(joint) + kPayloadPriorError * payloadGravity[j] +
+                                    payloadOffsetTorque[j]) /
+                                       0.05);
+        const double damping =
+            kDamping * 2.0 *
+            std::sqrt(kp * (payload.enabled ? std::sqrt(heaviest[j] * inertia[j]) : inertia[j]));
         s.controller.kp[j] = kp;
         s.controller.kd[j] = std::max(damping - joint.damping, 0.1 * damping);
     }
@@ -155,12 +208,12 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf)
     return s;
 }
 
-Scenario scenarioForRobotName(const QString &robot)
+Scenario scenarioForRobotName(const QString &robot, const PayloadSettings &payload)
 {
     if (robot == QLatin1String("paper"))
-        return scenarioForRobot(QStringLiteral("paper-2link"));
+        return scenarioForRobot(QStringLiteral("paper-2link"), {}, payload);
     if (knownRobotModels().contains(robot) && robot != QLatin1String("urdf"))
-        return scenarioForRobot(robot);
+        return scenarioForRobot(robot, {}, payload);
     const QFileInfo file(robot);
     if (!robot.endsWith(QLatin1String(".urdf"), Qt::CaseInsensitive) && !file.isFile()) {
         QStringList known{QStringLiteral("paper")};
@@ -172,7 +225,7 @@ Scenario scenarioForRobotName(const QString &robot)
     }
     UrdfRobotSettings urdf;
     urdf.file = file.absoluteFilePath();
-    return scenarioForRobot(QStringLiteral("urdf"), urdf);
+    return scenarioForRobot(QStringLiteral("urdf"), urdf, payload);
 }
 
 QString waypointLimitError(const RobotModel &model, const std::vector<Eigen::VectorXd> &waypoints)

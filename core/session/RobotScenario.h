@@ -23,7 +23,14 @@ namespace learnid {
 /// the robot (its URDF, its CAD base parameters) and, for the simulated robot, the CAD robot
 /// perturbed by 30 % with a 20-bit encoder and 1 % torque noise. Throws Error when the model is
 /// unknown or its URDF cannot be read.
-Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf = {});
+/// With `payload` enabled (a payload section: the technician's prior), the design holds the arm
+/// carrying the prior body; the friction rule adds, at each joint, half the prior's gravity
+/// torque and what its weight adds with the centre of mass moved by a third of the bound's size
+/// (an estimate may be off by that much); kd is sized for the geometric mean of the joint's
+/// lightest and heaviest inertia along the path; the scenario gets that payload section. Throws
+/// Error naming the payload key when the prior is refused or the link is unknown.
+Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf = {},
+                          const PayloadSettings &payload = {});
 
 /// The same for a robot named as a technician names it (`learnid-cli scenario --print --robot`):
 /// "paper" or "paper-2link" (the paper scenario), a built-in URDF robot's id ("panda",
@@ -31,7 +38,7 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf 
 /// or any existing file), which becomes model "urdf" with the file's absolute path. Throws
 /// Error naming the robot when it is none of these, or naming the file when it cannot be read
 /// as a serial arm.
-Scenario scenarioForRobotName(const QString &robot);
+Scenario scenarioForRobotName(const QString &robot, const PayloadSettings &payload = {});
 
 /// Why waypoints leave the robot's joint limits, or "" when they stay within: the first
 /// offending value named by key (path.waypoints[i][j]), joint, value and limit (in degrees for

@@ -27,6 +27,7 @@ private slots:
     void printedScenario_runsItsFirstTrial();
     void badRobot_isNamed_data();
     void badRobot_isNamed();
+    void payload_printsItsSectionAndTheGainsForIt();
 
 private:
     using Result = learnid::test::ToolRun;
@@ -135,6 +136,61 @@ void TestCliScenario::badRobot_isNamed()
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.startsWith(expected), qPrintable(r.err));
     QCOMPARE(r.out, QString()); // nothing half-printed
+}
+
+void TestCliScenario::payload_printsItsSectionAndTheGainsForIt()
+{
+    const QStringList base{QStringLiteral("scenario"), QStringLiteral("--print"),
+                           QStringLiteral("--robot"), QStringLiteral("panda")};
+    const Result r =
+        cli(base + QStringList{QStringLiteral("--payload"), QStringLiteral("--payload-mass"),
+                               QStringLiteral("1.2"), QStringLiteral("--payload-com"),
+                               QStringLiteral("0,0,0.05")});
+    QCOMPARE(r.exitCode, 0);
+    const Scenario s = scenarioFromJson(r.out.toUtf8(), QStringLiteral("stdout"));
+    QVERIFY(s.payload.enabled);
+    QCOMPARE(s.payload.mass, 1.2);
+    QCOMPARE(s.payload.com, Eigen::Vector3d(0.0, 0.0, 0.05));
+    // The same as the starter the library makes for that prior (tst_payloadstarter runs it).
+    PayloadSettings prior;
+    prior.enabled = true;
+    prior.mass = 1.2;
+    prior.com = Eigen::Vector3d(0.0, 0.0, 0.05);
+    QCOMPARE(r.out.toUtf8(), scenarioToJson(scenarioForRobot(QStringLiteral("panda"), {}, prior)));
+
+    const struct
+    {
+        QStringList options;
+        QString message;
+    } bad[] = {
+        {{QStringLiteral("--payload-mass"), QStringLiteral("1")},
+         QStringLiteral("learnid-cli: error: --payload-mass: needs --payload")},
+        {{QStringLiteral("--payload"), QStringLiteral("--payload-mass"), QStringLiteral("-1")},
+         QStringLiteral("learnid-cli: error: --payload-mass: the payload's mass must be a "
+                        "positive number")},
+        {{QStringLiteral("--payload"), QStringLiteral("--payload-mass"), QStringLiteral("1"),
+          QStringLiteral("--payload-link"), QStringLiteral("gripper")},
+         QStringLiteral("learnid-cli: error: --robot panda: payload.link: payload link 'gripper' "
+                        "is not a moving link")},
+        {{QStringLiteral("--payload"), QStringLiteral("--payload-mass"), QStringLiteral("1"),
+          QStringLiteral("--baseline-log"), QStringLiteral("b.csv")},
+         QStringLiteral("learnid-cli: error: Unknown option 'baseline-log'.")},
+    };
+    for (const auto &b : bad) {
+        const Result e = cli(base + b.options);
+        QVERIFY2(e.exitCode == 2 || e.exitCode == 1, qPrintable(e.err));
+        QVERIFY2(e.err.startsWith(b.message), qPrintable(e.err));
+        QCOMPARE(e.out, QString());
+    }
+    const Result paper =
+        cli({QStringLiteral("scenario"), QStringLiteral("--print"), QStringLiteral("--robot"),
+             QStringLiteral("paper"), QStringLiteral("--payload"), QStringLiteral("--payload-mass"),
+             QStringLiteral("1")});
+    QCOMPARE(paper.exitCode, 2);
+    QVERIFY2(
+        paper.err.startsWith(QStringLiteral("learnid-cli: error: --robot paper: payload: only a "
+                                            "URDF robot carries a payload")),
+        qPrintable(paper.err));
 }
 
 QTEST_GUILESS_MAIN(TestCliScenario)
