@@ -189,9 +189,13 @@ private slots:
         QCOMPARE(finished.constLast().at(0).toBool(), false);
         QCOMPARE(states, (QList<SessionState>{SessionState::RunningTrial, SessionState::Stopping,
                                               SessionState::Idle}));
-        QVERIFY(c.history().size() <= ran + 1); // at most the trial under way when it came
+        // At most the trial under way when it came: stopped at its next sample, or finished
+        // already when this thread lost its core between Run and Stop (a paper-arm trial takes
+        // a few tens of ms of the worker's CPU), but never a second trial of the series.
+        QVERIFY(c.history().size() <= ran + 1);
         QVERIFY(c.history().size() == ran ||
-                c.history().constLast().status() == TrialStatus::Cancelled);
+                c.history().constLast().status() == TrialStatus::Cancelled ||
+                c.history().constLast().status() == TrialStatus::Completed);
 
         QSignalSpy closed(&c, &SessionController::closed);
         c.close();
