@@ -38,8 +38,8 @@ Outcome run(const Case &c, bool payloadStarter, bool wrongArm)
     prior.com = Eigen::Vector3d(0.0, 0.0, 0.05);
     Outcome o;
     for (quint64 seed = 1; seed <= 8; ++seed) {
-        Scenario s = payloadStarter ? scenarioForRobotName(c.robot, prior)
-                                    : scenarioForRobotName(c.robot);
+        Scenario s =
+            payloadStarter ? scenarioForRobotName(c.robot, prior) : scenarioForRobotName(c.robot);
         s.payload = prior;
         s.payload.baselineTrials = wrongArm ? 1 : 0;
         s.simulation.payload.present = true;
@@ -92,9 +92,10 @@ int payloadStarterBench()
         cases.push_back({"KUKA LWR4+", kuka, 2.5, 3.0});
         cases.push_back({"KUKA LWR4+", kuka, 5.0, 7.0});
     }
-    std::printf("| robot | prior -> payload [kg] | starter | arm | sessions of 3 trials completed | "
-                "worst max tracking error of a payload trial [deg] | worst mass error %% | worst "
-                "CoM error [mm] |\n|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| robot | prior -> payload [kg] | starter | arm | sessions of 3 trials completed | "
+        "worst max tracking error of a payload trial [deg] | worst mass error %% | worst "
+        "CoM error [mm] |\n|---|---|---|---|---|---|---|---|\n");
     for (const Case &c : cases) {
         for (const bool wrongArm : {false, true}) {
             for (const bool payloadStarter : {true, false}) {

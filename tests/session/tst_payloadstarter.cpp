@@ -73,9 +73,11 @@ private slots:
         const auto session = sessionFor(carrying(starter, trueMass, starter.payload));
         QVERIFY2(session->runTrials(3), qPrintable(session->history().back().message));
         const PayloadBody &b = session->history().back().fit->estimate.body;
-        QVERIFY2(std::abs(b.mass - trueMass) < 0.01 * trueMass, qPrintable(QString::number(b.mass)));
-        QVERIFY2((b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 0.003,
-                 qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
+        QVERIFY2(std::abs(b.mass - trueMass) < 0.01 * trueMass,
+                 qPrintable(QString::number(b.mass)));
+        QVERIFY2(
+            (b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 0.003,
+            qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
         qInfo("trial 0 max tracking error %.2f deg",
               session->history().front().maxTrackingErrorDeg.maxCoeff());
 
@@ -96,21 +98,24 @@ private slots:
         QVERIFY2(session->runTrials(3), qPrintable(session->history().back().message));
         const PayloadBody &b = session->history().back().fit->estimate.body;
         QVERIFY2(std::abs(b.mass - 1.5) < 0.015, qPrintable(QString::number(b.mass)));
-        QVERIFY2((b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 0.003,
-                 qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
+        QVERIFY2(
+            (b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 0.003,
+            qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
     }
 
     void badPayload_isRefusedNamingTheKey()
     {
-        QCOMPARE(test::errorOf([] { scenarioForRobot(QStringLiteral("paper-2link"), {}, prior(1)); }),
-                 QStringLiteral("payload: only a URDF robot carries a payload"));
+        QCOMPARE(
+            test::errorOf([] { scenarioForRobot(QStringLiteral("paper-2link"), {}, prior(1)); }),
+            QStringLiteral("payload: only a URDF robot carries a payload"));
         PayloadSettings gripper = prior(1.0);
         gripper.link = QStringLiteral("gripper");
         QVERIFY(test::errorOf([&] { scenarioForRobot(QStringLiteral("panda"), {}, gripper); })
                     .startsWith(QStringLiteral("payload.link: payload link 'gripper' is not a "
                                                "moving link")));
-        QVERIFY(test::errorOf([] { scenarioForRobot(QStringLiteral("panda"), {}, prior(0.0)); })
-                    .startsWith(QStringLiteral("payload.prior.mass: ")));
+        QVERIFY(test::errorOf([] {
+                    scenarioForRobot(QStringLiteral("panda"), {}, prior(0.0));
+                }).startsWith(QStringLiteral("payload.prior.mass: ")));
     }
 };
 
