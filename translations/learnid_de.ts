@@ -2473,7 +2473,7 @@
         <translation>robot.model: unbekanntes Robotermodell &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+69"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>aus keinem Versuch wurde gelernt: die Nutzlast ist nicht geschätzt</translation>
     </message>
@@ -2497,7 +2497,7 @@
         <translation>payload: nur ein URDF-Roboter trägt eine Nutzlast (das Modell ist %1)</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+40"/>
         <source>baseline trial %1</source>
         <translation>Referenzfahrt %1</translation>
     </message>
@@ -2507,27 +2507,32 @@
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>trial %1 did not complete (%2): the payload estimate is unchanged</source>
         <translation>Versuch %1 wurde nicht vollständig ausgeführt (%2): die Schätzung der Nutzlast bleibt unverändert</translation>
     </message>
     <message>
-        <location line="-107"/>
+        <location line="-108"/>
         <source>trial %1</source>
         <translation>Versuch %1</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+119"/>
         <source>baseline trial %1 not usable: %2</source>
         <translation>Referenzfahrt %1 nicht verwendbar: %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+29"/>
         <source>the payload fit produced non-finite parameters</source>
         <translation>der Nutzlast-Fit ergab nicht endliche Parameter</translation>
     </message>
     <message>
         <location line="+6"/>
+        <source>trial %1 stopped at the tracking limit (%2): learned from the %3 s before the stop</source>
+        <translation>Versuch %1 an der Bahnfehlergrenze gestoppt (%2): aus den %3 s vor dem Stopp gelernt</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>trial %1 not learned from: %2</source>
         <translation>aus Versuch %1 nicht gelernt: %2</translation>
     </message>
@@ -5244,7 +5249,12 @@ neue Schätzung.
         <translation>          [°]        [°]                                          [ms]</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+32"/>
+        <source> (stopped at the limit: learned up to the stop)</source>
+        <translation> (an der Grenze gestoppt: bis zum Stopp gelernt)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>The payload after trial %1 (bound: %2):</source>
         <translation>Die Nutzlast nach Versuch %1 (Schranke: %2):</translation>
     </message>
@@ -7154,17 +7164,22 @@ Verhältnis %</translation>
         <translation>alle außer %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>baseline</source>
         <translation>Basis</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <source>payload, stopped</source>
+        <translation>Nutzlast, gestoppt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>payload</source>
         <translation>Nutzlast</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>A baseline trial runs the same timed path without the payload</source>
         <translation>Ein Basisversuch fährt dieselbe zeitlich geplante Bahn ohne die Nutzlast</translation>
     </message>

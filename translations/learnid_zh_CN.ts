@@ -2464,7 +2464,7 @@
         <translation>robot.model：未知的机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+69"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>没有从任何试验中学习：未估计负载</translation>
     </message>
@@ -2487,7 +2487,7 @@
         <translation>payload：只有 URDF 机器人才能携带负载（模型为 %1）</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+40"/>
         <source>baseline trial %1</source>
         <translation>基线试验 %1</translation>
     </message>
@@ -2497,27 +2497,32 @@
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>trial %1 did not complete (%2): the payload estimate is unchanged</source>
         <translation>试验 %1 未完成（%2）：负载估计保持不变</translation>
     </message>
     <message>
-        <location line="-107"/>
+        <location line="-108"/>
         <source>trial %1</source>
         <translation>试验 %1</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+119"/>
         <source>baseline trial %1 not usable: %2</source>
         <translation>基线试验 %1 不可用：%2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+29"/>
         <source>the payload fit produced non-finite parameters</source>
         <translation>负载拟合得到了非有限的参数</translation>
     </message>
     <message>
         <location line="+6"/>
+        <source>trial %1 stopped at the tracking limit (%2): learned from the %3 s before the stop</source>
+        <translation>试验 %1 在跟踪误差限值处停止（%2）：已从停止前的 %3 s 数据中学习</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>trial %1 not learned from: %2</source>
         <translation>未从试验 %1 学习：%2</translation>
     </message>
@@ -5224,7 +5229,12 @@ stdout, and the next plan uses the new estimate.
         <translation>          [°]        [°]                                          [ms]</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+32"/>
+        <source> (stopped at the limit: learned up to the stop)</source>
+        <translation>（在限值处停止：已学习到停止时）</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>The payload after trial %1 (bound: %2):</source>
         <translation>试验 %1 之后的负载（边界：%2）：</translation>
     </message>
@@ -7132,17 +7142,22 @@ ratio %</source>
         <translation>除 %1 外全部</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>baseline</source>
         <translation>基线</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <source>payload, stopped</source>
+        <translation>负载，已停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>payload</source>
         <translation>负载</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>A baseline trial runs the same timed path without the payload</source>
         <translation>基线试验在不带负载的情况下运行同一定时路径</translation>
     </message>

@@ -85,9 +85,14 @@ QVariant PayloadTrialTableModel::data(const QModelIndex &index, int role) const
         return {};
     const PayloadTrialRow &r = m_rows[size_t(index.row())];
     const int column = index.column();
-    if (column == Kind)
-        return role == Qt::DisplayRole ? QVariant(r.baseline ? tr("baseline") : tr("payload"))
+    if (column == Kind) {
+        if (role == Qt::ToolTipRole && r.partial)
+            return r.message;
+        return role == Qt::DisplayRole ? QVariant(r.baseline  ? tr("baseline")
+                                                  : r.partial ? tr("payload, stopped")
+                                                              : tr("payload"))
                                        : QVariant();
+    }
     if (column == Identified) {
         if (role == Qt::DisplayRole || role == Qt::ToolTipRole)
             return identifiedText(r);

@@ -62,7 +62,10 @@ QString payloadTrialRow(const PayloadTrial &t)
                .arg(mm.z(), 0, 'f', 1)
                .leftJustified(24) +
            QString::number(1000.0 * t.updateCpuSeconds, 'f', 1).rightJustified(8) +
-           QStringLiteral("  ") + identifiedValues(t.fit->estimate);
+           QStringLiteral("  ") + identifiedValues(t.fit->estimate) +
+           (t.partial ? QCoreApplication::translate(
+                            "learnid-cli", " (stopped at the limit: learned up to the stop)")
+                      : QString());
 }
 
 QString payloadResult(const PayloadSession &session)

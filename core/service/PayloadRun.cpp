@@ -63,6 +63,7 @@ PayloadTrialRow payloadTrialRow(const PayloadTrial &t)
     row.baseline = t.baseline;
     row.usable = t.usable();
     row.learned = t.learned();
+    row.partial = t.partial;
     if (t.maxTrackingErrorDeg.size() > 0) {
         row.maxTrackingErrorDeg = t.maxTrackingErrorDeg.maxCoeff();
         row.rmsTrackingErrorDeg = t.rmsTrackingErrorDeg.maxCoeff();

@@ -59,6 +59,7 @@ struct PayloadTrialRow
     bool baseline = false; ///< a baseline trial without the payload
     bool usable = false;   ///< learned from, or a baseline kept
     bool learned = false;
+    bool partial = false; ///< stopped at the tracking limit, learned from up to the stop
     double maxTrackingErrorDeg = std::numeric_limits<double>::quiet_NaN(); ///< worst joint
     double rmsTrackingErrorDeg = std::numeric_limits<double>::quiet_NaN(); ///< worst joint
     double mass = std::numeric_limits<double>::quiet_NaN(); ///< the fit after it [kg]

@@ -45,6 +45,18 @@ PayloadObservability plannedObservability(const PayloadModel &model,
     return payloadPathObservability(model, q, qd, qdd);
 }
 
+// The first `samples` samples of a filtered log (all when it has no more).
+FilteredLog cutFilteredLog(FilteredLog log, Eigen::Index samples)
+{
+    if (log.q.cols() <= samples)
+        return log;
+    log.q = log.q.leftCols(samples).eval();
+    log.qd = log.qd.leftCols(samples).eval();
+    log.qdd = log.qdd.leftCols(samples).eval();
+    log.tau = log.tau.leftCols(samples).eval();
+    return log;
+}
+
 UniformLog trialLog(const PayloadTrial &t)
 {
     UniformLog log;
@@ -155,7 +167,8 @@ const PayloadTrial &PayloadSession::runTrial()
     Robot &robot = t.baseline && m_bareRobot ? *m_bareRobot : *m_robot;
     t.record = robot.runTrial(t.plan(), monitor);
     trackingErrorFigures(t.plan(), t.record, t.maxTrackingErrorDeg, t.rmsTrackingErrorDeg);
-    if (!t.record.completed()) {
+    t.partial = !t.baseline && t.record.stoppedAtTrackingLimit();
+    if (!t.record.completed() && !t.partial) {
         t.message = Text::tr("trial %1 did not complete (%2): the payload estimate is unchanged")
                         .arg(t.index)
                         .arg(t.record.message);
@@ -174,11 +187,22 @@ const PayloadTrial &PayloadSession::runTrial()
     }
     try {
         const std::clock_t start = std::clock();
+        // A record stopped early: the baselines and the planned path up to the stop.
+        const Eigen::Index kept = t.record.samples();
+        std::vector<FilteredLog> baselines = m_baselines;
+        for (FilteredLog &b : baselines)
+            b = cutFilteredLog(b, kept);
         std::vector<FilteredLog> logs = m_logs;
         logs.push_back(
-            withBaselineSubtracted(*m_payload, filterLog(trialLog(t), m_filter), m_baselines));
+            withBaselineSubtracted(*m_payload, filterLog(trialLog(t), m_filter), baselines));
+        JointTrajectory planned = t.plan().desired;
+        if (planned.samples() > kept) {
+            planned.q = planned.q.leftCols(kept).eval();
+            planned.qd = planned.qd.leftCols(kept).eval();
+            planned.qdd = planned.qdd.leftCols(kept).eval();
+        }
         std::vector<JointTrajectory> paths = m_paths;
-        paths.push_back(t.plan().desired);
+        paths.push_back(planned);
         t.planned = plannedObservability(*m_payload, paths);
         PayloadFitSettings settings;
         settings.unseen = t.planned.unseen;
@@ -190,6 +214,13 @@ const PayloadTrial &PayloadSession::runTrial()
         m_paths = std::move(paths);
         m_current = fit.estimate.parameters;
         t.fit = std::move(fit);
+        if (t.partial) {
+            t.message = Text::tr("trial %1 stopped at the tracking limit (%2): learned from the "
+                                 "%3 s before the stop")
+                            .arg(t.index)
+                            .arg(t.record.message)
+                            .arg(double(kept) * t.record.samplePeriod, 0, 'f', 2);
+        }
     } catch (const Error &e) {
         t.message = Text::tr("trial %1 not learned from: %2").arg(t.index).arg(e.message());
     }
@@ -204,9 +235,14 @@ bool PayloadSession::runTrials(int count)
         if (m_cancel.load() || !runTrial().usable())
             return false;
     }
+    bool stoppedBefore = false;
     for (int i = 0; i < count; ++i) {
-        if (m_cancel.load() || !runTrial().usable())
+        if (m_cancel.load())
             return false;
+        const PayloadTrial &t = runTrial();
+        if (!t.usable() || (t.partial && stoppedBefore))
+            return false;
+        stoppedBefore = t.partial;
     }
     return true;
 }

@@ -26,6 +26,8 @@ struct PayloadTrial
     /// arm's feedforward alone; its log is taken out of every payload trial, nothing is fitted.
     bool baseline = false;
     bool baselineKept = false; ///< a baseline trial that completed and whose log is kept
+    /// Stopped at the tracking limit, and learned from the record before the stop.
+    bool partial = false;
     InertialParameters payloadUsed = InertialParameters::Zero(); ///< the feedforward's payload
     PreTrialCheck check; ///< plan (arm + payloadUsed) and verdict before the motion
     TrialRecord record;
@@ -54,8 +56,10 @@ struct PayloadTrial
 /// reported as not identified, even where a tracking error let the measured motion see them. Trials
 /// that did not complete are kept but not learned from. With payload.baselineTrials, the first
 /// trials run the path without the payload and every trial keeps their timing (docs/payload.md,
-/// "A wrong arm model and the baseline trial"). Calls are synchronous and belong to one thread;
-/// requestCancel() may come from any thread.
+/// "A wrong arm model and the baseline trial"). A payload trial stopped at the tracking limit is
+/// learned from up to the stop (its record and its planned path cut there), as the arm's session
+/// learns from one (docs/method.md §2.4); a stop too early to filter teaches nothing. Calls are
+/// synchronous and belong to one thread; requestCancel() may come from any thread.
 class PayloadSession
 {
 public:
@@ -92,7 +96,9 @@ public:
     /// Checks, runs and learns from one trial; see the class comment.
     const PayloadTrial &runTrial();
     /// Runs the baseline trials still due, then `count` payload trials; stops early (false) when
-    /// one is not usable or on Stop.
+    /// one is not usable, after two trials in a row stopped at the tracking limit (the gains do
+    /// not hold the payload: learning from the records did not bring the error under the
+    /// limit), or on Stop.
     bool runTrials(int count);
     void requestCancel() { m_cancel.store(true); }
 

@@ -105,6 +105,7 @@ private slots:
     void trialsThroughFiles_equalThePayloadSession();
     void badInput_isRefusedNamingItAndChangesNothing_data();
     void badInput_isRefusedNamingItAndChangesNothing();
+    void stoppedAtTheTrackingLimit_isLearnedUpToTheStop();
 
 private:
     QTemporaryDir m_base; // s.json and ex/: one trial learned, the next planned and logged
@@ -307,8 +308,6 @@ void TestCliLoopPayload::badInput_isRefusedNamingItAndChangesNothing_data()
         << "short" << 3
         << QStringLiteral("trial 1 did not complete (the log ends after 1160 of the "
                           "plan's 1170 samples");
-    QTest::newRow("learn: stopped at the tracking limit")
-        << "tracking limit" << 3 << QStringLiteral("trial 1 did not complete");
     QTest::newRow("plan: refused by the check")
         << "refused" << 3 << QStringLiteral("trial 0 refused by the pre-trial check");
 }
@@ -366,10 +365,6 @@ void TestCliLoopPayload::badInput_isRefusedNamingItAndChangesNothing()
     } else if (kind == QLatin1String("short")) {
         write(path("ex/run-1.csv"),
               test::logCsv(m_planId1, m_record1, int(m_record1.samples()) - 10));
-    } else if (kind == QLatin1String("tracking limit")) {
-        write(path("ex/run-1.csv"),
-              "# stopped-by: tracking-limit\n" +
-                  test::logCsv(m_planId1, m_record1, int(m_record1.samples()) - 10));
     } else if (kind == QLatin1String("refused")) {
         changed.torqueLimits = Eigen::VectorXd::Constant(7, 1.0); // far below the planned peaks
         args = plan;
@@ -389,6 +384,25 @@ void TestCliLoopPayload::badInput_isRefusedNamingItAndChangesNothing()
         QVERIFY2(ok.exitCode == 0, qPrintable(ok.err));
         QVERIFY(ok.out.contains(QStringLiteral("The payload after trial 1")));
     }
+}
+
+void TestCliLoopPayload::stoppedAtTheTrackingLimit_isLearnedUpToTheStop()
+{
+    // The controller stopped trial 1 at its tracking limit 10 samples before its end: the
+    // session learns from the record up to the stop (as `run` does), and says so.
+    QTemporaryDir dir;
+    copyTree(m_base.path(), dir.path());
+    write(dir.filePath(QStringLiteral("ex/run-1.csv")),
+          "# stopped-by: tracking-limit\n" +
+              test::logCsv(m_planId1, m_record1, int(m_record1.samples()) - 10));
+    const Result r =
+        cli({QStringLiteral("learn"), QStringLiteral("--trial-log"), QStringLiteral("ex/run-1.csv"),
+             QStringLiteral("--scenario"), QStringLiteral("s.json")},
+            dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY2(r.out.contains(QStringLiteral("(stopped at the limit: learned up to the stop)")),
+             qPrintable(r.out));
+    QVERIFY(r.out.contains(QStringLiteral("The payload after trial 1")));
 }
 
 QTEST_GUILESS_MAIN(TestCliLoopPayload)

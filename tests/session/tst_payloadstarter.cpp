@@ -103,6 +103,33 @@ private slots:
             qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
     }
 
+    void bareStarter_stopsAtTheLimit_andLearnsUpToTheStop()
+    {
+        // The bare arm's gains with 1.5 kg where 1.2 kg is believed: trial 0 stops at the
+        // tracking limit after seconds of motion, and the record up to the stop teaches the
+        // payload (docs/payload.md, "The learning loop").
+        const Scenario bareStarter = scenarioForRobot(QStringLiteral("panda"));
+        auto session = sessionFor(carrying(bareStarter, 1.5, prior(1.2)));
+        const PayloadTrial &t = session->runTrial();
+        QVERIFY(t.record.stoppedAtTrackingLimit());
+        QVERIFY(t.partial && t.learned());
+        QVERIFY2(t.message.startsWith(QStringLiteral("trial 0 stopped at the tracking limit")),
+                 qPrintable(t.message));
+        QVERIFY(t.record.samples() < t.plan().desired.samples());
+        const PayloadBody &b = t.fit->estimate.body;
+        QVERIFY2(std::abs(b.mass - 1.5) < 0.015, qPrintable(QString::number(b.mass)));
+        QCOMPARE(session->currentPayload(), t.fit->estimate.parameters);
+
+        // 3 kg where 2.5 kg is believed stops within the filter's settling time: nothing to
+        // learn from, the estimate stays the prior and the series ends.
+        session = sessionFor(carrying(bareStarter, 3.0, prior(2.5)));
+        QVERIFY(!session->runTrials(3));
+        const PayloadTrial &early = session->history().front();
+        QVERIFY(early.record.stoppedAtTrackingLimit() && !early.learned());
+        QVERIFY2(early.message.contains(QStringLiteral("too short")), qPrintable(early.message));
+        QCOMPARE(session->currentPayload(), session->prior().parameters());
+    }
+
     void badPayload_isRefusedNamingTheKey()
     {
         QCOMPARE(
