@@ -2532,6 +2532,11 @@
         <translation>Versuch %1 an der Bahnfehlergrenze gestoppt (%2): aus den %3 s vor dem Stopp gelernt</translation>
     </message>
     <message>
+        <location line="+11"/>
+        <source>; the second stop in a row: the gains do not hold the payload, stiffen them (scenario --print --payload)</source>
+        <translation>; der zweite Stopp in Folge: die Verstärkungen halten die Nutzlast nicht, erhöhen Sie sie (scenario --print --payload)</translation>
+    </message>
+    <message>
         <location line="+7"/>
         <source>trial %1 not learned from: %2</source>
         <translation>aus Versuch %1 nicht gelernt: %2</translation>

@@ -2522,6 +2522,11 @@
         <translation>试验 %1 在跟踪误差限值处停止（%2）：已从停止前的 %3 s 数据中学习</translation>
     </message>
     <message>
+        <location line="+11"/>
+        <source>; the second stop in a row: the gains do not hold the payload, stiffen them (scenario --print --payload)</source>
+        <translation>；连续第二次停止：增益无法承受该负载，请提高增益（scenario --print --payload）</translation>
+    </message>
+    <message>
         <location line="+7"/>
         <source>trial %1 not learned from: %2</source>
         <translation>未从试验 %1 学习：%2</translation>

@@ -220,6 +220,17 @@ const PayloadTrial &PayloadSession::runTrial()
                             .arg(t.index)
                             .arg(t.record.message)
                             .arg(double(kept) * t.record.samplePeriod, 0, 'f', 2);
+            // The previous payload trial stopped too: learning did not help, the gains must.
+            for (auto it = m_history.rbegin(); it != m_history.rend(); ++it) {
+                if (it->baseline)
+                    continue;
+                if (it->partial) {
+                    t.seriesStop = true;
+                    t.message += Text::tr("; the second stop in a row: the gains do not hold the "
+                                          "payload, stiffen them (scenario --print --payload)");
+                }
+                break;
+            }
         }
     } catch (const Error &e) {
         t.message = Text::tr("trial %1 not learned from: %2").arg(t.index).arg(e.message());
@@ -235,14 +246,9 @@ bool PayloadSession::runTrials(int count)
         if (m_cancel.load() || !runTrial().usable())
             return false;
     }
-    bool stoppedBefore = false;
     for (int i = 0; i < count; ++i) {
-        if (m_cancel.load())
+        if (m_cancel.load() || !runTrial().usable())
             return false;
-        const PayloadTrial &t = runTrial();
-        if (!t.usable() || (t.partial && stoppedBefore))
-            return false;
-        stoppedBefore = t.partial;
     }
     return true;
 }

@@ -28,6 +28,10 @@ struct PayloadTrial
     bool baselineKept = false; ///< a baseline trial that completed and whose log is kept
     /// Stopped at the tracking limit, and learned from the record before the stop.
     bool partial = false;
+    /// The second payload trial in a row stopped at the limit: learned from, but the series ends
+    /// (the gains do not hold the payload; learning from the records did not bring the error
+    /// under the limit).
+    bool seriesStop = false;
     InertialParameters payloadUsed = InertialParameters::Zero(); ///< the feedforward's payload
     PreTrialCheck check; ///< plan (arm + payloadUsed) and verdict before the motion
     TrialRecord record;
@@ -42,8 +46,9 @@ struct PayloadTrial
     QString message;               ///< why it was refused, ended early or not learned from
 
     bool learned() const { return fit.has_value(); }
-    /// The session may go on: a learned trial, or a baseline trial that was kept.
-    bool usable() const { return learned() || baselineKept; }
+    /// The session may go on: a learned trial that does not end the series, or a baseline trial
+    /// that was kept.
+    bool usable() const { return (learned() && !seriesStop) || baselineKept; }
     const TrialPlan &plan() const { return check.plan; }
 };
 
@@ -96,9 +101,8 @@ public:
     /// Checks, runs and learns from one trial; see the class comment.
     const PayloadTrial &runTrial();
     /// Runs the baseline trials still due, then `count` payload trials; stops early (false) when
-    /// one is not usable, after two trials in a row stopped at the tracking limit (the gains do
-    /// not hold the payload: learning from the records did not bring the error under the
-    /// limit), or on Stop.
+    /// one is not usable (PayloadTrial::usable: also the second stop at the limit in a row) or
+    /// on Stop.
     bool runTrials(int count);
     void requestCancel() { m_cancel.store(true); }
 

@@ -403,6 +403,31 @@ void TestCliLoopPayload::stoppedAtTheTrackingLimit_isLearnedUpToTheStop()
     QVERIFY2(r.out.contains(QStringLiteral("(stopped at the limit: learned up to the stop)")),
              qPrintable(r.out));
     QVERIFY(r.out.contains(QStringLiteral("The payload after trial 1")));
+
+    // Trial 2 stops too: learning from the records did not help, the gains must; the series
+    // ends (exit 3) and nothing is written.
+    const QStringList scenario{QStringLiteral("--scenario"), QStringLiteral("s.json")};
+    const Result planned = cli(QStringList{QStringLiteral("plan"), QStringLiteral("--out"),
+                                           QStringLiteral("ex"), QStringLiteral("--quiet")} +
+                                   scenario,
+                               dir.path());
+    QVERIFY2(planned.exitCode == 0, qPrintable(planned.err));
+    const PlanCsv plan = readPlanCsvFile(dir.filePath(QStringLiteral("ex/plan.csv")));
+    const TrialRecord record = makeSimulatedRobot(m_s.scenario, m_s.model)
+                                   ->runTrial(test::planFromCsv(plan, m_s.scenario), {});
+    write(dir.filePath(QStringLiteral("ex/run-2.csv")),
+          "# stopped-by: tracking-limit\n" +
+              test::logCsv(plan.planId, record, int(record.samples()) - 10));
+    const QStringList before = snapshot(dir.path());
+    const Result again = cli(QStringList{QStringLiteral("learn"), QStringLiteral("--trial-log"),
+                                         QStringLiteral("ex/run-2.csv")} +
+                                 scenario,
+                             dir.path());
+    QCOMPARE(again.exitCode, 3);
+    QVERIFY2(again.err.contains(QStringLiteral("the second stop in a row: the gains do not hold "
+                                               "the payload")),
+             qPrintable(again.err));
+    QCOMPARE(snapshot(dir.path()), before);
 }
 
 QTEST_GUILESS_MAIN(TestCliLoopPayload)
