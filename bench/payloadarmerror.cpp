@@ -30,10 +30,8 @@ Errors learn(Scenario s, int baselineTrials)
     s.payload.baselineTrials = baselineTrials;
     const auto model = makeRobotModel(s.model, s.urdf);
     s = withRobotDefaults(s, *model);
-    Scenario bare = s;
-    bare.simulation.payload = SimulatedPayload();
-    bare.payload.enabled = false;
-    PayloadSession session(s, model, makeSimulatedRobot(s, model), makeSimulatedRobot(bare, model));
+    PayloadSession session(s, model, makeSimulatedRobot(s, model),
+                           makeSimulatedBareRobot(s, model));
     Errors e;
     if (!session.runTrials(s.iterations)) {
         e.failure = session.history().back().message;

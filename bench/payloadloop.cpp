@@ -20,10 +20,10 @@ using namespace learnid;
 
 namespace {
 
-// Max tracking error over the joints [deg] of `plan` run on the robot `s` describes.
-double trackingOf(const Scenario &s, std::shared_ptr<const RobotModel> model, const TrialPlan &plan)
+// Max tracking error over the joints [deg] of `plan` run on `robot`.
+double trackingOf(Robot &robot, const TrialPlan &plan)
 {
-    const TrialRecord record = makeSimulatedRobot(s, std::move(model))->runTrial(plan, {});
+    const TrialRecord record = robot.runTrial(plan, {});
     Eigen::VectorXd maxDeg, rmsDeg;
     trackingErrorFigures(plan, record, maxDeg, rmsDeg);
     return record.completed() ? maxDeg.maxCoeff() : qQNaN();
@@ -72,13 +72,11 @@ void runRobot(const char *name, const Scenario &given)
         TrialPlanner planner(s, model);
         const Eigen::VectorXd planned = session.feedforwardParameters(last.payloadUsed);
         const Eigen::VectorXd withTruth = session.feedforwardParameters(truth.parameters());
-        const double oracle =
-            trackingOf(s, model, planner.plan(planned, nullptr, false, &withTruth));
-        Scenario bare = s;
-        bare.payload = PayloadSettings();
-        bare.simulation.payload = SimulatedPayload();
+        const double oracle = trackingOf(*makeSimulatedRobot(s, model),
+                                         planner.plan(planned, nullptr, false, &withTruth));
         const double alone =
-            trackingOf(bare, model, planner.plan(planned, nullptr, false, &s.initialParameters));
+            trackingOf(*makeSimulatedBareRobot(s, model),
+                       planner.plan(planned, nullptr, false, &s.initialParameters));
         const double trial2 = last.maxTrackingErrorDeg.maxCoeff();
         ratio.push_back(trial2 / alone);
         cpu.push_back(1000.0 * last.updateCpuSeconds);

@@ -50,11 +50,8 @@ Outcome run(const Case &c, bool payloadStarter, bool wrongArm)
         s.simulation.seed = seed;
         const auto model = makeRobotModel(s.model, s.urdf);
         s = withRobotDefaults(s, *model);
-        Scenario bare = s;
-        bare.simulation.payload = SimulatedPayload();
-        bare.payload.enabled = false;
         PayloadSession session(s, model, makeSimulatedRobot(s, model),
-                               makeSimulatedRobot(bare, model));
+                               makeSimulatedBareRobot(s, model));
         if (!session.runTrials(3))
             continue;
         ++o.completed;

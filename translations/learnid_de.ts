@@ -1543,7 +1543,7 @@
         <translation>kein Log zum Identifizieren: ein Trainings-Log hinzufügen</translation>
     </message>
     <message>
-        <location filename="../core/service/LogIdentificationExport.cpp" line="+27"/>
+        <location filename="../core/service/LogIdentificationExport.cpp" line="+26"/>
         <source>%1 (%2), identified from the logs %3</source>
         <translation>%1 (%2), identifiziert aus den Logs %3</translation>
     </message>
@@ -2264,7 +2264,7 @@
 <context>
     <name>PayloadBaseline</name>
     <message>
-        <location filename="../core/identify/PayloadBaseline.cpp" line="+62"/>
+        <location filename="../core/identify/PayloadBaseline.cpp" line="+63"/>
         <source>%1 covers less than %2 % of %3 within a shift of %4 s: a baseline runs the same timed path without the payload</source>
         <translation>%1 deckt innerhalb einer Verschiebung von %4 s weniger als %2 % von %3 ab: eine Referenzfahrt fährt dieselbe zeitlich geplante Bahn ohne die Nutzlast</translation>
     </message>
@@ -2279,7 +2279,7 @@
         <translation>%1: die gefilterten Signale sind nicht endlich</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+18"/>
         <source>%1 does not follow the path of %2: their joint angles differ by %3 deg RMS (at most %4 deg) after a shift of %5 s</source>
         <translation>%1 folgt nicht der Bahn von %2: ihre Gelenkwinkel weichen nach einer Verschiebung von %5 s um %3 Grad RMS ab (höchstens %4 Grad)</translation>
     </message>
@@ -2473,7 +2473,7 @@
         <translation>robot.model: unbekanntes Robotermodell &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+66"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>aus keinem Versuch wurde gelernt: die Nutzlast ist nicht geschätzt</translation>
     </message>
@@ -2502,7 +2502,7 @@
         <translation>Referenzfahrt %1</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+95"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
@@ -2512,12 +2512,12 @@
         <translation>Versuch %1 wurde nicht vollständig ausgeführt (%2): die Schätzung der Nutzlast bleibt unverändert</translation>
     </message>
     <message>
-        <location line="-108"/>
+        <location line="-106"/>
         <source>trial %1</source>
         <translation>Versuch %1</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+117"/>
         <source>baseline trial %1 not usable: %2</source>
         <translation>Referenzfahrt %1 nicht verwendbar: %2</translation>
     </message>
@@ -3422,7 +3422,7 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+91"/>
+        <location filename="../core/service/SessionExport.cpp" line="+107"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>nur URDF-Roboter haben ein URDF, das sich exportieren lässt</translation>
     </message>
@@ -3437,7 +3437,7 @@
         <translation>nur URDF-Roboter haben Standardparameter, die sich konsistent machen lassen</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+73"/>
         <source>cannot create the folder %1</source>
         <translation>Ordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -4109,7 +4109,7 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+47"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+45"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+11"/>
         <location line="+6"/>
@@ -4588,7 +4588,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+54"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+48"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -5224,12 +5224,12 @@ neue Schätzung.
         <translation>Referenz: dieselbe Bahn ohne die Nutzlast</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-49"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-43"/>
         <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
         <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten Roboter gelernt, und nichts wird geschrieben)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+17"/>
         <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
         <translation>learnid-cli: %1, die Nutzlast an %2 in %3 Versuchen gelernt; das Modell des Arms bleibt fest (robot.initialParameters)</translation>
     </message>
@@ -6588,7 +6588,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::MainWindow</name>
     <message>
-        <location filename="../ui/MainWindow.cpp" line="+80"/>
+        <location filename="../ui/MainWindow.cpp" line="+72"/>
         <source>learnid – commissioning</source>
         <translation>learnid – Inbetriebnahme</translation>
     </message>
@@ -6863,7 +6863,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::PayloadDialog</name>
     <message>
-        <location filename="../ui/PayloadDialog.cpp" line="+63"/>
+        <location filename="../ui/PayloadDialog.cpp" line="+49"/>
         <source>&amp;Run trials</source>
         <translation>Versuche &amp;ausführen</translation>
     </message>
@@ -7340,7 +7340,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RecordedDataDialog</name>
     <message>
-        <location filename="../ui/RecordedDataDialog.cpp" line="+52"/>
+        <location filename="../ui/RecordedDataDialog.cpp" line="+46"/>
         <source>&amp;Identify</source>
         <translation>&amp;Identifizieren</translation>
     </message>
@@ -7355,7 +7355,7 @@ Verhältnis %</translation>
         <translation>&amp;Akzeptieren</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Export &amp;parameter file…</source>
         <translation>&amp;Parameterdatei exportieren…</translation>
     </message>
@@ -7433,7 +7433,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::RecordedDataForm</name>
     <message>
-        <location filename="../ui/RecordedDataForm.cpp" line="+48"/>
+        <location filename="../ui/RecordedDataForm.cpp" line="+42"/>
         <source>Robot logs (*.csv);;All files (*)</source>
         <translation>Roboter-Logs (*.csv);;Alle Dateien (*)</translation>
     </message>

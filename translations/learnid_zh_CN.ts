@@ -1543,7 +1543,7 @@
         <translation>没有可用于辨识的日志：请添加一个训练日志</translation>
     </message>
     <message>
-        <location filename="../core/service/LogIdentificationExport.cpp" line="+27"/>
+        <location filename="../core/service/LogIdentificationExport.cpp" line="+26"/>
         <source>%1 (%2), identified from the logs %3</source>
         <translation>%1（%2），由日志 %3 辨识</translation>
     </message>
@@ -2255,7 +2255,7 @@
 <context>
     <name>PayloadBaseline</name>
     <message>
-        <location filename="../core/identify/PayloadBaseline.cpp" line="+62"/>
+        <location filename="../core/identify/PayloadBaseline.cpp" line="+63"/>
         <source>%1 covers less than %2 % of %3 within a shift of %4 s: a baseline runs the same timed path without the payload</source>
         <translation>在 %4 s 的平移范围内，%1 覆盖 %3 的部分少于 %2 %：基线须在不带负载的情况下运行同一条定时路径</translation>
     </message>
@@ -2270,7 +2270,7 @@
         <translation>%1：滤波后的信号不是有限值</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+18"/>
         <source>%1 does not follow the path of %2: their joint angles differ by %3 deg RMS (at most %4 deg) after a shift of %5 s</source>
         <translation>%1 没有沿 %2 的路径运动：平移 %5 s 后两者的关节角相差 %3 度 RMS（最多允许 %4 度）</translation>
     </message>
@@ -2464,7 +2464,7 @@
         <translation>robot.model：未知的机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+66"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>没有从任何试验中学习：未估计负载</translation>
     </message>
@@ -2492,7 +2492,7 @@
         <translation>基线试验 %1</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+95"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
@@ -2502,12 +2502,12 @@
         <translation>试验 %1 未完成（%2）：负载估计保持不变</translation>
     </message>
     <message>
-        <location line="-108"/>
+        <location line="-106"/>
         <source>trial %1</source>
         <translation>试验 %1</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+117"/>
         <source>baseline trial %1 not usable: %2</source>
         <translation>基线试验 %1 不可用：%2</translation>
     </message>
@@ -3409,7 +3409,7 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+91"/>
+        <location filename="../core/service/SessionExport.cpp" line="+107"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>只有 URDF 机器人才有可导出的 URDF</translation>
     </message>
@@ -3424,7 +3424,7 @@
         <translation>只有 URDF 机器人有可使其一致的标准参数</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+73"/>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
@@ -4095,7 +4095,7 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+47"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+45"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+11"/>
         <location line="+6"/>
@@ -4572,7 +4572,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+54"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+48"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -5204,12 +5204,12 @@ stdout, and the next plan uses the new estimate.
         <translation>基线：不带负载的同一路径</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-49"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-43"/>
         <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
         <translation>%1：带 payload 段时尚不可用（负载在仿真机器人上学习，不写入任何文件）</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+17"/>
         <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
         <translation>learnid-cli：%1，在 %3 次试验中学习 %2 上的负载；机械臂模型保持固定（robot.initialParameters）</translation>
     </message>
@@ -6566,7 +6566,7 @@ ratio %</source>
 <context>
     <name>learnid::MainWindow</name>
     <message>
-        <location filename="../ui/MainWindow.cpp" line="+80"/>
+        <location filename="../ui/MainWindow.cpp" line="+72"/>
         <source>learnid – commissioning</source>
         <translation>learnid – 调试</translation>
     </message>
@@ -6841,7 +6841,7 @@ ratio %</source>
 <context>
     <name>learnid::PayloadDialog</name>
     <message>
-        <location filename="../ui/PayloadDialog.cpp" line="+63"/>
+        <location filename="../ui/PayloadDialog.cpp" line="+49"/>
         <source>&amp;Run trials</source>
         <translation>运行试验(&amp;R)</translation>
     </message>
@@ -7318,7 +7318,7 @@ ratio %</source>
 <context>
     <name>learnid::RecordedDataDialog</name>
     <message>
-        <location filename="../ui/RecordedDataDialog.cpp" line="+52"/>
+        <location filename="../ui/RecordedDataDialog.cpp" line="+46"/>
         <source>&amp;Identify</source>
         <translation>辨识(&amp;I)</translation>
     </message>
@@ -7333,7 +7333,7 @@ ratio %</source>
         <translation>接受(&amp;A)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Export &amp;parameter file…</source>
         <translation>导出参数文件(&amp;P)…</translation>
     </message>
@@ -7411,7 +7411,7 @@ ratio %</source>
 <context>
     <name>learnid::RecordedDataForm</name>
     <message>
-        <location filename="../ui/RecordedDataForm.cpp" line="+48"/>
+        <location filename="../ui/RecordedDataForm.cpp" line="+42"/>
         <source>Robot logs (*.csv);;All files (*)</source>
         <translation>机器人日志 (*.csv);;所有文件 (*)</translation>
     </message>

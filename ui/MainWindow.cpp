@@ -18,6 +18,7 @@
 #include "ui/ScenarioForm.h"
 #include "ui/SessionPresenter.h"
 #include "ui/TrackingErrorPlot.h"
+#include "ui/WidgetFactory.h"
 
 #include <QAction>
 #include <QApplication>
@@ -36,15 +37,6 @@
 namespace learnid {
 
 namespace {
-
-QGroupBox *group(const QString &title, QWidget *content)
-{
-    auto *box = new QGroupBox(title);
-    auto *layout = new QVBoxLayout(box);
-    layout->setContentsMargins(6, 6, 6, 6);
-    layout->addWidget(content);
-    return box;
-}
 
 QDockWidget *dock(const QString &title, const QString &name, QWidget *content, QWidget *parent)
 {
@@ -105,9 +97,9 @@ void MainWindow::buildLayout()
     auto *convergence = new ConvergencePanel(m_table, m_parameters, m_chart);
 
     auto *controls = new QHBoxLayout;
-    controls->addWidget(group(tr("Pre-trial check"), m_check), 3);
-    controls->addWidget(group(tr("Run"), m_run), 2);
-    controls->addWidget(group(tr("Accept / apply"), m_apply), 2);
+    controls->addWidget(titledGroup(tr("Pre-trial check"), m_check), 3);
+    controls->addWidget(titledGroup(tr("Run"), m_run), 2);
+    controls->addWidget(titledGroup(tr("Accept / apply"), m_apply), 2);
     auto *central = new QWidget;
     auto *layout = new QVBoxLayout(central);
     layout->addWidget(m_message);
@@ -118,13 +110,13 @@ void MainWindow::buildLayout()
     auto *setup = new QWidget;
     setup->setMinimumWidth(480);
     auto *setupLayout = new QVBoxLayout(setup);
-    setupLayout->addWidget(group(tr("Robot"), m_robot));
+    setupLayout->addWidget(titledGroup(tr("Robot"), m_robot));
     auto *scroll = new QScrollArea;
     scroll->setWidget(m_form);
     scroll->setWidgetResizable(true);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     scroll->setFrameShape(QFrame::NoFrame);
-    setupLayout->addWidget(group(tr("Scenario"), scroll), 1);
+    setupLayout->addWidget(titledGroup(tr("Scenario"), scroll), 1);
     QDockWidget *setupDock = dock(tr("Setup"), QStringLiteral("setupDock"), setup, this);
     QDockWidget *convergenceDock =
         dock(tr("Parameter convergence"), QStringLiteral("convergenceDock"), convergence, this);

@@ -6,6 +6,7 @@
 #include "ui/PayloadForm.h"
 #include "ui/PayloadText.h"
 #include "ui/PayloadTrialTableModel.h"
+#include "ui/WidgetFactory.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -24,13 +25,6 @@ namespace learnid {
 
 namespace {
 
-QPushButton *button(const QString &text, const char *name)
-{
-    auto *b = new QPushButton(text);
-    b->setObjectName(QLatin1String(name));
-    return b;
-}
-
 QTableView *tableView(QAbstractItemModel *model, const char *name)
 {
     auto *view = new QTableView;
@@ -44,14 +38,6 @@ QTableView *tableView(QAbstractItemModel *model, const char *name)
     return view;
 }
 
-QGroupBox *group(const QString &title, QWidget *content)
-{
-    auto *box = new QGroupBox(title);
-    auto *layout = new QVBoxLayout(box);
-    layout->addWidget(content);
-    return box;
-}
-
 } // namespace
 
 PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
@@ -60,8 +46,8 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     , m_message(new MessageBar)
     , m_form(new PayloadForm)
     , m_preview(new QLabel)
-    , m_run(button(tr("&Run trials"), "runPayloadButton"))
-    , m_stop(button(tr("&Stop"), "stopPayloadButton"))
+    , m_run(namedButton(tr("&Run trials"), "runPayloadButton"))
+    , m_stop(namedButton(tr("&Stop"), "stopPayloadButton"))
     , m_progress(new QProgressBar)
     , m_stage(new QLabel)
     , m_trials(new PayloadTrialTableModel(this))
@@ -69,10 +55,10 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     , m_summary(new QLabel)
     , m_estimate(new PayloadEstimateTableModel(this))
     , m_estimateView(tableView(m_estimate, "payloadEstimateTable"))
-    , m_accept(button(tr("&Accept"), "acceptPayloadButton"))
+    , m_accept(namedButton(tr("&Accept"), "acceptPayloadButton"))
     , m_exportParameters(
-          button(tr("Export &parameter file\u2026"), "exportPayloadParametersButton"))
-    , m_exportUrdf(button(tr("Export &URDF\u2026"), "exportPayloadUrdfButton"))
+          namedButton(tr("Export &parameter file\u2026"), "exportPayloadParametersButton"))
+    , m_exportUrdf(namedButton(tr("Export &URDF\u2026"), "exportPayloadUrdfButton"))
     , m_job(new PayloadRunJob(this))
     , m_checkTimer(new QTimer(this))
 {
@@ -120,8 +106,8 @@ void PayloadDialog::buildLayout()
     auto *left = new QWidget;
     auto *leftLayout = new QVBoxLayout(left);
     leftLayout->setContentsMargins(0, 0, 0, 0);
-    leftLayout->addWidget(group(tr("Payload and prior"), m_form));
-    leftLayout->addWidget(group(tr("What the path lets the trials see"), previewScroll), 1);
+    leftLayout->addWidget(titledGroup(tr("Payload and prior"), m_form));
+    leftLayout->addWidget(titledGroup(tr("What the path lets the trials see"), previewScroll), 1);
     left->setMinimumWidth(460);
 
     auto *runRow = new QHBoxLayout;
@@ -149,7 +135,7 @@ void PayloadDialog::buildLayout()
     main->setStretchFactor(1, 1);
     main->setSizes({480, 800});
 
-    auto *close = button(tr("Close"), "closePayloadButton");
+    auto *close = namedButton(tr("Close"), "closePayloadButton");
     connect(close, &QPushButton::clicked, this, &PayloadDialog::reject);
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_accept);

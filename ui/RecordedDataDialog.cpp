@@ -7,6 +7,7 @@
 #include "ui/MessageBar.h"
 #include "ui/TorqueFitPlot.h"
 #include "ui/UiSettings.h"
+#include "ui/WidgetFactory.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -27,13 +28,6 @@ namespace learnid {
 
 namespace {
 
-QPushButton *button(const QString &text, const char *name)
-{
-    auto *b = new QPushButton(text);
-    b->setObjectName(QLatin1String(name));
-    return b;
-}
-
 QStringList jointNames(const ChainModel &model)
 {
     QStringList names;
@@ -49,8 +43,8 @@ RecordedDataDialog::RecordedDataDialog(UiSettings *settings, QWidget *parent)
     , m_settings(settings)
     , m_message(new MessageBar)
     , m_form(new RecordedDataForm)
-    , m_identify(button(tr("&Identify"), "identifyButton"))
-    , m_cancel(button(tr("Cancel"), "cancelIdentifyButton"))
+    , m_identify(namedButton(tr("&Identify"), "identifyButton"))
+    , m_cancel(namedButton(tr("Cancel"), "cancelIdentifyButton"))
     , m_progress(new QProgressBar)
     , m_stage(new QLabel)
     , m_summary(new QLabel)
@@ -58,9 +52,10 @@ RecordedDataDialog::RecordedDataDialog(UiSettings *settings, QWidget *parent)
     , m_table(new LogValidationTableModel(this))
     , m_tableView(new QTableView)
     , m_plot(new TorqueFitPlot)
-    , m_accept(button(tr("&Accept"), "acceptIdentifiedButton"))
-    , m_exportParameters(button(tr("Export &parameter file\u2026"), "exportParameterFileButton"))
-    , m_exportUrdf(button(tr("Export &URDF\u2026"), "exportUrdfButton"))
+    , m_accept(namedButton(tr("&Accept"), "acceptIdentifiedButton"))
+    , m_exportParameters(
+          namedButton(tr("Export &parameter file\u2026"), "exportParameterFileButton"))
+    , m_exportUrdf(namedButton(tr("Export &URDF\u2026"), "exportUrdfButton"))
     , m_job(new LogIdentificationJob(this))
     , m_exports(new LogExportController(settings, this))
 {
@@ -177,7 +172,7 @@ void RecordedDataDialog::buildLayout()
     main->setStretchFactor(1, 1);
     main->setSizes({640, 800});
 
-    auto *close = button(tr("Close"), "closeRecordedDataButton");
+    auto *close = namedButton(tr("Close"), "closeRecordedDataButton");
     connect(close, &QPushButton::clicked, this, &RecordedDataDialog::reject);
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_accept);

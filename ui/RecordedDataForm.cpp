@@ -1,4 +1,5 @@
 #include "ui/RecordedDataForm.h"
+#include "ui/WidgetFactory.h"
 
 #include "model/Error.h"
 
@@ -28,13 +29,6 @@ void addLog(QListWidget *list, const QString &path)
     auto *item = new QListWidgetItem(QFileInfo(path).fileName(), list);
     item->setData(Qt::UserRole, path);
     item->setToolTip(QDir::toNativeSeparators(path));
-}
-
-QPushButton *button(const QString &text, const char *name, QWidget *parent)
-{
-    auto *b = new QPushButton(text, parent);
-    b->setObjectName(QLatin1String(name));
-    return b;
 }
 
 } // namespace
@@ -76,12 +70,12 @@ RecordedDataForm::RecordedDataForm(QWidget *parent)
     : QWidget(parent)
     , m_robot(new QComboBox(this))
     , m_urdf(new QLineEdit(this))
-    , m_browseUrdf(button(tr("Browse\u2026"), "browseUrdfButton", this))
+    , m_browseUrdf(namedButton(tr("Browse\u2026"), "browseUrdfButton", this))
     , m_training(new QListWidget(this))
     , m_validation(new QListWidget(this))
     , m_columns(new QLineEdit(this))
     , m_gains(new QLineEdit(this))
-    , m_browseGains(button(tr("Browse\u2026"), "browseGainsButton", this))
+    , m_browseGains(namedButton(tr("Browse\u2026"), "browseGainsButton", this))
 {
     m_robot->setObjectName(QStringLiteral("recordedRobot"));
     m_urdf->setObjectName(QStringLiteral("recordedUrdf"));
@@ -153,8 +147,8 @@ QWidget *RecordedDataForm::logList(QListWidget *list, RecordedDataPath purpose, 
     list->setSelectionMode(QAbstractItemView::ExtendedSelection);
     list->setMinimumHeight(48);
     list->setMaximumHeight(66);
-    auto *add = button(tr("Add\u2026"), addName, box);
-    auto *remove = button(tr("Remove"), removeName, box);
+    auto *add = namedButton(tr("Add\u2026"), addName, box);
+    auto *remove = namedButton(tr("Remove"), removeName, box);
     auto *buttons = new QVBoxLayout;
     buttons->addWidget(add);
     buttons->addWidget(remove);

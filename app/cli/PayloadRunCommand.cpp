@@ -3,9 +3,7 @@
 #include "cli/PayloadCommand.h"
 #include "cli/PayloadTrialTable.h"
 #include "model/Error.h"
-#include "model/ModelFactory.h"
-#include "session/PayloadSession.h"
-#include "session/ScenarioRobot.h"
+#include "service/PayloadRun.h"
 
 #include <QCoreApplication>
 #include <csignal>
@@ -57,19 +55,13 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
                     ExitBadInput);
     }
     std::unique_ptr<PayloadSession> session;
-    Scenario scenario;
     try {
-        const auto model = makeRobotModel(given.model, given.urdf);
-        scenario = withRobotDefaults(given, *model);
-        // The simulated robot without its payload runs the baseline trials.
-        Scenario bare = scenario;
-        bare.simulation.payload = SimulatedPayload();
-        bare.payload.enabled = false;
-        session = std::make_unique<PayloadSession>(
-            scenario, model, makeSimulatedRobot(scenario, model), makeSimulatedRobot(bare, model));
+        // The simulated robot carrying its payload, and without it for the baseline trials.
+        session = makeSimulatedPayloadSession(given).session;
     } catch (const Error &e) {
         return fail(e.message(), ExitBadInput);
     }
+    const Scenario &scenario = session->scenario();
     const QString link = session->payloadModel().link();
     if (!options.quiet) {
         err << QCoreApplication::translate(
@@ -108,7 +100,7 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
     const int trials = scenario.payload.baselineTrials + scenario.iterations;
     for (int i = 0; i < trials && completed; ++i) {
         const PayloadTrial &t = session->runTrial();
-        out << payloadTrialRow(t) << Qt::endl;
+        out << cli::payloadTrialRow(t) << Qt::endl;
         completed = t.usable();
     }
     std::signal(SIGINT, previous);

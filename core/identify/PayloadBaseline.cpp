@@ -46,7 +46,8 @@ BaselineAlignment align(const FilteredLog &log, const FilteredLog &b,
     BaselineAlignment a;
     a.baseline = b.source;
     a.log = log.source;
-    const auto reach = Eigen::Index(std::floor(settings.maxShift / log.period + 1e-9));
+    const auto reach =
+        Eigen::Index(std::floor(std::max(0.0, settings.maxShift) / log.period + 1e-9));
     double best = std::numeric_limits<double>::infinity();
     const auto needed = Eigen::Index(std::ceil(settings.minOverlap * double(log.q.cols())));
     for (Eigen::Index shift = -reach; shift <= reach; ++shift) {
@@ -104,13 +105,7 @@ FilteredLog withBaselineSubtracted(const PayloadModel &model, const FilteredLog 
     Overlap common{0, log.q.cols()};
     for (const FilteredLog &b : baselines) {
         checkComparable(log, b, settings.maxShift <= 0.0);
-        BaselineAlignment a =
-            settings.maxShift > 0.0 ? align(log, b, settings) : BaselineAlignment{};
-        if (settings.maxShift <= 0.0) {
-            a.baseline = b.source;
-            a.log = log.source;
-            a.angleRmsDeg = std::sqrt(meanSquaredAngle(log, b, 0)) * 180.0 / M_PI;
-        }
+        const BaselineAlignment a = align(log, b, settings); // maxShift 0: shift 0 only
         if (a.angleRmsDeg > settings.maxAngleRmsDeg) {
             throw Error(Text::tr("%1 does not follow the path of %2: their joint angles differ by "
                                  "%3 deg RMS (at most %4 deg) after a shift of %5 s")

@@ -3,7 +3,6 @@
 #include "service/LogIdentification.h"
 
 #include "can/ManufacturerObjects.h"
-#include "io/AtomicFile.h"
 #include "io/UrdfExport.h"
 #include "model/Error.h"
 #include "service/SessionExport.h"
@@ -55,8 +54,7 @@ QList<QPair<QString, QByteArray>> logExportFiles(const LogIdentificationResult &
                             .arg(result.model().dof()));
         }
         const ParameterFileContent content = logParameterFile(result, request.controller);
-        files.append({request.parameterPath, parameterFileToJson(content)});
-        files.append({dcfPathFor(request.parameterPath), parameterDcfFragment(content)});
+        appendParameterFiles(files, request.parameterPath, content);
     }
     if (!request.urdfPath.isEmpty())
         files.append({request.urdfPath, logIdentifiedUrdf(result, request.urdfComment)});
@@ -66,11 +64,7 @@ QList<QPair<QString, QByteArray>> logExportFiles(const LogIdentificationResult &
 QStringList writeLogExport(const LogIdentificationResult &result, const LogExportRequest &request)
 {
     const QList<QPair<QString, QByteArray>> files = logExportFiles(result, request);
-    writeFilesAtomically(files);
-    QStringList paths;
-    for (const auto &file : files)
-        paths << file.first;
-    return paths;
+    return writeExportFiles(files);
 }
 
 } // namespace learnid

@@ -100,8 +100,7 @@ QList<QPair<QString, QByteArray>> payloadExportFiles(const PayloadIdentification
                             .arg(dof));
         }
         const ParameterFileContent content = payloadParameterFile(r, request.controller);
-        files.append({request.parameterPath, parameterFileToJson(content)});
-        files.append({dcfPathFor(request.parameterPath), parameterDcfFragment(content)});
+        appendParameterFiles(files, request.parameterPath, content);
     }
     if (!request.urdfPath.isEmpty())
         files.append({request.urdfPath, payloadIdentifiedUrdf(r, request.urdfComment)});

@@ -29,12 +29,9 @@ SimulatedPayloadSession makeSimulatedPayloadSession(const Scenario &given)
         throw Error(Text::tr("robot.model: unknown robot model \"%1\"").arg(given.model));
     run.model = std::dynamic_pointer_cast<const ChainModel>(model);
     const Scenario scenario = withRobotDefaults(given, *model);
-    // The simulated robot without its payload runs the baseline trials (learnid-cli run alike).
-    Scenario bare = scenario;
-    bare.simulation.payload = SimulatedPayload();
-    bare.payload.enabled = false;
-    run.session = std::make_unique<PayloadSession>(
-        scenario, model, makeSimulatedRobot(scenario, model), makeSimulatedRobot(bare, model));
+    run.session =
+        std::make_unique<PayloadSession>(scenario, model, makeSimulatedRobot(scenario, model),
+                                         makeSimulatedBareRobot(scenario, model));
     return run;
 }
 

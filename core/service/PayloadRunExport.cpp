@@ -86,8 +86,7 @@ QList<QPair<QString, QByteArray>> payloadRunExportFiles(const PayloadRunResult &
     QList<QPair<QString, QByteArray>> files;
     if (!request.parameterPath.isEmpty()) {
         const ParameterFileContent content = payloadRunParameterFile(r);
-        files.append({request.parameterPath, parameterFileToJson(content)});
-        files.append({dcfPathFor(request.parameterPath), parameterDcfFragment(content)});
+        appendParameterFiles(files, request.parameterPath, content);
     }
     if (!request.urdfPath.isEmpty())
         files.append({request.urdfPath, payloadRunUrdf(r, request.urdfComment)});
@@ -97,11 +96,7 @@ QList<QPair<QString, QByteArray>> payloadRunExportFiles(const PayloadRunResult &
 QStringList writePayloadRunExport(const PayloadRunResult &r, const LogExportRequest &request)
 {
     const QList<QPair<QString, QByteArray>> files = payloadRunExportFiles(r, request);
-    writeFilesAtomically(files);
-    QStringList paths;
-    for (const auto &file : files)
-        paths << file.first;
-    return paths;
+    return writeExportFiles(files);
 }
 
 } // namespace learnid

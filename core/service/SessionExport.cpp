@@ -38,6 +38,22 @@ QString dcfPathFor(const QString &parameterPath)
     return info.dir().filePath(info.completeBaseName() + QStringLiteral(".dcf"));
 }
 
+void appendParameterFiles(QList<QPair<QString, QByteArray>> &files, const QString &path,
+                          const ParameterFileContent &content)
+{
+    files.append({path, parameterFileToJson(content)});
+    files.append({dcfPathFor(path), parameterDcfFragment(content)});
+}
+
+QStringList writeExportFiles(const QList<QPair<QString, QByteArray>> &files)
+{
+    writeFilesAtomically(files);
+    QStringList paths;
+    for (const auto &file : files)
+        paths << file.first;
+    return paths;
+}
+
 QByteArray urdfWithStandard(const ChainModel &model, const QByteArray &xml, const QString &source,
                             const Eigen::VectorXd &pi, const QString &comment,
                             const std::vector<double> &determined)
@@ -123,8 +139,7 @@ QList<QPair<QString, QByteArray>> exportFiles(const CommissioningSession &sessio
             setStandardParameters(content, *chain, standardOfEstimate(session, *chain, k, c, false),
                                   c.standardDetermined);
         }
-        files.append({request.parameterPath, parameterFileToJson(content)});
-        files.append({dcfPathFor(request.parameterPath), parameterDcfFragment(content)});
+        appendParameterFiles(files, request.parameterPath, content);
     }
     if (!request.trialCsvDir.isEmpty())
         files += trialCsvFiles(session.history(), request.trialCsvDir);
@@ -140,11 +155,7 @@ QStringList writeExport(const CommissioningSession &session, const ExportRequest
         throw Error(QCoreApplication::translate("SessionExport", "cannot create the folder %1")
                         .arg(QDir::toNativeSeparators(request.trialCsvDir)));
     }
-    writeFilesAtomically(files);
-    QStringList paths;
-    for (const auto &file : files)
-        paths << file.first;
-    return paths;
+    return writeExportFiles(files);
 }
 
 } // namespace learnid

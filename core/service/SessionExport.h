@@ -1,5 +1,6 @@
 #pragma once
 
+#include "io/ParameterFile.h"
 #include "model/ChainModel.h"
 #include "session/CommissioningSession.h"
 
@@ -55,5 +56,12 @@ QList<QPair<QString, QByteArray>> trialCsvFiles(const QVector<TrialResult> &hist
 
 /// Where the DCF fragment of a parameter file goes: beside it, same base name, .dcf.
 QString dcfPathFor(const QString &parameterPath);
+
+/// Appends the parameter file (JSON) at `path` and its DCF fragment beside it (dcfPathFor).
+void appendParameterFiles(QList<QPair<QString, QByteArray>> &files, const QString &path,
+                          const ParameterFileContent &content);
+
+/// Writes the files all or none (writeFilesAtomically) and returns their paths.
+QStringList writeExportFiles(const QList<QPair<QString, QByteArray>> &files);
 
 } // namespace learnid

@@ -102,21 +102,24 @@ bool PayloadSession::nextTrialIsBaseline() const
     return int(m_baselines.size()) < m_scenario.payload.baselineTrials;
 }
 
+PayloadSession::NextTiming PayloadSession::nextTiming() const
+{
+    if (m_scenario.payload.baselineTrials > 0) {
+        // One timed path for every trial, so that the baseline's samples line up with each
+        // payload trial's: timed with the prior, gentle throughout if any trial is to be.
+        return {feedforwardParameters(m_prior.parameters()), m_scenario.gentleTrials > 0};
+    }
+    return {feedforwardParameters(m_current), int(m_history.size()) < m_scenario.gentleTrials};
+}
+
 PreTrialCheck PayloadSession::checkNextTrial() const
 {
     PreTrialCheck check;
     try {
         const Eigen::VectorXd phi =
             nextTrialIsBaseline() ? m_scenario.initialParameters : feedforwardParameters(m_current);
-        if (m_scenario.payload.baselineTrials > 0) {
-            // One timed path for every trial, so that the baseline's samples line up with each
-            // payload trial's: timed with the prior, gentle throughout if any trial is to be.
-            const Eigen::VectorXd timing = feedforwardParameters(m_prior.parameters());
-            check.plan = m_planner.plan(timing, &check.rule, m_scenario.gentleTrials > 0, &phi);
-        } else {
-            const bool gentle = int(m_history.size()) < m_scenario.gentleTrials;
-            check.plan = m_planner.plan(phi, &check.rule, gentle);
-        }
+        const NextTiming timing = nextTiming();
+        check.plan = m_planner.plan(timing.phi, &check.rule, timing.gentle, &phi);
         check.verdict = checkTrial(*m_model, phi, check.plan, m_scenario.stabilityMargin);
     } catch (const Error &e) {
         check.planningError = e.message();
@@ -137,15 +140,10 @@ PayloadPathChange PayloadSession::pathChange() const
 {
     const PayloadObservability before = observability();
     if (before.rank == 0)
-        return {}; // not planned: nothing to compare with
-    // Timed as checkNextTrial() times the next trial.
-    const bool baselines = m_scenario.payload.baselineTrials > 0;
-    const Eigen::VectorXd timing =
-        feedforwardParameters(baselines ? m_prior.parameters() : m_current);
-    const bool gentle =
-        baselines ? m_scenario.gentleTrials > 0 : int(m_history.size()) < m_scenario.gentleTrials;
-    return smallestPayloadPathChange(m_scenario, m_model, *m_payload, m_prior, timing, gentle,
-                                     before);
+        return {};                          // not planned: nothing to compare with
+    const NextTiming timing = nextTiming(); // as checkNextTrial() times the next trial
+    return smallestPayloadPathChange(m_scenario, m_model, *m_payload, m_prior, timing.phi,
+                                     timing.gentle, before);
 }
 
 const PayloadTrial &PayloadSession::runTrial()

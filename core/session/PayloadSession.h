@@ -107,6 +107,14 @@ public:
     void requestCancel() { m_cancel.store(true); }
 
 private:
+    /// How the next trial is timed: the parameters of the torque rule, and whether it is gentle.
+    struct NextTiming
+    {
+        Eigen::VectorXd phi;
+        bool gentle = false;
+    };
+    NextTiming nextTiming() const;
+
     Scenario m_scenario;
     std::shared_ptr<const ChainModel> m_model;
     std::shared_ptr<Robot> m_robot;

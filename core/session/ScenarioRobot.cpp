@@ -111,4 +111,13 @@ std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
     return std::make_shared<SimulatedRobot>(std::move(model), truePhi, measurement);
 }
 
+std::shared_ptr<SimulatedRobot> makeSimulatedBareRobot(const Scenario &scenario,
+                                                       std::shared_ptr<const RobotModel> model)
+{
+    Scenario bare = scenario;
+    bare.simulation.payload = SimulatedPayload();
+    bare.payload.enabled = false;
+    return makeSimulatedRobot(bare, std::move(model));
+}
+
 } // namespace learnid

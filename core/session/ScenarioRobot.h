@@ -21,4 +21,9 @@ Scenario withRobotDefaults(const Scenario &scenario, const RobotModel &model);
 std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
                                                    std::shared_ptr<const RobotModel> model);
 
+/// The same simulated robot without the payload it carries (simulation.payload, or the prior
+/// body): the robot of a payload session's baseline trials (payload.baselineTrials).
+std::shared_ptr<SimulatedRobot> makeSimulatedBareRobot(const Scenario &scenario,
+                                                       std::shared_ptr<const RobotModel> model);
+
 } // namespace learnid

@@ -165,11 +165,8 @@ void TestCliLoopPayload::trialsThroughFiles_equalThePayloadSession()
     writeScenarioFile(dir.filePath(QStringLiteral("s.json")), scenarioFile);
     const LoopScenario s = loopScenario(readScenarioFile(dir.filePath(QStringLiteral("s.json"))));
     const QStringList scenario{QStringLiteral("--scenario"), QStringLiteral("s.json")};
-    Scenario bare = s.scenario; // the robot without its payload, as `run` makes it
-    bare.simulation.payload = SimulatedPayload();
-    bare.payload.enabled = false;
     const auto controller = makeSimulatedRobot(s.scenario, s.model);
-    const auto bareController = makeSimulatedRobot(bare, s.model);
+    const auto bareController = makeSimulatedBareRobot(s.scenario, s.model); // as `run` makes it
     Result learned;
     for (int k = 0; k < trials; ++k) {
         const Result planned = cli(QStringList{QStringLiteral("plan"), QStringLiteral("--out"),
@@ -217,7 +214,7 @@ void TestCliLoopPayload::trialsThroughFiles_equalThePayloadSession()
     // The session that runs the same trials on the simulated robot itself, the baseline on the
     // robot without its payload.
     PayloadSession session(s.scenario, s.model, makeSimulatedRobot(s.scenario, s.model),
-                           makeSimulatedRobot(bare, s.model));
+                           makeSimulatedBareRobot(s.scenario, s.model));
     QVERIFY(session.runTrials(trials - baselineTrials));
     QCOMPARE(int(session.history().size()), trials);
     const QDir history(dir.filePath(QStringLiteral("exchange/learnid-history")));

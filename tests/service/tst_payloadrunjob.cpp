@@ -29,11 +29,8 @@ std::unique_ptr<PayloadSession> cliSession(const Scenario &given)
 {
     const auto model = makeRobotModel(given.model, given.urdf);
     const Scenario s = withRobotDefaults(given, *model);
-    Scenario bare = s;
-    bare.simulation.payload = SimulatedPayload();
-    bare.payload.enabled = false;
     return std::make_unique<PayloadSession>(s, model, makeSimulatedRobot(s, model),
-                                            makeSimulatedRobot(bare, model));
+                                            makeSimulatedBareRobot(s, model));
 }
 
 std::shared_ptr<const PayloadRunResult> runJob(PayloadRunJob &job, const Scenario &s)

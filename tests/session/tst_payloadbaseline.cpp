@@ -211,11 +211,8 @@ private slots:
             Scenario t = s;
             t.payload.baselineTrials = baselineTrials;
             t = withRobotDefaults(t, *model);
-            Scenario bare = t;
-            bare.simulation.payload = SimulatedPayload();
-            bare.payload.enabled = false;
             auto session = std::make_unique<PayloadSession>(t, model, makeSimulatedRobot(t, model),
-                                                            makeSimulatedRobot(bare, model));
+                                                            makeSimulatedBareRobot(t, model));
             return session;
         };
         const auto with = learned(1);

@@ -85,10 +85,7 @@ private slots:
             QVERIFY(last.fit->estimate.bodyIdentified[size_t(i)]);
 
         // The same timed path without the payload, the feedforward from the arm alone.
-        Scenario bare = s;
-        bare.payload = PayloadSettings();
-        bare.simulation.payload = SimulatedPayload();
-        auto robot = makeSimulatedRobot(bare, model);
+        auto robot = makeSimulatedBareRobot(s, model);
         TrialPlanner planner(s, model);
         const TrialPlan reference = planner.plan(session.feedforwardParameters(last.payloadUsed),
                                                  nullptr, false, &s.initialParameters);

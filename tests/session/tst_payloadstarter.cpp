@@ -40,11 +40,8 @@ std::unique_ptr<PayloadSession> sessionFor(Scenario s)
 {
     const auto model = makeRobotModel(s.model, s.urdf);
     s = withRobotDefaults(s, *model);
-    Scenario bare = s;
-    bare.simulation.payload = SimulatedPayload();
-    bare.payload.enabled = false;
     return std::make_unique<PayloadSession>(s, model, makeSimulatedRobot(s, model),
-                                            makeSimulatedRobot(bare, model));
+                                            makeSimulatedBareRobot(s, model));
 }
 
 } // namespace
