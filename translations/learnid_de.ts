@@ -2315,12 +2315,12 @@
 <context>
     <name>PayloadExport</name>
     <message>
-        <location filename="../core/service/PayloadExport.cpp" line="+48"/>
+        <location filename="../core/service/PayloadExport.cpp" line="+67"/>
         <source>%1 (%2) with a payload on %3 identified from the logs %4</source>
         <translation>%1 (%2) mit einer Nutzlast an %3, identifiziert aus den Logs %4</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+40"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>die Reglerverstärkungen, die die Parameterdatei festhält, gelten für %1 Gelenke, der Roboter hat %2</translation>
     </message>
@@ -2481,7 +2481,7 @@
 <context>
     <name>PayloadRunExport</name>
     <message numerus="yes">
-        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
+        <location filename="../core/service/PayloadRunExport.cpp" line="+37"/>
         <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
         <translation>
             <numerusform>%1 mit einer Nutzlast an %2, gelernt in %n Versuch mit festgehaltenem Modell des Arms</numerusform>

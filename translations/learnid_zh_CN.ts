@@ -2306,12 +2306,12 @@
 <context>
     <name>PayloadExport</name>
     <message>
-        <location filename="../core/service/PayloadExport.cpp" line="+48"/>
+        <location filename="../core/service/PayloadExport.cpp" line="+67"/>
         <source>%1 (%2) with a payload on %3 identified from the logs %4</source>
         <translation>%1（%2），%3 上的负载由日志 %4 辨识</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+40"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>参数文件记录的控制器增益适用于 %1 个关节，机器人有 %2 个</translation>
     </message>
@@ -2472,7 +2472,7 @@
 <context>
     <name>PayloadRunExport</name>
     <message numerus="yes">
-        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
+        <location filename="../core/service/PayloadRunExport.cpp" line="+37"/>
         <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
         <translation>
             <numerusform>%1，负载位于 %2，在手臂模型保持不变的情况下经 %n 次试验学习</numerusform>

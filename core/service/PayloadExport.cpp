@@ -33,6 +33,25 @@ ParameterFilePayload payloadSection(const PayloadEstimate &e, const QString &lin
     return p;
 }
 
+void setPayloadFit(ParameterFileContent &content, const PayloadFit &fit, const QString &link)
+{
+    content.residualRms = fit.trainingRms;
+    const PayloadObservability &o = fit.estimate.observability;
+    content.condition = o.rank > 0 ? o.condition : std::numeric_limits<double>::infinity();
+    content.rank = o.rank;
+    content.payload = payloadSection(fit.estimate, link);
+}
+
+QStringList payloadValuesKept(const PayloadEstimate &estimate)
+{
+    QStringList kept;
+    const QStringList names = PayloadEstimate::bodyNames();
+    for (int i = 0; i < 10; ++i)
+        if (!estimate.bodyIdentified[size_t(i)])
+            kept << names[i];
+    return kept;
+}
+
 ParameterFileContent payloadParameterFile(const PayloadIdentificationResult &r,
                                           const std::optional<ControllerSettings> &controller)
 {
@@ -50,13 +69,9 @@ ParameterFileContent payloadParameterFile(const PayloadIdentificationResult &r,
             .arg(r.arm.robot.chain.name, arm, r.model->link(), logs.join(QStringLiteral(", "))),
         controller);
     c.values = model.baseFromStandard(r.arm.standard);
-    c.residualRms = r.fit.trainingRms;
-    const PayloadObservability &o = r.fit.estimate.observability;
-    c.condition = o.rank > 0 ? o.condition : std::numeric_limits<double>::infinity();
-    c.rank = o.rank;
     c.canWrites = objects::parameterWriteSequence(c.nodes(), c.values);
     setStandardParameters(c, model, r.arm.standard, r.arm.determined);
-    c.payload = payloadSection(r.fit.estimate, r.model->link());
+    setPayloadFit(c, r.fit, r.model->link());
     return c;
 }
 
@@ -69,11 +84,7 @@ QByteArray payloadIdentifiedUrdf(const PayloadIdentificationResult &r, const QSt
                                : urdfWithStandard(*robot.model, robot.urdf, robot.source,
                                                   r.arm.standard, comment, r.arm.determined);
     const PayloadEstimate &e = r.fit.estimate;
-    QStringList kept;
-    const QStringList names = PayloadEstimate::bodyNames();
-    for (int i = 0; i < 10; ++i)
-        if (!e.bodyIdentified[size_t(i)])
-            kept << names[i];
+    const QStringList kept = payloadValuesKept(e);
     // English, as the file's other comments (UrdfExport.cpp).
     QString note = QStringLiteral("The payload on %1, estimated by learnid from logs with the "
                                   "arm's model held fixed")

@@ -16,6 +16,13 @@ namespace learnid {
 /// the data identified it, and the standard error of each identified one (NaN otherwise).
 ParameterFilePayload payloadSection(const PayloadEstimate &estimate, const QString &link);
 
+/// What a payload fit adds to the arm's parameter file: its payload section on `link`, and as
+/// quality the fit's residual per joint, condition and rank (of the payload's 10 directions).
+void setPayloadFit(ParameterFileContent &content, const PayloadFit &fit, const QString &link);
+
+/// The body values an estimate keeps at the prior, by name (PayloadEstimate::bodyNames()).
+QStringList payloadValuesKept(const PayloadEstimate &estimate);
+
 /// The parameter file of a payload identification (docs/file-formats.md, "Payload section"):
 /// the arm's model as it was held fixed (its base parameters, its standard parameters with the
 /// shares its parameter file recorded, the CAN writes of those base parameters: the arm's, as

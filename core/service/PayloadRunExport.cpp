@@ -12,7 +12,6 @@
 #include "service/StandardExport.h"
 
 #include <QCoreApplication>
-#include <limits>
 
 namespace learnid {
 
@@ -44,14 +43,10 @@ ParameterFileContent payloadRunParameterFile(const PayloadRunResult &r)
     c.values = r.scenario.initialParameters;
     c.maxTrackingErrorDeg = r.maxTrackingErrorDeg;
     c.rmsTrackingErrorDeg = r.rmsTrackingErrorDeg;
-    c.residualRms = r.fit.trainingRms;
-    const PayloadObservability &o = r.fit.estimate.observability;
-    c.condition = o.rank > 0 ? o.condition : std::numeric_limits<double>::infinity();
-    c.rank = o.rank;
     c.canWrites = objects::parameterWriteSequence(c.nodes(), c.values);
     // The arm's values as given, not determined by these trials: no shares.
     setStandardParameters(c, model, armStandard(r), {});
-    c.payload = payloadSection(r.fit.estimate, r.link);
+    setPayloadFit(c, r.fit, r.link);
     return c;
 }
 
@@ -61,11 +56,7 @@ QByteArray payloadRunUrdf(const PayloadRunResult &r, const QString &comment)
     const QByteArray arm =
         urdfWithStandard(*r.model, readFile(source), source, armStandard(r), comment);
     const PayloadEstimate &e = r.fit.estimate;
-    QStringList kept;
-    const QStringList names = PayloadEstimate::bodyNames();
-    for (int i = 0; i < 10; ++i)
-        if (!e.bodyIdentified[size_t(i)])
-            kept << names[i];
+    const QStringList kept = payloadValuesKept(e);
     // English, as the file's other comments (UrdfExport.cpp).
     QString note = QStringLiteral("The payload on %1, learned by learnid in %2 trials on %3 with "
                                   "the arm's model held fixed")
