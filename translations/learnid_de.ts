@@ -3504,7 +3504,7 @@
 <context>
     <name>Text</name>
     <message>
-        <location filename="../core/model/UrdfChain.cpp" line="+53"/>
+        <location filename="../core/model/UrdfChain.cpp" line="+55"/>
         <source>%1: not a valid URDF: %2</source>
         <translation>%1: kein gültiges URDF: %2</translation>
     </message>
@@ -4004,6 +4004,29 @@
         <location line="+5"/>
         <source>visual shapes of %1 (no collision shape)</source>
         <translation>Sichtformen von %1 (keine Kollisionsform)</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfJointTree</name>
+    <message>
+        <location filename="../core/model/UrdfJointTree.cpp" line="+69"/>
+        <source>%1: line %2, column %3: not well-formed XML: %4</source>
+        <translation>%1: Zeile %2, Spalte %3: kein wohlgeformtes XML: %4</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1: joint &quot;%2&quot; connects link &quot;%3&quot; to itself</source>
+        <translation>%1: Gelenk „%2“ verbindet Glied „%3“ mit sich selbst</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: link &quot;%2&quot; is the child of two joints, &quot;%3&quot; and &quot;%4&quot;: the joints of a URDF form a tree</source>
+        <translation>%1: Glied „%2“ ist Kind zweier Gelenke, „%3“ und „%4“: die Gelenke einer URDF bilden einen Baum</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: the joints form a loop through links %2: the joints of a URDF form a tree</source>
+        <translation>%1: die Gelenke bilden eine Schleife durch die Glieder %2: die Gelenke einer URDF bilden einen Baum</translation>
     </message>
 </context>
 <context>

@@ -3491,7 +3491,7 @@
 <context>
     <name>Text</name>
     <message>
-        <location filename="../core/model/UrdfChain.cpp" line="+53"/>
+        <location filename="../core/model/UrdfChain.cpp" line="+55"/>
         <source>%1: not a valid URDF: %2</source>
         <translation>%1：不是有效的 URDF：%2</translation>
     </message>
@@ -3991,6 +3991,29 @@
         <location line="+5"/>
         <source>visual shapes of %1 (no collision shape)</source>
         <translation>%1 的可视形状（无碰撞形状）</translation>
+    </message>
+</context>
+<context>
+    <name>UrdfJointTree</name>
+    <message>
+        <location filename="../core/model/UrdfJointTree.cpp" line="+69"/>
+        <source>%1: line %2, column %3: not well-formed XML: %4</source>
+        <translation>%1：第 %2 行，第 %3 列：不是格式正确的 XML：%4</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1: joint &quot;%2&quot; connects link &quot;%3&quot; to itself</source>
+        <translation>%1：关节“%2”将连杆“%3”连接到其自身</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: link &quot;%2&quot; is the child of two joints, &quot;%3&quot; and &quot;%4&quot;: the joints of a URDF form a tree</source>
+        <translation>%1：连杆“%2”是两个关节“%3”和“%4”的子连杆：URDF 的关节必须构成一棵树</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: the joints form a loop through links %2: the joints of a URDF form a tree</source>
+        <translation>%1：关节经由连杆 %2 构成了环路：URDF 的关节必须构成一棵树</translation>
     </message>
 </context>
 <context>

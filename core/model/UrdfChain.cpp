@@ -4,6 +4,7 @@
 #include "model/MeshBounds.h"
 #include "model/UrdfExtension.h"
 #include "model/UrdfGeometry.h"
+#include "model/UrdfJointTree.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -43,6 +44,7 @@ public:
 
 urdf::ModelInterfaceSharedPtr parse(const QByteArray &xml, const QString &source)
 {
+    checkUrdfJointTree(xml, source);
     static std::mutex handlerMutex; // console_bridge's handler is process-wide
     const std::lock_guard<std::mutex> lock(handlerMutex);
     ParserMessages messages;
