@@ -2208,12 +2208,12 @@
         <translation>%1 hat kein bewegtes Glied, das eine Nutzlast tragen kann</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>payload link &apos;%1&apos; is not a moving link of %2 (its links: %3)</source>
-        <translation>Nutzlast-Glied „%1“ ist kein bewegtes Glied von %2 (seine Glieder: %3)</translation>
+        <location line="+15"/>
+        <source>payload link &apos;%1&apos; is not a moving link of %2 or a link fixed to one (its links: %3)</source>
+        <translation>Nutzlast-Glied „%1“ ist weder ein bewegtes Glied von %2 noch ein daran befestigtes Glied (seine Glieder: %3)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+21"/>
         <source>a payload needs the arm&apos;s model</source>
         <translation>eine Nutzlast braucht das Modell des Arms</translation>
     </message>
@@ -3022,7 +3022,7 @@
         <translation>payload: nur ein URDF-Roboter trägt eine Nutzlast</translation>
     </message>
     <message>
-        <location line="+144"/>
+        <location line="+143"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>unbekannter Roboter „%1“; bekannt: %2 oder eine URDF-Datei (DATEI.urdf)</translation>
     </message>
@@ -3801,7 +3801,7 @@
         <translation>%1: Glied „%2“ hat eine negative Masse (%3 kg)</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+43"/>
         <source>%1: the robot branches at link &quot;%2&quot; (children %3): name the tip link of the chain</source>
         <translation>%1: der Roboter verzweigt sich am Glied „%2“ (Kindglieder %3): das Endglied der Kette angeben</translation>
     </message>
@@ -3827,12 +3827,12 @@
         <translation>%1: Gelenk „%2“ ahmt ein anderes Gelenk nach (mimic): Mimic-Gelenke werden nicht unterstützt</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>%1: joint &quot;%2&quot; is floating or planar: only revolute, continuous, prismatic and fixed joints form a serial arm</source>
         <translation>%1: Gelenk „%2“ ist frei (floating) oder eben (planar): nur Drehgelenke (revolute, continuous), Schubgelenke (prismatic) und feste Gelenke (fixed) bilden einen seriellen Arm</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>%1: no moving joint between link &quot;%2&quot; and link &quot;%3&quot;</source>
         <translation>%1: kein bewegliches Gelenk zwischen Glied „%2“ und Glied „%3“</translation>
     </message>
@@ -3890,7 +3890,7 @@
         <translation>%1: Zeile %2, Spalte %3: kein XML: %4</translation>
     </message>
     <message>
-        <location filename="../core/io/UrdfPayload.cpp" line="+97"/>
+        <location filename="../core/io/UrdfPayload.cpp" line="+98"/>
         <source>%1: the payload on link &quot;%2&quot; is not a real body (mass %3 kg)</source>
         <translation>%1: die Nutzlast am Glied „%2“ ist kein realer Körper (Masse %3 kg)</translation>
     </message>
@@ -3900,7 +3900,7 @@
         <translation>%1: kein schließendes &lt;/robot&gt;, vor dem die Nutzlast eingefügt werden kann</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>%1: the URDF with the payload reads back with another body at link &quot;%2&quot; than was written</source>
         <translation>%1: das URDF mit der Nutzlast ergibt beim Zurücklesen am Glied „%2“ einen anderen Körper, als geschrieben wurde</translation>
     </message>
@@ -7148,7 +7148,12 @@ Verhältnis %</translation>
         <translation>die Spitze (%1)</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+4"/>
+        <source>%1 (fixed to %2)</source>
+        <translation>%1 (fest an %2)</translation>
+    </message>
+    <message>
+        <location line="+69"/>
         <location line="+3"/>
         <source>enter one number</source>
         <translation>eine Zahl eingeben</translation>

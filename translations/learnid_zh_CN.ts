@@ -2199,12 +2199,12 @@
         <translation>%1 没有可承载负载的运动连杆</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>payload link &apos;%1&apos; is not a moving link of %2 (its links: %3)</source>
-        <translation>负载连杆“%1”不是 %2 的运动连杆（其连杆：%3）</translation>
+        <location line="+15"/>
+        <source>payload link &apos;%1&apos; is not a moving link of %2 or a link fixed to one (its links: %3)</source>
+        <translation>负载连杆“%1”既不是 %2 的运动连杆，也不是固定在运动连杆上的连杆（其连杆：%3）</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+21"/>
         <source>a payload needs the arm&apos;s model</source>
         <translation>负载需要机械臂的模型</translation>
     </message>
@@ -3009,7 +3009,7 @@
         <translation>payload：只有 URDF 机器人才能携带负载</translation>
     </message>
     <message>
-        <location line="+144"/>
+        <location line="+143"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>未知机器人“%1”；已知：%2，或一个 URDF 文件（FILE.urdf）</translation>
     </message>
@@ -3788,7 +3788,7 @@
         <translation>%1：连杆“%2”的质量为负（%3 kg）</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+43"/>
         <source>%1: the robot branches at link &quot;%2&quot; (children %3): name the tip link of the chain</source>
         <translation>%1：机器人在连杆“%2”处分叉（子连杆 %3）：请指定运动链的末端连杆</translation>
     </message>
@@ -3814,12 +3814,12 @@
         <translation>%1：关节“%2”模仿另一个关节（mimic）：不支持 mimic 关节</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>%1: joint &quot;%2&quot; is floating or planar: only revolute, continuous, prismatic and fixed joints form a serial arm</source>
         <translation>%1：关节“%2”为浮动（floating）或平面（planar）关节：只有旋转（revolute、continuous）、移动（prismatic）和固定（fixed）关节能构成串联机械臂</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>%1: no moving joint between link &quot;%2&quot; and link &quot;%3&quot;</source>
         <translation>%1：连杆“%2”和连杆“%3”之间没有可动关节</translation>
     </message>
@@ -3877,7 +3877,7 @@
         <translation>%1：第 %2 行第 %3 列：不是 XML：%4</translation>
     </message>
     <message>
-        <location filename="../core/io/UrdfPayload.cpp" line="+97"/>
+        <location filename="../core/io/UrdfPayload.cpp" line="+98"/>
         <source>%1: the payload on link &quot;%2&quot; is not a real body (mass %3 kg)</source>
         <translation>%1：连杆“%2”上的负载不是真实刚体（质量 %3 kg）</translation>
     </message>
@@ -3887,7 +3887,7 @@
         <translation>%1：没有可在其前添加负载的结束标记 &lt;/robot&gt;</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>%1: the URDF with the payload reads back with another body at link &quot;%2&quot; than was written</source>
         <translation>%1：带负载的 URDF 读回后，连杆“%2”处的刚体与写入的不同</translation>
     </message>
@@ -7126,7 +7126,12 @@ ratio %</source>
         <translation>末端（%1）</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+4"/>
+        <source>%1 (fixed to %2)</source>
+        <translation>%1（固定于 %2）</translation>
+    </message>
+    <message>
+        <location line="+69"/>
         <location line="+3"/>
         <source>enter one number</source>
         <translation>请输入一个数</translation>

@@ -158,8 +158,11 @@ void PayloadForm::setScenario(const Scenario &scenario)
             std::dynamic_pointer_cast<const ChainModel>(makeRobotModel(m_base.model, m_base.urdf));
         if (chain && !chain->chain().joints.empty()) {
             m_link->addItem(tr("the tip (%1)").arg(chain->chain().joints.back().link), QString());
-            for (const ChainJoint &j : chain->chain().joints)
+            for (const ChainJoint &j : chain->chain().joints) {
                 m_link->addItem(j.link, j.link);
+                for (const FixedLink &fixed : j.fixedLinks) // a flange or tool frame
+                    m_link->addItem(tr("%1 (fixed to %2)").arg(fixed.name, j.link), fixed.name);
+            }
         }
     } catch (const Error &) {
         // validateScenario() names the model's problem below.

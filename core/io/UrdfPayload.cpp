@@ -90,8 +90,9 @@ QByteArray urdfWithPayload(const QByteArray &xml, const QString &source, const S
                            const QString &comment)
 {
     const SerialChain before = parseUrdfChain(xml, source, chain.baseLink, chain.tipLink);
-    const int k = payloadJointOf(before, link);
-    const QString linkName = before.joints[size_t(k)].link;
+    const PayloadLink where = payloadLinkOf(before, link);
+    const int k = where.joint;
+    const QString &linkName = where.name;
     if (!payload.allFinite() || !(payload[0] > 0.0) ||
         !checkConsistency(payload, 1, 1e-12).front().consistent) {
         throw Error(Text::tr("%1: the payload on link \"%2\" is not a real body (mass %3 kg)")
@@ -111,7 +112,8 @@ QByteArray urdfWithPayload(const QByteArray &xml, const QString &source, const S
     const SerialChain after = parseUrdfChain(out, source, chain.baseLink, chain.tipLink);
     for (int j = 0; j < before.dof(); ++j) {
         const InertialParameters expected =
-            before.joints[size_t(j)].inertial + (j == k ? payload : InertialParameters::Zero());
+            before.joints[size_t(j)].inertial +
+            (j == k ? payloadInBody(where, payload) : InertialParameters::Zero());
         const InertialParameters &read = after.joints.at(size_t(j)).inertial;
         if ((read - expected).cwiseAbs().maxCoeff() > 1e-9 * expected.cwiseAbs().maxCoeff()) {
             throw Error(Text::tr("%1: the URDF with the payload reads back with another body at "

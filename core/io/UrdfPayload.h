@@ -24,7 +24,8 @@ inline constexpr char urdfPayloadJointName[] = "payload_joint";
 ///
 /// so the payload's frame is LINK's. payload: its 10 standard parameters about LINK's frame
 /// origin (SerialChain.h), a real body. chain gives the base and tip links the text is read with;
-/// LINK must be one of its moving links (payloadJointOf(); empty: the tip). Numbers in the
+/// LINK is one of its moving links or a link fixed to one (payloadLinkOf(); empty: the tip's
+/// body), and LINK's body is the moving one it is on. Numbers in the
 /// shortest form that reads back to the same double. The result is read back (readUrdfChain()
 /// with the chain's base and tip): LINK's body must be the one before plus the payload, every
 /// other body unchanged. Throws Error naming source and the link when the text is not a URDF of

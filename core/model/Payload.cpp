@@ -32,20 +32,37 @@ PayloadBody payloadBody(const InertialParameters &pi)
     return body;
 }
 
-int payloadJointOf(const SerialChain &chain, const QString &link)
+PayloadLink payloadLinkOf(const SerialChain &chain, const QString &link)
 {
     if (chain.dof() == 0)
         throw Error(Text::tr("%1 has no moving link to carry a payload").arg(chain.name));
     if (link.isEmpty())
-        return chain.dof() - 1;
+        return {chain.dof() - 1, chain.joints.back().link, Eigen::Isometry3d::Identity()};
     QStringList links;
     for (int k = 0; k < chain.dof(); ++k) {
-        if (chain.joints[size_t(k)].link == link)
-            return k;
-        links << chain.joints[size_t(k)].link;
+        const ChainJoint &joint = chain.joints[size_t(k)];
+        if (joint.link == link)
+            return {k, link, Eigen::Isometry3d::Identity()};
+        links << joint.link;
+        for (const FixedLink &fixed : joint.fixedLinks) {
+            if (fixed.name == link)
+                return {k, link, fixed.pose};
+            links << fixed.name;
+        }
     }
-    throw Error(Text::tr("payload link '%1' is not a moving link of %2 (its links: %3)")
+    throw Error(Text::tr("payload link '%1' is not a moving link of %2 or a link fixed to one "
+                         "(its links: %3)")
                     .arg(link, chain.name, links.join(QStringLiteral(", "))));
+}
+
+int payloadJointOf(const SerialChain &chain, const QString &link)
+{
+    return payloadLinkOf(chain, link).joint;
+}
+
+InertialParameters payloadInBody(const PayloadLink &link, const InertialParameters &payload)
+{
+    return transformedInertial(payload, link.pose.inverse());
 }
 
 PayloadModel::PayloadModel(std::shared_ptr<const ChainModel> arm, Eigen::VectorXd armStandard,
@@ -60,12 +77,10 @@ PayloadModel::PayloadModel(std::shared_ptr<const ChainModel> arm, Eigen::VectorX
                         .arg(m_arm->id())
                         .arg(m_arm->standardCount()));
     }
-    m_joint = payloadJointOf(m_arm->chain(), link);
-}
-
-QString PayloadModel::link() const
-{
-    return m_arm->chain().joints[size_t(m_joint)].link;
+    m_link = payloadLinkOf(m_arm->chain(), link);
+    // payloadInBody is linear in the parameters (the parallel axis theorem and a rotation).
+    for (int i = 0; i < 10; ++i)
+        m_toBody.col(i) = payloadInBody(m_link, InertialParameters::Unit(i));
 }
 
 void PayloadModel::evaluate(const VectorRef &q, const VectorRef &qd, const VectorRef &qdd,
@@ -76,7 +91,7 @@ void PayloadModel::evaluate(const VectorRef &q, const VectorRef &qd, const Vecto
                   ChainModel::maxStandard>
         y(dof(), m_arm->standardCount());
     m_arm->standardRegressor(q, qd, qdd, y);
-    payloadRegressor = y.middleCols<10>(10 * m_joint);
+    payloadRegressor.noalias() = y.middleCols<10>(10 * m_link.joint) * m_toBody;
     armTorque.noalias() = y * m_armStandard;
 }
 
@@ -111,15 +126,16 @@ Eigen::VectorXd PayloadModel::torqueAt(const VectorRef &q, const VectorRef &qd,
 Eigen::VectorXd PayloadModel::standardWith(const InertialParameters &payload) const
 {
     Eigen::VectorXd pi = m_armStandard;
-    pi.segment<10>(10 * m_joint) += payload;
+    pi.segment<10>(10 * m_link.joint) += m_toBody * payload;
     return pi;
 }
 
-Eigen::VectorXd payloadBaseShift(const ChainModel &arm, int joint,
+Eigen::VectorXd payloadBaseShift(const ChainModel &arm, const QString &link,
                                  const InertialParameters &payload)
 {
+    const PayloadLink where = payloadLinkOf(arm.chain(), link);
     Eigen::VectorXd pi = Eigen::VectorXd::Zero(arm.standardCount());
-    pi.segment<10>(10 * joint) = payload;
+    pi.segment<10>(10 * where.joint) = payloadInBody(where, payload);
     return arm.baseFromStandard(pi);
 }
 

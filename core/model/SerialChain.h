@@ -26,6 +26,13 @@ InertialParameters transformedInertial(const InertialParameters &pi, const Eigen
 
 enum class JointType { Revolute, Prismatic };
 
+/// A link fixed (directly or through other fixed joints) to a moving body and merged into it.
+struct FixedLink
+{
+    QString name;
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity(); ///< its frame in the body's frame
+};
+
 /// One moving joint of a serial chain and the rigid body it moves (its child link with every
 /// link fixed to it merged in). Angles [rad] or positions [m] as the joint type says.
 struct ChainJoint
@@ -51,6 +58,7 @@ struct ChainJoint
     /// none that could be read. The plausibility rule's bounding volume (Plausibility.h).
     Eigen::AlignedBox3d geometryBox;
     QString geometryDescription; ///< what geometryBox was made of, e.g. "2 cylinders, 1 sphere"
+    std::vector<FixedLink> fixedLinks; ///< the links merged into the body, in the URDF's order
 };
 
 /// A serial chain from a base to a tip: the moving joints in order, each joint frame placed in

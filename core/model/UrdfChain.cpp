@@ -89,10 +89,11 @@ InertialParameters linkInertial(const urdf::Link &link, const QString &source)
 }
 
 // Adds the inertia and geometry of every link fixed (directly or through other fixed joints) to
-// `link`, except the chain's next link, to `body`; `pose` places link's frame in the body's frame.
+// `link`, except the chain's next link, to the body that `joint` moves, and lists them in its
+// fixedLinks; `pose` places link's frame in the body's frame.
 void mergeFixedChildren(const urdf::Link &link, const Eigen::Isometry3d &pose,
-                        const urdf::Link *nextOnChain, const QString &source,
-                        InertialParameters &body, BodyGeometry &geometry)
+                        const urdf::Link *nextOnChain, const QString &source, ChainJoint &joint,
+                        BodyGeometry &geometry)
 {
     for (const urdf::LinkSharedPtr &child : link.child_links) {
         if (child.get() == nextOnChain || !child->parent_joint ||
@@ -101,9 +102,10 @@ void mergeFixedChildren(const urdf::Link &link, const Eigen::Isometry3d &pose,
         }
         const Eigen::Isometry3d childPose =
             pose * toIsometry(child->parent_joint->parent_to_joint_origin_transform);
-        body += transformedInertial(linkInertial(*child, source), childPose.inverse());
+        joint.inertial += transformedInertial(linkInertial(*child, source), childPose.inverse());
+        joint.fixedLinks.push_back({qs(child->name), childPose});
         geometry.addLink(*child, childPose);
-        mergeFixedChildren(*child, childPose, nullptr, source, body, geometry);
+        mergeFixedChildren(*child, childPose, nullptr, source, joint, geometry);
     }
 }
 
@@ -207,6 +209,7 @@ SerialChain parseUrdfChain(const QByteArray &xml, const QString &source, const Q
             if (!chain.joints.empty()) { // links fixed to the base do not move
                 chain.joints.back().inertial +=
                     transformedInertial(linkInertial(link, source), pending.inverse());
+                chain.joints.back().fixedLinks.push_back({qs(link.name), pending});
                 geometry.back().addLink(link, pending);
             }
             break;
@@ -230,8 +233,7 @@ SerialChain parseUrdfChain(const QByteArray &xml, const QString &source, const Q
         }
         if (!chain.joints.empty()) {
             const urdf::Link *next = i + 1 < path.size() ? path[i + 1].get() : nullptr;
-            mergeFixedChildren(link, pending, next, source, chain.joints.back().inertial,
-                               geometry.back());
+            mergeFixedChildren(link, pending, next, source, chain.joints.back(), geometry.back());
         }
     }
     for (size_t j = 0; j < geometry.size(); ++j) {

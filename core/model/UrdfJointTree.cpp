@@ -53,7 +53,7 @@ QList<JointLinks> readJoints(const QByteArray &text, const QString &source)
                 joints.append({xml.attributes().value(QLatin1String("name")).toString(), {}, {}});
                 joint = &joints.back();
             } else if (depth == 3 && joint) {
-                QString *link = name == QLatin1String("parent") ? &joint->parent
+                QString *link = name == QLatin1String("parent")  ? &joint->parent
                                 : name == QLatin1String("child") ? &joint->child
                                                                  : nullptr;
                 if (link && link->isNull())
@@ -94,9 +94,9 @@ void checkUrdfJointTree(const QByteArray &text, const QString &source)
         parentJoint.insert(j.child, &j);
     }
     // Each link has at most one parent now, so a walk up either ends or runs into a loop.
-    QSet<QString> done; // links whose walk up ends at a root
+    QSet<QString> done;                  // links whose walk up ends at a root
     for (const JointLinks &j : joints) { // in the file's order, so the message is the same
-        QStringList walk;                  // every time
+        QStringList walk;                // every time
         QString link = j.child;
         while (!done.contains(link) && parentJoint.contains(link)) {
             if (const qsizetype at = walk.indexOf(link); at >= 0) {

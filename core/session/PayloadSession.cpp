@@ -94,7 +94,7 @@ PayloadSession::PayloadSession(const Scenario &scenario, std::shared_ptr<const R
 
 Eigen::VectorXd PayloadSession::feedforwardParameters(const InertialParameters &payload) const
 {
-    return m_scenario.initialParameters + payloadBaseShift(*m_model, m_payload->joint(), payload);
+    return m_scenario.initialParameters + payloadBaseShift(*m_model, m_payload->link(), payload);
 }
 
 bool PayloadSession::nextTrialIsBaseline() const

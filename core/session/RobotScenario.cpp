@@ -109,13 +109,12 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
     if (payload.enabled) {
         const PayloadPrior prior = payloadPriorOf(payload);
         validatePayloadPrior(prior);
-        int joint = 0;
         try {
-            joint = payloadJointOf(chain->chain(), payload.link);
+            (void)payloadLinkOf(chain->chain(), payload.link);
         } catch (const Error &e) {
             throw Error(QStringLiteral("payload.link: %1").arg(e.message()));
         }
-        cad += payloadBaseShift(*chain, joint, prior.parameters());
+        cad += payloadBaseShift(*chain, payload.link, prior.parameters());
         const double size = prior.bound.box
                                 ? 0.5 * (prior.bound.upper - prior.bound.lower).minCoeff()
                                 : prior.bound.radius;

@@ -105,8 +105,7 @@ std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
         simulatedPayloadParameters(scenario.simulation.payload, scenario.payload);
     if (const auto *chain = dynamic_cast<const ChainModel *>(model.get());
         chain && !payload.isZero() && truePhi.size() == chain->parameterCount()) {
-        truePhi += payloadBaseShift(*chain, payloadJointOf(chain->chain(), scenario.payload.link),
-                                    payload);
+        truePhi += payloadBaseShift(*chain, scenario.payload.link, payload);
     }
     return std::make_shared<SimulatedRobot>(std::move(model), truePhi, measurement);
 }

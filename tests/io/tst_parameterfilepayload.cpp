@@ -151,8 +151,9 @@ void TestParameterFilePayload::badSection_isRefusedNamingTheKey_data()
         << "payload.inertiaAtCom: is not a real body";
     QTest::newRow("unknown link") << "link" << QJsonValue(QStringLiteral("gripper"))
                                   << "payload.link: payload link 'gripper' is not a moving link";
-    QTest::newRow("fixed link") << "link" << QJsonValue(QStringLiteral("tool"))
-                                << "payload.link: payload link 'tool'";
+    // Fixed to the world, not to a moving link.
+    QTest::newRow("base link") << "link" << QJsonValue(QStringLiteral("base_link"))
+                               << "payload.link: payload link 'base_link'";
     QJsonArray sources;
     for (int i = 0; i < 10; ++i)
         sources.append(i == 3 ? QStringLiteral("maybe") : QStringLiteral("data"));
@@ -231,6 +232,9 @@ void TestParameterFilePayload::urdfModel_linkIsCheckedAgainstItsChain()
         QStringLiteral("payload.link: payload link 'flange' is not a moving link"));
     c.payload->link = QStringLiteral("link1");
     QCOMPARE(checkPayloadLink(*c.payload, arm->chain()), 0);
+    // "tool" is fixed to link2 and merged into its body: the payload is on link2's body.
+    c.payload->link = QStringLiteral("tool");
+    QCOMPARE(checkPayloadLink(*c.payload, arm->chain()), 1);
 }
 
 QTEST_GUILESS_MAIN(TestParameterFilePayload)

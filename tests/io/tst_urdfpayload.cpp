@@ -50,6 +50,7 @@ private slots:
     void urdfdom_readsThePayloadLinkAsWritten();
     void readBack_givesTheArmPlusPayloadTorques();
     void namedLink_withALeafBelow_keepsTheOtherLinks();
+    void fixedFlangeLink_carriesThePayloadInItsFrame();
     void takenNames_getASuffix();
     void badInput_namesTheLink();
 };
@@ -106,6 +107,34 @@ void TestUrdfPayload::readBack_givesTheArmPlusPayloadTorques()
     const PayloadModel payload(armModel, armModel->cadStandard());
     Eigen::MatrixXd y(7, loaded.standardCount());
     test::forRandomStates(7, 25, 20, [&](const auto &q, const auto &qd, const auto &qdd) {
+        loaded.standardRegressor(q, qd, qdd, y);
+        LEARNID_COMPARE_MATRIX(y * loaded.cadStandard(), payload.torqueAt(q, qd, qdd, pi), 1e-10);
+    });
+}
+
+void TestUrdfPayload::fixedFlangeLink_carriesThePayloadInItsFrame()
+{
+    const QString path = test::sharedDataFile(QStringLiteral("kuka-lwr4/kuka_lwr4.urdf"));
+    if (path.isEmpty())
+        QSKIP(qPrintable(test::sharedDataMissing()));
+    // A massless tool frame fixed to the flange, turned and moved.
+    QByteArray arm = fileText(path);
+    arm.replace("</robot>", R"(<joint name="tool0_joint" type="fixed"><parent link="lwr_7_link"/>
+        <child link="tool0"/><origin xyz="0.02 -0.01 0.1" rpy="0.4 -0.3 1.2"/></joint>
+      <link name="tool0"/></robot>)");
+    const auto armModel = std::make_shared<const ChainModel>(
+        parseUrdfChain(arm, path, {}, QStringLiteral("lwr_7_link")), friction(),
+        QStringLiteral("lwr4"));
+    const InertialParameters pi = tool().parameters(); // in tool0's frame
+    const QByteArray out =
+        urdfWithPayload(arm, path, armModel->chain(), QStringLiteral("tool0"), pi, {});
+    QVERIFY(out.contains("<parent link=\"tool0\"/>"));
+    const ChainModel loaded(
+        parseUrdfChain(out, QStringLiteral("with payload"), {}, QStringLiteral("lwr_7_link")),
+        friction(), QStringLiteral("lwr4"));
+    const PayloadModel payload(armModel, armModel->cadStandard(), QStringLiteral("tool0"));
+    Eigen::MatrixXd y(7, loaded.standardCount());
+    test::forRandomStates(7, 26, 20, [&](const auto &q, const auto &qd, const auto &qdd) {
         loaded.standardRegressor(q, qd, qdd, y);
         LEARNID_COMPARE_MATRIX(y * loaded.cadStandard(), payload.torqueAt(q, qd, qdd, pi), 1e-10);
     });

@@ -77,6 +77,7 @@ private slots:
     void body_roundTripsThroughItsTenParameters();
     void payloadRegressor_matchesTheUrdfWithThePayloadMerged();
     void namedLink_takesThatLinksColumns();
+    void fixedLink_payloadInItsFrameEqualsTheUrdfWithThePayloadOnIt();
     void badInput_namesTheLinkAndTheMass();
 };
 
@@ -149,6 +150,55 @@ void TestPayload::namedLink_takesThatLinksColumns()
     Eigen::MatrixXd full(7, armModel->standardCount());
     armModel->standardRegressor(q, qd, qdd, full);
     LEARNID_COMPARE_MATRIX(payload.regressorAt(q, qd, qdd), full.middleCols(40, 10), 0.0);
+}
+
+void TestPayload::fixedLink_payloadInItsFrameEqualsTheUrdfWithThePayloadOnIt()
+{
+    QByteArray arm = kukaUrdf();
+    if (arm.isEmpty())
+        QSKIP(qPrintable(test::sharedDataMissing()));
+    QByteArray loaded = arm;
+    loaded.replace("</robot>", payloadLinks);
+    // The arm with the tool frame alone: the same mount, a link without mass.
+    QByteArray flange = payloadLinks;
+    flange.replace(flange.indexOf("<inertial>"),
+                   flange.indexOf("</inertial>") + 11 - flange.indexOf("<inertial>"), "");
+    arm.replace("</robot>", flange);
+    const auto armModel = std::make_shared<const ChainModel>(
+        parseUrdfChain(arm, QStringLiteral("lwr4 with flange"), {}, QStringLiteral("lwr_7_link")),
+        friction(), QStringLiteral("lwr4"));
+    const ChainModel loadedModel(
+        parseUrdfChain(loaded, QStringLiteral("lwr4 with tool"), {}, QStringLiteral("lwr_7_link")),
+        friction(), QStringLiteral("lwr4"));
+    const PayloadModel payload(armModel, armModel->cadStandard(), QStringLiteral("tool"));
+    QCOMPARE(payload.link(), QStringLiteral("tool"));
+    QCOMPARE(payload.joint(), 6);
+    // The payload in the tool's own frame, by hand: only its inertial pose.
+    const Eigen::Matrix3d local = rpy(0.1, 0.2, -0.3);
+    const Eigen::Vector3d c(0.01, -0.02, 0.03);
+    Eigen::Matrix3d ic;
+    ic << 0.012, 0.001, -0.002, 0.001, 0.015, 0.0005, -0.002, 0.0005, 0.009;
+    const InertialParameters inTool = inertialParameters(3.0, c, local * ic * local.transpose());
+    LEARNID_COMPARE_MATRIX(payloadInBody(payload.payloadLink(), inTool), expectedPayload(), 1e-15);
+    LEARNID_COMPARE_MATRIX(payload.standardWith(inTool), loadedModel.cadStandard(), 1e-13);
+    LEARNID_COMPARE_MATRIX(
+        payloadBaseShift(*armModel, QStringLiteral("tool"), inTool),
+        armModel->baseFromStandard(loadedModel.cadStandard() - armModel->cadStandard()), 1e-13);
+    std::mt19937 random(27);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    Eigen::MatrixXd y(7, loadedModel.standardCount());
+    for (int trial = 0; trial < 10; ++trial) {
+        Eigen::VectorXd q(7), qd(7), qdd(7);
+        for (int j = 0; j < 7; ++j) {
+            q[j] = 2.0 * unit(random);
+            qd[j] = 1.5 * unit(random);
+            qdd[j] = 4.0 * unit(random);
+        }
+        loadedModel.standardRegressor(q, qd, qdd, y);
+        LEARNID_COMPARE_MATRIX(payload.armTorqueAt(q, qd, qdd) +
+                                   payload.regressorAt(q, qd, qdd) * inTool,
+                               y * loadedModel.cadStandard(), 1e-10);
+    }
 }
 
 void TestPayload::badInput_namesTheLinkAndTheMass()

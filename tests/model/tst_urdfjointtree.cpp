@@ -68,8 +68,7 @@ void TestUrdfJointTree::notATree_isRefusedNamingJointsAndLinks_data()
     QByteArray broken = robot(chain);
     broken.replace("<robot name=\"r\">", "<robot name=\"r\" name=\"s\">");
     QTest::newRow("not well-formed")
-        << broken
-        << "r.urdf: line 2, column 25: not well-formed XML: Attribute 'name' redefined.";
+        << broken << "r.urdf: line 2, column 25: not well-formed XML: Attribute 'name' redefined.";
 }
 
 void TestUrdfJointTree::notATree_isRefusedNamingJointsAndLinks()
@@ -88,7 +87,8 @@ void TestUrdfJointTree::tree_withABranchAndANamedTip_loads()
 {
     const QByteArray urdf = robot(joint("j1", "base", "a") + joint("j2", "a", "b") +
                                   joint("j3", "a", "c") + joint("j4", "c", "d"));
-    const SerialChain chain = parseUrdfChain(urdf, QStringLiteral("r.urdf"), {}, QStringLiteral("d"));
+    const SerialChain chain =
+        parseUrdfChain(urdf, QStringLiteral("r.urdf"), {}, QStringLiteral("d"));
     QCOMPARE(chain.dof(), 3);
     QCOMPARE(chain.joints[0].name, QStringLiteral("j1"));
     QCOMPARE(chain.joints[1].name, QStringLiteral("j3"));

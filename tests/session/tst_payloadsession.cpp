@@ -57,7 +57,7 @@ private slots:
         s.simulation.payload = SimulatedPayload();
         Eigen::VectorXd shift =
             *makeSimulatedRobot(s, model)->trueParameters() - s.simulation.trueParameters;
-        QVERIFY(shift.isApprox(payloadBaseShift(chain, 6, payloadPriorOf(s.payload).parameters()),
+        QVERIFY(shift.isApprox(payloadBaseShift(chain, {}, payloadPriorOf(s.payload).parameters()),
                                1e-12));
     }
 
@@ -116,6 +116,29 @@ private slots:
         const double trial2 = last.maxTrackingErrorDeg.maxCoeff();
         QVERIFY(session.history().front().maxTrackingErrorDeg.maxCoeff() > 10.0 * trial2);
         QVERIFY2(trial2 <= 2.0 * oracleMax.maxCoeff(), qPrintable(QString::number(trial2)));
+    }
+
+    void pandaFlange_aLinkFixedToTheWrist_learnsThePayloadInItsFrame()
+    {
+        // panda_link8, the Panda's flange, is fixed 0.107 m along link 7's z and merged into its
+        // body. The same physical payload as pandaWithPayload(), given in the flange's frame.
+        Scenario s = test::pandaWithPayload();
+        const Eigen::Vector3d flange(0.0, 0.0, 0.107);
+        s.payload.link = QStringLiteral("panda_link8");
+        s.payload.com -= flange;
+        s.simulation.payload.com -= flange;
+        const auto model = makeRobotModel(s.model, s.urdf);
+        s = withRobotDefaults(s, *model);
+        PayloadSession session(s, model, makeSimulatedRobot(s, model));
+        QCOMPARE(session.payloadModel().link(), QStringLiteral("panda_link8"));
+        QVERIFY2(session.runTrials(3), qPrintable(session.history().back().message));
+        const PayloadBody &b = session.history().back().fit->estimate.body;
+        const double massError = std::abs(b.mass - 1.5) / 1.5;
+        const double comError = (b.com - s.simulation.payload.com).norm();
+        qInfo("flange frame: mass %.4f kg (1.5), CoM (%.4f, %.4f, %.4f) m, %.2f mm off", b.mass,
+              b.com.x(), b.com.y(), b.com.z(), 1000.0 * comError);
+        QVERIFY2(massError < 0.01, qPrintable(QString::number(massError)));
+        QVERIFY2(comError < 0.003, qPrintable(QString::number(comError)));
     }
 
     void baseTurnOnly_keepsThePriorWhereTheWristIsNotTurned()
