@@ -40,7 +40,8 @@ Outcome run(const Case &c, bool payloadStarter, bool wrongArm)
     for (quint64 seed = 1; seed <= 8; ++seed) {
         Scenario s =
             payloadStarter ? scenarioForRobotName(c.robot, prior) : scenarioForRobotName(c.robot);
-        s.payload = prior;
+        if (!payloadStarter)
+            s.payload = prior;
         s.payload.baselineTrials = wrongArm ? 1 : 0;
         s.simulation.payload.present = true;
         s.simulation.payload.mass = c.truth;

@@ -2502,7 +2502,7 @@
         <translation>Referenzfahrt %1</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+101"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
@@ -2512,12 +2512,12 @@
         <translation>Versuch %1 wurde nicht vollständig ausgeführt (%2): die Schätzung der Nutzlast bleibt unverändert</translation>
     </message>
     <message>
-        <location line="-106"/>
+        <location line="-112"/>
         <source>trial %1</source>
         <translation>Versuch %1</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+123"/>
         <source>baseline trial %1 not usable: %2</source>
         <translation>Referenzfahrt %1 nicht verwendbar: %2</translation>
     </message>
@@ -3022,7 +3022,7 @@
         <translation>payload: nur ein URDF-Roboter trägt eine Nutzlast</translation>
     </message>
     <message>
-        <location line="+143"/>
+        <location line="+151"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>unbekannter Roboter „%1“; bekannt: %2 oder eine URDF-Datei (DATEI.urdf)</translation>
     </message>
@@ -3129,12 +3129,13 @@
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
     <message>
+        <location filename="../core/io/ScenarioPayload.cpp" line="+146"/>
         <location filename="../core/io/ScenarioValidation.cpp" line="-125"/>
         <source>one per joint</source>
         <translation>einer pro Gelenk</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+26"/>
         <source>the &quot;urdf&quot; model needs a URDF file</source>
         <translation>das Modell „urdf“ braucht eine URDF-Datei</translation>
     </message>
@@ -3194,7 +3195,7 @@
         <translation>muss 3 Einträge haben (x, y, z im Koordinatensystem des Basisglieds), gefunden: %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioPayload.cpp" line="+41"/>
+        <location filename="../core/io/ScenarioPayload.cpp" line="-105"/>
         <source>x, y and z</source>
         <translation>x, y und z</translation>
     </message>
@@ -3205,22 +3206,22 @@
     </message>
     <message>
         <location line="+18"/>
-        <location line="+65"/>
+        <location line="+78"/>
         <source>x0, y0, z0, x1, y1 and z1</source>
         <translation>x0, y0, z0, x1, y1 und z1</translation>
     </message>
     <message>
-        <location line="-61"/>
+        <location line="-74"/>
         <source>give the bound either as a sphere (radius) or as a box, not both</source>
         <translation>die Schranke entweder als Kugel (radius) oder als Quader (box) angeben, nicht beides</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+67"/>
         <source>only a URDF robot carries a payload (the model is %1)</source>
         <translation>nur ein URDF-Roboter trägt eine Nutzlast (das Modell ist %1)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+39"/>
         <source>not a real body&apos;s inertia (principal moments %1, %2, %3 kg m^2 must not be negative and each at most the sum of the others)</source>
         <translation>nicht die Trägheit eines realen Körpers (die Hauptträgheitsmomente %1, %2, %3 kg m^2 dürfen nicht negativ sein, und jedes höchstens die Summe der anderen)</translation>
     </message>

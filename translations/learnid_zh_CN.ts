@@ -2492,7 +2492,7 @@
         <translation>基线试验 %1</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+101"/>
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
@@ -2502,12 +2502,12 @@
         <translation>试验 %1 未完成（%2）：负载估计保持不变</translation>
     </message>
     <message>
-        <location line="-106"/>
+        <location line="-112"/>
         <source>trial %1</source>
         <translation>试验 %1</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+123"/>
         <source>baseline trial %1 not usable: %2</source>
         <translation>基线试验 %1 不可用：%2</translation>
     </message>
@@ -3009,7 +3009,7 @@
         <translation>payload：只有 URDF 机器人才能携带负载</translation>
     </message>
     <message>
-        <location line="+143"/>
+        <location line="+151"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>未知机器人“%1”；已知：%2，或一个 URDF 文件（FILE.urdf）</translation>
     </message>
@@ -3116,12 +3116,13 @@
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
     <message>
+        <location filename="../core/io/ScenarioPayload.cpp" line="+146"/>
         <location filename="../core/io/ScenarioValidation.cpp" line="-125"/>
         <source>one per joint</source>
         <translation>每个关节一个</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+26"/>
         <source>the &quot;urdf&quot; model needs a URDF file</source>
         <translation>“urdf”模型需要 URDF 文件</translation>
     </message>
@@ -3181,7 +3182,7 @@
         <translation>必须有 3 个条目（基座连杆坐标系中的 x、y、z），实际为 %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioPayload.cpp" line="+41"/>
+        <location filename="../core/io/ScenarioPayload.cpp" line="-105"/>
         <source>x, y and z</source>
         <translation>x、y 和 z</translation>
     </message>
@@ -3192,22 +3193,22 @@
     </message>
     <message>
         <location line="+18"/>
-        <location line="+65"/>
+        <location line="+78"/>
         <source>x0, y0, z0, x1, y1 and z1</source>
         <translation>x0、y0、z0、x1、y1 和 z1</translation>
     </message>
     <message>
-        <location line="-61"/>
+        <location line="-74"/>
         <source>give the bound either as a sphere (radius) or as a box, not both</source>
         <translation>边界请给出球体（radius）或长方体（box）之一，不能同时给出</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+67"/>
         <source>only a URDF robot carries a payload (the model is %1)</source>
         <translation>只有 URDF 机器人才能携带负载（模型为 %1）</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+39"/>
         <source>not a real body&apos;s inertia (principal moments %1, %2, %3 kg m^2 must not be negative and each at most the sum of the others)</source>
         <translation>不是真实物体的惯量（主惯量 %1、%2、%3 kg m^2 不得为负，且每个不得大于其余两个之和）</translation>
     </message>

@@ -70,6 +70,12 @@ void readPayloadSection(JsonObjectReader r, PayloadSettings &p)
         bound->rejectUnknownKeys();
     }
     r.readInteger(key("baselineTrials"), p.baselineTrials, 0, scenarioLimits::maxIterations);
+    if (auto gains = r.optionalObject(key("baselineGains"))) {
+        p.baselineKp = jsonNumbers(gains->require(key("kp")), gains->keyPath(key("kp")));
+        p.baselineKi = jsonNumbers(gains->require(key("ki")), gains->keyPath(key("ki")));
+        p.baselineKd = jsonNumbers(gains->require(key("kd")), gains->keyPath(key("kd")));
+        gains->rejectUnknownKeys();
+    }
     r.rejectUnknownKeys();
 }
 
@@ -100,6 +106,13 @@ JsonTree payloadSectionJson(const PayloadSettings &p)
     t.insert(key("link"), p.link).insert(key("prior"), prior).insert(key("bound"), bound);
     if (p.baselineTrials > 0)
         t.insert(key("baselineTrials"), p.baselineTrials);
+    if (p.baselineKp.size() > 0) {
+        JsonTree gains = JsonTree::object();
+        gains.insert(key("kp"), JsonTree::numbers(p.baselineKp))
+            .insert(key("ki"), JsonTree::numbers(p.baselineKi))
+            .insert(key("kd"), JsonTree::numbers(p.baselineKd));
+        t.insert(key("baselineGains"), gains);
+    }
     return t;
 }
 
@@ -128,6 +141,16 @@ void validateScenarioPayload(const Scenario &s, const RobotModel &model)
             checkLength(key("payload.bound.box"), s.payload.box.size(), 6,
                         Text::tr("x0, y0, z0, x1, y1 and z1"));
         validatePayloadPrior(payloadPriorOf(s.payload));
+        const PayloadSettings &p = s.payload;
+        if (p.baselineKp.size() + p.baselineKi.size() + p.baselineKd.size() > 0) {
+            const QString perJoint = Text::tr("one per joint");
+            checkVector(key("payload.baselineGains.kp"), p.baselineKp, model.dof(), perJoint,
+                        EntryRule::Positive);
+            checkVector(key("payload.baselineGains.ki"), p.baselineKi, model.dof(), perJoint,
+                        EntryRule::NonNegative);
+            checkVector(key("payload.baselineGains.kd"), p.baselineKd, model.dof(), perJoint,
+                        EntryRule::NonNegative);
+        }
     }
     try {
         payloadJointOf(chain->chain(), s.payload.link);

@@ -120,6 +120,12 @@ PreTrialCheck PayloadSession::checkNextTrial() const
             nextTrialIsBaseline() ? m_scenario.initialParameters : feedforwardParameters(m_current);
         const NextTiming timing = nextTiming();
         check.plan = m_planner.plan(timing.phi, &check.rule, timing.gentle, &phi);
+        const PayloadSettings &p = m_scenario.payload;
+        if (nextTrialIsBaseline() && p.baselineKp.size() > 0) { // the bare arm's own gains
+            check.plan.controller.kp = p.baselineKp;
+            check.plan.controller.ki = p.baselineKi;
+            check.plan.controller.kd = p.baselineKd;
+        }
         check.verdict = checkTrial(*m_model, phi, check.plan, m_scenario.stabilityMargin);
     } catch (const Error &e) {
         check.planningError = e.message();

@@ -200,6 +200,14 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
     s.torqueLimits.resize(0);
     s.initialParameters.resize(0);
     s.simulation.trueParameters.resize(0);
+    if (payload.enabled) {
+        // Baseline trials run the bare arm: with the bare arm's gains, since those that hold the
+        // payload can leave a light wrist unstable without it (the PUMA 560's with 2 kg).
+        const Scenario bareArm = scenarioForRobot(modelId, urdf, PayloadSettings());
+        s.payload.baselineKp = bareArm.controller.kp;
+        s.payload.baselineKi = bareArm.controller.ki;
+        s.payload.baselineKd = bareArm.controller.kd;
+    }
     s.simulation.inertiaPerturbation = 0.3;
     s.simulation.encoderCounts = 1 << 20;
     s.simulation.torqueNoise = 0.01;

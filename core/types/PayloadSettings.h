@@ -23,6 +23,10 @@ struct PayloadSettings
     /// taken out of every payload trial: a wrong arm model then biases the payload no more
     /// (docs/payload.md, "A wrong arm model and the baseline trial"). 0: none.
     int baselineTrials = 0;
+    /// The gains of the baseline trials, one per joint, where they differ from the controller's
+    /// (payload.baselineGains): gains that hold the payload may leave the bare arm's light wrist
+    /// unstable (the PUMA 560 with 2 kg). Empty: the controller's gains.
+    Eigen::VectorXd baselineKp, baselineKi, baselineKd;
 };
 
 /// The payload the simulated robot really carries (simulation.payload): a rigid body on the

@@ -29,6 +29,9 @@ Scenario pandaWithPayload()
     s.payload.inertia = (Eigen::VectorXd(6) << 0.01, 0.001, 0.012, 0.0, 0.0, 0.008).finished();
     s.payload.box = (Eigen::VectorXd(6) << -0.1, -0.1, -0.05, 0.1, 0.1, 0.2).finished();
     s.payload.baselineTrials = 2;
+    s.payload.baselineKp = s.controller.kp / 3.0;
+    s.payload.baselineKi = s.controller.ki / 3.0;
+    s.payload.baselineKd = s.controller.kd / 7.0;
     s.simulation.payload.present = true;
     s.simulation.payload.mass = 3.0;
     s.simulation.payload.com = Eigen::Vector3d(0.05, 0.0, 0.08);
@@ -77,6 +80,9 @@ private slots:
         QVERIFY(bitEqual(r.payload.inertia, s.payload.inertia));
         QVERIFY(bitEqual(r.payload.box, s.payload.box));
         QCOMPARE(r.payload.baselineTrials, 2);
+        QVERIFY(bitEqual(r.payload.baselineKp, s.payload.baselineKp));
+        QVERIFY(bitEqual(r.payload.baselineKi, s.payload.baselineKi));
+        QVERIFY(bitEqual(r.payload.baselineKd, s.payload.baselineKd));
         QVERIFY(r.simulation.payload.present);
         QVERIFY(bitEqual(r.simulation.payload.mass, s.simulation.payload.mass));
         QVERIFY(bitEqual(Eigen::VectorXd(r.simulation.payload.com),
@@ -156,6 +162,14 @@ private slots:
             "payload.baselineTrials: must be an integer from 0 to 100, got -1");
         row("baselineTrials fraction", "payload", "baselineTrials", 1.5,
             "payload.baselineTrials: must be an integer from 0 to 100, got 1.5");
+        row("baseline kp length", "payload.baselineGains", "kp", QJsonArray{100.0, 100.0},
+            "payload.baselineGains.kp: must have 7 entries (one per joint), got 2");
+        row("baseline kd negative", "payload.baselineGains", "kd",
+            QJsonArray{1.0, 1.0, 1.0, -1.0, 1.0, 1.0, 1.0}, "payload.baselineGains.kd[3]:");
+        row("baseline no ki", "payload.baselineGains", "ki", QJsonValue(QJsonValue::Undefined),
+            "payload.baselineGains.ki: is missing; this key is required");
+        row("baseline unknown key", "payload.baselineGains", "lambda", 100.0,
+            "payload.baselineGains.lambda: unknown key; allowed here: kp, ki, kd");
         row("unknown prior key", "payload.prior", "volume", 1.0,
             "payload.prior.volume: unknown key; allowed here: mass, com, inertia");
         row("sim negative mass", "simulation.payload", "mass", -3.0,
