@@ -7150,11 +7150,16 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+4"/>
-        <source>%1 (fixed to %2)</source>
-        <translation>%1 (fest an %2)</translation>
+        <source>%1 (on %2)</source>
+        <translation>%1 (an %2)</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+2"/>
+        <source>%1 is fixed to %2 and moves with it</source>
+        <translation>%1 ist fest mit %2 verbunden und bewegt sich mit ihm</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <location line="+3"/>
         <source>enter one number</source>
         <translation>eine Zahl eingeben</translation>

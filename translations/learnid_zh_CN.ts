@@ -7128,11 +7128,16 @@ ratio %</source>
     </message>
     <message>
         <location line="+4"/>
-        <source>%1 (fixed to %2)</source>
-        <translation>%1（固定于 %2）</translation>
+        <source>%1 (on %2)</source>
+        <translation>%1（位于 %2）</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+2"/>
+        <source>%1 is fixed to %2 and moves with it</source>
+        <translation>%1 固定在 %2 上并随其运动</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <location line="+3"/>
         <source>enter one number</source>
         <translation>请输入一个数</translation>

@@ -160,8 +160,13 @@ void PayloadForm::setScenario(const Scenario &scenario)
             m_link->addItem(tr("the tip (%1)").arg(chain->chain().joints.back().link), QString());
             for (const ChainJoint &j : chain->chain().joints) {
                 m_link->addItem(j.link, j.link);
-                for (const FixedLink &fixed : j.fixedLinks) // a flange or tool frame
-                    m_link->addItem(tr("%1 (fixed to %2)").arg(fixed.name, j.link), fixed.name);
+                for (const FixedLink &fixed : j.fixedLinks) { // a flange or tool frame
+                    m_link->addItem(tr("%1 (on %2)").arg(fixed.name, j.link), fixed.name);
+                    m_link->setItemData(
+                        m_link->count() - 1,
+                        tr("%1 is fixed to %2 and moves with it").arg(fixed.name, j.link),
+                        Qt::ToolTipRole);
+                }
             }
         }
     } catch (const Error &) {

@@ -208,6 +208,15 @@ private slots:
         emit form->linkChoice()->activated(0);
         QVERIFY2(form->isValid(), qPrintable(form->firstError()));
         QCOMPARE(form->scenario()->payload.link, QString());
+        // The flange, fixed to link 7, is offered beside the moving links and can be chosen.
+        const int flange = form->linkChoice()->findData(QStringLiteral("panda_link8"));
+        QVERIFY(flange > 0);
+        QCOMPARE(form->linkChoice()->itemText(flange),
+                 QStringLiteral("panda_link8 (on panda_link7)"));
+        form->linkChoice()->setCurrentIndex(flange);
+        emit form->linkChoice()->activated(flange);
+        QVERIFY2(form->isValid(), qPrintable(form->firstError()));
+        QCOMPARE(form->scenario()->payload.link, QStringLiteral("panda_link8"));
     }
 
     void window_routesAPayloadScenarioToThePayloadStep()
