@@ -3022,7 +3022,7 @@
         <translation>payload: nur ein URDF-Roboter trägt eine Nutzlast</translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location line="+150"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>unbekannter Roboter „%1“; bekannt: %2 oder eine URDF-Datei (DATEI.urdf)</translation>
     </message>
@@ -3083,7 +3083,7 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+211"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+217"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
@@ -3129,13 +3129,12 @@
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioPayload.cpp" line="+146"/>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-125"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-130"/>
         <source>one per joint</source>
         <translation>einer pro Gelenk</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+26"/>
+        <location line="+31"/>
         <source>the &quot;urdf&quot; model needs a URDF file</source>
         <translation>das Modell „urdf“ braucht eine URDF-Datei</translation>
     </message>
@@ -3195,7 +3194,7 @@
         <translation>muss 3 Einträge haben (x, y, z im Koordinatensystem des Basisglieds), gefunden: %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioPayload.cpp" line="-105"/>
+        <location filename="../core/io/ScenarioPayload.cpp" line="+41"/>
         <source>x, y and z</source>
         <translation>x, y und z</translation>
     </message>
@@ -3221,7 +3220,7 @@
         <translation>nur ein URDF-Roboter trägt eine Nutzlast (das Modell ist %1)</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+34"/>
         <source>not a real body&apos;s inertia (principal moments %1, %2, %3 kg m^2 must not be negative and each at most the sum of the others)</source>
         <translation>nicht die Trägheit eines realen Körpers (die Hauptträgheitsmomente %1, %2, %3 kg m^2 dürfen nicht negativ sein, und jedes höchstens die Summe der anderen)</translation>
     </message>
@@ -3802,7 +3801,7 @@
         <translation>%1: Glied „%2“ hat eine negative Masse (%3 kg)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+51"/>
         <source>%1: the robot branches at link &quot;%2&quot; (children %3): name the tip link of the chain</source>
         <translation>%1: der Roboter verzweigt sich am Glied „%2“ (Kindglieder %3): das Endglied der Kette angeben</translation>
     </message>
@@ -3828,7 +3827,7 @@
         <translation>%1: Gelenk „%2“ ahmt ein anderes Gelenk nach (mimic): Mimic-Gelenke werden nicht unterstützt</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+24"/>
         <source>%1: joint &quot;%2&quot; is floating or planar: only revolute, continuous, prismatic and fixed joints form a serial arm</source>
         <translation>%1: Gelenk „%2“ ist frei (floating) oder eben (planar): nur Drehgelenke (revolute, continuous), Schubgelenke (prismatic) und feste Gelenke (fixed) bilden einen seriellen Arm</translation>
     </message>
@@ -7154,12 +7153,12 @@ Verhältnis %</translation>
         <translation>%1 (an %2)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 is fixed to %2 and moves with it</source>
         <translation>%1 ist fest mit %2 verbunden und bewegt sich mit ihm</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+71"/>
         <location line="+3"/>
         <source>enter one number</source>
         <translation>eine Zahl eingeben</translation>

@@ -3009,7 +3009,7 @@
         <translation>payload：只有 URDF 机器人才能携带负载</translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location line="+150"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>未知机器人“%1”；已知：%2，或一个 URDF 文件（FILE.urdf）</translation>
     </message>
@@ -3070,7 +3070,7 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+211"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+217"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
@@ -3116,13 +3116,12 @@
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioPayload.cpp" line="+146"/>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-125"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-130"/>
         <source>one per joint</source>
         <translation>每个关节一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+26"/>
+        <location line="+31"/>
         <source>the &quot;urdf&quot; model needs a URDF file</source>
         <translation>“urdf”模型需要 URDF 文件</translation>
     </message>
@@ -3182,7 +3181,7 @@
         <translation>必须有 3 个条目（基座连杆坐标系中的 x、y、z），实际为 %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioPayload.cpp" line="-105"/>
+        <location filename="../core/io/ScenarioPayload.cpp" line="+41"/>
         <source>x, y and z</source>
         <translation>x、y 和 z</translation>
     </message>
@@ -3208,7 +3207,7 @@
         <translation>只有 URDF 机器人才能携带负载（模型为 %1）</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+34"/>
         <source>not a real body&apos;s inertia (principal moments %1, %2, %3 kg m^2 must not be negative and each at most the sum of the others)</source>
         <translation>不是真实物体的惯量（主惯量 %1、%2、%3 kg m^2 不得为负，且每个不得大于其余两个之和）</translation>
     </message>
@@ -3789,7 +3788,7 @@
         <translation>%1：连杆“%2”的质量为负（%3 kg）</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+51"/>
         <source>%1: the robot branches at link &quot;%2&quot; (children %3): name the tip link of the chain</source>
         <translation>%1：机器人在连杆“%2”处分叉（子连杆 %3）：请指定运动链的末端连杆</translation>
     </message>
@@ -3815,7 +3814,7 @@
         <translation>%1：关节“%2”模仿另一个关节（mimic）：不支持 mimic 关节</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+24"/>
         <source>%1: joint &quot;%2&quot; is floating or planar: only revolute, continuous, prismatic and fixed joints form a serial arm</source>
         <translation>%1：关节“%2”为浮动（floating）或平面（planar）关节：只有旋转（revolute、continuous）、移动（prismatic）和固定（fixed）关节能构成串联机械臂</translation>
     </message>
@@ -7132,12 +7131,12 @@ ratio %</source>
         <translation>%1（位于 %2）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 is fixed to %2 and moves with it</source>
         <translation>%1 固定在 %2 上并随其运动</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+71"/>
         <location line="+3"/>
         <source>enter one number</source>
         <translation>请输入一个数</translation>

@@ -60,5 +60,9 @@ void validateScenario(const Scenario &scenario);
 /// The controller part of validateScenario(): samplePeriod in (0, 0.1] s, kp > 0, ki >= 0,
 /// kd >= 0 with dof entries each, lambda > 0. path prefixes the key paths ("controller").
 void validateControllerSettings(const ControllerSettings &controller, int dof, const QString &path);
+/// The kp (> 0), ki and kd (>= 0) gains, one per joint, under `path` (path.kp, ...): the
+/// controller's, or the baseline trials' (payload.baselineGains).
+void validateJointGains(const Eigen::VectorXd &kp, const Eigen::VectorXd &ki,
+                        const Eigen::VectorXd &kd, int dof, const QString &path);
 
 } // namespace learnid

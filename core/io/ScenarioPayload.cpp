@@ -143,13 +143,8 @@ void validateScenarioPayload(const Scenario &s, const RobotModel &model)
         validatePayloadPrior(payloadPriorOf(s.payload));
         const PayloadSettings &p = s.payload;
         if (p.baselineKp.size() + p.baselineKi.size() + p.baselineKd.size() > 0) {
-            const QString perJoint = Text::tr("one per joint");
-            checkVector(key("payload.baselineGains.kp"), p.baselineKp, model.dof(), perJoint,
-                        EntryRule::Positive);
-            checkVector(key("payload.baselineGains.ki"), p.baselineKi, model.dof(), perJoint,
-                        EntryRule::NonNegative);
-            checkVector(key("payload.baselineGains.kd"), p.baselineKd, model.dof(), perJoint,
-                        EntryRule::NonNegative);
+            validateJointGains(p.baselineKp, p.baselineKi, p.baselineKd, model.dof(),
+                               key("payload.baselineGains"));
         }
     }
     try {

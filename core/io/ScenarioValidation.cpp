@@ -25,16 +25,22 @@ QString key(const char *path)
 
 } // namespace
 
-void validateControllerSettings(const ControllerSettings &c, int dof, const QString &path)
+void validateJointGains(const Eigen::VectorXd &kp, const Eigen::VectorXd &ki,
+                        const Eigen::VectorXd &kd, int dof, const QString &path)
 {
     const QString perJoint = Text::tr("one per joint");
-    checkInterval(jsonKeyPath(path, key("samplePeriod")), c.samplePeriod, 0.0,
-                  scenarioLimits::maxSamplePeriod, Bounds::LeftOpen);
-    checkVector(jsonKeyPath(path, key("kp")), c.kp, dof, perJoint, EntryRule::Positive);
+    checkVector(jsonKeyPath(path, key("kp")), kp, dof, perJoint, EntryRule::Positive);
     // Zero integral or derivative gain is a plain PD or PI loop; the pre-trial stability check
     // decides whether the loop is usable.
-    checkVector(jsonKeyPath(path, key("ki")), c.ki, dof, perJoint, EntryRule::NonNegative);
-    checkVector(jsonKeyPath(path, key("kd")), c.kd, dof, perJoint, EntryRule::NonNegative);
+    checkVector(jsonKeyPath(path, key("ki")), ki, dof, perJoint, EntryRule::NonNegative);
+    checkVector(jsonKeyPath(path, key("kd")), kd, dof, perJoint, EntryRule::NonNegative);
+}
+
+void validateControllerSettings(const ControllerSettings &c, int dof, const QString &path)
+{
+    checkInterval(jsonKeyPath(path, key("samplePeriod")), c.samplePeriod, 0.0,
+                  scenarioLimits::maxSamplePeriod, Bounds::LeftOpen);
+    validateJointGains(c.kp, c.ki, c.kd, dof, path);
     checkPositive(jsonKeyPath(path, key("lambda")), c.lambda);
 }
 

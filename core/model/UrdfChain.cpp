@@ -88,6 +88,16 @@ InertialParameters linkInertial(const urdf::Link &link, const QString &source)
                               com.linear() * atCom * com.linear().transpose());
 }
 
+// Merges `link`, fixed to the body that `joint` moves at `pose` (its frame in the body's), into
+// that body: its inertia, its geometry, and its name in the body's fixedLinks.
+void mergeFixedLink(const urdf::Link &link, const Eigen::Isometry3d &pose, const QString &source,
+                    ChainJoint &joint, BodyGeometry &geometry)
+{
+    joint.inertial += transformedInertial(linkInertial(link, source), pose.inverse());
+    joint.fixedLinks.push_back({qs(link.name), pose});
+    geometry.addLink(link, pose);
+}
+
 // Adds the inertia and geometry of every link fixed (directly or through other fixed joints) to
 // `link`, except the chain's next link, to the body that `joint` moves, and lists them in its
 // fixedLinks; `pose` places link's frame in the body's frame.
@@ -102,9 +112,7 @@ void mergeFixedChildren(const urdf::Link &link, const Eigen::Isometry3d &pose,
         }
         const Eigen::Isometry3d childPose =
             pose * toIsometry(child->parent_joint->parent_to_joint_origin_transform);
-        joint.inertial += transformedInertial(linkInertial(*child, source), childPose.inverse());
-        joint.fixedLinks.push_back({qs(child->name), childPose});
-        geometry.addLink(*child, childPose);
+        mergeFixedLink(*child, childPose, source, joint, geometry);
         mergeFixedChildren(*child, childPose, nullptr, source, joint, geometry);
     }
 }
@@ -206,12 +214,8 @@ SerialChain parseUrdfChain(const QByteArray &xml, const QString &source, const Q
         switch (joint.type) {
         case urdf::Joint::FIXED:
             pending = origin;
-            if (!chain.joints.empty()) { // links fixed to the base do not move
-                chain.joints.back().inertial +=
-                    transformedInertial(linkInertial(link, source), pending.inverse());
-                chain.joints.back().fixedLinks.push_back({qs(link.name), pending});
-                geometry.back().addLink(link, pending);
-            }
+            if (!chain.joints.empty()) // links fixed to the base do not move
+                mergeFixedLink(link, pending, source, chain.joints.back(), geometry.back());
             break;
         case urdf::Joint::REVOLUTE:
         case urdf::Joint::CONTINUOUS:

@@ -110,11 +110,10 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
         const PayloadPrior prior = payloadPriorOf(payload);
         validatePayloadPrior(prior);
         try {
-            (void)payloadLinkOf(chain->chain(), payload.link);
-        } catch (const Error &e) {
+            cad += payloadBaseShift(*chain, payload.link, prior.parameters());
+        } catch (const Error &e) { // the link is not the arm's
             throw Error(QStringLiteral("payload.link: %1").arg(e.message()));
         }
-        cad += payloadBaseShift(*chain, payload.link, prior.parameters());
         const double size = prior.bound.box
                                 ? 0.5 * (prior.bound.upper - prior.bound.lower).minCoeff()
                                 : prior.bound.radius;

@@ -5,13 +5,13 @@
 
 #include "../support/ErrorOf.h"
 #include "../support/NumericAssert.h"
+#include "../support/RandomStates.h"
 #include "../support/SharedData.h"
 #include "model/Payload.h"
 #include "model/UrdfChain.h"
 
 #include <QFile>
 #include <QTest>
-#include <random>
 
 using namespace learnid;
 
@@ -116,23 +116,15 @@ void TestPayload::payloadRegressor_matchesTheUrdfWithThePayloadMerged()
     const InertialParameters expected = expectedPayload();
     LEARNID_COMPARE_MATRIX(payload.standardWith(expected), loadedModel.cadStandard(), 1e-13);
 
-    std::mt19937 random(25);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
     Eigen::MatrixXd y(7, loadedModel.standardCount());
-    for (int trial = 0; trial < 20; ++trial) {
-        Eigen::VectorXd q(7), qd(7), qdd(7);
-        for (int j = 0; j < 7; ++j) {
-            q[j] = 2.0 * unit(random);
-            qd[j] = 1.5 * unit(random);
-            qdd[j] = 4.0 * unit(random);
-        }
+    test::forRandomStates(7, 25, 20, [&](const auto &q, const auto &qd, const auto &qdd) {
         loadedModel.standardRegressor(q, qd, qdd, y);
         const Eigen::VectorXd tau = y * loadedModel.cadStandard();
         LEARNID_COMPARE_MATRIX(payload.torqueAt(q, qd, qdd, expected), tau, 1e-10);
         LEARNID_COMPARE_MATRIX(payload.armTorqueAt(q, qd, qdd) +
                                    payload.regressorAt(q, qd, qdd) * expected,
                                tau, 1e-10);
-    }
+    });
 }
 
 void TestPayload::namedLink_takesThatLinksColumns()
@@ -184,21 +176,13 @@ void TestPayload::fixedLink_payloadInItsFrameEqualsTheUrdfWithThePayloadOnIt()
     LEARNID_COMPARE_MATRIX(
         payloadBaseShift(*armModel, QStringLiteral("tool"), inTool),
         armModel->baseFromStandard(loadedModel.cadStandard() - armModel->cadStandard()), 1e-13);
-    std::mt19937 random(27);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
     Eigen::MatrixXd y(7, loadedModel.standardCount());
-    for (int trial = 0; trial < 10; ++trial) {
-        Eigen::VectorXd q(7), qd(7), qdd(7);
-        for (int j = 0; j < 7; ++j) {
-            q[j] = 2.0 * unit(random);
-            qd[j] = 1.5 * unit(random);
-            qdd[j] = 4.0 * unit(random);
-        }
+    test::forRandomStates(7, 27, 10, [&](const auto &q, const auto &qd, const auto &qdd) {
         loadedModel.standardRegressor(q, qd, qdd, y);
         LEARNID_COMPARE_MATRIX(payload.armTorqueAt(q, qd, qdd) +
                                    payload.regressorAt(q, qd, qdd) * inTool,
                                y * loadedModel.cadStandard(), 1e-10);
-    }
+    });
 }
 
 void TestPayload::badInput_namesTheLinkAndTheMass()
