@@ -4132,7 +4132,8 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+45"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+54"/>
+        <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+11"/>
         <location line="+6"/>
@@ -4611,7 +4612,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+48"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+49"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4676,6 +4677,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-66"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
@@ -5247,12 +5249,12 @@ neue Schätzung.
         <translation>Referenz: dieselbe Bahn ohne die Nutzlast</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-43"/>
-        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
-        <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten Roboter gelernt, und nichts wird geschrieben)</translation>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+22"/>
+        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot; --export writes its parameter file)</source>
+        <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten Roboter gelernt; --export schreibt ihre Parameterdatei)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
         <translation>learnid-cli: %1, die Nutzlast an %2 in %3 Versuchen gelernt; das Modell des Arms bleibt fest (robot.initialParameters)</translation>
     </message>
@@ -5265,6 +5267,11 @@ neue Schätzung.
         <location line="+9"/>
         <source>learnid-cli: the path determines %1 of the payload&apos;s 10 parameters</source>
         <translation>learnid-cli: die Bahn bestimmt %1 der 10 Parameter der Nutzlast</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>learnid-cli: %1 not written: the session ended before its last trial</source>
+        <translation>learnid-cli: %1 nicht geschrieben: die Sitzung endete vor ihrem letzten Versuch</translation>
     </message>
     <message>
         <location filename="../app/cli/PayloadTrialTable.cpp" line="-22"/>

@@ -4118,7 +4118,8 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+45"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+54"/>
+        <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+11"/>
         <location line="+6"/>
@@ -4595,7 +4596,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+48"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+49"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4660,6 +4661,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-66"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
@@ -5227,12 +5229,12 @@ stdout, and the next plan uses the new estimate.
         <translation>基线：不带负载的同一路径</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-43"/>
-        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot, and nothing is written)</source>
-        <translation>%1：带 payload 段时尚不可用（负载在仿真机器人上学习，不写入任何文件）</translation>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+22"/>
+        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot; --export writes its parameter file)</source>
+        <translation>%1：带有 payload 部分时尚不可用（负载在仿真机器人上学习；--export 写出其参数文件）</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
         <translation>learnid-cli：%1，在 %3 次试验中学习 %2 上的负载；机械臂模型保持固定（robot.initialParameters）</translation>
     </message>
@@ -5245,6 +5247,11 @@ stdout, and the next plan uses the new estimate.
         <location line="+9"/>
         <source>learnid-cli: the path determines %1 of the payload&apos;s 10 parameters</source>
         <translation>learnid-cli：该路径可确定负载 10 个参数中的 %1 个</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>learnid-cli: %1 not written: the session ended before its last trial</source>
+        <translation>learnid-cli：未写入 %1：会话在最后一次试验之前结束</translation>
     </message>
     <message>
         <location filename="../app/cli/PayloadTrialTable.cpp" line="-22"/>

@@ -3,9 +3,10 @@
 #include "cli/PayloadCommand.h"
 #include "cli/PayloadTrialTable.h"
 #include "model/Error.h"
-#include "service/PayloadRun.h"
+#include "service/PayloadRunExport.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <csignal>
 
 namespace learnid::cli {
@@ -26,7 +27,6 @@ QString unsupportedOption(const RunOptions &o)
     if (o.robot != QLatin1String("sim"))
         return QStringLiteral("--robot %1").arg(o.robot);
     const std::pair<bool, const char *> options[] = {{!o.reportPath.isEmpty(), "--report"},
-                                                     {!o.exportPath.isEmpty(), "--export"},
                                                      {!o.trialCsvDir.isEmpty(), "--trial-csv"},
                                                      {o.apply, "--apply"},
                                                      {o.consistent, "--consistent"}};
@@ -34,6 +34,28 @@ QString unsupportedOption(const RunOptions &o)
         if (set)
             return QString::fromLatin1(name);
     return {};
+}
+
+// --export of a completed run: the parameter file with the payload section and its DCF
+// fragment beside it, all or none.
+ExitCode writePayloadExport(const RunOptions &options, const SimulatedPayloadSession &run,
+                            QTextStream &err)
+{
+    LogExportRequest request;
+    request.parameterPath = options.exportPath;
+    try {
+        const QStringList written = writePayloadRunExport(payloadRunResult(run), request);
+        if (!options.quiet)
+            for (const QString &path : written)
+                err << QCoreApplication::translate("learnid-cli", "learnid-cli: wrote %1")
+                           .arg(QDir::toNativeSeparators(path))
+                    << Qt::endl;
+    } catch (const Error &e) {
+        err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(e.message())
+            << Qt::endl;
+        return ExitWriteFailed;
+    }
+    return ExitOk;
 }
 
 } // namespace
@@ -50,17 +72,18 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
         return fail(QCoreApplication::translate(
                         "learnid-cli",
                         "%1: not available with a payload section yet (the payload is learned on "
-                        "the simulated robot, and nothing is written)")
+                        "the simulated robot; --export writes its parameter file)")
                         .arg(option),
                     ExitBadInput);
     }
-    std::unique_ptr<PayloadSession> session;
+    SimulatedPayloadSession run;
     try {
         // The simulated robot carrying its payload, and without it for the baseline trials.
-        session = makeSimulatedPayloadSession(given).session;
+        run = makeSimulatedPayloadSession(given);
     } catch (const Error &e) {
         return fail(e.message(), ExitBadInput);
     }
+    PayloadSession *session = run.session.get();
     const Scenario &scenario = session->scenario();
     const QString link = session->payloadModel().link();
     if (!options.quiet) {
@@ -94,7 +117,7 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
                 << Qt::endl;
     }
     out << payloadTrialHeader();
-    g_session = session.get();
+    g_session = session;
     const auto previous = std::signal(SIGINT, onPayloadInterrupt);
     bool completed = true;
     const int trials = scenario.payload.baselineTrials + scenario.iterations;
@@ -108,9 +131,16 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
     if (const QString result = payloadResult(*session); !result.isEmpty())
         out << Qt::endl << result;
     out.flush();
-    if (!completed)
+    if (!completed) {
+        if (!options.exportPath.isEmpty())
+            err << QCoreApplication::translate("learnid-cli",
+                                               "learnid-cli: %1 not written: the session ended "
+                                               "before its last trial")
+                       .arg(QDir::toNativeSeparators(options.exportPath))
+                << Qt::endl;
         return fail(session->history().back().message, ExitTrialFailed);
-    return ExitOk;
+    }
+    return options.exportPath.isEmpty() ? ExitOk : writePayloadExport(options, run, err);
 }
 
 } // namespace learnid::cli

@@ -1,10 +1,13 @@
 // `learnid-cli run --scenario FILE` with a payload section: the payload learned in the learning
 // loop on the simulated Panda (built in) carrying 1.5 kg 5 cm off the flange axis, its arm model
 // the true arm: per trial the tracking error, the mass and centre of mass, which values the
-// trials identified; then the estimate's table. Options it does not offer are refused by name.
+// trials identified; then the estimate's table; --export writes the parameter file with the
+// payload section (read back), and nothing when the session ends early. Options it does not offer
+// are refused by name.
 
 #include "../session/PayloadScenarios.h"
 #include "../support/ToolRun.h"
+#include "io/ParameterFile.h"
 #include "io/ScenarioFile.h"
 
 #include <QRegularExpression>
@@ -55,8 +58,10 @@ private slots:
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("panda-payload.json"));
         writeScenarioFile(file, test::pandaWithPayload());
+        const QString exported = dir.filePath(QStringLiteral("panda-payload-params.json"));
         const test::ToolRun run =
-            test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file});
+            test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
+                                QStringLiteral("--export"), exported});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         qInfo("%s", qPrintable(run.out));
         const QList<Row> rows = trialRows(run.out);
@@ -72,6 +77,48 @@ private slots:
         QVERIFY(run.out.contains(QStringLiteral("The payload after trial 2")));
         QVERIFY(run.err.contains(QStringLiteral("the payload on panda_link7")));
         QVERIFY(run.err.contains(QStringLiteral("determines 10 of the payload's 10")));
+
+        // The parameter file: the arm as the run held it, and the payload it printed last, each
+        // value identified; its DCF fragment beside it.
+        QVERIFY(
+            run.err.contains(QStringLiteral("wrote %1").arg(QDir::toNativeSeparators(exported))));
+        const ParameterFileContent content = readParameterFile(exported);
+        QCOMPARE(content.robotModel, QStringLiteral("panda"));
+        QVERIFY(content.payload.has_value());
+        const ParameterFilePayload &p = *content.payload;
+        QCOMPARE(p.link, QStringLiteral("panda_link7"));
+        QVERIFY2(std::abs(p.mass - rows.back().mass) < 0.0005 * p.mass,
+                 qPrintable(QString::number(p.mass)));
+        QVERIFY2((1000.0 * p.com - rows.back().comMm).norm() < 0.1,
+                 qPrintable(QString::number(p.com.x())));
+        QVERIFY2((1000.0 * p.com - Eigen::Vector3d(50, 0, 80)).norm() < 3.0,
+                 qPrintable(QString::number(p.com.x())));
+        for (int i = 0; i < 10; ++i) {
+            QVERIFY(p.identified[i]);
+            QVERIFY(std::isfinite(p.standardUncertainty[i]) && p.standardUncertainty[i] >= 0.0);
+        }
+        QVERIFY(QFileInfo(dir.filePath(QStringLiteral("panda-payload-params.dcf"))).size() > 0);
+    }
+
+    void sessionEndedEarly_writesNoParameterFile()
+    {
+        // A tracking limit the path cannot keep: trial 0 stops at it too early to learn from,
+        // and the run ends before its last trial.
+        Scenario s = test::pandaWithPayload();
+        s.maxTrackingErrorDeg = 0.02;
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("panda-tight.json"));
+        writeScenarioFile(file, s);
+        const QString exported = dir.filePath(QStringLiteral("p.json"));
+        const test::ToolRun run =
+            test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
+                                QStringLiteral("--export"), exported});
+        QCOMPARE(run.exitCode, 3);
+        QVERIFY2(run.err.contains(QStringLiteral("p.json not written: the session ended before "
+                                                 "its last trial")),
+                 qPrintable(run.err));
+        QVERIFY(!QFile::exists(exported));
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("p.dcf"))));
     }
 
     void wrongArm_aBaselineTrialFirst_andThePayloadStillLearned()
@@ -112,11 +159,11 @@ private slots:
         writeScenarioFile(file, test::pandaWithPayload());
         const test::ToolRun run = test::runTool(
             cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
-                  QStringLiteral("--export"), dir.filePath(QStringLiteral("p.json"))});
+                  QStringLiteral("--report"), dir.filePath(QStringLiteral("r.json"))});
         QCOMPARE(run.exitCode, 2);
-        QVERIFY2(run.err.contains(QStringLiteral("--export: not available with a payload")),
+        QVERIFY2(run.err.contains(QStringLiteral("--report: not available with a payload")),
                  qPrintable(run.err));
-        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("p.json"))));
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("r.json"))));
     }
 
     void badPayloadKey_isRefusedWithItsKeyPath()
