@@ -2481,7 +2481,7 @@
 <context>
     <name>PayloadRunExport</name>
     <message numerus="yes">
-        <location filename="../core/service/PayloadRunExport.cpp" line="+37"/>
+        <location filename="../core/service/PayloadRunExport.cpp" line="+39"/>
         <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
         <translation>
             <numerusform>%1 mit einer Nutzlast an %2, gelernt in %n Versuch mit festgehaltenem Modell des Arms</numerusform>
@@ -4132,7 +4132,7 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+54"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+75"/>
         <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+11"/>
@@ -4605,14 +4605,15 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 nicht geschrieben: nichts wurde gelernt</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-18"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+28"/>
         <source>learnid-cli: wrote %1 (the session ended early)</source>
         <translation>learnid-cli: %1 geschrieben (die Sitzung endete vorzeitig)</translation>
     </message>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+49"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+67"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4677,7 +4678,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-66"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-68"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
@@ -5249,9 +5250,14 @@ neue Schätzung.
         <translation>Referenz: dieselbe Bahn ohne die Nutzlast</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+22"/>
-        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot; --export writes its parameter file)</source>
-        <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten Roboter gelernt; --export schreibt ihre Parameterdatei)</translation>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-6"/>
+        <source>cannot create the folder %1</source>
+        <translation>der Ordner %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot; --export and --trial-csv write its files)</source>
+        <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten Roboter gelernt; --export und --trial-csv schreiben ihre Dateien)</translation>
     </message>
     <message>
         <location line="+18"/>
@@ -5269,7 +5275,7 @@ neue Schätzung.
         <translation>learnid-cli: die Bahn bestimmt %1 der 10 Parameter der Nutzlast</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="-82"/>
         <source>learnid-cli: %1 not written: the session ended before its last trial</source>
         <translation>learnid-cli: %1 nicht geschrieben: die Sitzung endete vor ihrem letzten Versuch</translation>
     </message>

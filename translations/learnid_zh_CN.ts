@@ -2472,7 +2472,7 @@
 <context>
     <name>PayloadRunExport</name>
     <message numerus="yes">
-        <location filename="../core/service/PayloadRunExport.cpp" line="+37"/>
+        <location filename="../core/service/PayloadRunExport.cpp" line="+39"/>
         <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
         <translation>
             <numerusform>%1，负载位于 %2，在手臂模型保持不变的情况下经 %n 次试验学习</numerusform>
@@ -4118,7 +4118,7 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+54"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+75"/>
         <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+11"/>
@@ -4589,14 +4589,15 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：未写入 %1：没有学到任何内容</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-18"/>
+        <location filename="../app/cli/RunCommand.cpp" line="+28"/>
         <source>learnid-cli: wrote %1 (the session ended early)</source>
         <translation>learnid-cli：已写入 %1（会话提前结束）</translation>
     </message>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+49"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+67"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4661,7 +4662,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-66"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-68"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
@@ -5229,9 +5230,14 @@ stdout, and the next plan uses the new estimate.
         <translation>基线：不带负载的同一路径</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+22"/>
-        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot; --export writes its parameter file)</source>
-        <translation>%1：带有 payload 部分时尚不可用（负载在仿真机器人上学习；--export 写出其参数文件）</translation>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-6"/>
+        <source>cannot create the folder %1</source>
+        <translation>无法创建文件夹 %1</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot; --export and --trial-csv write its files)</source>
+        <translation>%1：带有 payload 部分时尚不可用（负载在仿真机器人上学习；--export 和 --trial-csv 写出其文件）</translation>
     </message>
     <message>
         <location line="+18"/>
@@ -5249,7 +5255,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：该路径可确定负载 10 个参数中的 %1 个</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="-82"/>
         <source>learnid-cli: %1 not written: the session ended before its last trial</source>
         <translation>learnid-cli：未写入 %1：会话在最后一次试验之前结束</translation>
     </message>

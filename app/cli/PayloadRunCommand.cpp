@@ -4,6 +4,7 @@
 #include "cli/PayloadTrialTable.h"
 #include "model/Error.h"
 #include "service/PayloadRunExport.h"
+#include "service/SessionExport.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -27,7 +28,6 @@ QString unsupportedOption(const RunOptions &o)
     if (o.robot != QLatin1String("sim"))
         return QStringLiteral("--robot %1").arg(o.robot);
     const std::pair<bool, const char *> options[] = {{!o.reportPath.isEmpty(), "--report"},
-                                                     {!o.trialCsvDir.isEmpty(), "--trial-csv"},
                                                      {o.apply, "--apply"},
                                                      {o.consistent, "--consistent"}};
     for (const auto &[set, name] : options)
@@ -36,18 +36,39 @@ QString unsupportedOption(const RunOptions &o)
     return {};
 }
 
-// --export of a completed run: the parameter file with the payload section and its DCF
-// fragment beside it, all or none.
-ExitCode writePayloadExport(const RunOptions &options, const SimulatedPayloadSession &run,
-                            QTextStream &err)
+// The outputs asked for, all or none: --trial-csv (every trial that moved, also of a run that
+// ended early) and --export (the parameter file and its DCF fragment, of a completed run only:
+// the payload of a run that ended early is not the one a complete run learns).
+ExitCode writePayloadOutputs(const RunOptions &options, const SimulatedPayloadSession &run,
+                             bool completed, QTextStream &err)
 {
-    LogExportRequest request;
-    request.parameterPath = options.exportPath;
+    if (!completed && !options.exportPath.isEmpty())
+        err << QCoreApplication::translate(
+                   "learnid-cli",
+                   "learnid-cli: %1 not written: the session ended before its last trial")
+                   .arg(QDir::toNativeSeparators(options.exportPath))
+            << Qt::endl;
     try {
-        const QStringList written = writePayloadRunExport(payloadRunResult(run), request);
-        if (!options.quiet)
+        QList<QPair<QString, QByteArray>> files;
+        if (!options.trialCsvDir.isEmpty())
+            files += payloadTrialCsvFiles(run.session->history(), options.trialCsvDir);
+        if (completed && !options.exportPath.isEmpty()) {
+            LogExportRequest request;
+            request.parameterPath = options.exportPath;
+            files += payloadRunExportFiles(payloadRunResult(run), request);
+        }
+        if (files.isEmpty())
+            return ExitOk;
+        if (!options.trialCsvDir.isEmpty() && !QDir().mkpath(options.trialCsvDir))
+            throw Error(QCoreApplication::translate("learnid-cli", "cannot create the folder %1")
+                            .arg(QDir::toNativeSeparators(options.trialCsvDir)));
+        const QStringList written = writeExportFiles(files);
+        if (!options.quiet || !completed)
             for (const QString &path : written)
-                err << QCoreApplication::translate("learnid-cli", "learnid-cli: wrote %1")
+                err << (completed
+                            ? QCoreApplication::translate("learnid-cli", "learnid-cli: wrote %1")
+                            : QCoreApplication::translate(
+                                  "learnid-cli", "learnid-cli: wrote %1 (the session ended early)"))
                            .arg(QDir::toNativeSeparators(path))
                     << Qt::endl;
     } catch (const Error &e) {
@@ -72,7 +93,7 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
         return fail(QCoreApplication::translate(
                         "learnid-cli",
                         "%1: not available with a payload section yet (the payload is learned on "
-                        "the simulated robot; --export writes its parameter file)")
+                        "the simulated robot; --export and --trial-csv write its files)")
                         .arg(option),
                     ExitBadInput);
     }
@@ -131,16 +152,12 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
     if (const QString result = payloadResult(*session); !result.isEmpty())
         out << Qt::endl << result;
     out.flush();
-    if (!completed) {
-        if (!options.exportPath.isEmpty())
-            err << QCoreApplication::translate("learnid-cli",
-                                               "learnid-cli: %1 not written: the session ended "
-                                               "before its last trial")
-                       .arg(QDir::toNativeSeparators(options.exportPath))
-                << Qt::endl;
+    if (const ExitCode written = writePayloadOutputs(options, run, completed, err);
+        written != ExitOk)
+        return written;
+    if (!completed)
         return fail(session->history().back().message, ExitTrialFailed);
-    }
-    return options.exportPath.isEmpty() ? ExitOk : writePayloadExport(options, run, err);
+    return ExitOk;
 }
 
 } // namespace learnid::cli

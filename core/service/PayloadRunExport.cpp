@@ -5,6 +5,7 @@
 
 #include "can/ManufacturerObjects.h"
 #include "io/AtomicFile.h"
+#include "io/TrialCsv.h"
 #include "io/UrdfPayload.h"
 #include "model/ModelFactory.h"
 #include "service/PayloadExport.h"
@@ -12,6 +13,7 @@
 #include "service/StandardExport.h"
 
 #include <QCoreApplication>
+#include <QDir>
 
 namespace learnid {
 
@@ -81,6 +83,20 @@ QList<QPair<QString, QByteArray>> payloadRunExportFiles(const PayloadRunResult &
     }
     if (!request.urdfPath.isEmpty())
         files.append({request.urdfPath, payloadRunUrdf(r, request.urdfComment)});
+    return files;
+}
+
+QList<QPair<QString, QByteArray>> payloadTrialCsvFiles(const std::vector<PayloadTrial> &history,
+                                                       const QString &folder)
+{
+    const QDir dir(folder);
+    QList<QPair<QString, QByteArray>> files;
+    for (const PayloadTrial &t : history) {
+        if (t.record.samples() == 0)
+            continue; // refused before the motion: nothing measured
+        const QString name = QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
+        files.append({dir.filePath(name), trialCsv(t.plan(), t.record)});
+    }
     return files;
 }
 

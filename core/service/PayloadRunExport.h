@@ -29,6 +29,12 @@ QByteArray payloadRunUrdf(const PayloadRunResult &result, const QString &comment
 QList<QPair<QString, QByteArray>> payloadRunExportFiles(const PayloadRunResult &result,
                                                         const LogExportRequest &request);
 
+/// The CSV of every trial of a payload session that measured something (baseline trials
+/// included), as (folder/trial-NNN.csv, content) pairs for writeFilesAtomically(): the format of
+/// the arm's session (trialCsv()), its feedforward the arm plus the payload that trial used.
+QList<QPair<QString, QByteArray>> payloadTrialCsvFiles(const std::vector<PayloadTrial> &history,
+                                                       const QString &folder);
+
 /// Writes the request's files all or none and returns their paths; throws Error naming the file.
 QStringList writePayloadRunExport(const PayloadRunResult &result, const LogExportRequest &request);
 

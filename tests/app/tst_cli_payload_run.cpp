@@ -9,6 +9,7 @@
 #include "../support/ToolRun.h"
 #include "io/ParameterFile.h"
 #include "io/ScenarioFile.h"
+#include "io/TrialCsv.h"
 
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -61,7 +62,8 @@ private slots:
         const QString exported = dir.filePath(QStringLiteral("panda-payload-params.json"));
         const test::ToolRun run =
             test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
-                                QStringLiteral("--export"), exported});
+                                QStringLiteral("--export"), exported, QStringLiteral("--trial-csv"),
+                                dir.filePath(QStringLiteral("csv"))});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         qInfo("%s", qPrintable(run.out));
         const QList<Row> rows = trialRows(run.out);
@@ -98,6 +100,17 @@ private slots:
             QVERIFY(std::isfinite(p.standardUncertainty[i]) && p.standardUncertainty[i] >= 0.0);
         }
         QVERIFY(QFileInfo(dir.filePath(QStringLiteral("panda-payload-params.dcf"))).size() > 0);
+
+        // Each trial's samples: the tracking error the row printed is the CSV's largest.
+        for (const Row &r : rows) {
+            const TrialRecordCsv csv = readTrialCsvFile(dir.filePath(
+                QStringLiteral("csv/trial-%1.csv").arg(r.trial, 3, 10, QLatin1Char('0'))));
+            QCOMPARE(csv.dof(), 7);
+            QVERIFY(csv.samples() > 100);
+            const double largest = csv.trackingErrorDeg.cwiseAbs().maxCoeff();
+            QVERIFY2(std::abs(largest - r.maxError) < 0.00006,
+                     qPrintable(QString::number(largest)));
+        }
     }
 
     void sessionEndedEarly_writesNoParameterFile()
@@ -112,13 +125,22 @@ private slots:
         const QString exported = dir.filePath(QStringLiteral("p.json"));
         const test::ToolRun run =
             test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
-                                QStringLiteral("--export"), exported});
+                                QStringLiteral("--export"), exported, QStringLiteral("--trial-csv"),
+                                dir.filePath(QStringLiteral("csv"))});
         QCOMPARE(run.exitCode, 3);
         QVERIFY2(run.err.contains(QStringLiteral("p.json not written: the session ended before "
                                                  "its last trial")),
                  qPrintable(run.err));
         QVERIFY(!QFile::exists(exported));
         QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("p.dcf"))));
+        // What the stopped trial measured is kept, up to the stop.
+        const QString trial0 = dir.filePath(QStringLiteral("csv/trial-000.csv"));
+        QVERIFY2(run.err.contains(QStringLiteral("wrote %1 (the session ended early)")
+                                      .arg(QDir::toNativeSeparators(trial0))),
+                 qPrintable(run.err));
+        const TrialRecordCsv csv = readTrialCsvFile(trial0);
+        QVERIFY(csv.samples() > 0);
+        QVERIFY(csv.trackingErrorDeg.cwiseAbs().maxCoeff() >= s.maxTrackingErrorDeg);
     }
 
     void wrongArm_aBaselineTrialFirst_andThePayloadStillLearned()
