@@ -25,7 +25,7 @@ extern "C" void onPayloadInterrupt(int)
 // The options a payload session does not offer yet, by name; empty when none is set.
 QString unsupportedOption(const RunOptions &o)
 {
-    if (o.robot != QLatin1String("sim"))
+    if (o.robot != QLatin1String("sim") && o.robot != QLatin1String("can"))
         return QStringLiteral("--robot %1").arg(o.robot);
     const std::pair<bool, const char *> options[] = {{!o.reportPath.isEmpty(), "--report"},
                                                      {o.apply, "--apply"},
@@ -39,7 +39,7 @@ QString unsupportedOption(const RunOptions &o)
 // The outputs asked for, all or none: --trial-csv (every trial that moved, also of a run that
 // ended early) and --export (the parameter file and its DCF fragment, of a completed run only:
 // the payload of a run that ended early is not the one a complete run learns).
-ExitCode writePayloadOutputs(const RunOptions &options, const SimulatedPayloadSession &run,
+ExitCode writePayloadOutputs(const RunOptions &options, const PayloadRunSession &run,
                              bool completed, QTextStream &err)
 {
     if (!completed && !options.exportPath.isEmpty())
@@ -81,8 +81,8 @@ ExitCode writePayloadOutputs(const RunOptions &options, const SimulatedPayloadSe
 
 } // namespace
 
-ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTextStream &out,
-                           QTextStream &err)
+ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given,
+                           const RobotRequest &robot, QTextStream &out, QTextStream &err)
 {
     const auto fail = [&err](const QString &message, ExitCode code) {
         err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: %1").arg(message)
@@ -93,17 +93,21 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given, QTe
         return fail(QCoreApplication::translate(
                         "learnid-cli",
                         "%1: not available with a payload section yet (the payload is learned on "
-                        "the simulated robot; --export and --trial-csv write its files)")
+                        "the simulated or the CAN robot; --export and --trial-csv write its files)")
                         .arg(option),
                     ExitBadInput);
     }
-    SimulatedPayloadSession run;
+    PayloadRunSession run;
     try {
-        // The simulated robot carrying its payload, and without it for the baseline trials.
-        run = makeSimulatedPayloadSession(given);
+        // The simulated robot carrying its payload, and without it for the baseline trials; or
+        // the CAN robot, connected here.
+        run = robot.kind == RobotRequest::Kind::Can ? makeCanPayloadSession(given, robot)
+                                                    : makeSimulatedPayloadSession(given);
     } catch (const Error &e) {
         return fail(e.message(), ExitBadInput);
     }
+    if (!run.session)
+        return fail(run.connectError, ExitTrialFailed);
     PayloadSession *session = run.session.get();
     const Scenario &scenario = session->scenario();
     const QString link = session->payloadModel().link();

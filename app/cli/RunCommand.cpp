@@ -107,8 +107,6 @@ ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
             << Qt::endl;
         return ExitBadInput;
     }
-    if (scenario.payload.enabled)
-        return runPayloadCommand(options, scenario, out, err);
     if (options.robot == QLatin1String("replay")) {
         int recorded = 0;
         try {
@@ -137,6 +135,8 @@ ExitCode runCommand(const RunOptions &given, QTextStream &out, QTextStream &err)
             << Qt::endl;
         return ExitBadInput;
     }
+    if (scenario.payload.enabled)
+        return runPayloadCommand(options, scenario, robotRequest(options), out, err);
 
     // The session service, run synchronously in this thread: its robot factory, its session,
     // its export path, as the window uses them from its worker thread.

@@ -33,8 +33,10 @@ CanArmSettings canArmSettings(const Scenario &given, std::shared_ptr<const Robot
     // The drives come commissioned for this robot, joint j's drive as joint j (--uncommissioned
     // of learnid-robot-sim clears it).
     s.robotIdentity = objects::robotIdentityOf(model->id());
+    // The arm carries the payload of a scenario's payload section from the start (there is no
+    // one to take it off between trials).
+    s.trueParameters = simulatedTrueParameters(scenario, *model);
     s.model = std::move(model);
-    s.trueParameters = scenario.simulation.trueParameters;
     s.measurement.encoderCounts = scenario.simulation.encoderCounts;
     s.measurement.torqueNoise = scenario.simulation.torqueNoise;
     s.measurement.seed = scenario.simulation.seed;

@@ -9,7 +9,7 @@
 namespace learnid {
 
 /// The CAN arm a scenario describes, as SimulatedRobot would simulate it (makeSimulatedRobot):
-/// the model's true parameters, encoder counts, torque noise, seed and substeps; the
+/// the model's true parameters (with the payload of simulation.payload), encoder counts, torque noise, seed and substeps; the
 /// controller's gains and sample period (the SYNC period); the torque limits; the arm at rest at
 /// the start of the scenario's path. Throws learnid::Error when the path start is out of reach.
 CanArmSettings canArmSettings(const Scenario &scenario, std::shared_ptr<const RobotModel> model,

@@ -3,6 +3,7 @@
 #include "io/ScenarioFile.h"
 #include "model/Error.h"
 #include "model/ModelFactory.h"
+#include "service/RobotFactory.h"
 #include "session/ScenarioRobot.h"
 
 #include <QCoreApplication>
@@ -18,20 +19,49 @@ struct Text
 
 } // namespace
 
-SimulatedPayloadSession makeSimulatedPayloadSession(const Scenario &given)
+namespace {
+
+// The scenario checked and completed, and its robot's model.
+std::pair<Scenario, std::shared_ptr<const RobotModel>> payloadScenario(const Scenario &given)
 {
     if (!given.payload.enabled)
         throw Error(Text::tr("payload: the scenario has no payload section"));
     validateScenario(given); // every key, the payload's on its robot's model, named
-    SimulatedPayloadSession run;
     const auto model = makeRobotModel(given.model, given.urdf);
     if (!model)
         throw Error(Text::tr("robot.model: unknown robot model \"%1\"").arg(given.model));
+    return {withRobotDefaults(given, *model), model};
+}
+
+} // namespace
+
+PayloadRunSession makeSimulatedPayloadSession(const Scenario &given)
+{
+    const auto [scenario, model] = payloadScenario(given);
+    PayloadRunSession run;
     run.model = std::dynamic_pointer_cast<const ChainModel>(model);
-    const Scenario scenario = withRobotDefaults(given, *model);
     run.session =
         std::make_unique<PayloadSession>(scenario, model, makeSimulatedRobot(scenario, model),
                                          makeSimulatedBareRobot(scenario, model));
+    return run;
+}
+
+PayloadRunSession makeCanPayloadSession(const Scenario &given, const RobotRequest &request)
+{
+    const auto [scenario, model] = payloadScenario(given);
+    if (scenario.payload.baselineTrials > 0) {
+        throw Error(Text::tr("payload.baselineTrials: baseline trials are not offered on the CAN "
+                             "robot yet (the payload would have to come off for them and be "
+                             "mounted before the next trial); set it to 0"));
+    }
+    PayloadRunSession run;
+    run.model = std::dynamic_pointer_cast<const ChainModel>(model);
+    RobotConnection connection = makeRobot(request, scenario, model);
+    if (!connection.robot) {
+        run.connectError = connection.connectError;
+        return run;
+    }
+    run.session = std::make_unique<PayloadSession>(scenario, model, std::move(connection.robot));
     return run;
 }
 
@@ -76,7 +106,7 @@ PayloadTrialRow payloadTrialRow(const PayloadTrial &t)
     return row;
 }
 
-PayloadRunResult payloadRunResult(const SimulatedPayloadSession &run)
+PayloadRunResult payloadRunResult(const PayloadRunSession &run)
 {
     const PayloadSession &s = *run.session;
     PayloadRunResult r;

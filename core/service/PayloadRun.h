@@ -3,6 +3,7 @@
 #include "identify/PayloadFit.h"
 #include "model/ChainModel.h"
 #include "model/PayloadPrior.h"
+#include "service/RobotRequest.h"
 #include "session/PayloadSession.h"
 #include "types/Scenario.h"
 
@@ -20,18 +21,26 @@ namespace learnid {
 // payload mounted on the simulated robot, as `learnid-cli run` runs a scenario's payload section.
 // Value types only, so that they cross from the job's thread to the window's.
 
-/// A payload session on the simulated robot and the arm's model it holds fixed.
-struct SimulatedPayloadSession
+/// A payload session on a robot and the arm's model it holds fixed.
+struct PayloadRunSession
 {
     std::shared_ptr<const ChainModel> model;
-    std::unique_ptr<PayloadSession> session;
+    std::unique_ptr<PayloadSession> session; ///< null when the robot could not be reached
+    QString connectError;                    ///< why the robot could not be reached
 };
 
 /// The session of scenario `given` (its payload section enabled) as `learnid-cli run` builds it:
 /// withRobotDefaults(), the simulated robot carrying simulation.payload, and the same robot
 /// without it for the baseline trials (payload.baselineTrials). Throws Error naming the key:
 /// no payload section, an unknown robot model, a scenario that does not fit, a refused prior.
-SimulatedPayloadSession makeSimulatedPayloadSession(const Scenario &given);
+PayloadRunSession makeSimulatedPayloadSession(const Scenario &given);
+
+/// The session of scenario `given` on the CAN robot of `request` (makeRobot(): connected here;
+/// when it cannot be reached, no session and connectError says why). The robot carries the
+/// payload from its first trial on: payload.baselineTrials is refused (a baseline needs the
+/// payload taken off, and mounted before the next trial). Throws Error naming the key as
+/// makeSimulatedPayloadSession() does.
+PayloadRunSession makeCanPayloadSession(const Scenario &given, const RobotRequest &request);
 
 /// What the path lets the trials see before any motion (PayloadSession::observability()), and
 /// the next trial's check.
@@ -87,6 +96,6 @@ struct PayloadRunResult
 };
 
 /// The result of a session whose trials all completed; throws Error when none was learned from.
-PayloadRunResult payloadRunResult(const SimulatedPayloadSession &run);
+PayloadRunResult payloadRunResult(const PayloadRunSession &run);
 
 } // namespace learnid

@@ -41,7 +41,7 @@ void PayloadRunJob::checkInThread(const Scenario &scenario, int id)
     std::optional<PayloadPreview> preview;
     QString error;
     try {
-        SimulatedPayloadSession run = makeSimulatedPayloadSession(scenario);
+        PayloadRunSession run = makeSimulatedPayloadSession(scenario);
         preview = payloadPreview(*run.session);
     } catch (const Error &e) {
         error = e.message();
@@ -91,7 +91,7 @@ void PayloadRunJob::runInThread(const Scenario &scenario, int run,
     std::shared_ptr<const PayloadRunResult> result;
     QString error;
     try {
-        SimulatedPayloadSession s = makeSimulatedPayloadSession(scenario);
+        PayloadRunSession s = makeSimulatedPayloadSession(scenario);
         // cancel() reaches the session while it lives, however this block is left.
         struct Registration
         {

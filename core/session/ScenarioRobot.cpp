@@ -99,15 +99,21 @@ std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
     measurement.seed = scenario.simulation.seed;
     measurement.substeps = scenario.simulation.substeps;
     measurement.realism = simulatedJoints(scenario, *model);
+    Eigen::VectorXd truePhi = simulatedTrueParameters(scenario, *model);
+    return std::make_shared<SimulatedRobot>(std::move(model), std::move(truePhi), measurement);
+}
+
+Eigen::VectorXd simulatedTrueParameters(const Scenario &scenario, const RobotModel &model)
+{
     // The payload it carries adds to its link's body (docs/payload.md).
     Eigen::VectorXd truePhi = scenario.simulation.trueParameters;
     const InertialParameters payload =
         simulatedPayloadParameters(scenario.simulation.payload, scenario.payload);
-    if (const auto *chain = dynamic_cast<const ChainModel *>(model.get());
+    if (const auto *chain = dynamic_cast<const ChainModel *>(&model);
         chain && !payload.isZero() && truePhi.size() == chain->parameterCount()) {
         truePhi += payloadBaseShift(*chain, scenario.payload.link, payload);
     }
-    return std::make_shared<SimulatedRobot>(std::move(model), truePhi, measurement);
+    return truePhi;
 }
 
 std::shared_ptr<SimulatedRobot> makeSimulatedBareRobot(const Scenario &scenario,

@@ -17,6 +17,11 @@ namespace learnid {
 /// plausible body, a negative friction, damping or armature; each named).
 Scenario withRobotDefaults(const Scenario &scenario, const RobotModel &model);
 
+/// The base parameters of the simulated robot a scenario describes: simulation.trueParameters
+/// plus the payload it carries (simulation.payload, or the prior body), added to its link's body.
+/// The simulated robot and learnid-robot-sim's drives (canArmSettings) move with these.
+Eigen::VectorXd simulatedTrueParameters(const Scenario &scenario, const RobotModel &model);
+
 /// The simulated robot a scenario describes: its true parameters and measurement options.
 std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
                                                    std::shared_ptr<const RobotModel> model);

@@ -7,11 +7,11 @@
 
 #include "../session/PayloadScenarios.h"
 #include "../support/ToolRun.h"
+#include "PayloadTrialRows.h"
 #include "io/ParameterFile.h"
 #include "io/ScenarioFile.h"
 #include "io/TrialCsv.h"
 
-#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -21,30 +21,11 @@ namespace {
 
 const QString cli = QStringLiteral(LEARNID_CLI_PATH);
 
-// The trial rows: index, max error, RMS error, mass, (cx, cy, cz) in mm, CPU, identified.
-struct Row
-{
-    int trial = -1;
-    double maxError = 0.0, mass = 0.0;
-    Eigen::Vector3d comMm = Eigen::Vector3d::Zero();
-    QString identified;
-};
+using Row = test::PayloadRow;
 
 QList<Row> trialRows(const QString &out)
 {
-    static const QRegularExpression row(
-        QStringLiteral("^\\s+(\\d+)\\s+(\\S+)\\s+(\\S+)\\s+(\\S+)\\s+\\((\\S+), (\\S+), (\\S+)\\)"
-                       "\\s+(\\S+)\\s+(.+)$"),
-        QRegularExpression::MultilineOption);
-    QList<Row> rows;
-    for (auto it = row.globalMatch(out); it.hasNext();) {
-        const auto m = it.next();
-        rows.append({m.captured(1).toInt(), m.captured(2).toDouble(), m.captured(4).toDouble(),
-                     Eigen::Vector3d(m.captured(5).toDouble(), m.captured(6).toDouble(),
-                                     m.captured(7).toDouble()),
-                     m.captured(9).trimmed()});
-    }
-    return rows;
+    return test::payloadTrialRows(out);
 }
 
 } // namespace

@@ -3,7 +3,8 @@
 // factory runs in the CAN thread and builds the bus, the simulator and a lock-step SYNC clock
 // there. The clock waits (at most 15 ms) for the master's RPDOs before the next SYNC whenever
 // the master answered the previous one, so that a loaded test machine cannot put an answer
-// behind the next SYNC; simulated time is the same as in real time.
+// behind the next SYNC; simulated time is the same as in real time. The SYNC period is the
+// settings' controller sample period in whole milliseconds (2 ms for the paper arm).
 
 #include "can/CanLink.h"
 #include "can/MemoryCanBus.h"
@@ -14,6 +15,8 @@
 
 #include <QElapsedTimer>
 #include <QTimer>
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace learnid::test {
@@ -27,6 +30,7 @@ public:
         , m_link(m_device)
         , m_sim(&m_link, settings, faults)
         , m_nodes(int(settings.nodes.size()))
+        , m_periodMs(std::max(1, int(std::lround(1000.0 * settings.controller.samplePeriod))))
     {
         m_device->connectDevice();
         connect(&m_link, &CanLink::frameReceived, this, [this](const QCanBusFrame &f) {
@@ -44,11 +48,11 @@ public:
             m_rpdos = 0;
             m_sim.syncCycle();
             m_since.start();
-            m_timer.start(2);
+            m_timer.start(m_periodMs);
         });
         m_sim.bootUp();
         m_since.start();
-        m_timer.start(2);
+        m_timer.start(m_periodMs);
     }
 
     CanArmSimulator &simulator() { return m_sim; }
@@ -58,6 +62,7 @@ private:
     CanLink m_link;
     CanArmSimulator m_sim;
     int m_nodes;
+    int m_periodMs;
     int m_rpdos = 0;
     bool m_answering = false;
     QTimer m_timer;

@@ -1,0 +1,37 @@
+#pragma once
+// Test support: the trial rows `learnid-cli run` prints for a payload session (index, max error,
+// RMS error, mass, (cx, cy, cz) in mm, update CPU, identified).
+
+#include <Eigen/Core>
+#include <QList>
+#include <QRegularExpression>
+#include <QString>
+
+namespace learnid::test {
+
+struct PayloadRow
+{
+    int trial = -1;
+    double maxError = 0.0, mass = 0.0;
+    Eigen::Vector3d comMm = Eigen::Vector3d::Zero();
+    QString identified;
+};
+
+inline QList<PayloadRow> payloadTrialRows(const QString &out)
+{
+    static const QRegularExpression row(
+        QStringLiteral("^\\s+(\\d+)\\s+(\\S+)\\s+(\\S+)\\s+(\\S+)\\s+\\((\\S+), (\\S+), (\\S+)\\)"
+                       "\\s+(\\S+)\\s+(.+)$"),
+        QRegularExpression::MultilineOption);
+    QList<PayloadRow> rows;
+    for (auto it = row.globalMatch(out); it.hasNext();) {
+        const auto m = it.next();
+        rows.append({m.captured(1).toInt(), m.captured(2).toDouble(), m.captured(4).toDouble(),
+                     Eigen::Vector3d(m.captured(5).toDouble(), m.captured(6).toDouble(),
+                                     m.captured(7).toDouble()),
+                     m.captured(9).trimmed()});
+    }
+    return rows;
+}
+
+} // namespace learnid::test
