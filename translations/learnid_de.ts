@@ -313,7 +313,7 @@
 <context>
     <name>CanRobot</name>
     <message>
-        <location filename="../core/canrobot/ApplySteps.cpp" line="+24"/>
+        <location filename="../core/canrobot/ApplySteps.cpp" line="+27"/>
         <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
         <translation>Knoten %1, Objekt %2: nach dem Schreiben von %4 (%5 %6) %3 zurückgelesen: nichts wurde gespeichert</translation>
     </message>
@@ -2352,6 +2352,24 @@
     </message>
 </context>
 <context>
+    <name>PayloadObjects</name>
+    <message>
+        <location filename="../core/can/PayloadObjects.cpp" line="+25"/>
+        <source>The payload&apos;s joint %1 is not one of the robot&apos;s joints 1 to %2.</source>
+        <translation>Das Gelenk %1 der Nutzlast ist keines der Robotergelenke 1 bis %2.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A payload has 10 parameters, not %1.</source>
+        <translation>Eine Nutzlast hat 10 Parameter, nicht %1.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Payload parameter %1 (%2) cannot be sent as REAL32.</source>
+        <translation>Nutzlastparameter %1 (%2) kann nicht als REAL32 gesendet werden.</translation>
+    </message>
+</context>
+<context>
     <name>PayloadObservability</name>
     <message>
         <location filename="../core/identify/PayloadObservability.cpp" line="+48"/>
@@ -2463,17 +2481,22 @@
 <context>
     <name>PayloadRun</name>
     <message>
-        <location filename="../core/service/PayloadRun.cpp" line="+24"/>
+        <location filename="../core/service/PayloadRun.cpp" line="+28"/>
         <source>payload: the scenario has no payload section</source>
         <translation>payload: das Szenario hat keinen Abschnitt payload</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>robot.model: unknown robot model &quot;%1&quot;</source>
         <translation>robot.model: unbekanntes Robotermodell &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+21"/>
+        <source>payload.baselineTrials: baseline trials are not offered on the CAN robot yet (the payload would have to come off for them and be mounted before the next trial); set it to 0</source>
+        <translation>payload.baselineTrials: Referenzversuche sind am CAN-Roboter noch nicht möglich (die Nutzlast müsste dafür abgenommen und vor dem nächsten Versuch montiert werden); auf 0 setzen</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>aus keinem Versuch wurde gelernt: die Nutzlast ist nicht geschätzt</translation>
     </message>
@@ -2866,6 +2889,14 @@
         <location line="+12"/>
         <source>the robot&apos;s own controller takes its parameters its own way: give it the estimate&apos;s parameter file</source>
         <translation>der eigene Regler des Roboters übernimmt seine Parameter auf eigenem Weg: ihm die Parameterdatei der Schätzung geben</translation>
+    </message>
+</context>
+<context>
+    <name>Robot</name>
+    <message>
+        <location filename="../core/robot/Robot.h" line="+39"/>
+        <source>this robot&apos;s controller takes no payload: give it the payload&apos;s parameter file</source>
+        <translation>die Steuerung dieses Roboters nimmt keine Nutzlast an: geben Sie ihr die Parameterdatei der Nutzlast</translation>
     </message>
 </context>
 <context>
@@ -4132,13 +4163,13 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+75"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+74"/>
         <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
-        <location line="+11"/>
+        <location line="+9"/>
         <location line="+6"/>
         <location line="+13"/>
-        <location line="+12"/>
+        <location line="+14"/>
         <location line="+69"/>
         <location line="+62"/>
         <location filename="../app/cli/main.cpp" line="+53"/>
@@ -4580,12 +4611,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--nodes %1: %2 Knoten-IDs für einen Roboter mit %3 Gelenken: ein Knoten pro Gelenk ist nötig</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+60"/>
         <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
         <translation>--iterations: %1 Versuche brauchen %1 aufgezeichnete Versuche, die Logs enthalten %2</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+36"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli: %1, Gesetz %2, %3 Lernversuche</translation>
     </message>
@@ -4613,7 +4644,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+67"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+79"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4678,7 +4709,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-68"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-80"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
@@ -5255,12 +5286,17 @@ neue Schätzung.
         <translation>der Ordner %1 kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot; --export and --trial-csv write its files)</source>
-        <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten Roboter gelernt; --export und --trial-csv schreiben ihre Dateien)</translation>
+        <location line="+31"/>
+        <source>--apply: the simulated robot carries its payload already; --apply writes the payload to the drives of --robot can</source>
+        <translation>--apply: der simulierte Roboter trägt seine Nutzlast bereits; --apply schreibt die Nutzlast in die Antriebe von --robot can</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+7"/>
+        <source>%1: not available with a payload section yet (the payload is learned on the simulated or the CAN robot; --export and --trial-csv write its files)</source>
+        <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten oder am CAN-Roboter gelernt; --export und --trial-csv schreiben ihre Dateien)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
         <translation>learnid-cli: %1, die Nutzlast an %2 in %3 Versuchen gelernt; das Modell des Arms bleibt fest (robot.initialParameters)</translation>
     </message>
@@ -5275,7 +5311,17 @@ neue Schätzung.
         <translation>learnid-cli: die Bahn bestimmt %1 der 10 Parameter der Nutzlast</translation>
     </message>
     <message>
-        <location line="-82"/>
+        <location line="+36"/>
+        <source>apply failed: %1</source>
+        <translation>Übertragen fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>learnid-cli: the payload applied to the robot (0x2500 on every node, stored)</source>
+        <translation>learnid-cli: Nutzlast auf den Roboter übertragen (0x2500 auf jedem Knoten, gespeichert)</translation>
+    </message>
+    <message>
+        <location line="-133"/>
         <source>learnid-cli: %1 not written: the session ended before its last trial</source>
         <translation>learnid-cli: %1 nicht geschrieben: die Sitzung endete vor ihrem letzten Versuch</translation>
     </message>
@@ -5726,17 +5772,17 @@ neue Schätzung.
         <translation>das candump-Log des Versuchs konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+36"/>
         <source>%1; the stored parameters are unchanged</source>
         <translation>%1; die gespeicherten Parameter sind unverändert</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1; nothing was stored (0x2200, 0x2400 and 0x1010 not written)</source>
-        <translation>%1; nichts wurde gespeichert (0x2200, 0x2400 und 0x1010 nicht geschrieben)</translation>
+        <location line="+4"/>
+        <source>%1; nothing was stored (%2 not written)</source>
+        <translation>%1; nichts wurde gespeichert (%2 nicht geschrieben)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1; nichts wurde gespeichert (0x1010 nicht geschrieben)</translation>
     </message>

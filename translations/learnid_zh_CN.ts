@@ -313,7 +313,7 @@
 <context>
     <name>CanRobot</name>
     <message>
-        <location filename="../core/canrobot/ApplySteps.cpp" line="+24"/>
+        <location filename="../core/canrobot/ApplySteps.cpp" line="+27"/>
         <source>node %1, object %2: read back %3 after writing %4 (%5 %6): nothing was stored</source>
         <translation>节点 %1，对象 %2：写入 %4（%5 %6）后回读为 %3：未存储任何内容</translation>
     </message>
@@ -2343,6 +2343,24 @@
     </message>
 </context>
 <context>
+    <name>PayloadObjects</name>
+    <message>
+        <location filename="../core/can/PayloadObjects.cpp" line="+25"/>
+        <source>The payload&apos;s joint %1 is not one of the robot&apos;s joints 1 to %2.</source>
+        <translation>负载的关节 %1 不是机器人的关节 1 到 %2 之一。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A payload has 10 parameters, not %1.</source>
+        <translation>负载有 10 个参数，而不是 %1 个。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Payload parameter %1 (%2) cannot be sent as REAL32.</source>
+        <translation>负载参数 %1（%2）无法以 REAL32 发送。</translation>
+    </message>
+</context>
+<context>
     <name>PayloadObservability</name>
     <message>
         <location filename="../core/identify/PayloadObservability.cpp" line="+48"/>
@@ -2454,17 +2472,22 @@
 <context>
     <name>PayloadRun</name>
     <message>
-        <location filename="../core/service/PayloadRun.cpp" line="+24"/>
+        <location filename="../core/service/PayloadRun.cpp" line="+28"/>
         <source>payload: the scenario has no payload section</source>
         <translation>payload：场景没有 payload 部分</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>robot.model: unknown robot model &quot;%1&quot;</source>
         <translation>robot.model：未知的机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+21"/>
+        <source>payload.baselineTrials: baseline trials are not offered on the CAN robot yet (the payload would have to come off for them and be mounted before the next trial); set it to 0</source>
+        <translation>payload.baselineTrials：CAN 机器人上尚不支持基准试验（负载需要为此卸下，并在下一次试验前重新安装）；请设为 0</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>没有从任何试验中学习：未估计负载</translation>
     </message>
@@ -2854,6 +2877,14 @@
         <location line="+12"/>
         <source>the robot&apos;s own controller takes its parameters its own way: give it the estimate&apos;s parameter file</source>
         <translation>机器人自身的控制器以自己的方式获取参数：请把该估计的参数文件交给它</translation>
+    </message>
+</context>
+<context>
+    <name>Robot</name>
+    <message>
+        <location filename="../core/robot/Robot.h" line="+39"/>
+        <source>this robot&apos;s controller takes no payload: give it the payload&apos;s parameter file</source>
+        <translation>该机器人的控制器不接收负载：请将负载的参数文件交给它</translation>
     </message>
 </context>
 <context>
@@ -4118,13 +4149,13 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+75"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+74"/>
         <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
-        <location line="+11"/>
+        <location line="+9"/>
         <location line="+6"/>
         <location line="+13"/>
-        <location line="+12"/>
+        <location line="+14"/>
         <location line="+69"/>
         <location line="+62"/>
         <location filename="../app/cli/main.cpp" line="+53"/>
@@ -4564,12 +4595,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--nodes %1：%2 个节点 ID，而机器人有 %3 个关节：每个关节需要一个节点</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+60"/>
         <source>--iterations: %1 trials need %1 recorded trials, the logs hold %2</source>
         <translation>--iterations：%1 次试验需要 %1 次已记录的试验，日志中有 %2 次</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+36"/>
         <source>learnid-cli: %1, law %2, %3 learning trials</source>
         <translation>learnid-cli：%1，学习律 %2，%3 次学习试验</translation>
     </message>
@@ -4597,7 +4628,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+67"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+79"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4662,7 +4693,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-68"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-80"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
@@ -5235,12 +5266,17 @@ stdout, and the next plan uses the new estimate.
         <translation>无法创建文件夹 %1</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <source>%1: not available with a payload section yet (the payload is learned on the simulated robot; --export and --trial-csv write its files)</source>
-        <translation>%1：带有 payload 部分时尚不可用（负载在仿真机器人上学习；--export 和 --trial-csv 写出其文件）</translation>
+        <location line="+31"/>
+        <source>--apply: the simulated robot carries its payload already; --apply writes the payload to the drives of --robot can</source>
+        <translation>--apply：仿真机器人已带有其负载；--apply 将负载写入 --robot can 的驱动器</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+7"/>
+        <source>%1: not available with a payload section yet (the payload is learned on the simulated or the CAN robot; --export and --trial-csv write its files)</source>
+        <translation>%1：带有 payload 部分时尚不可用（负载在仿真机器人或 CAN 机器人上学习；--export 和 --trial-csv 写出其文件）</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
         <translation>learnid-cli：%1，在 %3 次试验中学习 %2 上的负载；机械臂模型保持固定（robot.initialParameters）</translation>
     </message>
@@ -5255,7 +5291,17 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：该路径可确定负载 10 个参数中的 %1 个</translation>
     </message>
     <message>
-        <location line="-82"/>
+        <location line="+36"/>
+        <source>apply failed: %1</source>
+        <translation>应用失败：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>learnid-cli: the payload applied to the robot (0x2500 on every node, stored)</source>
+        <translation>learnid-cli：负载已应用到机器人（每个节点的 0x2500，已存储）</translation>
+    </message>
+    <message>
+        <location line="-133"/>
         <source>learnid-cli: %1 not written: the session ended before its last trial</source>
         <translation>learnid-cli：未写入 %1：会话在最后一次试验之前结束</translation>
     </message>
@@ -5706,17 +5752,17 @@ stdout, and the next plan uses the new estimate.
         <translation>无法写入该试验的 candump 日志：%1</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+36"/>
         <source>%1; the stored parameters are unchanged</source>
         <translation>%1；已存储参数未改变</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1; nothing was stored (0x2200, 0x2400 and 0x1010 not written)</source>
-        <translation>%1；未存储任何内容（未写入 0x2200、0x2400 和 0x1010）</translation>
+        <location line="+4"/>
+        <source>%1; nothing was stored (%2 not written)</source>
+        <translation>%1；未存储任何内容（未写入 %2）</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>%1; nothing was stored (0x1010 not written)</source>
         <translation>%1；未存储任何内容（未写入 0x1010）</translation>
     </message>

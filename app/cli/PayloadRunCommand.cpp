@@ -28,7 +28,6 @@ QString unsupportedOption(const RunOptions &o)
     if (o.robot != QLatin1String("sim") && o.robot != QLatin1String("can"))
         return QStringLiteral("--robot %1").arg(o.robot);
     const std::pair<bool, const char *> options[] = {{!o.reportPath.isEmpty(), "--report"},
-                                                     {o.apply, "--apply"},
                                                      {o.consistent, "--consistent"}};
     for (const auto &[set, name] : options)
         if (set)
@@ -89,6 +88,14 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given,
             << Qt::endl;
         return code;
     };
+    if (options.apply && options.robot != QLatin1String("can")) {
+        // The payload is written to drives (0x2500); the simulated robot carries it already.
+        return fail(QCoreApplication::translate("learnid-cli",
+                                                "--apply: the simulated robot carries its payload "
+                                                "already; --apply writes the payload to the "
+                                                "drives of --robot can"),
+                    ExitBadInput);
+    }
     if (const QString option = unsupportedOption(options); !option.isEmpty()) {
         return fail(QCoreApplication::translate(
                         "learnid-cli",
@@ -156,6 +163,23 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given,
     if (const QString result = payloadResult(*session); !result.isEmpty())
         out << Qt::endl << result;
     out.flush();
+    if (options.apply && completed) {
+        // Before the files, as the arm's session: what was applied is what they record.
+        QString error;
+        try {
+            error = applyRunPayload(run, payloadRunResult(run));
+        } catch (const Error &e) {
+            error = e.message();
+        }
+        if (!error.isEmpty())
+            return fail(QCoreApplication::translate("learnid-cli", "apply failed: %1").arg(error),
+                        ExitTrialFailed);
+        if (!options.quiet)
+            err << QCoreApplication::translate("learnid-cli",
+                                               "learnid-cli: the payload applied to the robot "
+                                               "(0x2500 on every node, stored)")
+                << Qt::endl;
+    }
     if (const ExitCode written = writePayloadOutputs(options, run, completed, err);
         written != ExitOk)
         return written;

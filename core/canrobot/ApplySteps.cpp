@@ -2,15 +2,18 @@
 
 #include "can/CanOpen.h"
 #include "can/ManufacturerObjects.h"
+#include "can/PayloadObjects.h"
 
 #include <QCoreApplication>
 
 namespace learnid {
 
-QList<SdoStep> applySteps(const QList<int> &nodes, const Eigen::VectorXd &phi,
-                          quint32 robotIdentity)
+namespace {
+
+// The writes of a sequence, then each written object read back and compared bit for bit, then
+// its stores.
+QList<SdoStep> verifiedSteps(const SdoWriteSequence &sequence)
 {
-    const SdoWriteSequence sequence = objects::parameterWriteSequence(nodes, phi, robotIdentity);
     QList<SdoStep> writes, readBacks, stores;
     for (const SdoWrite &w : sequence) {
         if (w.index == objects::storeParameters) {
@@ -31,6 +34,24 @@ QList<SdoStep> applySteps(const QList<int> &nodes, const Eigen::VectorXd &phi,
         });
     }
     return writes + readBacks + stores;
+}
+
+} // namespace
+
+QList<SdoStep> applySteps(const QList<int> &nodes, const Eigen::VectorXd &phi,
+                          quint32 robotIdentity)
+{
+    return verifiedSteps(objects::parameterWriteSequence(nodes, phi, robotIdentity));
+}
+
+QList<SdoStep> payloadApplySteps(const QList<int> &nodes, int joint, const Eigen::VectorXd &body)
+{
+    SdoWriteSequence sequence = objects::payloadWrites(nodes, joint, body);
+    for (const int node : nodes) {
+        sequence << SdoWrite::make(quint8(node), objects::storeParameters, objects::storeAll,
+                                   canopen::DataType::Unsigned32, double(objects::saveSignature));
+    }
+    return verifiedSteps(sequence);
 }
 
 } // namespace learnid

@@ -16,4 +16,10 @@ namespace learnid {
 QList<SdoStep> applySteps(const QList<int> &nodes, const Eigen::VectorXd &phi,
                           quint32 robotIdentity = 0);
 
+/// The SDO accesses of a payload's apply (docs/can-protocol.md, "Apply"): objects::payloadWrites
+/// (0x2500:01..0B on every node), every one read back and compared bit for bit, then the stores
+/// on each node, as applySteps(). joint is 1-based; body the payload's 10 parameters in that
+/// joint's body frame. Throws learnid::Error for a payload that cannot be sent.
+QList<SdoStep> payloadApplySteps(const QList<int> &nodes, int joint, const Eigen::VectorXd &body);
+
 } // namespace learnid

@@ -85,6 +85,17 @@ QString CanRobot::applyParameters(const Eigen::VectorXd &phi)
     return error;
 }
 
+QString CanRobot::applyPayload(int joint, const Eigen::VectorXd &body)
+{
+    auto promise = std::make_shared<std::promise<QString>>();
+    CanRobotWorker *worker = m_worker;
+    runInCanThread([worker, promise, joint, body] {
+        worker->applyPayload(joint, body,
+                             [promise](const QString &error) { promise->set_value(error); });
+    });
+    return promise->get_future().get();
+}
+
 QList<DriveIdentity> CanRobot::driveIdentities() const
 {
     QList<DriveIdentity> drives;

@@ -31,6 +31,8 @@ public:
     QString description() const override;
     TrialRecord runTrial(const TrialPlan &plan, const TrialMonitor &monitor) override;
     QString applyParameters(const Eigen::VectorXd &phi) override;
+    /// 0x2500 on every node, read back, then stored (docs/can-protocol.md §2.5).
+    QString applyPayload(int joint, const Eigen::VectorXd &body) override;
     Eigen::VectorXd storedParameters() const override { return m_stored; }
     QList<DriveIdentity> driveIdentities() const override;
 

@@ -254,20 +254,35 @@ void CanRobotWorker::endTrial(TrialRecord record)
 
 void CanRobotWorker::apply(const Eigen::VectorXd &phi, std::function<void(const QString &)> done)
 {
-    QList<SdoStep> steps;
     try {
-        steps = applySteps(m_options.nodes, phi, robotIdentity());
+        runApply(applySteps(m_options.nodes, phi, robotIdentity()),
+                 QStringLiteral("0x2200, 0x2400 and 0x1010"), std::move(done));
     } catch (const Error &e) {
         done(e.message());
-        return;
     }
-    connectBus([this, steps, done](const QString &error) {
+}
+
+void CanRobotWorker::applyPayload(int joint, const Eigen::VectorXd &body,
+                                  std::function<void(const QString &)> done)
+{
+    try {
+        runApply(payloadApplySteps(m_options.nodes, joint, body),
+                 QStringLiteral("0x2500 and 0x1010"), std::move(done));
+    } catch (const Error &e) {
+        done(e.message());
+    }
+}
+
+void CanRobotWorker::runApply(const QList<SdoStep> &steps, const QString &written,
+                              std::function<void(const QString &)> done)
+{
+    connectBus([this, steps, written, done](const QString &error) {
         if (!error.isEmpty())
             return done(tr("%1; the stored parameters are unchanged").arg(asClause(error)));
-        checkIdentity([this, steps, done](const QString &refused, bool) {
+        checkIdentity([this, steps, written, done](const QString &refused, bool) {
             if (!refused.isEmpty())
-                return done(tr("%1; nothing was stored (0x2200, 0x2400 and 0x1010 not written)")
-                                .arg(asClause(refused)));
+                return done(
+                    tr("%1; nothing was stored (%2 not written)").arg(asClause(refused), written));
             int stores = 0;
             for (const SdoStep &s : steps)
                 stores += s.index == 0x1010 ? 1 : 0;

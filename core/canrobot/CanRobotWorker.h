@@ -1,6 +1,7 @@
 #pragma once
 
 #include "canrobot/CanRobotOptions.h"
+#include "canrobot/SdoSequence.h"
 #include "canrobot/TrialStreamer.h"
 #include "model/RobotModel.h"
 #include "types/Trial.h"
@@ -32,6 +33,9 @@ public:
                   std::function<void(const TrialRecord &)> done);
     /// done(error): empty when every node stored phi.
     void apply(const Eigen::VectorXd &phi, std::function<void(const QString &)> done);
+    /// done(error): empty when every node stored the payload (payloadApplySteps()).
+    void applyPayload(int joint, const Eigen::VectorXd &body,
+                      std::function<void(const QString &)> done);
     void shutdown();
 
     const TrialStreamStatistics &lastStatistics() const { return m_stats; }
@@ -47,6 +51,11 @@ private:
     /// the drive of its joint (JointIdentityCheck.h); unread when a read failed.
     void checkIdentity(std::function<void(const QString &error, bool unread)> next);
     quint32 robotIdentity() const;
+    /// Connects, checks the drives' identity, then runs the steps of an apply (writes,
+    /// read-backs, stores); `written` names the objects for "nothing was stored (... not
+    /// written)".
+    void runApply(const QList<SdoStep> &steps, const QString &written,
+                  std::function<void(const QString &)> done);
     void endTrial(TrialRecord record);
     QString connectionName() const;
 

@@ -69,6 +69,8 @@ public:
     /// The identified parameters of the stored set (0x2200:1..count at the last "save"); empty
     /// before any.
     Eigen::VectorXd storedParameters() const;
+    /// The whole stored set (its payload among it).
+    const StoredParameterSet &storedSet() const { return m_stored; }
 
     /// Fault injection: the node sends nothing and ignores SDO requests.
     void setSilent(bool silent);

@@ -58,8 +58,17 @@ QByteArray simulatorStateJson(const CanArmSimulator &simulator)
         QJsonArray values;
         for (Eigen::Index i = 0; i < phi.size(); ++i)
             values.append(phi[i]);
-        nodes.insert(QString::number(node->node()),
-                     QJsonObject{{QStringLiteral("storedParameters"), values}});
+        QJsonObject state{{QStringLiteral("storedParameters"), values}};
+        // The stored payload: none before a payload session's apply.
+        if (const int joint = node->storedSet().payloadJoint(); joint > 0) {
+            QJsonArray body;
+            for (const double v : node->storedSet().payloadParameters())
+                body.append(v);
+            state.insert(QStringLiteral("storedPayload"),
+                         QJsonObject{{QStringLiteral("joint"), joint},
+                                     {QStringLiteral("parameters"), body}});
+        }
+        nodes.insert(QString::number(node->node()), state);
     }
     return QJsonDocument(QJsonObject{{QStringLiteral("nodes"), nodes}})
         .toJson(QJsonDocument::Indented);

@@ -2,6 +2,7 @@
 
 #include "can/JointIdentity.h"
 #include "can/ManufacturerObjects.h"
+#include "can/PayloadObjects.h"
 #include "cansim/DriveDictionary.h"
 
 namespace learnid {
@@ -21,6 +22,27 @@ void StoredParameterSet::store(const ObjectDictionary &dictionary)
     m_raw[key(ob::torqueLimit, 0)] = dictionary.bytes(ob::torqueLimit, 0);
     for (const quint8 sub : {ob::jointIdentityRobot, ob::jointIdentityJoint})
         m_raw[key(ob::jointIdentity, sub)] = dictionary.bytes(ob::jointIdentity, sub);
+    for (quint8 sub = ob::payloadJoint; sub <= ob::payloadHighestSubIndex; ++sub)
+        m_raw[key(ob::payload, sub)] = dictionary.bytes(ob::payload, sub);
+}
+
+int StoredParameterSet::payloadJoint() const
+{
+    const auto joint = m_raw.find(key(ob::payload, ob::payloadJoint));
+    return joint == m_raw.end() ? 0 : quint8(joint->second.at(0));
+}
+
+Eigen::VectorXd StoredParameterSet::payloadParameters() const
+{
+    if (isEmpty())
+        return {};
+    Eigen::VectorXd body(ob::payloadParameterCount);
+    for (int i = 0; i < body.size(); ++i) {
+        body[i] =
+            canopen::decodeValue(canopen::DataType::Real32,
+                                 m_raw.at(key(ob::payload, quint8(ob::payloadFirstParameter + i))));
+    }
+    return body;
 }
 
 Eigen::VectorXd StoredParameterSet::parameters() const
@@ -49,6 +71,8 @@ void StoredParameterSet::restore(ObjectDictionary &dictionary,
         dictionary.setValue(o.index, o.subIndex, o.defaultValue);
     dictionary.setValue(ob::jointIdentity, ob::jointIdentityRobot, settings.robotIdentity);
     dictionary.setValue(ob::jointIdentity, ob::jointIdentityJoint, settings.commissionedJoint);
+    for (quint8 sub = ob::payloadJoint; sub <= ob::payloadHighestSubIndex; ++sub)
+        dictionary.setValue(ob::payload, sub, 0);
 }
 
 } // namespace learnid

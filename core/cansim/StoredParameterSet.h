@@ -9,8 +9,8 @@
 namespace learnid {
 
 /// The non-volatile memory of a simulated drive: the controller objects 0x2100:1..4, the
-/// identified parameters 0x2200:0..count, the torque limit 0x2300 and the joint identity
-/// 0x2400:1..2 as they were at the last
+/// identified parameters 0x2200:0..count, the torque limit 0x2300, the joint identity
+/// 0x2400:1..2 and the payload 0x2500:1..11 as they were at the last
 /// "save" (0x1010:1), restored by NMT reset node.
 class StoredParameterSet
 {
@@ -20,8 +20,12 @@ public:
     void store(const ObjectDictionary &dictionary);
     /// The identified parameters of the set (0x2200:1..count); empty when nothing was stored.
     Eigen::VectorXd parameters() const;
+    /// The payload of the set: its joint (0x2500:01, 0: none or nothing stored) and its 10
+    /// parameters (0x2500:02..0B; empty when nothing was stored).
+    int payloadJoint() const;
+    Eigen::VectorXd payloadParameters() const;
     /// Writes the set back into the dictionary, or the defaults of settings when nothing was
-    /// stored (gains, torque limit, parameter count 0).
+    /// stored (gains, torque limit, parameter count 0, no payload).
     void restore(ObjectDictionary &dictionary, const DriveNodeSettings &settings) const;
 
 private:

@@ -3,6 +3,7 @@
 #include "types/DriveIdentity.h"
 #include "types/Trial.h"
 
+#include <QCoreApplication>
 #include <QList>
 #include <QString>
 #include <optional>
@@ -26,6 +27,19 @@ public:
     /// Writes a parameter set to the robot controller, reads it back and stores it; all or
     /// nothing. Returns an empty string on success, else what failed and where.
     virtual QString applyParameters(const Eigen::VectorXd &phi) = 0;
+
+    /// Writes a payload to the robot controller, reads it back and stores it, all or nothing:
+    /// joint (1-based) is the joint whose moving body carries it, body its 10 standard
+    /// parameters in that body's frame (InertialParameters' order). Returns an empty string on
+    /// success, else what failed and where; a robot that takes no payload says so.
+    virtual QString applyPayload(int joint, const Eigen::VectorXd &body)
+    {
+        Q_UNUSED(joint);
+        Q_UNUSED(body);
+        return QCoreApplication::translate("Robot",
+                                           "this robot's controller takes no payload: give it "
+                                           "the payload's parameter file");
+    }
 
     /// The parameter set the robot controller currently holds (empty before any apply).
     virtual Eigen::VectorXd storedParameters() const = 0;

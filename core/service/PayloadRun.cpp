@@ -130,4 +130,11 @@ PayloadRunResult payloadRunResult(const PayloadRunSession &run)
     return r;
 }
 
+QString applyRunPayload(const PayloadRunSession &run, const PayloadRunResult &result)
+{
+    const PayloadLink &link = run.session->payloadModel().payloadLink();
+    return run.session->robot().applyPayload(
+        link.joint + 1, payloadInBody(link, result.fit.estimate.parameters));
+}
+
 } // namespace learnid

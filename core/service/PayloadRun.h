@@ -98,4 +98,9 @@ struct PayloadRunResult
 /// The result of a session whose trials all completed; throws Error when none was learned from.
 PayloadRunResult payloadRunResult(const PayloadRunSession &run);
 
+/// Writes the result's payload to the session's robot and stores it (Robot::applyPayload: the
+/// joint whose body carries the payload's link, the payload moved into that body's frame);
+/// returns what failed, or empty.
+QString applyRunPayload(const PayloadRunSession &run, const PayloadRunResult &result);
+
 } // namespace learnid

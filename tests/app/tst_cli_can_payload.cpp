@@ -1,8 +1,9 @@
 // `learnid-cli run --robot can` with a payload section, end to end over virtualcan:
 // learnid-robot-sim's seven drives move the Panda carrying the scenario's payload (1.5 kg 5 cm off
 // the flange axis, simulation.payload), learnid-cli learns it through the bus in the learning
-// loop, the arm's model held fixed, and exports it. Baseline trials, which need the payload taken
-// off, are refused on the CAN robot before anything is sent.
+// loop, the arm's model held fixed, applies it to the drives (0x2500, read back and stored) and
+// exports it. Baseline trials, which need the payload taken off, are refused on the CAN robot
+// before anything is sent.
 #include "../session/PayloadScenarios.h"
 #include "../support/CanE2eBus.h"
 #include "../support/RobotSimProcess.h"
@@ -11,6 +12,9 @@
 #include "io/ParameterFile.h"
 #include "io/ScenarioFile.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -42,15 +46,17 @@ private slots:
         const quint16 port = test::canE2ePort();
         QVERIFY(port != 0);
         test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-        QVERIFY(robot.start(test::canE2eInterface(port), {QStringLiteral("--scenario"), m_scenario,
-                                                          QStringLiteral("--nodes"), kNodes}));
+        const QString state = m_dir.filePath(QStringLiteral("state.json"));
+        QVERIFY(robot.start(test::canE2eInterface(port),
+                            {QStringLiteral("--scenario"), m_scenario, QStringLiteral("--nodes"),
+                             kNodes, QStringLiteral("--state"), state}));
         const QString exported = m_dir.filePath(QStringLiteral("payload.json"));
         const test::ToolRun run = runCli(
             QStringList{QStringLiteral("run"), QStringLiteral("--robot"), QStringLiteral("can")} +
             test::canE2eBusOptions(port) +
             QStringList{QStringLiteral("--nodes"), kNodes, QStringLiteral("--scenario"), m_scenario,
                         QStringLiteral("--can-sync-timeout"), QStringLiteral("200"),
-                        QStringLiteral("--export"), exported});
+                        QStringLiteral("--apply"), QStringLiteral("--export"), exported});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err + robot.stderrText()));
         qInfo("%s", qPrintable(run.out));
         QVERIFY2(run.err.contains(QStringLiteral("CAN virtualcan")), qPrintable(run.err));
@@ -72,6 +78,32 @@ private slots:
         QVERIFY(content.payload.has_value());
         QCOMPARE(content.payload->link, QStringLiteral("panda_link7"));
         QVERIFY(std::abs(content.payload->mass - rows.back().mass) < 0.0005 * rows.back().mass);
+
+        // Applied: every drive stored the exported payload on joint 7 (panda_link7 is the body
+        // of joint 7 itself, so its frame is the body's), in REAL32.
+        QVERIFY(run.err.contains(QStringLiteral("the payload applied to the robot")));
+        QFile f(state);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject nodes =
+            QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("nodes")).toObject();
+        QCOMPARE(nodes.size(), 7);
+        const InertialParameters body = content.payload->parameters();
+        for (const QString &node : nodes.keys()) {
+            const QJsonObject stored =
+                nodes.value(node).toObject().value(QStringLiteral("storedPayload")).toObject();
+            QCOMPARE(stored.value(QStringLiteral("joint")).toInt(), 7);
+            const QJsonArray values = stored.value(QStringLiteral("parameters")).toArray();
+            QCOMPARE(values.size(), 10);
+            for (int i = 0; i < 10; ++i) {
+                QVERIFY2(std::abs(values[i].toDouble() - body[i]) <=
+                             1e-6 * std::abs(body[i]) + 1e-12,
+                         qPrintable(QStringLiteral("node %1, 0x2500:%2: %3 against %4")
+                                        .arg(node)
+                                        .arg(i + 2)
+                                        .arg(values[i].toDouble())
+                                        .arg(body[i])));
+            }
+        }
     }
 
     void baselineTrials_refusedOnTheCanRobotBeforeTheBus()

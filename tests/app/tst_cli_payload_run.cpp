@@ -167,6 +167,14 @@ private slots:
         QVERIFY2(run.err.contains(QStringLiteral("--report: not available with a payload")),
                  qPrintable(run.err));
         QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("r.json"))));
+        // --apply writes to drives: the simulated robot carries its payload already.
+        const test::ToolRun apply =
+            test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
+                                QStringLiteral("--apply")});
+        QCOMPARE(apply.exitCode, 2);
+        QVERIFY2(apply.err.contains(QStringLiteral("--apply: the simulated robot carries its "
+                                                   "payload already")),
+                 qPrintable(apply.err));
     }
 
     void badPayloadKey_isRefusedWithItsKeyPath()

@@ -26,6 +26,7 @@ private slots:
     void refusedWrites_abortWithTheirCode();
     void storeParameters_rightSignatureStores_wrongSignatureAborts();
     void resetNode_restoresTheStoredSet();
+    void payload_storedWithTheParameters_restoredByResetNode();
     void nmtCommands_moveTheSlaveStateMachine();
     void masterPdoConfiguration_isAccepted_otherMappingsAreNot();
     void rpdoControlwords_enableTheDrive_oneCommandPerSync();
@@ -194,6 +195,33 @@ void TestDriveNode::resetNode_restoresTheStoredSet()
     QCOMPARE(d.net.readValue(node, 0x2300, 0, DataType::Real32), 6.0);
     QCOMPARE(d.net.readValue(node, 0x6076, 0, DataType::Unsigned32), 240.0);
     QCOMPARE(d.net.readValue(node, 0x1017, 0, DataType::Unsigned16), 0.0); // communication reset
+}
+
+void TestDriveNode::payload_storedWithTheParameters_restoredByResetNode()
+{
+    // 0x2500 (docs/can-protocol.md §2.5): none at power-on; what "save" stores reset node
+    // restores; a value that is not a finite REAL32, or a joint beyond 127, is refused.
+    Drive d;
+    QCOMPARE(d.net.readValue(node, 0x2500, 0, DataType::Unsigned8), 11.0);
+    QCOMPARE(d.net.readValue(node, 0x2500, 1, DataType::Unsigned8), 0.0);
+    QVERIFY(d.drive.storedSet().payloadParameters().size() == 0);
+    QVERIFY(d.net.write(node, 0x2500, 1, DataType::Unsigned8, 7).ok());
+    for (quint8 sub = 2; sub <= 11; ++sub)
+        QVERIFY(d.net.write(node, 0x2500, sub, DataType::Real32, 0.25 * sub).ok());
+    QCOMPARE(d.net.writeRaw(node, 0x2500, 3, QByteArray::fromHex("0000C07F")).abortCode, // NaN
+             sdoabort::invalidValue);
+    QVERIFY(d.net.write(node, 0x2500, 1, DataType::Unsigned8, 128).abortCode != 0);
+    QVERIFY(d.net.write(node, 0x1010, 1, DataType::Unsigned32, 0x65766173).ok()); // "save"
+    QVERIFY(d.net.write(node, 0x2500, 1, DataType::Unsigned8, 2).ok());
+    QVERIFY(d.net.write(node, 0x2500, 2, DataType::Real32, 99).ok());
+    d.net.nmt(NmtCommand::ResetNode, node);
+    QCOMPARE(d.net.readValue(node, 0x2500, 1, DataType::Unsigned8), 7.0);
+    QCOMPARE(d.net.readValue(node, 0x2500, 2, DataType::Real32), 0.5);
+    QCOMPARE(d.drive.storedSet().payloadJoint(), 7);
+    const Eigen::VectorXd body = d.drive.storedSet().payloadParameters();
+    QCOMPARE(body.size(), 10);
+    for (int i = 0; i < 10; ++i)
+        QCOMPARE(body[i], 0.25 * (i + 2));
 }
 
 void TestDriveNode::nmtCommands_moveTheSlaveStateMachine()
