@@ -133,8 +133,8 @@ PayloadRunResult payloadRunResult(const PayloadRunSession &run)
 QString applyRunPayload(const PayloadRunSession &run, const PayloadRunResult &result)
 {
     const PayloadLink &link = run.session->payloadModel().payloadLink();
-    return run.session->robot().applyPayload(
-        link.joint + 1, payloadInBody(link, result.fit.estimate.parameters));
+    return run.session->robot().applyPayload(link.joint + 1,
+                                             payloadInBody(link, result.fit.estimate.parameters));
 }
 
 } // namespace learnid
