@@ -6790,7 +6790,17 @@ Verhältnis %</translation>
         <translation>&lt;h3&gt;learnid %1&lt;/h3&gt;&lt;p&gt;Lernende Identifikation der Roboterdynamik: ein Inbetriebnahmewerkzeug.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>The payload step needs the CAN bus: disconnect the arm&apos;s session first.</source>
+        <translation>Der Nutzlastschritt braucht den CAN-Bus: trennen Sie zuerst die Sitzung des Arms.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The robot panel&apos;s choice cannot be used (%1): the payload step runs on the simulated robot.</source>
+        <translation>Die Auswahl im Roboterbereich ist nicht verwendbar (%1): der Nutzlastschritt läuft am simulierten Roboter.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>The scenario has a payload section: its payload is learned here, in the payload step; the arm&apos;s session is not opened with it.</source>
         <translation>Das Szenario hat einen Abschnitt payload: seine Nutzlast wird hier gelernt, im Nutzlast-Schritt; die Sitzung des Arms wird damit nicht geöffnet.</translation>
     </message>
@@ -6970,12 +6980,17 @@ Verhältnis %</translation>
         <translation>&amp;URDF exportieren…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../ui/PayloadDialogExport.cpp" line="+44"/>
         <source>Learn a payload (simulated robot)</source>
         <translation>Nutzlast lernen (simulierter Roboter)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location filename="../ui/PayloadDialog.cpp" line="+1"/>
+        <source>A&amp;pply to the robot…</source>
+        <translation>Auf den Roboter über&amp;tragen…</translation>
+    </message>
+    <message>
+        <location line="+49"/>
         <source>Payload and prior</source>
         <translation>Nutzlast und Vorwissen</translation>
     </message>
@@ -7000,7 +7015,7 @@ Verhältnis %</translation>
         <translation>Schließen</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>The trials cannot be planned: %1</source>
         <translation>Die Versuche lassen sich nicht planen: %1</translation>
     </message>
@@ -7015,22 +7030,27 @@ Verhältnis %</translation>
         <translation>Versuch %1 von %2 läuft mit der Nutzlast…</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
+        <source>Payload learned: check the estimate, then accept it to apply it to the robot or export it.</source>
+        <translation>Nutzlast gelernt: prüfen Sie die Schätzung und nehmen Sie sie an, um sie auf den Roboter zu übertragen oder zu exportieren.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Payload learned: check the estimate, then accept it to export.</source>
         <translation>Nutzlast gelernt: die Schätzung prüfen, dann zum Exportieren übernehmen.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Payload not learned: %1</source>
         <translation>Nutzlast nicht gelernt: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Stopped; nothing of this run is kept or written.</source>
         <translation>Gestoppt; von diesem Lauf wird nichts behalten oder geschrieben.</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Run the trials to learn the payload.</source>
         <translation>Die Versuche ausführen, um die Nutzlast zu lernen.</translation>
     </message>
@@ -7050,17 +7070,57 @@ Verhältnis %</translation>
         <translation>Ausführen nicht möglich: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+19"/>
         <source>Stopping the running trial…</source>
         <translation>Der laufende Versuch wird gestoppt…</translation>
     </message>
     <message>
-        <location filename="../ui/PayloadDialogExport.cpp" line="+22"/>
+        <location filename="../ui/PayloadDialogExport.cpp" line="-15"/>
+        <source>Payload accepted: apply it to the robot&apos;s drives, or export the parameter file or the URDF.</source>
+        <translation>Nutzlast angenommen: übertragen Sie sie auf die Antriebe des Roboters, oder exportieren Sie die Parameterdatei oder die URDF.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Payload accepted: export the parameter file or the URDF. It is not applied to a robot (the simulated robot carries it already).</source>
         <translation>Nutzlast übernommen: die Parameterdatei oder das URDF exportieren. Sie wird auf keinen Roboter angewendet (der simulierte Roboter trägt sie bereits).</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+12"/>
+        <source>Learn a payload (CAN robot %1/%2)</source>
+        <translation>Eine Nutzlast lernen (CAN-Roboter %1/%2)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Write the payload on %1 (%2 kg, centre of mass (%3, %4, %5) mm) to every drive of %6/%7 (object 0x2500), read it back and store it?</source>
+        <translation>Die Nutzlast an %1 (%2 kg, Schwerpunkt (%3, %4, %5) mm) in jeden Antrieb von %6/%7 schreiben (Objekt 0x2500), zurücklesen und speichern?</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Apply the payload</source>
+        <translation>Nutzlast übertragen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Apply cancelled; the robot is unchanged.</source>
+        <translation>Übertragen abgebrochen; der Roboter ist unverändert.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Writing the payload to the drives…</source>
+        <translation>Die Nutzlast wird in die Antriebe geschrieben…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Applied: every drive stored the payload (0x2500).</source>
+        <translation>Übertragen: jeder Antrieb hat die Nutzlast gespeichert (0x2500).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not applied: %1</source>
+        <translation>Nicht übertragen: %1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Export parameter file</source>
         <translation>Parameterdatei exportieren</translation>
     </message>
@@ -7236,6 +7296,14 @@ Verhältnis %</translation>
         <location line="+2"/>
         <source>enter a whole number</source>
         <translation>eine ganze Zahl eingeben</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::PayloadRunJob</name>
+    <message>
+        <location filename="../core/service/PayloadRunJob.cpp" line="+92"/>
+        <source>the run&apos;s robot is no longer connected: run again</source>
+        <translation>der Roboter des Laufs ist nicht mehr verbunden: erneut ausführen</translation>
     </message>
 </context>
 <context>

@@ -6768,7 +6768,17 @@ ratio %</source>
         <translation>&lt;h3&gt;learnid %1&lt;/h3&gt;&lt;p&gt;机器人动力学的学习辨识：调试工具。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>The payload step needs the CAN bus: disconnect the arm&apos;s session first.</source>
+        <translation>负载步骤需要 CAN 总线：请先断开机械臂的会话。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The robot panel&apos;s choice cannot be used (%1): the payload step runs on the simulated robot.</source>
+        <translation>机器人面板的选择无法使用（%1）：负载步骤在仿真机器人上运行。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>The scenario has a payload section: its payload is learned here, in the payload step; the arm&apos;s session is not opened with it.</source>
         <translation>该场景含有 payload 部分：其负载在此负载步骤中学习；不会用它打开手臂的会话。</translation>
     </message>
@@ -6948,12 +6958,17 @@ ratio %</source>
         <translation>导出 URDF(&amp;U)…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../ui/PayloadDialogExport.cpp" line="+44"/>
         <source>Learn a payload (simulated robot)</source>
         <translation>学习负载（仿真机器人）</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location filename="../ui/PayloadDialog.cpp" line="+1"/>
+        <source>A&amp;pply to the robot…</source>
+        <translation>应用到机器人(&amp;P)…</translation>
+    </message>
+    <message>
+        <location line="+49"/>
         <source>Payload and prior</source>
         <translation>负载与先验</translation>
     </message>
@@ -6978,7 +6993,7 @@ ratio %</source>
         <translation>关闭</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>The trials cannot be planned: %1</source>
         <translation>无法规划试验：%1</translation>
     </message>
@@ -6993,22 +7008,27 @@ ratio %</source>
         <translation>正在运行第 %1/%2 次试验，带负载…</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
+        <source>Payload learned: check the estimate, then accept it to apply it to the robot or export it.</source>
+        <translation>负载已学习：请检查估计值，然后接受它，以便将其应用到机器人或导出。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Payload learned: check the estimate, then accept it to export.</source>
         <translation>负载已学习：请检查估计值，然后接受以导出。</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Payload not learned: %1</source>
         <translation>负载未学习：%1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Stopped; nothing of this run is kept or written.</source>
         <translation>已停止；本次运行的任何结果都不会保留或写入。</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Run the trials to learn the payload.</source>
         <translation>运行试验以学习负载。</translation>
     </message>
@@ -7028,17 +7048,57 @@ ratio %</source>
         <translation>无法运行：%1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+19"/>
         <source>Stopping the running trial…</source>
         <translation>正在停止当前试验…</translation>
     </message>
     <message>
-        <location filename="../ui/PayloadDialogExport.cpp" line="+22"/>
+        <location filename="../ui/PayloadDialogExport.cpp" line="-15"/>
+        <source>Payload accepted: apply it to the robot&apos;s drives, or export the parameter file or the URDF.</source>
+        <translation>负载已接受：将其应用到机器人的驱动器，或导出参数文件或 URDF。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Payload accepted: export the parameter file or the URDF. It is not applied to a robot (the simulated robot carries it already).</source>
         <translation>负载已接受：请导出参数文件或 URDF。它不会应用到机器人上（仿真机器人已携带该负载）。</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+12"/>
+        <source>Learn a payload (CAN robot %1/%2)</source>
+        <translation>学习负载（CAN 机器人 %1/%2）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Write the payload on %1 (%2 kg, centre of mass (%3, %4, %5) mm) to every drive of %6/%7 (object 0x2500), read it back and store it?</source>
+        <translation>将 %1 上的负载（%2 kg，质心 (%3, %4, %5) mm）写入 %6/%7 的每个驱动器（对象 0x2500），回读并存储？</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Apply the payload</source>
+        <translation>应用负载</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Apply cancelled; the robot is unchanged.</source>
+        <translation>已取消写入；机器人未改变。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Writing the payload to the drives…</source>
+        <translation>正在将负载写入驱动器…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Applied: every drive stored the payload (0x2500).</source>
+        <translation>已应用：每个驱动器都已存储负载（0x2500）。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not applied: %1</source>
+        <translation>未应用：%1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Export parameter file</source>
         <translation>导出参数文件</translation>
     </message>
@@ -7214,6 +7274,14 @@ ratio %</source>
         <location line="+2"/>
         <source>enter a whole number</source>
         <translation>请输入整数</translation>
+    </message>
+</context>
+<context>
+    <name>learnid::PayloadRunJob</name>
+    <message>
+        <location filename="../core/service/PayloadRunJob.cpp" line="+92"/>
+        <source>the run&apos;s robot is no longer connected: run again</source>
+        <translation>该次运行的机器人已不再连接：请重新运行</translation>
     </message>
 </context>
 <context>

@@ -287,12 +287,28 @@ void MainWindow::showAbout()
 
 void MainWindow::openPayloadStep(const Scenario &scenario)
 {
+    // The payload step runs on the robot panel's choice; on CAN it opens its own connection, so
+    // the arm's session must not hold the bus.
+    QString error;
+    const auto robot = m_robot->choice(&error, scenario.controller.samplePeriod,
+                                       int(scenario.controller.kp.size()));
+    if (robot && robot->kind == RobotRequest::Kind::Can && m_controller->isOpen())
+        return m_message->showMessage(tr("The payload step needs the CAN bus: disconnect the "
+                                         "arm's session first."),
+                                      MessageBar::Severity::Error);
     if (!m_payload)
         m_payload = new PayloadDialog(&m_settings, this);
+    m_payload->setRobotRequest(robot.value_or(RobotRequest()));
     m_payload->setScenario(scenario);
     m_payload->show();
     m_payload->raise();
-    if (scenario.payload.enabled)
+    if (!robot)
+        m_payload->messageBar()->showMessage(
+            tr("The robot panel's choice cannot be used (%1): the payload step runs on the "
+               "simulated robot.")
+                .arg(error),
+            MessageBar::Severity::Error);
+    else if (scenario.payload.enabled)
         m_payload->messageBar()->showMessage(
             tr("The scenario has a payload section: its payload is learned here, in the payload "
                "step; the arm's session is not opened with it."),

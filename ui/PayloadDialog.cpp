@@ -59,11 +59,12 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     , m_exportParameters(
           namedButton(tr("Export &parameter file\u2026"), "exportPayloadParametersButton"))
     , m_exportUrdf(namedButton(tr("Export &URDF\u2026"), "exportPayloadUrdfButton"))
+    , m_apply(namedButton(tr("A&pply to the robot\u2026"), "applyPayloadButton"))
     , m_job(new PayloadRunJob(this))
     , m_checkTimer(new QTimer(this))
 {
     setObjectName(QStringLiteral("payloadDialog"));
-    setWindowTitle(tr("Learn a payload (simulated robot)"));
+    setRobotRequest(RobotRequest());
     m_preview->setObjectName(QStringLiteral("payloadPreview"));
     m_summary->setObjectName(QStringLiteral("payloadSummary"));
     m_stage->setObjectName(QStringLiteral("payloadStage"));
@@ -89,6 +90,7 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     connect(m_accept, &QPushButton::clicked, this, &PayloadDialog::acceptResult);
     connect(m_exportParameters, &QPushButton::clicked, this, &PayloadDialog::exportParameterFile);
     connect(m_exportUrdf, &QPushButton::clicked, this, &PayloadDialog::exportUrdf);
+    connect(m_apply, &QPushButton::clicked, this, &PayloadDialog::applyToRobot);
     setBusy(false);
     clearResult();
     const QSize available = screen() ? screen()->availableGeometry().size() : QSize(1280, 860);
@@ -141,6 +143,7 @@ void PayloadDialog::buildLayout()
     buttons->addWidget(m_accept);
     buttons->addWidget(m_exportParameters);
     buttons->addWidget(m_exportUrdf);
+    buttons->addWidget(m_apply);
     buttons->addStretch(1);
     buttons->addWidget(close);
     auto *layout = new QVBoxLayout(this);
@@ -182,9 +185,12 @@ void PayloadDialog::connectJob()
                 setBusy(false);
                 m_summary->setText(payloadResultHtml(*m_result));
                 m_estimate->setEstimate(m_result->fit.estimate);
-                m_message->showMessage(tr("Payload learned: check the estimate, then accept it to "
-                                          "export."),
-                                       MessageBar::Severity::Success);
+                m_message->showMessage(
+                    m_robot.kind == RobotRequest::Kind::Can
+                        ? tr("Payload learned: check the estimate, then accept it to apply it to "
+                             "the robot or export it.")
+                        : tr("Payload learned: check the estimate, then accept it to export."),
+                    MessageBar::Severity::Success);
                 emit runFinished(true);
             });
     connect(m_job, &PayloadRunJob::failed, this, [this](const QString &message) {
@@ -193,6 +199,7 @@ void PayloadDialog::connectJob()
                                MessageBar::Severity::Error);
         emit runFinished(false);
     });
+    connect(m_job, &PayloadRunJob::applied, this, &PayloadDialog::showApplied);
     connect(m_job, &PayloadRunJob::cancelled, this, [this] {
         setBusy(false);
         m_message->showMessage(tr("Stopped; nothing of this run is kept or written."),
@@ -238,6 +245,7 @@ void PayloadDialog::updateActions()
     m_accept->setEnabled(result && !m_accepted);
     m_exportParameters->setEnabled(result && m_accepted);
     m_exportUrdf->setEnabled(result && m_accepted);
+    m_apply->setEnabled(result && m_accepted);
 }
 
 void PayloadDialog::clearResult()
@@ -269,11 +277,15 @@ void PayloadDialog::run()
                                MessageBar::Severity::Error);
         return;
     }
+    if (m_checkTimer->isActive()) { // the preview of the last edit, planned before the run
+        m_checkTimer->stop();
+        requestCheck();
+    }
     clearResult();
     m_trials->clear();
     m_message->hide();
     m_progress->setRange(0, 0);
-    if (m_job->start(*s))
+    if (m_job->start(*s, m_robot))
         setBusy(true);
 }
 

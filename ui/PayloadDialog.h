@@ -21,16 +21,18 @@ class PayloadRunJob;
 class PayloadTrialTableModel;
 class UiSettings;
 
-/// The payload step (docs/payload.md, "In the window"): a payload learned on the simulated robot
-/// with the arm's model held fixed. The form (PayloadForm) gives the link, the prior, the bound
-/// and the trials, each refused value named at its field; before any motion the dialog shows what
-/// the path lets the trials see and whether the first trial passes its check (PayloadRunJob::
-/// check(), redone after each edit). Run runs the baseline and payload trials in a worker thread
-/// (PayloadRunJob) with progress per trial and Stop; each finished trial adds a row
-/// (PayloadTrialTableModel). A run that completes shows the estimate with each value's standard
-/// error, prior and source (PayloadEstimateTableModel); Accept enables the exports: the parameter
-/// file with a payload section (and its DCF) and the URDF with a fixed payload link, written all
-/// or none (writePayloadRunExport). A stopped or failed run leaves no result.
+/// The payload step (docs/payload.md, "In the window"): a payload learned on the simulated robot,
+/// or on the window's CAN robot, with the arm's model held fixed. The form (PayloadForm) gives the
+/// link, the prior, the bound and the trials, each refused value named at its field; before any
+/// motion the dialog shows what the path lets the trials see and whether the first trial passes its
+/// check (PayloadRunJob:: check(), redone after each edit). Run runs the baseline and payload
+/// trials in a worker thread (PayloadRunJob) with progress per trial and Stop; each finished trial
+/// adds a row (PayloadTrialTableModel). A run that completes shows the estimate with each value's
+/// standard error, prior and source (PayloadEstimateTableModel); Accept enables the exports: the
+/// parameter file with a payload section (and its DCF) and the URDF with a fixed payload link,
+/// written all or none (writePayloadRunExport); on the CAN robot it also enables Apply, which
+/// writes the payload to the drives (PayloadRunJob::applyResult). A stopped or failed run leaves no
+/// result.
 class PayloadDialog : public QDialog
 {
     Q_OBJECT
@@ -39,6 +41,8 @@ public:
     enum class ExportKind { ParameterFile, Urdf };
     /// Asks for a path to write (empty: cancelled); the default shows a file dialog.
     using PathChooser = std::function<QString(ExportKind kind, const QString &suggested)>;
+    /// Asks whether to go on (the question in words); the default shows a message box.
+    using Confirmer = std::function<bool(const QString &question)>;
 
     /// settings: where the last folder is remembered (may be null).
     explicit PayloadDialog(UiSettings *settings, QWidget *parent = nullptr);
@@ -47,6 +51,10 @@ public:
     /// The scenario whose payload is learned (a scenario without a payload section gets one).
     void setScenario(const Scenario &scenario);
     void setPathChooser(PathChooser chooser) { m_chooser = std::move(chooser); }
+    void setApplyConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
+    /// The robot the trials run on: the simulated one (default), or the window's CAN robot,
+    /// whose drives an accepted payload can then be applied to (0x2500).
+    void setRobotRequest(const RobotRequest &robot);
 
     PayloadForm *form() const { return m_form; }
     PayloadTrialTableModel *trialTable() const { return m_trials; }
@@ -63,6 +71,8 @@ public slots:
     void run();
     void stop();
     void acceptResult();
+    /// Writes the accepted payload to the CAN robot's drives and stores it, after a confirmation.
+    void applyToRobot();
     void exportParameterFile();
     void exportUrdf();
     void reject() override;
@@ -72,6 +82,8 @@ signals:
     void previewShown(bool ok);
     /// A run ended: with a result, or not (failed or stopped).
     void runFinished(bool succeeded);
+    /// An apply ended: the drives stored the payload, or not.
+    void applyFinished(bool succeeded);
 
 private:
     void buildLayout();
@@ -81,6 +93,7 @@ private:
     void updateActions();
     void requestCheck();
     void writeExport(ExportKind kind);
+    void showApplied(const QString &error);
 
     UiSettings *m_settings;
     MessageBar *m_message;
@@ -98,9 +111,12 @@ private:
     QPushButton *m_accept;
     QPushButton *m_exportParameters;
     QPushButton *m_exportUrdf;
+    QPushButton *m_apply;
     PayloadRunJob *m_job;
     QTimer *m_checkTimer;
     PathChooser m_chooser;
+    Confirmer m_confirmer;
+    RobotRequest m_robot;
     std::shared_ptr<const PayloadRunResult> m_result;
     bool m_accepted = false;
 };

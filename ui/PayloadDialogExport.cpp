@@ -1,7 +1,8 @@
-// The result side of the payload step (PayloadDialog.h): Accept, and the exports of an accepted
-// result, written all or none.
+// The result side of the payload step (PayloadDialog.h): the robot, Accept, the apply to a CAN
+// robot's drives and the exports of an accepted result, written all or none.
 #include "model/Error.h"
 #include "service/PayloadRunExport.h"
+#include "service/PayloadRunJob.h"
 #include "ui/MessageBar.h"
 #include "ui/PayloadDialog.h"
 #include "ui/UiSettings.h"
@@ -10,6 +11,10 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
 
 namespace learnid {
 
@@ -19,9 +24,66 @@ void PayloadDialog::acceptResult()
         return;
     m_accepted = true;
     updateActions();
-    m_message->showMessage(tr("Payload accepted: export the parameter file or the URDF. It is "
-                              "not applied to a robot (the simulated robot carries it already)."),
-                           MessageBar::Severity::Info);
+    m_message->showMessage(
+        m_robot.kind == RobotRequest::Kind::Can
+            ? tr("Payload accepted: apply it to the robot's drives, or export the parameter file "
+                 "or the URDF.")
+            : tr("Payload accepted: export the parameter file or the URDF. It is not applied to a "
+                 "robot (the simulated robot carries it already)."),
+        MessageBar::Severity::Info);
+}
+
+void PayloadDialog::setRobotRequest(const RobotRequest &robot)
+{
+    if (isRunning())
+        return;
+    m_robot = robot;
+    const bool can = robot.kind == RobotRequest::Kind::Can;
+    setWindowTitle(
+        can ? tr("Learn a payload (CAN robot %1/%2)").arg(robot.can.plugin, robot.can.interface)
+            : tr("Learn a payload (simulated robot)"));
+    m_apply->setVisible(can);
+    clearResult(); // a result belongs to the robot it was learned on
+}
+
+void PayloadDialog::applyToRobot()
+{
+    if (!m_result || !m_accepted || isRunning() || m_robot.kind != RobotRequest::Kind::Can)
+        return;
+    const PayloadBody &b = m_result->fit.estimate.body;
+    const QString question =
+        tr("Write the payload on %1 (%2 kg, centre of mass (%3, %4, %5) mm) to every drive of "
+           "%6/%7 (object 0x2500), read it back and store it?")
+            .arg(m_result->link)
+            .arg(b.mass, 0, 'g', 5)
+            .arg(1000.0 * b.com.x(), 0, 'f', 1)
+            .arg(1000.0 * b.com.y(), 0, 'f', 1)
+            .arg(1000.0 * b.com.z(), 0, 'f', 1)
+            .arg(m_robot.can.plugin, m_robot.can.interface);
+    const bool confirmed = m_confirmer ? m_confirmer(question)
+                                       : QMessageBox::question(this, tr("Apply the payload"),
+                                                               question) == QMessageBox::Yes;
+    if (!confirmed) {
+        m_message->showMessage(tr("Apply cancelled; the robot is unchanged."),
+                               MessageBar::Severity::Info);
+        return;
+    }
+    if (!m_job->applyResult())
+        return;
+    m_progress->setRange(0, 0);
+    setBusy(true);
+    m_stage->setText(tr("Writing the payload to the drives\u2026"));
+}
+
+void PayloadDialog::showApplied(const QString &error)
+{
+    setBusy(false);
+    if (error.isEmpty())
+        m_message->showMessage(tr("Applied: every drive stored the payload (0x2500)."),
+                               MessageBar::Severity::Success);
+    else
+        m_message->showMessage(tr("Not applied: %1").arg(error), MessageBar::Severity::Error);
+    emit applyFinished(error.isEmpty());
 }
 
 void PayloadDialog::exportParameterFile()

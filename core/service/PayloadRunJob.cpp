@@ -21,6 +21,9 @@ PayloadRunJob::PayloadRunJob(QObject *parent)
 PayloadRunJob::~PayloadRunJob()
 {
     cancel();
+    // The last run's robot ends in the thread it was made in (a CAN robot disconnects there).
+    QMetaObject::invokeMethod(
+        m_context, [this] { m_last.reset(); }, Qt::BlockingQueuedConnection);
     m_thread.quit();
     m_thread.wait();
 }
@@ -61,23 +64,51 @@ void PayloadRunJob::checkInThread(const Scenario &scenario, int id)
         Qt::QueuedConnection);
 }
 
-bool PayloadRunJob::start(const Scenario &scenario)
+bool PayloadRunJob::start(const Scenario &scenario, const RobotRequest &robot)
 {
     if (m_running)
         return false;
     m_running = true;
-    ++m_check; // a check still queued is about the scenario before this run
+    m_lastResult.reset();
+    // A check still queued runs before the run in the job's thread and is about this run's
+    // scenario (the form cannot change without a new check): its preview stays.
     const int run = ++m_run;
     m_cancel = std::make_shared<std::atomic<bool>>(false);
-    QMetaObject::invokeMethod(m_context, [this, scenario, run, cancel = m_cancel] {
-        runInThread(scenario, run, cancel);
+    QMetaObject::invokeMethod(m_context, [this, scenario, robot, run, cancel = m_cancel] {
+        runInThread(scenario, robot, run, cancel);
     });
     return true;
 }
 
-void PayloadRunJob::runInThread(const Scenario &scenario, int run,
+bool PayloadRunJob::applyResult()
+{
+    if (m_running || !m_lastResult)
+        return false;
+    m_running = true;
+    QMetaObject::invokeMethod(m_context, [this, result = m_lastResult] {
+        QString error;
+        try {
+            error = m_last ? applyRunPayload(*m_last, *result)
+                           : tr("the run's robot is no longer connected: run again");
+        } catch (const Error &e) {
+            error = e.message();
+        }
+        QMetaObject::invokeMethod(
+            this,
+            [this, error] {
+                m_running = false;
+                emit applied(error);
+            },
+            Qt::QueuedConnection);
+    });
+    return true;
+}
+
+void PayloadRunJob::runInThread(const Scenario &scenario, const RobotRequest &robot, int run,
                                 std::shared_ptr<std::atomic<bool>> cancel)
 {
+    // The previous run's robot first: one master on a bus.
+    m_last.reset();
     // Value copies only cross the threads: the scenario in, the rows and the result out.
     const auto post = [this, run](auto emitter) {
         QMetaObject::invokeMethod(
@@ -91,7 +122,12 @@ void PayloadRunJob::runInThread(const Scenario &scenario, int run,
     std::shared_ptr<const PayloadRunResult> result;
     QString error;
     try {
-        PayloadRunSession s = makeSimulatedPayloadSession(scenario);
+        auto made = std::make_shared<PayloadRunSession>(
+            robot.kind == RobotRequest::Kind::Can ? makeCanPayloadSession(scenario, robot)
+                                                  : makeSimulatedPayloadSession(scenario));
+        if (!made->session)
+            throw Error(made->connectError);
+        PayloadRunSession &s = *made;
         // cancel() reaches the session while it lives, however this block is left.
         struct Registration
         {
@@ -120,8 +156,10 @@ void PayloadRunJob::runInThread(const Scenario &scenario, int run,
                 break;
             }
         }
-        if (error.isEmpty() && !cancel->load())
+        if (error.isEmpty() && !cancel->load()) {
             result = std::make_shared<const PayloadRunResult>(payloadRunResult(s));
+            m_last = made;
+        }
     } catch (const Error &e) {
         error = e.message();
     } catch (const std::exception &e) {
@@ -136,9 +174,10 @@ void PayloadRunJob::runInThread(const Scenario &scenario, int run,
             // A cancel that came after the last trial still wins: the window asked for no result.
             if (cancel->load())
                 emit cancelled();
-            else if (result)
+            else if (result) {
+                m_lastResult = result;
                 emit succeeded(result);
-            else
+            } else
                 emit failed(error);
         },
         Qt::QueuedConnection);

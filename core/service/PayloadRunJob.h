@@ -13,11 +13,14 @@ namespace learnid {
 /// Runs the window's payload step (PayloadRun.h) in a thread of its own, so that the window stays
 /// responsive. check() plans the scenario's first trial and reports what its path lets the trials
 /// see (checked() or checkFailed()); start() runs the baseline trials and then the payload trials
-/// on a new simulated robot, reporting trialStarted() and trialFinished() per trial, then one of
-/// succeeded(), failed() or cancelled(). Everything comes back queued, in the thread the job
-/// lives in. One run at a time. cancel() stops the running trial at its next sample
-/// (PayloadSession::requestCancel()); a cancelled or failed run has no result, so nothing of it
-/// can be accepted or exported, and a check superseded by a newer one is dropped.
+/// on a new simulated robot, or on the CAN robot of its request (connected for the run),
+/// reporting trialStarted() and trialFinished() per trial, then one of succeeded(), failed() or
+/// cancelled(). applyResult() writes the last successful run's payload to its robot (applied()).
+/// Everything comes back queued, in the thread the job lives in. One run or apply at a time.
+/// cancel() stops the running trial at its next sample (PayloadSession::requestCancel()); a
+/// cancelled or failed run has no result, so nothing of it can be accepted, applied or exported,
+/// and a check superseded by a newer one is dropped. The robot of the last successful run stays
+/// connected until the next run or the job's end, for its apply.
 class PayloadRunJob : public QObject
 {
     Q_OBJECT
@@ -32,8 +35,14 @@ public:
 public slots:
     /// Plans the scenario's first trial in the job's thread; ignored (false) while a run runs.
     bool check(const learnid::Scenario &scenario);
-    /// Starts a run of the scenario; ignored (false) while one runs.
-    bool start(const learnid::Scenario &scenario);
+    /// Starts a run of the scenario on the requested robot (the simulated one, or a CAN robot:
+    /// its payload.baselineTrials refused, makeCanPayloadSession()); ignored (false) while one
+    /// runs.
+    bool start(const learnid::Scenario &scenario,
+               const learnid::RobotRequest &robot = learnid::RobotRequest());
+    /// Writes the last successful run's payload to its robot and stores it (applyRunPayload());
+    /// ignored (false) while a run runs or without a result.
+    bool applyResult();
     /// Asks the running trial to stop at its next sample; cancelled() follows.
     void cancel();
 
@@ -48,9 +57,12 @@ signals:
     /// A trial was refused or not usable, or the session could not be made: message says why.
     void failed(const QString &message);
     void cancelled();
+    /// error: empty when the robot stored the payload, else what failed and where.
+    void applied(const QString &error);
 
 private:
-    void runInThread(const Scenario &scenario, int run, std::shared_ptr<std::atomic<bool>> cancel);
+    void runInThread(const Scenario &scenario, const RobotRequest &robot, int run,
+                     std::shared_ptr<std::atomic<bool>> cancel);
     void checkInThread(const Scenario &scenario, int check);
 
     QThread m_thread;
@@ -61,6 +73,9 @@ private:
     int m_run = 0;
     std::atomic<int> m_check{0}; ///< the newest check; older ones are dropped
     bool m_running = false;
+    /// The last successful run's session and robot (used in m_thread only) and its result.
+    std::shared_ptr<PayloadRunSession> m_last;
+    std::shared_ptr<const PayloadRunResult> m_lastResult;
 };
 
 } // namespace learnid

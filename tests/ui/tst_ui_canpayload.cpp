@@ -1,0 +1,161 @@
+// The payload step on the window's CAN robot, by clicking: learnid-robot-sim over virtualcan (a
+// second process) moves the Panda's seven drives carrying 1.5 kg 5 cm off the flange axis; the
+// step learns it through the bus, Accept enables Apply, and Apply (confirmed) stores on every
+// drive what the estimate table shows. The step is refused while the arm's session holds the bus.
+#include "../session/PayloadScenarios.h"
+#include "../support/RobotSimProcess.h"
+#include "UiTestSupport.h"
+#include "io/ScenarioFile.h"
+#include "service/SessionController.h"
+#include "ui/FileController.h"
+#include "ui/MainActions.h"
+#include "ui/MessageBar.h"
+#include "ui/PayloadDialog.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QtTest>
+
+using namespace learnid;
+using namespace learnid::test;
+
+namespace {
+
+const QString kNodes = QStringLiteral("1,2,3,4,5,6,7");
+
+void chooseCan(WindowFixture &f, const QString &interface)
+{
+    auto *kind = f.window->findChild<QComboBox *>(QStringLiteral("robotKind"));
+    kind->setCurrentIndex(kind->findData(1));
+    f.window->findChild<QComboBox *>(QStringLiteral("canPlugin"))
+        ->setCurrentText(QStringLiteral("virtualcan"));
+    f.window->findChild<QLineEdit *>(QStringLiteral("canInterface"))->setText(interface);
+    f.window->findChild<QLineEdit *>(QStringLiteral("canNodes"))->setText(kNodes);
+    // CI runs this beside other tests on 2 cores (tst_can_e2e).
+    f.window->findChild<QSpinBox *>(QStringLiteral("canSyncTimeout"))->setValue(200);
+}
+
+// SYNC every 4 ms: seven nodes at 2 ms would need 98 % of a 1 Mbit/s bus.
+Scenario pandaAt4ms()
+{
+    Scenario s = pandaWithPayload();
+    s.controller.samplePeriod = 0.004;
+    return s;
+}
+
+} // namespace
+
+class TestUiCanPayload : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void payloadOnTheCanRobot_learnedAcceptedApplied()
+    {
+        WindowFixture f;
+        const QString scenario = f.dir.filePath(QStringLiteral("panda-payload-4ms.json"));
+        writeScenarioFile(scenario, pandaAt4ms());
+        const quint16 port = freeLoopbackPort();
+        QVERIFY(port > 0);
+        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
+        const QString state = f.dir.filePath(QStringLiteral("state.json"));
+        RobotSimProcess sim(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+        QVERIFY(
+            sim.start(interface, {QStringLiteral("--scenario"), scenario, QStringLiteral("--nodes"),
+                                  kNodes, QStringLiteral("--state"), state}));
+        chooseCan(f, interface);
+        f.window->files()->openScenarioFrom(scenario); // routed to the payload step
+        PayloadDialog *d = f.window->payloadDialog();
+        QVERIFY(d);
+        QTRY_VERIFY(d->isVisible());
+        QVERIFY2(d->windowTitle().contains(QStringLiteral("CAN robot virtualcan")),
+                 qPrintable(d->windowTitle()));
+        auto *run = d->findChild<QPushButton *>(QStringLiteral("runPayloadButton"));
+        auto *accept = d->findChild<QPushButton *>(QStringLiteral("acceptPayloadButton"));
+        auto *apply = d->findChild<QPushButton *>(QStringLiteral("applyPayloadButton"));
+        QVERIFY(run && accept && apply);
+        QVERIFY(!apply->isHidden() && !apply->isEnabled());
+        QTRY_VERIFY(run->isEnabled());
+
+        QSignalSpy finished(d, &PayloadDialog::runFinished);
+        QTest::mouseClick(run, Qt::LeftButton);
+        QVERIFY(finished.wait(120000));
+        QVERIFY2(finished.constFirst().at(0).toBool(), qPrintable(d->messageBar()->text()));
+        const auto result = d->result();
+        QVERIFY(result);
+        // Run clicked as soon as it was enabled: the preview planned before the run still shows.
+        QVERIFY2(d->previewText().contains(QStringLiteral("of the payload's 10 parameters")),
+                 qPrintable(d->previewText()));
+        const PayloadBody &b = result->fit.estimate.body;
+        QVERIFY2(std::abs(b.mass - 1.5) < 0.015, qPrintable(QString::number(b.mass)));
+        QVERIFY2((b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm() < 3e-3,
+                 qPrintable(QString::number(b.com.x())));
+
+        // Apply only once accepted, and only after the technician confirms.
+        QVERIFY(!apply->isEnabled());
+        QTest::mouseClick(accept, Qt::LeftButton);
+        QVERIFY(apply->isEnabled());
+        QString asked;
+        d->setApplyConfirmer([&asked](const QString &question) {
+            asked = question;
+            return true;
+        });
+        QSignalSpy applied(d, &PayloadDialog::applyFinished);
+        QTest::mouseClick(apply, Qt::LeftButton);
+        QVERIFY(applied.wait(30000));
+        QVERIFY2(applied.constFirst().at(0).toBool(), qPrintable(d->messageBar()->text()));
+        QVERIFY2(asked.contains(QStringLiteral("0x2500")) &&
+                     asked.contains(QStringLiteral("panda_link7")),
+                 qPrintable(asked));
+        QCOMPARE(d->messageBar()->severity(), MessageBar::Severity::Success);
+
+        // Every drive stored the estimate: joint 7 (panda_link7 is its body), the 10 values.
+        QFile f2(state);
+        QVERIFY(f2.open(QIODevice::ReadOnly));
+        const QJsonObject nodes = QJsonDocument::fromJson(f2.readAll())
+                                      .object()
+                                      .value(QStringLiteral("nodes"))
+                                      .toObject();
+        QCOMPARE(nodes.size(), 7);
+        const InertialParameters &p = result->fit.estimate.parameters;
+        for (const QString &node : nodes.keys()) {
+            const QJsonObject stored =
+                nodes.value(node).toObject().value(QStringLiteral("storedPayload")).toObject();
+            QCOMPARE(stored.value(QStringLiteral("joint")).toInt(), 7);
+            const QJsonArray values = stored.value(QStringLiteral("parameters")).toArray();
+            QCOMPARE(values.size(), 10);
+            for (int i = 0; i < 10; ++i)
+                QCOMPARE(values[i].toDouble(), double(float(p[i])));
+        }
+    }
+
+    void payloadStep_refusedWhileTheArmsSessionHoldsTheBus()
+    {
+        const quint16 port = freeLoopbackPort();
+        QVERIFY(port > 0);
+        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
+        RobotSimProcess sim(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+        QVERIFY(sim.start(interface));
+        WindowFixture f;
+        chooseCan(f, interface);
+        f.window->findChild<QLineEdit *>(QStringLiteral("canNodes"))
+            ->setText(QStringLiteral("1,2"));
+        QVERIFY(f.click("connectButton"));
+        QTRY_VERIFY_WITH_TIMEOUT(f.window->controller()->isOpen(), 20000);
+        f.window->actions()->learnPayload->trigger();
+        const QString text = f.window->messageBar()->text();
+        QVERIFY2(text.contains(QStringLiteral("disconnect the arm's session first")),
+                 qPrintable(text));
+        QVERIFY(!f.window->payloadDialog() || !f.window->payloadDialog()->isVisible());
+    }
+};
+
+QTEST_MAIN(TestUiCanPayload)
+#include "tst_ui_canpayload.moc"
