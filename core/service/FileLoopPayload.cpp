@@ -99,6 +99,7 @@ QByteArray payloadEstimateFile(const LoopScenario &s, const PayloadSession &sess
     c.values = s.scenario.initialParameters;
     c.canWrites = objects::parameterWriteSequence(c.nodes(), c.values);
     c.payload = payloadEstimateSection(session, k);
+    addPayloadWrites(c, session.payloadModel().payloadLink(), c.payload->parameters());
     if (t) {
         c.sourceTrial = t->index;
         c.maxTrackingErrorDeg = t->maxTrackingErrorDeg;

@@ -3,6 +3,7 @@
 #include "service/PayloadExport.h"
 
 #include "can/ManufacturerObjects.h"
+#include "can/PayloadObjects.h"
 #include "io/UrdfPayload.h"
 #include "model/Error.h"
 #include "service/SessionExport.h"
@@ -14,6 +15,18 @@
 #include <limits>
 
 namespace learnid {
+
+void addPayloadWrites(ParameterFileContent &content, const PayloadLink &link,
+                      const InertialParameters &payload)
+{
+    QList<SdoWrite> &writes = content.canWrites;
+    qsizetype firstStore = 0;
+    while (firstStore < writes.size() && writes[firstStore].index != objects::storeParameters)
+        ++firstStore;
+    const QList<SdoWrite> added =
+        objects::payloadWrites(content.nodes(), link.joint + 1, payloadInBody(link, payload));
+    writes = writes.mid(0, firstStore) + added + writes.mid(firstStore);
+}
 
 ParameterFilePayload payloadSection(const PayloadEstimate &e, const QString &link)
 {
@@ -72,6 +85,7 @@ ParameterFileContent payloadParameterFile(const PayloadIdentificationResult &r,
     c.canWrites = objects::parameterWriteSequence(c.nodes(), c.values);
     setStandardParameters(c, model, r.arm.standard, r.arm.determined);
     setPayloadFit(c, r.fit, r.model->link());
+    addPayloadWrites(c, r.model->payloadLink(), r.fit.estimate.parameters);
     return c;
 }
 

@@ -20,6 +20,13 @@ ParameterFilePayload payloadSection(const PayloadEstimate &estimate, const QStri
 /// quality the fit's residual per joint, condition and rank (of the payload's 10 directions).
 void setPayloadFit(ParameterFileContent &content, const PayloadFit &fit, const QString &link);
 
+/// Puts the payload's apply into content.canWrites, before the stores: objects::payloadWrites()
+/// of the payload (10 parameters in `link`'s frame) moved into the frame of the body that carries
+/// it (docs/can-protocol.md §2.5), so the file's writes put the arm and the payload on the
+/// drives.
+void addPayloadWrites(ParameterFileContent &content, const PayloadLink &link,
+                      const InertialParameters &payload);
+
 /// The body values an estimate keeps at the prior, by name (PayloadEstimate::bodyNames()).
 QStringList payloadValuesKept(const PayloadEstimate &estimate);
 

@@ -49,6 +49,7 @@ ParameterFileContent payloadRunParameterFile(const PayloadRunResult &r)
     // The arm's values as given, not determined by these trials: no shares.
     setStandardParameters(c, model, armStandard(r), {});
     setPayloadFit(c, r.fit, r.link);
+    addPayloadWrites(c, payloadLinkOf(model.chain(), r.link), r.fit.estimate.parameters);
     return c;
 }
 

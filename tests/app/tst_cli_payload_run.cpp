@@ -81,6 +81,27 @@ private slots:
             QVERIFY(std::isfinite(p.standardUncertainty[i]) && p.standardUncertainty[i] >= 0.0);
         }
         QVERIFY(QFileInfo(dir.filePath(QStringLiteral("panda-payload-params.dcf"))).size() > 0);
+        // Its CAN writes put the payload on every drive too (0x2500: joint 7, whose body is
+        // panda_link7, then the 10 parameters in REAL32), before the stores.
+        const InertialParameters body = p.parameters();
+        QList<int> payloadNodes;
+        int lastPayloadWrite = -1, firstStore = -1;
+        for (int i = 0; i < int(content.canWrites.size()); ++i) {
+            const SdoWrite &w = content.canWrites[i];
+            if (w.index == 0x1010 && firstStore < 0)
+                firstStore = i;
+            if (w.index != 0x2500)
+                continue;
+            lastPayloadWrite = i;
+            if (w.subIndex == 1) {
+                QCOMPARE(w.value, 7.0);
+                payloadNodes << w.node;
+            } else {
+                QCOMPARE(w.value, double(float(body[w.subIndex - 2])));
+            }
+        }
+        QCOMPARE(payloadNodes, (QList<int>{1, 2, 3, 4, 5, 6, 7}));
+        QVERIFY(lastPayloadWrite >= 0 && lastPayloadWrite < firstStore);
 
         // Each trial's samples: the tracking error the row printed is the CSV's largest.
         for (const Row &r : rows) {
