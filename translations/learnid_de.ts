@@ -1176,7 +1176,7 @@
         <translation>der festgehaltene Arm und die Vorgabe der Nutzlast: Schätzung %1 einer Lernschleife der Nutzlast über Dateien</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>%1 holds another arm model than the scenario&apos;s robot.initialParameters: a history keeps the arm it learns the payload on</source>
         <translation>%1 enthält ein anderes Armmodell als robot.initialParameters des Szenarios: ein Verlauf behält den Arm, an dem er die Nutzlast lernt</translation>
     </message>
@@ -2315,12 +2315,12 @@
 <context>
     <name>PayloadExport</name>
     <message>
-        <location filename="../core/service/PayloadExport.cpp" line="+67"/>
+        <location filename="../core/service/PayloadExport.cpp" line="+80"/>
         <source>%1 (%2) with a payload on %3 identified from the logs %4</source>
         <translation>%1 (%2) mit einer Nutzlast an %3, identifiziert aus den Logs %4</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>die Reglerverstärkungen, die die Parameterdatei festhält, gelten für %1 Gelenke, der Roboter hat %2</translation>
     </message>
@@ -2491,12 +2491,7 @@
         <translation>robot.model: unbekanntes Robotermodell &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>payload.baselineTrials: baseline trials are not offered on the CAN robot yet (the payload would have to come off for them and be mounted before the next trial); set it to 0</source>
-        <translation>payload.baselineTrials: Referenzversuche sind am CAN-Roboter noch nicht möglich (die Nutzlast müsste dafür abgenommen und vor dem nächsten Versuch montiert werden); auf 0 setzen</translation>
-    </message>
-    <message>
-        <location line="+72"/>
+        <location line="+88"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>aus keinem Versuch wurde gelernt: die Nutzlast ist nicht geschätzt</translation>
     </message>
@@ -4163,7 +4158,7 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+74"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+131"/>
         <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+9"/>
@@ -5281,7 +5276,27 @@ neue Schätzung.
         <translation>Referenz: dieselbe Bahn ohne die Nutzlast</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-6"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-66"/>
+        <source>learnid-cli: take the payload off %1 for the %2 baseline trial(s), then press Enter (Ctrl-C stops)</source>
+        <translation>learnid-cli: nehmen Sie die Nutzlast für die %2 Referenzversuch(e) von %1 ab und drücken Sie dann die Eingabetaste (Strg-C bricht ab)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>learnid-cli: the baseline trials are done: mount the payload on %1, then press Enter (Ctrl-C stops)</source>
+        <translation>learnid-cli: die Referenzversuche sind fertig: montieren Sie die Nutzlast an %1 und drücken Sie dann die Eingabetaste (Strg-C bricht ab)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>stopped (Ctrl-C) before trial %1</source>
+        <translation>vor Versuch %1 abgebrochen (Strg-C)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>before trial %1: no answer on standard input, so the payload&apos;s state was not confirmed</source>
+        <translation>vor Versuch %1: keine Antwort auf der Standardeingabe, der Zustand der Nutzlast wurde also nicht bestätigt</translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>cannot create the folder %1</source>
         <translation>der Ordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -5311,7 +5326,7 @@ neue Schätzung.
         <translation>learnid-cli: die Bahn bestimmt %1 der 10 Parameter der Nutzlast</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+46"/>
         <source>apply failed: %1</source>
         <translation>Übertragen fehlgeschlagen: %1</translation>
     </message>
@@ -5321,7 +5336,7 @@ neue Schätzung.
         <translation>learnid-cli: Nutzlast auf den Roboter übertragen (0x2500 auf jedem Knoten, gespeichert)</translation>
     </message>
     <message>
-        <location line="-133"/>
+        <location line="-143"/>
         <source>learnid-cli: %1 not written: the session ended before its last trial</source>
         <translation>learnid-cli: %1 nicht geschrieben: die Sitzung endete vor ihrem letzten Versuch</translation>
     </message>
@@ -5364,7 +5379,7 @@ neue Schätzung.
         <translation>SIGTERM</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+19"/>
         <source>stdin closed</source>
         <translation>stdin geschlossen</translation>
     </message>
@@ -5511,7 +5526,12 @@ neue Schätzung.
         <translation>Antriebe, die nie in Betrieb genommen wurden: 0x2400 ist 0 (standardmäßig enthält der Antrieb von Gelenk j die Identität des Roboters und j).</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+5"/>
+        <source>The arm starts without the scenario&apos;s payload. A line &apos;mount&apos; on stdin mounts it, &apos;unmount&apos; takes it off (as a technician does around a payload session&apos;s baseline trials).</source>
+        <translation>Der Arm startet ohne die Nutzlast des Szenarios. Eine Zeile 'mount' auf stdin montiert sie, 'unmount' nimmt sie ab (wie ein Techniker um die Referenzversuche einer Nutzlastsitzung).</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
@@ -7305,6 +7325,11 @@ Verhältnis %</translation>
         <source>the run&apos;s robot is no longer connected: run again</source>
         <translation>der Roboter des Laufs ist nicht mehr verbunden: erneut ausführen</translation>
     </message>
+    <message>
+        <location line="+34"/>
+        <source>payload.baselineTrials: the window does not ask for the payload to be taken off and mounted between trials yet: set it to 0, or run the baseline trials with learnid-cli run --robot can</source>
+        <translation>payload.baselineTrials: das Fenster fragt noch nicht nach dem Abnehmen und Montieren der Nutzlast zwischen den Versuchen: auf 0 setzen, oder die Referenzversuche mit learnid-cli run --robot can ausführen</translation>
+    </message>
 </context>
 <context>
     <name>learnid::PayloadTrialTableModel</name>
@@ -8777,25 +8802,30 @@ Verhältnis %</translation>
         <translation>learnid-robot-sim: wird beendet (%1)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+96"/>
+        <location line="+6"/>
+        <location line="+101"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>die CAN-Schnittstelle %1 mit Plugin %2 kann nicht verbunden werden: %3</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location line="-67"/>
         <location line="+17"/>
-        <location line="+75"/>
+        <location line="+80"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim: Fehler: %1</translation>
     </message>
     <message>
-        <location line="-85"/>
+        <location line="-90"/>
         <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
         <translation>learnid-robot-sim: Fehler: das CAN-Gerät %1 mit Plugin %2 kann nicht angelegt werden: %3</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+14"/>
+        <source>learnid-robot-sim: error: --payload-off: the scenario has no payload section</source>
+        <translation>learnid-robot-sim: Fehler: --payload-off: das Szenario hat keinen payload-Abschnitt</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <location line="+58"/>
         <source>learnid-robot-sim: error: --state: %1</source>
         <translation>learnid-robot-sim: Fehler: --state: %1</translation>
@@ -8819,6 +8849,16 @@ Verhältnis %</translation>
         <location line="+6"/>
         <source>the CAN interface %1 with plugin %2 did not connect within %3 s</source>
         <translation>die CAN-Schnittstelle %1 mit Plugin %2 hat sich nicht innerhalb von %3 s verbunden</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>learnid-robot-sim: unknown command &apos;%1&apos; on stdin (mount, unmount)</source>
+        <translation>learnid-robot-sim: unbekannter Befehl '%1' auf stdin (mount, unmount)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>learnid-robot-sim: %1: the scenario has no payload section</source>
+        <translation>learnid-robot-sim: %1: das Szenario hat keinen payload-Abschnitt</translation>
     </message>
 </context>
 <context>

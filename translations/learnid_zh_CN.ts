@@ -1176,7 +1176,7 @@
         <translation>固定的机械臂与负载的先验：通过文件进行的负载学习循环的估计 %1</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>%1 holds another arm model than the scenario&apos;s robot.initialParameters: a history keeps the arm it learns the payload on</source>
         <translation>%1 中的机械臂模型与场景的 robot.initialParameters 不同：历史保持其学习负载时所用的机械臂不变</translation>
     </message>
@@ -2306,12 +2306,12 @@
 <context>
     <name>PayloadExport</name>
     <message>
-        <location filename="../core/service/PayloadExport.cpp" line="+67"/>
+        <location filename="../core/service/PayloadExport.cpp" line="+80"/>
         <source>%1 (%2) with a payload on %3 identified from the logs %4</source>
         <translation>%1（%2），%3 上的负载由日志 %4 辨识</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>the controller gains the parameter file records are for %1 joints, the robot has %2</source>
         <translation>参数文件记录的控制器增益适用于 %1 个关节，机器人有 %2 个</translation>
     </message>
@@ -2482,12 +2482,7 @@
         <translation>robot.model：未知的机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>payload.baselineTrials: baseline trials are not offered on the CAN robot yet (the payload would have to come off for them and be mounted before the next trial); set it to 0</source>
-        <translation>payload.baselineTrials：CAN 机器人上尚不支持基准试验（负载需要为此卸下，并在下一次试验前重新安装）；请设为 0</translation>
-    </message>
-    <message>
-        <location line="+72"/>
+        <location line="+88"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>没有从任何试验中学习：未估计负载</translation>
     </message>
@@ -4149,7 +4144,7 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+74"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+131"/>
         <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+9"/>
@@ -5261,7 +5256,27 @@ stdout, and the next plan uses the new estimate.
         <translation>基线：不带负载的同一路径</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-6"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-66"/>
+        <source>learnid-cli: take the payload off %1 for the %2 baseline trial(s), then press Enter (Ctrl-C stops)</source>
+        <translation>learnid-cli：请为 %2 次基准试验从 %1 上卸下负载，然后按回车键（Ctrl-C 停止）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>learnid-cli: the baseline trials are done: mount the payload on %1, then press Enter (Ctrl-C stops)</source>
+        <translation>learnid-cli：基准试验已完成：请将负载安装到 %1 上，然后按回车键（Ctrl-C 停止）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>stopped (Ctrl-C) before trial %1</source>
+        <translation>在试验 %1 之前已停止（Ctrl-C）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>before trial %1: no answer on standard input, so the payload&apos;s state was not confirmed</source>
+        <translation>试验 %1 之前：标准输入上没有回答，因此负载的状态未被确认</translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
@@ -5291,7 +5306,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：该路径可确定负载 10 个参数中的 %1 个</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+46"/>
         <source>apply failed: %1</source>
         <translation>应用失败：%1</translation>
     </message>
@@ -5301,7 +5316,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：负载已应用到机器人（每个节点的 0x2500，已存储）</translation>
     </message>
     <message>
-        <location line="-133"/>
+        <location line="-143"/>
         <source>learnid-cli: %1 not written: the session ended before its last trial</source>
         <translation>learnid-cli：未写入 %1：会话在最后一次试验之前结束</translation>
     </message>
@@ -5344,7 +5359,7 @@ stdout, and the next plan uses the new estimate.
         <translation>SIGTERM</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+19"/>
         <source>stdin closed</source>
         <translation>stdin 已关闭</translation>
     </message>
@@ -5491,7 +5506,12 @@ stdout, and the next plan uses the new estimate.
         <translation>从未调试过的驱动器：0x2400 为 0（默认情况下关节 j 的驱动器保存机器人标识和 j）。</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+5"/>
+        <source>The arm starts without the scenario&apos;s payload. A line &apos;mount&apos; on stdin mounts it, &apos;unmount&apos; takes it off (as a technician does around a payload session&apos;s baseline trials).</source>
+        <translation>机械臂启动时不带场景的负载。stdin 上的一行 'mount' 安装负载，'unmount' 卸下负载（如技术人员在负载会话的基准试验前后所做）。</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>意外的参数 &apos;%1&apos;</translation>
     </message>
@@ -7283,6 +7303,11 @@ ratio %</source>
         <source>the run&apos;s robot is no longer connected: run again</source>
         <translation>该次运行的机器人已不再连接：请重新运行</translation>
     </message>
+    <message>
+        <location line="+34"/>
+        <source>payload.baselineTrials: the window does not ask for the payload to be taken off and mounted between trials yet: set it to 0, or run the baseline trials with learnid-cli run --robot can</source>
+        <translation>payload.baselineTrials：窗口尚不会在试验之间要求卸下和安装负载：请设为 0，或使用 learnid-cli run --robot can 运行基准试验</translation>
+    </message>
 </context>
 <context>
     <name>learnid::PayloadTrialTableModel</name>
@@ -8751,25 +8776,30 @@ ratio %</source>
         <translation>learnid-robot-sim：正在停止（%1）</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+96"/>
+        <location line="+6"/>
+        <location line="+101"/>
         <source>cannot connect the CAN interface %1 with plugin %2: %3</source>
         <translation>无法用插件 %2 连接 CAN 接口 %1：%3</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location line="-67"/>
         <location line="+17"/>
-        <location line="+75"/>
+        <location line="+80"/>
         <source>learnid-robot-sim: error: %1</source>
         <translation>learnid-robot-sim：错误：%1</translation>
     </message>
     <message>
-        <location line="-85"/>
+        <location line="-90"/>
         <source>learnid-robot-sim: error: cannot create the CAN device %1 with plugin %2: %3</source>
         <translation>learnid-robot-sim：错误：无法用插件 %2 创建 CAN 设备 %1：%3</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+14"/>
+        <source>learnid-robot-sim: error: --payload-off: the scenario has no payload section</source>
+        <translation>learnid-robot-sim：错误：--payload-off：场景没有 payload 部分</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <location line="+58"/>
         <source>learnid-robot-sim: error: --state: %1</source>
         <translation>learnid-robot-sim：错误：--state：%1</translation>
@@ -8793,6 +8823,16 @@ ratio %</source>
         <location line="+6"/>
         <source>the CAN interface %1 with plugin %2 did not connect within %3 s</source>
         <translation>使用插件 %2 的 CAN 接口 %1 未在 %3 s 内连接</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>learnid-robot-sim: unknown command &apos;%1&apos; on stdin (mount, unmount)</source>
+        <translation>learnid-robot-sim：stdin 上的未知命令 '%1'（mount、unmount）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>learnid-robot-sim: %1: the scenario has no payload section</source>
+        <translation>learnid-robot-sim：%1：场景没有 payload 部分</translation>
     </message>
 </context>
 <context>

@@ -8,18 +8,75 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <atomic>
+#include <cerrno>
 #include <csignal>
+#include <poll.h>
+#include <unistd.h>
 
 namespace learnid::cli {
 
 namespace {
 
-// Ctrl-C stops the running trial at its next sample.
+// Ctrl-C stops the running trial at its next sample, or the wait for the technician.
 PayloadSession *g_session = nullptr;
+std::atomic<bool> g_interrupted{false};
 extern "C" void onPayloadInterrupt(int)
 {
+    g_interrupted.store(true); // lock-free atomic stores: async-signal-safe
     if (g_session)
-        g_session->requestCancel(); // an atomic store: async-signal-safe
+        g_session->requestCancel();
+}
+
+// Waits for a line on stdin: true when one came, false at its end or on Ctrl-C. Reads byte by
+// byte (nothing after the line is taken) and wakes every 200 ms to see Ctrl-C.
+bool waitForEnter()
+{
+    while (!g_interrupted.load()) {
+        pollfd in{STDIN_FILENO, POLLIN, 0};
+        const int ready = ::poll(&in, 1, 200);
+        if (ready < 0 && errno != EINTR)
+            return false;
+        if (ready <= 0)
+            continue;
+        char c = 0;
+        if (::read(STDIN_FILENO, &c, 1) != 1)
+            return false;
+        if (c == '\n')
+            return true;
+    }
+    return false;
+}
+
+// On the CAN robot the technician takes the payload off before the baseline trials and mounts
+// it after them (the simulated robot has a second, bare arm for them). Before trial i: asks and
+// waits when the payload has to change; returns why the run cannot go on, or empty.
+QString confirmMounting(const PayloadSession &session, int i, const QString &link, QTextStream &err)
+{
+    const int baselines = session.scenario().payload.baselineTrials;
+    if (baselines == 0 || (i != 0 && i != baselines))
+        return {};
+    err << (i == 0 ? QCoreApplication::translate("learnid-cli",
+                                                 "learnid-cli: take the payload off %1 for the "
+                                                 "%2 baseline trial(s), then press Enter "
+                                                 "(Ctrl-C stops)")
+                         .arg(link)
+                         .arg(baselines)
+                   : QCoreApplication::translate("learnid-cli",
+                                                 "learnid-cli: the baseline trials are done: "
+                                                 "mount the payload on %1, then press Enter "
+                                                 "(Ctrl-C stops)")
+                         .arg(link))
+        << Qt::endl;
+    if (waitForEnter())
+        return {};
+    return g_interrupted.load()
+               ? QCoreApplication::translate("learnid-cli", "stopped (Ctrl-C) before trial %1")
+                     .arg(i)
+               : QCoreApplication::translate("learnid-cli",
+                                             "before trial %1: no answer on standard input, so "
+                                             "the payload's state was not confirmed")
+                     .arg(i);
 }
 
 // The options a payload session does not offer yet, by name; empty when none is set.
@@ -149,11 +206,21 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given,
                 << Qt::endl;
     }
     out << payloadTrialHeader();
+    out.flush();
     g_session = session;
+    g_interrupted.store(false);
     const auto previous = std::signal(SIGINT, onPayloadInterrupt);
     bool completed = true;
+    QString stopped; // why the technician's answer ended the run
+    const bool technicianMounts = robot.kind == RobotRequest::Kind::Can;
     const int trials = scenario.payload.baselineTrials + scenario.iterations;
     for (int i = 0; i < trials && completed; ++i) {
+        if (technicianMounts)
+            stopped = confirmMounting(*session, i, link, err);
+        if (!stopped.isEmpty()) {
+            completed = false;
+            break;
+        }
         const PayloadTrial &t = session->runTrial();
         out << cli::payloadTrialRow(t) << Qt::endl;
         completed = t.usable();
@@ -184,7 +251,8 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given,
         written != ExitOk)
         return written;
     if (!completed)
-        return fail(session->history().back().message, ExitTrialFailed);
+        return fail(stopped.isEmpty() ? session->history().back().message : stopped,
+                    ExitTrialFailed);
     return ExitOk;
 }
 

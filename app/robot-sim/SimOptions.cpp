@@ -148,8 +148,15 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
         QCoreApplication::translate("learnid-robot-sim",
                                     "Drives that were never commissioned: 0x2400 is 0 (by default "
                                     "joint j's drive holds the robot's identity and j)."));
+    const QCommandLineOption payloadOff(
+        QStringLiteral("payload-off"),
+        QCoreApplication::translate("learnid-robot-sim",
+                                    "The arm starts without the scenario's payload. A line "
+                                    "'mount' on stdin mounts it, 'unmount' takes it off (as a "
+                                    "technician does around a payload session's baseline "
+                                    "trials)."));
     parser.addOptions({help, version, plugin, interface, nodes, scenario, state, drop, silent, emcy,
-                       refuse, setPointTimeout, uncommissioned});
+                       refuse, setPointTimeout, uncommissioned, payloadOff});
     cl.usage = parser.helpText();
 
     if (!parser.parse(arguments)) {
@@ -223,6 +230,7 @@ SimCommandLine parseSimCommandLine(const QStringList &arguments)
         error = parseRefusal(parser.value(refuse), &o.faults);
     o.scenarioPath = parser.value(scenario);
     o.uncommissioned = parser.isSet(uncommissioned);
+    o.payloadOff = parser.isSet(payloadOff);
     o.statePath = parser.value(state);
     if (!error.isEmpty()) {
         cl.error = error;

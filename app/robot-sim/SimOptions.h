@@ -24,7 +24,9 @@ struct SimOptions
     QString scenarioPath; ///< empty: the paper scenario
     QString statePath;    ///< empty: no state file
     CanSimFaults faults;
-    bool uncommissioned = false;  ///< the drives' joint identity 0x2400 is 0
+    bool uncommissioned = false; ///< the drives' joint identity 0x2400 is 0
+    /// The arm starts without the scenario's payload; "mount" on stdin mounts it.
+    bool payloadOff = false;
     int setPointTimeoutSyncs = 0; ///< 0: 3 SYNC periods, at least 50 ms (can/CanTimeouts.h)
 };
 

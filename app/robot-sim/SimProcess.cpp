@@ -44,6 +44,7 @@ int SimProcess::run()
         m_err << tr("learnid-robot-sim: stopping (%1)").arg(reason) << Qt::endl;
         finish(ExitOk);
     });
+    connect(&stop, &StopRequests::lineReceived, this, &SimProcess::command);
     if (!m_device->connectDevice()) {
         finish(ExitFailure,
                tr("cannot connect the CAN interface %1 with plugin %2: %3")
@@ -98,6 +99,11 @@ int SimProcess::setUp()
         m_simulator = std::make_unique<CanArmSimulator>(m_link.get(), settings, m_options.faults);
     } catch (const Error &e) {
         m_err << tr("learnid-robot-sim: error: %1").arg(e.message()) << Qt::endl;
+        return ExitUsage;
+    }
+    if (m_options.payloadOff && !m_simulator->setPayloadMounted(false)) {
+        m_err << tr("learnid-robot-sim: error: --payload-off: the scenario has no payload section")
+              << Qt::endl;
         return ExitUsage;
     }
     if (!m_options.statePath.isEmpty()) {
@@ -178,6 +184,23 @@ void SimProcess::finish(int code, const QString &error)
     // Queued: finish() may run before the loop has started.
     QMetaObject::invokeMethod(
         &m_loop, [this, code] { m_loop.exit(code); }, Qt::QueuedConnection);
+}
+
+void SimProcess::command(const QString &line)
+{
+    // A technician's hands on the arm: the payload mounted or taken off between trials.
+    const bool mount = line == QLatin1String("mount");
+    if (!mount && line != QLatin1String("unmount")) {
+        m_err << tr("learnid-robot-sim: unknown command '%1' on stdin (mount, unmount)").arg(line)
+              << Qt::endl;
+        return;
+    }
+    if (!m_simulator || !m_simulator->setPayloadMounted(mount)) {
+        m_err << tr("learnid-robot-sim: %1: the scenario has no payload section").arg(line)
+              << Qt::endl;
+        return;
+    }
+    m_out << (mount ? "payload mounted" : "payload off") << Qt::endl;
 }
 
 } // namespace learnid::robotsim

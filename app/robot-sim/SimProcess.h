@@ -39,6 +39,8 @@ private:
     void onDeviceError(QCanBusDevice::CanBusError error);
     void onConnectTimeout();
     void writeState();
+    /// A line on stdin: "mount" or "unmount" the payload (--payload-off).
+    void command(const QString &line);
     void finish(int code, const QString &error = {});
 
     SimOptions m_options;

@@ -72,8 +72,17 @@ void StopRequests::readStdin()
 {
     char buffer[256];
     const ssize_t n = ::read(STDIN_FILENO, buffer, sizeof buffer);
-    if (n > 0)
-        return; // input is ignored; only its end matters
+    if (n > 0) {
+        m_stdinBuffer.append(buffer, n);
+        for (qsizetype end = m_stdinBuffer.indexOf('\n'); end >= 0;
+             end = m_stdinBuffer.indexOf('\n')) {
+            const QString line = QString::fromUtf8(m_stdinBuffer.left(end)).trimmed();
+            m_stdinBuffer.remove(0, end + 1);
+            if (!line.isEmpty())
+                emit lineReceived(line);
+        }
+        return;
+    }
     m_stdinNotifier->setEnabled(false);
     emit stopRequested(QCoreApplication::translate("learnid-robot-sim", "stdin closed"));
 }

@@ -66,6 +66,9 @@ CanArmSimulator::CanArmSimulator(CanLink *link, const CanArmSettings &settings,
     m_arm = std::make_unique<ArmSimulation<>>(settings.model, settings.trueParameters, measurement,
                                               settings.controller.samplePeriod);
     m_arm->reset(settings.initialPose);
+    m_withPayload = settings.trueParameters;
+    if (settings.bareParameters.size() == settings.trueParameters.size())
+        m_bare = settings.bareParameters;
     std::seed_seq seq{quint64(measurement.seed), quint64(0xC4A5)};
     m_dropRng.seed(seq);
 
@@ -171,6 +174,14 @@ void CanArmSimulator::silence()
     for (DriveNode *node : std::as_const(m_nodes))
         node->setSilent(true);
     emit silenced();
+}
+
+bool CanArmSimulator::setPayloadMounted(bool mounted)
+{
+    if (!hasPayload())
+        return false;
+    m_arm->setTrueParameters(mounted ? m_withPayload : m_bare);
+    return true;
 }
 
 } // namespace learnid

@@ -22,6 +22,9 @@ struct CanArmSettings
 {
     std::shared_ptr<const RobotModel> model;
     Eigen::VectorXd trueParameters; ///< phi of the simulated arm (m)
+    /// phi of the same arm without the payload it carries (a scenario's payload section), for
+    /// setPayloadMounted(); empty: it carries none.
+    Eigen::VectorXd bareParameters;
     MeasurementOptions measurement; ///< encoderCounts 0 means 2^24 increments on the bus
     ControllerSettings controller;  ///< default gains; samplePeriod is the SYNC period
     Eigen::VectorXd torqueLimits;   ///< default 0x2300 [N m] (n)
@@ -77,6 +80,11 @@ public:
     qint64 syncCount() const { return m_syncCount; }
     quint8 syncCounter() const { return m_sync.counter(); }
 
+    /// Mounts the payload (trueParameters) or takes it off (bareParameters), with the arm at
+    /// rest between trials; false when the arm carries no payload.
+    bool setPayloadMounted(bool mounted);
+    bool hasPayload() const { return m_bare.size() > 0; }
+
     qint64 framesSent() const { return m_framesSent; }
     bool isSilent() const { return m_silent; }
 
@@ -99,6 +107,7 @@ private:
     std::mt19937_64 m_dropRng;
     std::uniform_real_distribution<double> m_uniform{0.0, 1.0};
     Eigen::VectorXd m_qMeasured, m_tau, m_tauMeasured, m_limits;
+    Eigen::VectorXd m_withPayload, m_bare; ///< the arm with and without its payload
     qint64 m_syncCount = 0;
     qint64 m_framesSent = 0;
     bool m_silent = false;

@@ -36,6 +36,8 @@ CanArmSettings canArmSettings(const Scenario &given, std::shared_ptr<const Robot
     // The arm carries the payload of a scenario's payload section from the start (there is no
     // one to take it off between trials).
     s.trueParameters = simulatedTrueParameters(scenario, *model);
+    if (scenario.payload.enabled)
+        s.bareParameters = scenario.simulation.trueParameters; // for the baseline trials
     s.model = std::move(model);
     s.measurement.encoderCounts = scenario.simulation.encoderCounts;
     s.measurement.torqueNoise = scenario.simulation.torqueNoise;

@@ -73,6 +73,20 @@ public:
     int dof() const { return int(m_q.size()); }
     const RobotModel &model() const { return *m_model; }
     const Eigen::VectorXd &trueParameters() const { return m_phi; }
+    /// Another arm from now on (a payload mounted or taken off, between trials): its true
+    /// parameters; the arm stays where it is, at rest (realistic joints settle again there).
+    void setTrueParameters(const Eigen::VectorXd &truePhi)
+    {
+        m_phi = truePhi;
+        m_qd.setZero();
+        if (m_plant) {
+            const Eigen::VectorXd encoders = m_plant->encoderAngles();
+            m_plant = std::make_unique<RealisticPlant>(m_model, m_phi, m_options.realism,
+                                                       samplePeriod(), m_substeps);
+            m_plant->reset(encoders);
+            syncFromPlant();
+        }
+    }
     const MeasurementOptions &options() const { return m_options; }
     double samplePeriod() const { return m_h * m_substeps; }
 

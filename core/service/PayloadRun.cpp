@@ -49,11 +49,6 @@ PayloadRunSession makeSimulatedPayloadSession(const Scenario &given)
 PayloadRunSession makeCanPayloadSession(const Scenario &given, const RobotRequest &request)
 {
     const auto [scenario, model] = payloadScenario(given);
-    if (scenario.payload.baselineTrials > 0) {
-        throw Error(Text::tr("payload.baselineTrials: baseline trials are not offered on the CAN "
-                             "robot yet (the payload would have to come off for them and be "
-                             "mounted before the next trial); set it to 0"));
-    }
     PayloadRunSession run;
     run.model = std::dynamic_pointer_cast<const ChainModel>(model);
     RobotConnection connection = makeRobot(request, scenario, model);

@@ -36,10 +36,10 @@ struct PayloadRunSession
 PayloadRunSession makeSimulatedPayloadSession(const Scenario &given);
 
 /// The session of scenario `given` on the CAN robot of `request` (makeRobot(): connected here;
-/// when it cannot be reached, no session and connectError says why). The robot carries the
-/// payload from its first trial on: payload.baselineTrials is refused (a baseline needs the
-/// payload taken off, and mounted before the next trial). Throws Error naming the key as
-/// makeSimulatedPayloadSession() does.
+/// when it cannot be reached, no session and connectError says why). Its baseline trials
+/// (payload.baselineTrials) run on the same robot: the caller has the technician take the
+/// payload off before them and mount it after them (PayloadSession::nextTrialIsBaseline()).
+/// Throws Error naming the key as makeSimulatedPayloadSession() does.
 PayloadRunSession makeCanPayloadSession(const Scenario &given, const RobotRequest &request);
 
 /// What the path lets the trials see before any motion (PayloadSession::observability()), and

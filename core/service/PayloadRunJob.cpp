@@ -122,6 +122,11 @@ void PayloadRunJob::runInThread(const Scenario &scenario, const RobotRequest &ro
     std::shared_ptr<const PayloadRunResult> result;
     QString error;
     try {
+        if (robot.kind == RobotRequest::Kind::Can && scenario.payload.baselineTrials > 0) {
+            throw Error(tr("payload.baselineTrials: the window does not ask for the payload to be "
+                           "taken off and mounted between trials yet: set it to 0, or run the "
+                           "baseline trials with learnid-cli run --robot can"));
+        }
         auto made = std::make_shared<PayloadRunSession>(
             robot.kind == RobotRequest::Kind::Can ? makeCanPayloadSession(scenario, robot)
                                                   : makeSimulatedPayloadSession(scenario));

@@ -2,8 +2,8 @@
 // learnid-robot-sim's seven drives move the Panda carrying the scenario's payload (1.5 kg 5 cm off
 // the flange axis, simulation.payload), learnid-cli learns it through the bus in the learning
 // loop, the arm's model held fixed, applies it to the drives (0x2500, read back and stored) and
-// exports it. Baseline trials, which need the payload taken off, are refused on the CAN robot
-// before anything is sent.
+// exports it. Baseline trials: the technician takes the payload off and mounts it when asked
+// (learnid-robot-sim --payload-off and its "mount" command), or the run ends before any motion.
 #include "../session/PayloadScenarios.h"
 #include "../support/CanE2eBus.h"
 #include "../support/RobotSimProcess.h"
@@ -15,6 +15,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -106,23 +107,102 @@ private slots:
         }
     }
 
-    void baselineTrials_refusedOnTheCanRobotBeforeTheBus()
+    void baselineTrialOnCan_theTechnicianTakesThePayloadOffAndMountsIt()
+    {
+        // The arm's model 10 % off the real arm (seed 8: without a baseline the Panda's mass
+        // comes out 14 % off, learnid-bench-payload --arm-error 0.1): a baseline trial without
+        // the payload first, then the payload mounted, as a technician would.
+        Scenario s = test::pandaWithPayload();
+        s.controller.samplePeriod = 0.004;
+        s.simulation.inertiaPerturbation = 0.1;
+        s.simulation.seed = 8;
+        s.payload.baselineTrials = 1;
+        const QString file = m_dir.filePath(QStringLiteral("baseline.json"));
+        writeScenarioFile(file, s);
+        const quint16 port = test::canE2ePort();
+        QVERIFY(port != 0);
+        test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+        QVERIFY(robot.start(test::canE2eInterface(port),
+                            {QStringLiteral("--scenario"), file, QStringLiteral("--nodes"), kNodes,
+                             QStringLiteral("--payload-off")}));
+        QProcess cli;
+        cli.setWorkingDirectory(m_dir.path());
+        cli.start(
+            QStringLiteral(LEARNID_CLI_PATH),
+            QStringList{QStringLiteral("run"), QStringLiteral("--robot"), QStringLiteral("can")} +
+                test::canE2eBusOptions(port) +
+                QStringList{QStringLiteral("--nodes"), kNodes, QStringLiteral("--scenario"), file,
+                            QStringLiteral("--can-sync-timeout"), QStringLiteral("200")});
+        QVERIFY(cli.waitForStarted());
+        QString err;
+        const auto waitForErr = [&cli, &err](const QString &text) {
+            QElapsedTimer clock;
+            clock.start();
+            while (!err.contains(text) && clock.elapsed() < 120000) {
+                cli.waitForReadyRead(200);
+                err += QString::fromUtf8(cli.readAllStandardError());
+            }
+            return err.contains(text);
+        };
+        // The payload is off already (--payload-off): the technician confirms.
+        QVERIFY2(waitForErr(QStringLiteral("take the payload off panda_link7 for the 1 baseline "
+                                           "trial(s), then press Enter")),
+                 qPrintable(err));
+        cli.write("\n");
+        QVERIFY2(waitForErr(QStringLiteral("the baseline trials are done: mount the payload on "
+                                           "panda_link7, then press Enter")),
+                 qPrintable(err));
+        robot.write("mount\n");
+        QVERIFY(robot.waitForLine(QByteArrayLiteral("payload mounted"), 10000));
+        cli.write("\n");
+        QVERIFY(cli.waitForFinished(240000));
+        err += QString::fromUtf8(cli.readAllStandardError());
+        const QString out = QString::fromUtf8(cli.readAllStandardOutput());
+        QVERIFY2(cli.exitCode() == 0, qPrintable(err + robot.stderrText()));
+        qInfo("%s", qPrintable(out));
+        QVERIFY(out.contains(QStringLiteral("baseline: the same path without the payload")));
+        const QList<test::PayloadRow> rows = test::payloadTrialRows(out);
+        QCOMPARE(rows.size(), 3);
+        // The baseline takes the arm's error out: the mass within 1 % (14 % off without it).
+        // The centre of mass comes out about 3 mm off on the bus with a baseline (77.2 to
+        // 77.4 mm for cz in three runs, true arm or 10 % off), where the simulated robot gives
+        // 0.3 to 1.1 mm: not explained yet (docs/payload.md, "Not yet"); held within 5 mm here.
+        const test::PayloadRow &last = rows.back();
+        QVERIFY2(std::abs(last.mass - 1.5) < 0.015, qPrintable(QString::number(last.mass)));
+        QVERIFY2((last.comMm - Eigen::Vector3d(50, 0, 80)).norm() < 5.0,
+                 qPrintable(QString::number(last.comMm.z())));
+    }
+
+    void noAnswerFromTheTechnician_endsTheRunBeforeAnyMotion()
     {
         Scenario s = test::pandaWithPayload();
         s.controller.samplePeriod = 0.004;
         s.payload.baselineTrials = 1;
-        const QString file = m_dir.filePath(QStringLiteral("baseline.json"));
+        const QString file = m_dir.filePath(QStringLiteral("no-answer.json"));
         writeScenarioFile(file, s);
-        // Nobody listens on this port: the refusal comes before any connection.
-        const test::ToolRun run = runCli(
+        const quint16 port = test::canE2ePort();
+        test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+        QVERIFY(robot.start(test::canE2eInterface(port),
+                            {QStringLiteral("--scenario"), file, QStringLiteral("--nodes"), kNodes,
+                             QStringLiteral("--payload-off")}));
+        // The tool's stdin closed: nobody answers.
+        QProcess cli;
+        cli.setWorkingDirectory(m_dir.path());
+        cli.start(
+            QStringLiteral(LEARNID_CLI_PATH),
             QStringList{QStringLiteral("run"), QStringLiteral("--robot"), QStringLiteral("can")} +
-            test::canE2eBusOptions(test::freeLoopbackPort()) +
-            QStringList{QStringLiteral("--nodes"), kNodes, QStringLiteral("--scenario"), file});
-        QCOMPARE(run.exitCode, 2);
-        QVERIFY2(run.err.contains(QStringLiteral("payload.baselineTrials: baseline trials are not "
-                                                 "offered on the CAN robot")),
-                 qPrintable(run.err));
-        QVERIFY(!run.err.contains(QStringLiteral("connected")));
+                test::canE2eBusOptions(port) +
+                QStringList{QStringLiteral("--nodes"), kNodes, QStringLiteral("--scenario"), file,
+                            QStringLiteral("--trial-csv"), QStringLiteral("no-answer")});
+        QVERIFY(cli.waitForStarted());
+        cli.closeWriteChannel();
+        QVERIFY(cli.waitForFinished(60000));
+        const QString err = QString::fromUtf8(cli.readAllStandardError());
+        QCOMPARE(cli.exitCode(), 3);
+        QVERIFY2(err.contains(QStringLiteral("before trial 0: no answer on standard input")),
+                 qPrintable(err));
+        QVERIFY(test::payloadTrialRows(QString::fromUtf8(cli.readAllStandardOutput())).isEmpty());
+        QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("no-answer"))));
     }
 
 private:

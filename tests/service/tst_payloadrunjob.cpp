@@ -112,6 +112,29 @@ private slots:
                  session->history().back().fit->estimate.parameters);
     }
 
+    void baselineTrialsOnTheCanRobot_refusedBeforeConnecting()
+    {
+        // The window does not ask for the payload to be taken off and mounted between trials:
+        // it refuses, naming the key, before any connection (nobody listens on this bus).
+        Scenario s = test::pandaWithPayload();
+        s.payload.baselineTrials = 1;
+        RobotRequest can;
+        can.kind = RobotRequest::Kind::Can;
+        can.can.plugin = QStringLiteral("virtualcan");
+        can.can.interface = QStringLiteral("tcp://127.0.0.1:1/can0");
+        can.can.nodes = {1, 2, 3, 4, 5, 6, 7};
+        PayloadRunJob job;
+        QSignalSpy failed(&job, &PayloadRunJob::failed);
+        QSignalSpy started(&job, &PayloadRunJob::trialStarted);
+        QVERIFY(job.start(s, can));
+        QVERIFY(failed.wait(5000));
+        QVERIFY2(failed.constFirst().at(0).toString().startsWith(
+                     QStringLiteral("payload.baselineTrials: the window does not ask")),
+                 qPrintable(failed.constFirst().at(0).toString()));
+        QVERIFY(started.isEmpty());
+        QVERIFY(!job.applyResult()); // no result to apply
+    }
+
     void stop_endsTheRunningTrialAndLeavesNoResult()
     {
         Scenario s = test::pandaWithPayload();

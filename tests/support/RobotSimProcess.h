@@ -66,6 +66,23 @@ public:
 
     QString stderrText() { return QString::fromUtf8(m_process.readAllStandardError()); }
 
+    /// Writes to the simulator's stdin (its commands, e.g. "mount\n" with --payload-off).
+    void write(const QByteArray &data) { m_process.write(data); }
+    /// Waits (at most ms) for a line on its stdout.
+    bool waitForLine(const QByteArray &line, int ms)
+    {
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < ms) {
+            while (m_process.canReadLine()) {
+                if (m_process.readLine().trimmed() == line)
+                    return true;
+            }
+            m_process.waitForReadyRead(100);
+        }
+        return false;
+    }
+
 private:
     QString m_program;
     QProcess m_process;
