@@ -4158,7 +4158,7 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+131"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+135"/>
         <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+9"/>
@@ -4639,7 +4639,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+79"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+80"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4704,7 +4704,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-80"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-81"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli: %1 geschrieben</translation>
@@ -5276,7 +5276,7 @@ neue Schätzung.
         <translation>Referenz: dieselbe Bahn ohne die Nutzlast</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-66"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-69"/>
         <source>learnid-cli: take the payload off %1 for the %2 baseline trial(s), then press Enter (Ctrl-C stops)</source>
         <translation>learnid-cli: nehmen Sie die Nutzlast für die %2 Referenzversuch(e) von %1 ab und drücken Sie dann die Eingabetaste (Strg-C bricht ab)</translation>
     </message>
@@ -5296,7 +5296,7 @@ neue Schätzung.
         <translation>vor Versuch %1: keine Antwort auf der Standardeingabe, der Zustand der Nutzlast wurde also nicht bestätigt</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+46"/>
         <source>cannot create the folder %1</source>
         <translation>der Ordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -5307,11 +5307,16 @@ neue Schätzung.
     </message>
     <message>
         <location line="+7"/>
-        <source>%1: not available with a payload section yet (the payload is learned on the simulated or the CAN robot; --export and --trial-csv write its files)</source>
-        <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten oder am CAN-Roboter gelernt; --export und --trial-csv schreiben ihre Dateien)</translation>
+        <source>%1: not available with a payload section yet (the payload is learned on the simulated or the CAN robot; --export, --report and --trial-csv write its files)</source>
+        <translation>%1: mit einem payload-Abschnitt noch nicht verfügbar (die Nutzlast wird am simulierten oder am CAN-Roboter gelernt; --export, --report und --trial-csv schreiben ihre Dateien)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+98"/>
+        <source>trial %1 ended the run</source>
+        <translation>Versuch %1 hat den Lauf beendet</translation>
+    </message>
+    <message>
+        <location line="-75"/>
         <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
         <translation>learnid-cli: %1, die Nutzlast an %2 in %3 Versuchen gelernt; das Modell des Arms bleibt fest (robot.initialParameters)</translation>
     </message>
@@ -5336,7 +5341,7 @@ neue Schätzung.
         <translation>learnid-cli: Nutzlast auf den Roboter übertragen (0x2500 auf jedem Knoten, gespeichert)</translation>
     </message>
     <message>
-        <location line="-143"/>
+        <location line="-146"/>
         <source>learnid-cli: %1 not written: the session ended before its last trial</source>
         <translation>learnid-cli: %1 nicht geschrieben: die Sitzung endete vor ihrem letzten Versuch</translation>
     </message>
@@ -5528,7 +5533,7 @@ neue Schätzung.
     <message>
         <location line="+5"/>
         <source>The arm starts without the scenario&apos;s payload. A line &apos;mount&apos; on stdin mounts it, &apos;unmount&apos; takes it off (as a technician does around a payload session&apos;s baseline trials).</source>
-        <translation>Der Arm startet ohne die Nutzlast des Szenarios. Eine Zeile 'mount' auf stdin montiert sie, 'unmount' nimmt sie ab (wie ein Techniker um die Referenzversuche einer Nutzlastsitzung).</translation>
+        <translation>Der Arm startet ohne die Nutzlast des Szenarios. Eine Zeile &apos;mount&apos; auf stdin montiert sie, &apos;unmount&apos; nimmt sie ab (wie ein Techniker um die Referenzversuche einer Nutzlastsitzung).</translation>
     </message>
     <message>
         <location line="+22"/>
@@ -8853,7 +8858,7 @@ Verhältnis %</translation>
     <message>
         <location line="+33"/>
         <source>learnid-robot-sim: unknown command &apos;%1&apos; on stdin (mount, unmount)</source>
-        <translation>learnid-robot-sim: unbekannter Befehl '%1' auf stdin (mount, unmount)</translation>
+        <translation>learnid-robot-sim: unbekannter Befehl &apos;%1&apos; auf stdin (mount, unmount)</translation>
     </message>
     <message>
         <location line="+5"/>

@@ -4144,7 +4144,7 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+131"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+135"/>
         <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+9"/>
@@ -4623,7 +4623,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     <message>
         <location filename="../app/cli/IdentifyCommand.cpp" line="-94"/>
         <location line="+93"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+79"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+80"/>
         <location filename="../app/cli/ResultTable.cpp" line="+7"/>
         <location filename="../app/cli/RunCommand.cpp" line="-112"/>
         <source>learnid-cli: %1</source>
@@ -4688,7 +4688,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
     </message>
     <message>
         <location filename="../app/cli/LoopCommands.cpp" line="-101"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-80"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-81"/>
         <location filename="../app/cli/RunCommand.cpp" line="+42"/>
         <source>learnid-cli: wrote %1</source>
         <translation>learnid-cli：已写入 %1</translation>
@@ -5256,7 +5256,7 @@ stdout, and the next plan uses the new estimate.
         <translation>基线：不带负载的同一路径</translation>
     </message>
     <message>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="-66"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="-69"/>
         <source>learnid-cli: take the payload off %1 for the %2 baseline trial(s), then press Enter (Ctrl-C stops)</source>
         <translation>learnid-cli：请为 %2 次基准试验从 %1 上卸下负载，然后按回车键（Ctrl-C 停止）</translation>
     </message>
@@ -5276,7 +5276,7 @@ stdout, and the next plan uses the new estimate.
         <translation>试验 %1 之前：标准输入上没有回答，因此负载的状态未被确认</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+46"/>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
@@ -5287,11 +5287,16 @@ stdout, and the next plan uses the new estimate.
     </message>
     <message>
         <location line="+7"/>
-        <source>%1: not available with a payload section yet (the payload is learned on the simulated or the CAN robot; --export and --trial-csv write its files)</source>
-        <translation>%1：带有 payload 部分时尚不可用（负载在仿真机器人或 CAN 机器人上学习；--export 和 --trial-csv 写出其文件）</translation>
+        <source>%1: not available with a payload section yet (the payload is learned on the simulated or the CAN robot; --export, --report and --trial-csv write its files)</source>
+        <translation>%1：带有 payload 部分时尚不可用（负载在仿真机器人或 CAN 机器人上学习；--export、--report 和 --trial-csv 写出其文件）</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+98"/>
+        <source>trial %1 ended the run</source>
+        <translation>试验 %1 结束了运行</translation>
+    </message>
+    <message>
+        <location line="-75"/>
         <source>learnid-cli: %1, the payload on %2 learned in %3 trials; the arm&apos;s model is held fixed (robot.initialParameters)</source>
         <translation>learnid-cli：%1，在 %3 次试验中学习 %2 上的负载；机械臂模型保持固定（robot.initialParameters）</translation>
     </message>
@@ -5316,7 +5321,7 @@ stdout, and the next plan uses the new estimate.
         <translation>learnid-cli：负载已应用到机器人（每个节点的 0x2500，已存储）</translation>
     </message>
     <message>
-        <location line="-143"/>
+        <location line="-146"/>
         <source>learnid-cli: %1 not written: the session ended before its last trial</source>
         <translation>learnid-cli：未写入 %1：会话在最后一次试验之前结束</translation>
     </message>
@@ -5508,7 +5513,7 @@ stdout, and the next plan uses the new estimate.
     <message>
         <location line="+5"/>
         <source>The arm starts without the scenario&apos;s payload. A line &apos;mount&apos; on stdin mounts it, &apos;unmount&apos; takes it off (as a technician does around a payload session&apos;s baseline trials).</source>
-        <translation>机械臂启动时不带场景的负载。stdin 上的一行 'mount' 安装负载，'unmount' 卸下负载（如技术人员在负载会话的基准试验前后所做）。</translation>
+        <translation>机械臂启动时不带场景的负载。stdin 上的一行 &apos;mount&apos; 安装负载，&apos;unmount&apos; 卸下负载（如技术人员在负载会话的基准试验前后所做）。</translation>
     </message>
     <message>
         <location line="+22"/>
@@ -8827,7 +8832,7 @@ ratio %</source>
     <message>
         <location line="+33"/>
         <source>learnid-robot-sim: unknown command &apos;%1&apos; on stdin (mount, unmount)</source>
-        <translation>learnid-robot-sim：stdin 上的未知命令 '%1'（mount、unmount）</translation>
+        <translation>learnid-robot-sim：stdin 上的未知命令 &apos;%1&apos;（mount、unmount）</translation>
     </message>
     <message>
         <location line="+5"/>

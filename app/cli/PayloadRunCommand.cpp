@@ -3,6 +3,7 @@
 #include "cli/PayloadCommand.h"
 #include "cli/PayloadTrialTable.h"
 #include "model/Error.h"
+#include "service/PayloadReport.h"
 #include "service/PayloadRunExport.h"
 #include "service/SessionExport.h"
 
@@ -84,20 +85,21 @@ QString unsupportedOption(const RunOptions &o)
 {
     if (o.robot != QLatin1String("sim") && o.robot != QLatin1String("can"))
         return QStringLiteral("--robot %1").arg(o.robot);
-    const std::pair<bool, const char *> options[] = {{!o.reportPath.isEmpty(), "--report"},
-                                                     {o.consistent, "--consistent"}};
+    const std::pair<bool, const char *> options[] = {{o.consistent, "--consistent"}};
     for (const auto &[set, name] : options)
         if (set)
             return QString::fromLatin1(name);
     return {};
 }
 
-// The outputs asked for, all or none: --trial-csv (every trial that moved, also of a run that
-// ended early) and --export (the parameter file and its DCF fragment, of a completed run only:
-// the payload of a run that ended early is not the one a complete run learns).
+// The outputs asked for, all or none: --report and --trial-csv (every trial that moved), also
+// of a run that ended early (endedEarly: why), and --export (the parameter file and its DCF
+// fragment, of a completed run only: the payload of a run that ended early is not the one a
+// complete run learns).
 ExitCode writePayloadOutputs(const RunOptions &options, const PayloadRunSession &run,
-                             bool completed, QTextStream &err)
+                             const QString &endedEarly, QTextStream &err)
 {
+    const bool completed = endedEarly.isEmpty();
     if (!completed && !options.exportPath.isEmpty())
         err << QCoreApplication::translate(
                    "learnid-cli",
@@ -106,6 +108,8 @@ ExitCode writePayloadOutputs(const RunOptions &options, const PayloadRunSession 
             << Qt::endl;
     try {
         QList<QPair<QString, QByteArray>> files;
+        if (!options.reportPath.isEmpty())
+            files.append({options.reportPath, payloadReportJson(*run.session, endedEarly)});
         if (!options.trialCsvDir.isEmpty())
             files += payloadTrialCsvFiles(run.session->history(), options.trialCsvDir);
         if (completed && !options.exportPath.isEmpty()) {
@@ -157,7 +161,8 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given,
         return fail(QCoreApplication::translate(
                         "learnid-cli",
                         "%1: not available with a payload section yet (the payload is learned on "
-                        "the simulated or the CAN robot; --export and --trial-csv write its files)")
+                        "the simulated or the CAN robot; --export, --report and --trial-csv write "
+                        "its files)")
                         .arg(option),
                     ExitBadInput);
     }
@@ -247,12 +252,18 @@ ExitCode runPayloadCommand(const RunOptions &options, const Scenario &given,
                                                "(0x2500 on every node, stored)")
                 << Qt::endl;
     }
-    if (const ExitCode written = writePayloadOutputs(options, run, completed, err);
+    QString endedEarly; // why the run ended before its last trial; empty: it did not
+    if (!completed) {
+        endedEarly = stopped.isEmpty() ? session->history().back().message : stopped;
+        if (endedEarly.isEmpty())
+            endedEarly = QCoreApplication::translate("learnid-cli", "trial %1 ended the run")
+                             .arg(session->history().back().index);
+    }
+    if (const ExitCode written = writePayloadOutputs(options, run, endedEarly, err);
         written != ExitOk)
         return written;
     if (!completed)
-        return fail(stopped.isEmpty() ? session->history().back().message : stopped,
-                    ExitTrialFailed);
+        return fail(endedEarly, ExitTrialFailed);
     return ExitOk;
 }
 

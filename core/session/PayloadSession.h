@@ -80,6 +80,7 @@ public:
     const PayloadModel &payloadModel() const { return *m_payload; }
     const PayloadPrior &prior() const { return m_prior; }
     Robot &robot() { return *m_robot; }
+    const Robot &robot() const { return *m_robot; }
     const std::vector<PayloadTrial> &history() const { return m_history; }
     /// The payload the next trial's feedforward uses: the prior, then the latest fit's.
     const InertialParameters &currentPayload() const { return m_current; }

@@ -12,6 +12,9 @@
 #include "io/ScenarioFile.h"
 #include "io/TrialCsv.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -22,6 +25,13 @@ namespace {
 const QString cli = QStringLiteral(LEARNID_CLI_PATH);
 
 using Row = test::PayloadRow;
+
+QJsonObject readJson(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? QJsonDocument::fromJson(f.readAll()).object()
+                                       : QJsonObject();
+}
 
 QList<Row> trialRows(const QString &out)
 {
@@ -44,7 +54,8 @@ private slots:
         const test::ToolRun run =
             test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
                                 QStringLiteral("--export"), exported, QStringLiteral("--trial-csv"),
-                                dir.filePath(QStringLiteral("csv"))});
+                                dir.filePath(QStringLiteral("csv")), QStringLiteral("--report"),
+                                dir.filePath(QStringLiteral("report.json"))});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         qInfo("%s", qPrintable(run.out));
         const QList<Row> rows = trialRows(run.out);
@@ -103,6 +114,26 @@ private slots:
         QCOMPARE(payloadNodes, (QList<int>{1, 2, 3, 4, 5, 6, 7}));
         QVERIFY(lastPayloadWrite >= 0 && lastPayloadWrite < firstStore);
 
+        // The report: each trial as its row printed it, the result as the file holds it.
+        const QJsonObject report = readJson(dir.filePath(QStringLiteral("report.json")));
+        QCOMPARE(report.value(QStringLiteral("schema")).toString(),
+                 QStringLiteral("learnid-payload-report/1"));
+        QVERIFY(!report.contains(QStringLiteral("endedEarly")));
+        const QJsonArray trials = report.value(QStringLiteral("trials")).toArray();
+        QCOMPARE(trials.size(), rows.size());
+        for (int i = 0; i < rows.size(); ++i) {
+            const QJsonObject t = trials[i].toObject();
+            QCOMPARE(t.value(QStringLiteral("kind")).toString(), QStringLiteral("payload"));
+            QVERIFY(t.value(QStringLiteral("learned")).toBool());
+            QVERIFY(std::abs(t.value(QStringLiteral("mass")).toDouble() - rows[i].mass) < 5e-5);
+        }
+        const QJsonObject result = report.value(QStringLiteral("result")).toObject();
+        QCOMPARE(result.value(QStringLiteral("learnedTrial")).toInt(), 2);
+        QCOMPARE(result.value(QStringLiteral("payload"))[QStringLiteral("mass")].toDouble(),
+                 p.mass);
+        QCOMPARE(result.value(QStringLiteral("payload"))[QStringLiteral("link")].toString(),
+                 p.link);
+
         // Each trial's samples: the tracking error the row printed is the CSV's largest.
         for (const Row &r : rows) {
             const TrialRecordCsv csv = readTrialCsvFile(dir.filePath(
@@ -128,7 +159,8 @@ private slots:
         const test::ToolRun run =
             test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
                                 QStringLiteral("--export"), exported, QStringLiteral("--trial-csv"),
-                                dir.filePath(QStringLiteral("csv"))});
+                                dir.filePath(QStringLiteral("csv")), QStringLiteral("--report"),
+                                dir.filePath(QStringLiteral("report.json"))});
         QCOMPARE(run.exitCode, 3);
         QVERIFY2(run.err.contains(QStringLiteral("p.json not written: the session ended before "
                                                  "its last trial")),
@@ -143,6 +175,17 @@ private slots:
         const TrialRecordCsv csv = readTrialCsvFile(trial0);
         QVERIFY(csv.samples() > 0);
         QVERIFY(csv.trackingErrorDeg.cwiseAbs().maxCoeff() >= s.maxTrackingErrorDeg);
+        // The report says why the run ended, and that nothing was learned.
+        const QJsonObject report = readJson(dir.filePath(QStringLiteral("report.json")));
+        QVERIFY2(report.value(QStringLiteral("endedEarly"))
+                     .toString()
+                     .contains(QStringLiteral("too short")),
+                 qPrintable(report.value(QStringLiteral("endedEarly")).toString()));
+        QVERIFY(report.value(QStringLiteral("result")).isNull());
+        const QJsonArray trials = report.value(QStringLiteral("trials")).toArray();
+        QCOMPARE(trials.size(), 1);
+        QCOMPARE(trials[0][QStringLiteral("learned")].toBool(), false);
+        QCOMPARE(trials[0][QStringLiteral("samples")].toInt(), csv.samples());
     }
 
     void wrongArm_aBaselineTrialFirst_andThePayloadStillLearned()
@@ -181,11 +224,12 @@ private slots:
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("panda-payload.json"));
         writeScenarioFile(file, test::pandaWithPayload());
-        const test::ToolRun run = test::runTool(
-            cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
-                  QStringLiteral("--report"), dir.filePath(QStringLiteral("r.json"))});
+        const test::ToolRun run =
+            test::runTool(cli, {QStringLiteral("run"), QStringLiteral("--scenario"), file,
+                                QStringLiteral("--consistent"), QStringLiteral("--report"),
+                                dir.filePath(QStringLiteral("r.json"))});
         QCOMPARE(run.exitCode, 2);
-        QVERIFY2(run.err.contains(QStringLiteral("--report: not available with a payload")),
+        QVERIFY2(run.err.contains(QStringLiteral("--consistent: not available with a payload")),
                  qPrintable(run.err));
         QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("r.json"))));
         // --apply writes to drives: the simulated robot carries its payload already.
