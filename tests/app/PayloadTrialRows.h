@@ -12,7 +12,7 @@ namespace learnid::test {
 struct PayloadRow
 {
     int trial = -1;
-    double maxError = 0.0, mass = 0.0;
+    double maxError = 0.0, rmsError = 0.0, mass = 0.0;
     Eigen::Vector3d comMm = Eigen::Vector3d::Zero();
     QString identified;
 };
@@ -26,7 +26,8 @@ inline QList<PayloadRow> payloadTrialRows(const QString &out)
     QList<PayloadRow> rows;
     for (auto it = row.globalMatch(out); it.hasNext();) {
         const auto m = it.next();
-        rows.append({m.captured(1).toInt(), m.captured(2).toDouble(), m.captured(4).toDouble(),
+        rows.append({m.captured(1).toInt(), m.captured(2).toDouble(), m.captured(3).toDouble(),
+                     m.captured(4).toDouble(),
                      Eigen::Vector3d(m.captured(5).toDouble(), m.captured(6).toDouble(),
                                      m.captured(7).toDouble()),
                      m.captured(9).trimmed()});

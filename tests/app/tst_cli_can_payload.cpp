@@ -64,7 +64,8 @@ private slots:
         QVERIFY(run.err.contains(QStringLiteral("the payload on panda_link7")));
 
         // Trial 0 ran with the prior (1.2 kg on the flange's axis); each fit finds the payload
-        // the drives carry, within 1 % and 3 mm, and the feedforward with it tracks far better.
+        // the drives carry, within 1 % and 3 mm, and the feedforward with it tracks far better
+        // (RMS 0.74 deg, then 0.03 deg).
         const QList<test::PayloadRow> rows = test::payloadTrialRows(run.out);
         QCOMPARE(rows.size(), 3);
         for (const test::PayloadRow &r : rows) {
@@ -73,7 +74,10 @@ private slots:
             QVERIFY2((r.comMm - Eigen::Vector3d(50, 0, 80)).norm() < 3.0,
                      qPrintable(QString::number(r.comMm.z())));
         }
-        QVERIFY(rows[0].maxError > 10.0 * rows[2].maxError);
+        // RMS, not max: one late set-point on a loaded machine can kick a single sample.
+        QVERIFY2(rows[0].rmsError > 5.0 * rows[2].rmsError,
+                 qPrintable(
+                     QStringLiteral("%1 against %2").arg(rows[0].rmsError).arg(rows[2].rmsError)));
 
         const ParameterFileContent content = readParameterFile(exported);
         QVERIFY(content.payload.has_value());
