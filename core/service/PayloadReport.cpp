@@ -4,28 +4,15 @@
 #include "io/ParameterFilePayload.h"
 #include "service/PayloadExport.h"
 #include "service/PayloadRun.h"
+#include "service/SessionReport.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <cmath>
 
 namespace learnid {
 
 namespace {
-
-QJsonValue finiteOrNull(double v)
-{
-    return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
-}
-
-QJsonArray numbers(const Eigen::VectorXd &v)
-{
-    QJsonArray a;
-    for (Eigen::Index i = 0; i < v.size(); ++i)
-        a.append(finiteOrNull(v[i]));
-    return a;
-}
 
 QJsonObject trialEntry(const PayloadTrial &t)
 {
@@ -37,14 +24,14 @@ QJsonObject trialEntry(const PayloadTrial &t)
                   {QStringLiteral("samples"), t.record.samples()},
                   {QStringLiteral("learned"), t.learned()},
                   {QStringLiteral("learnedFromPartialTrial"), t.partial},
-                  {QStringLiteral("maxTrackingErrorDeg"), numbers(t.maxTrackingErrorDeg)},
-                  {QStringLiteral("rmsTrackingErrorDeg"), numbers(t.rmsTrackingErrorDeg)}};
+                  {QStringLiteral("maxTrackingErrorDeg"), reportNumbers(t.maxTrackingErrorDeg)},
+                  {QStringLiteral("rmsTrackingErrorDeg"), reportNumbers(t.rmsTrackingErrorDeg)}};
     if (t.learned()) {
         QJsonArray identified;
         for (const bool v : row.identified)
             identified.append(v);
         o.insert(QStringLiteral("mass"), row.mass);
-        o.insert(QStringLiteral("com"), numbers(row.com));
+        o.insert(QStringLiteral("com"), reportNumbers(row.com));
         o.insert(QStringLiteral("identified"), identified);
         o.insert(QStringLiteral("updateCpuMs"), row.updateMs);
     }
@@ -80,7 +67,7 @@ QByteArray payloadReportJson(const PayloadSession &session, const QString &ended
         {QStringLiteral("model"), s.model},
         {QStringLiteral("link"), link},
         {QStringLiteral("prior"), QJsonObject{{QStringLiteral("mass"), prior.mass},
-                                              {QStringLiteral("com"), numbers(prior.com)}}},
+                                              {QStringLiteral("com"), reportNumbers(prior.com)}}},
         {QStringLiteral("bound"), prior.bound.describe()},
         {QStringLiteral("baselineTrials"), s.payload.baselineTrials},
         {QStringLiteral("payloadTrials"), s.iterations},

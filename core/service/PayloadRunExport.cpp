@@ -13,7 +13,6 @@
 #include "service/StandardExport.h"
 
 #include <QCoreApplication>
-#include <QDir>
 
 namespace learnid {
 
@@ -90,13 +89,10 @@ QList<QPair<QString, QByteArray>> payloadRunExportFiles(const PayloadRunResult &
 QList<QPair<QString, QByteArray>> payloadTrialCsvFiles(const std::vector<PayloadTrial> &history,
                                                        const QString &folder)
 {
-    const QDir dir(folder);
     QList<QPair<QString, QByteArray>> files;
     for (const PayloadTrial &t : history) {
-        if (t.record.samples() == 0)
-            continue; // refused before the motion: nothing measured
-        const QString name = QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
-        files.append({dir.filePath(name), trialCsv(t.plan(), t.record)});
+        if (t.record.samples() > 0) // refused before the motion: nothing measured
+            files.append({trialCsvPath(folder, t.index), trialCsv(t.plan(), t.record)});
     }
     return files;
 }

@@ -21,15 +21,18 @@ namespace learnid {
 QList<QPair<QString, QByteArray>> trialCsvFiles(const QVector<TrialResult> &history,
                                                 const QString &folder)
 {
-    const QDir dir(folder);
     QList<QPair<QString, QByteArray>> files;
     for (const TrialResult &t : history) {
-        if (t.status() == TrialStatus::Refused)
-            continue;
-        const QString name = QStringLiteral("trial-%1.csv").arg(t.index, 3, 10, QLatin1Char('0'));
-        files.append({dir.filePath(name), trialCsv(t.plan(), t.record)});
+        if (t.status() != TrialStatus::Refused)
+            files.append({trialCsvPath(folder, t.index), trialCsv(t.plan(), t.record)});
     }
     return files;
+}
+
+QString trialCsvPath(const QString &folder, int index)
+{
+    return QDir(folder).filePath(
+        QStringLiteral("trial-%1.csv").arg(index, 3, 10, QLatin1Char('0')));
 }
 
 QString dcfPathFor(const QString &parameterPath)

@@ -54,6 +54,9 @@ QStringList writeExport(const CommissioningSession &session, const ExportRequest
 QList<QPair<QString, QByteArray>> trialCsvFiles(const QVector<TrialResult> &history,
                                                 const QString &folder);
 
+/// Where trial `index`'s CSV goes in folder: trial-NNN.csv.
+QString trialCsvPath(const QString &folder, int index);
+
 /// Where the DCF fragment of a parameter file goes: beside it, same base name, .dcf.
 QString dcfPathFor(const QString &parameterPath);
 

@@ -16,20 +16,20 @@
 
 namespace learnid {
 
-namespace {
-
-QJsonValue finiteOrNull(double v)
+QJsonValue reportNumber(double v)
 {
     return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
 }
 
-QJsonArray toArray(const Eigen::VectorXd &v)
+QJsonArray reportNumbers(const Eigen::VectorXd &v)
 {
     QJsonArray a;
     for (Eigen::Index i = 0; i < v.size(); ++i)
-        a.append(finiteOrNull(v[i]));
+        a.append(reportNumber(v[i]));
     return a;
 }
+
+namespace {
 
 // The final estimate's standard parameters (completed by the CAD model made real bodies) with
 // what the path determined (EstimateConsistency::standardDetermined; null when not known).
@@ -46,7 +46,7 @@ QJsonArray standardReport(const CommissioningSession &session, const ChainModel 
         QJsonObject o;
         o.insert(QStringLiteral("name"), info.at(i).name);
         o.insert(QStringLiteral("unit"), info.at(i).unit);
-        o.insert(QStringLiteral("value"), finiteOrNull(pi[i]));
+        o.insert(QStringLiteral("value"), reportNumber(pi[i]));
         o.insert(QStringLiteral("determined"), origin == ParameterOrigin::Unknown
                                                    ? QJsonValue(QJsonValue::Null)
                                                    : QJsonValue(determined[size_t(i)]));
@@ -73,7 +73,7 @@ QByteArray sessionReportJson(const CommissioningSession &session, const QString 
         names.append(p.name);
     root.insert(QStringLiteral("parameters"), names);
     if (const auto truth = session.robot().trueParameters())
-        root.insert(QStringLiteral("truth"), toArray(*truth));
+        root.insert(QStringLiteral("truth"), reportNumbers(*truth));
 
     QJsonArray trials;
     const QVector<Eigen::VectorXd> &estimates = session.estimates();
@@ -83,17 +83,17 @@ QByteArray sessionReportJson(const CommissioningSession &session, const QString 
             break; // the final estimate has not been run; it is in "final"
         QJsonObject o;
         o.insert(QStringLiteral("index"), k);
-        o.insert(QStringLiteral("phi"), toArray(estimates.at(k)));
+        o.insert(QStringLiteral("phi"), reportNumbers(estimates.at(k)));
         o.insert(QStringLiteral("status"), trialStatusName(t->status()));
-        o.insert(QStringLiteral("maxTrackingErrorDeg"), toArray(t->maxTrackingErrorDeg));
-        o.insert(QStringLiteral("rmsTrackingErrorDeg"), toArray(t->rmsTrackingErrorDeg));
-        o.insert(QStringLiteral("durationS"), finiteOrNull(t->check.rule.duration));
+        o.insert(QStringLiteral("maxTrackingErrorDeg"), reportNumbers(t->maxTrackingErrorDeg));
+        o.insert(QStringLiteral("rmsTrackingErrorDeg"), reportNumbers(t->rmsTrackingErrorDeg));
+        o.insert(QStringLiteral("durationS"), reportNumber(t->check.rule.duration));
         o.insert(QStringLiteral("samples"), t->record.samples());
         if (t->update) {
-            o.insert(QStringLiteral("condition"), finiteOrNull(t->update->condition));
+            o.insert(QStringLiteral("condition"), reportNumber(t->update->condition));
             o.insert(QStringLiteral("rank"), t->update->rank);
-            o.insert(QStringLiteral("residualRms"), toArray(t->update->residualRms));
-            o.insert(QStringLiteral("phiStd"), toArray(t->update->phiStd));
+            o.insert(QStringLiteral("residualRms"), reportNumbers(t->update->residualRms));
+            o.insert(QStringLiteral("phiStd"), reportNumbers(t->update->phiStd));
         }
         if (!t->message.isEmpty())
             o.insert(QStringLiteral("message"), t->message);
@@ -113,7 +113,7 @@ QByteArray sessionReportJson(const CommissioningSession &session, const QString 
     if (!endedEarly.isEmpty())
         root.insert(QStringLiteral("endedEarly"), endedEarly);
     QJsonObject finalEstimate;
-    finalEstimate.insert(QStringLiteral("phi"), toArray(session.currentEstimate()));
+    finalEstimate.insert(QStringLiteral("phi"), reportNumbers(session.currentEstimate()));
     finalEstimate.insert(QStringLiteral("learningSteps"), int(estimates.size()) - 1);
     if (const auto *chain = dynamic_cast<const ChainModel *>(&session.model()))
         finalEstimate.insert(QStringLiteral("standardParameters"), standardReport(session, *chain));

@@ -4,8 +4,15 @@
 #include "session/CommissioningSession.h"
 
 #include <QByteArray>
+#include <QJsonArray>
+#include <QJsonValue>
 
 namespace learnid {
+
+/// A figure of a report (JSON): non-finite as null, as JSON has no NaN or inf.
+QJsonValue reportNumber(double value);
+/// Figures of a report, each as reportNumber().
+QJsonArray reportNumbers(const Eigen::VectorXd &values);
 
 /// The session report (docs/file-formats.md): robot, estimator, truth (simulated robot only),
 /// one entry per trial run with estimate k (phi = estimate after k learnings, the trial's

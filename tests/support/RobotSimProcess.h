@@ -3,10 +3,15 @@
 // learnid-robot-sim as a second process that is stopped when the test ends.
 
 #include <QElapsedTimer>
+#include <QFile>
 #include <QHostAddress>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QStringList>
 #include <QTcpServer>
+#include <cmath>
 
 namespace learnid::test {
 
@@ -16,6 +21,41 @@ inline quint16 freeLoopbackPort()
 {
     QTcpServer probe;
     return probe.listen(QHostAddress::LocalHost, 0) ? probe.serverPort() : 0;
+}
+
+/// What learnid-robot-sim's --state file says of the payload every node stored (0x2500),
+/// against `joints` nodes holding `expected` on `joint`: empty when each does to within
+/// relative x |value| + absolute (0, 0: exactly), else the first difference in words.
+inline QString storedPayloadMismatch(const QString &statePath, int joints, int joint,
+                                     const QList<double> &expected, double relative,
+                                     double absolute)
+{
+    QFile f(statePath);
+    if (!f.open(QIODevice::ReadOnly))
+        return QStringLiteral("%1 cannot be read").arg(statePath);
+    const QJsonObject nodes =
+        QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("nodes")).toObject();
+    if (nodes.size() != joints)
+        return QStringLiteral("%1 nodes, not %2").arg(nodes.size()).arg(joints);
+    for (const QString &node : nodes.keys()) {
+        const QJsonObject stored =
+            nodes.value(node).toObject().value(QStringLiteral("storedPayload")).toObject();
+        if (stored.value(QStringLiteral("joint")).toInt() != joint)
+            return QStringLiteral("node %1 stored no payload on joint %2").arg(node).arg(joint);
+        const QJsonArray values = stored.value(QStringLiteral("parameters")).toArray();
+        if (values.size() != expected.size())
+            return QStringLiteral("node %1 stored %2 values").arg(node).arg(values.size());
+        for (int i = 0; i < values.size(); ++i) {
+            if (std::abs(values[i].toDouble() - expected[i]) >
+                relative * std::abs(expected[i]) + absolute)
+                return QStringLiteral("node %1, 0x2500:%2: %3 against %4")
+                    .arg(node)
+                    .arg(i + 2)
+                    .arg(values[i].toDouble())
+                    .arg(expected[i]);
+        }
+    }
+    return {};
 }
 
 /// learnid-robot-sim on a virtualcan interface, terminated (then killed) on destruction.

@@ -3,6 +3,8 @@
 #include "ui/MainWindow.h"
 
 #include <QAbstractButton>
+#include <QComboBox>
+#include <QLineEdit>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -38,6 +40,16 @@ struct WindowFixture
             return false;
         QTest::mouseClick(b, Qt::LeftButton);
         return true;
+    }
+
+    /// The robot panel set to a CAN robot on plugin/interface with the node list.
+    void chooseCan(const QString &plugin, const QString &interface, const QString &nodes) const
+    {
+        auto *kind = window->findChild<QComboBox *>(QStringLiteral("robotKind"));
+        kind->setCurrentIndex(kind->findData(1));
+        window->findChild<QComboBox *>(QStringLiteral("canPlugin"))->setCurrentText(plugin);
+        window->findChild<QLineEdit *>(QStringLiteral("canInterface"))->setText(interface);
+        window->findChild<QLineEdit *>(QStringLiteral("canNodes"))->setText(nodes);
     }
 };
 

@@ -23,24 +23,13 @@ class TestCanRobotChoice : public QObject
 {
     Q_OBJECT
 
-private:
-    static void chooseCan(WindowFixture &f, const QString &plugin, const QString &interface,
-                          const QString &nodes)
-    {
-        auto *kind = f.window->findChild<QComboBox *>(QStringLiteral("robotKind"));
-        kind->setCurrentIndex(kind->findData(1));
-        f.window->findChild<QComboBox *>(QStringLiteral("canPlugin"))->setCurrentText(plugin);
-        f.window->findChild<QLineEdit *>(QStringLiteral("canInterface"))->setText(interface);
-        f.window->findChild<QLineEdit *>(QStringLiteral("canNodes"))->setText(nodes);
-    }
-
 private slots:
     void badNodeList_isRefusedBeforeConnecting()
     {
         WindowFixture f;
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
-        chooseCan(f, QStringLiteral("virtualcan"), QStringLiteral("tcp://127.0.0.1:1/can0"),
-                  QStringLiteral("1,200"));
+        f.chooseCan(QStringLiteral("virtualcan"), QStringLiteral("tcp://127.0.0.1:1/can0"),
+                    QStringLiteral("1,200"));
         QVERIFY(f.click("connectButton"));
         QVERIFY(!f.window->controller()->isOpen());
         const QString text = f.window->messageBar()->text();
@@ -50,8 +39,8 @@ private slots:
     void syncTimeout_isTheLongestGapOrTheDefaultOfThePeriod()
     {
         WindowFixture f;
-        chooseCan(f, QStringLiteral("virtualcan"), QStringLiteral("tcp://127.0.0.1:1/can0"),
-                  QStringLiteral("1,2"));
+        f.chooseCan(QStringLiteral("virtualcan"), QStringLiteral("tcp://127.0.0.1:1/can0"),
+                    QStringLiteral("1,2"));
         auto *timeout = f.window->findChild<QSpinBox *>(QStringLiteral("canSyncTimeout"));
         const auto *panel = f.window->findChild<RobotPanel *>();
         QVERIFY(timeout && panel);
@@ -80,7 +69,7 @@ private slots:
         WindowFixture f;
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         SessionController *c = f.window->controller();
-        chooseCan(f, QStringLiteral("virtualcan"), interface, QStringLiteral("1,2"));
+        f.chooseCan(QStringLiteral("virtualcan"), interface, QStringLiteral("1,2"));
         f.window->findChild<QSpinBox *>(QStringLiteral("canSyncTimeout"))->setValue(200);
         auto *commission = f.window->findChild<QCheckBox *>(QStringLiteral("canCommission"));
         const auto *panel = f.window->findChild<RobotPanel *>();
@@ -123,8 +112,8 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         SessionController *c = f.window->controller();
         QSignalSpy failed(c, &SessionController::openFailed);
-        chooseCan(f, QStringLiteral("socketcan"), QStringLiteral("learnidnoif0"),
-                  QStringLiteral("1,2"));
+        f.chooseCan(QStringLiteral("socketcan"), QStringLiteral("learnidnoif0"),
+                    QStringLiteral("1,2"));
         QVERIFY(f.click("connectButton"));
         QVERIFY(failed.wait(10000));
         const QString message = failed.constFirst().at(0).toString();
@@ -145,7 +134,7 @@ private slots:
         WindowFixture f;
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         SessionController *c = f.window->controller();
-        chooseCan(f, QStringLiteral("virtualcan"), interface, QStringLiteral("1,2"));
+        f.chooseCan(QStringLiteral("virtualcan"), interface, QStringLiteral("1,2"));
         // As tst_can_e2e: CI shares 2 cores between two processes on a 2 ms SYNC clock.
         f.window->findChild<QSpinBox *>(QStringLiteral("canSyncTimeout"))->setValue(200);
         QVERIFY(f.click("connectButton"));
