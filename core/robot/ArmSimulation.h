@@ -22,9 +22,13 @@ struct MeasurementOptions
 {
     qint64 encoderCounts = 0; ///< counts per revolution; 0 = ideal angle measurement
     double torqueNoise = 0.0; ///< standard deviation of torque noise as a fraction of the limit
-    quint64 seed = 1;         ///< noise seed; trial i of a robot uses (seed, i)
-    int substeps = 10;        ///< RK4 steps per sample period (0.2 ms at Ts = 2 ms)
-    JointRealism realism;     ///< off by default: the rigid-body model of the true parameters
+    quint64 seed = 1;         ///< noise seed; trial i of a robot uses (seed, firstNoiseStream + i)
+    /// The first noise stream of a robot's trials: two robots of one seed that stand for one
+    /// machine (with and without its payload) draw disjoint streams, as its runs on one day do.
+    /// std::seed_seq keeps 32 bits of each word: streams are below 2^32.
+    quint64 firstNoiseStream = 0;
+    int substeps = 10;    ///< RK4 steps per sample period (0.2 ms at Ts = 2 ms)
+    JointRealism realism; ///< off by default: the rigid-body model of the true parameters
 };
 
 /// The physics of a simulated arm, one sample period at a time: the state q [rad], qd [rad/s]

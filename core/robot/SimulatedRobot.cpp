@@ -35,7 +35,7 @@ QString SimulatedRobot::description() const
 TrialRecord SimulatedRobot::runTrial(const TrialPlan &plan, const TrialMonitor &monitor)
 {
     clearUpperVectorState();
-    const quint64 noiseStream = m_trialCount++;
+    const quint64 noiseStream = m_options.firstNoiseStream + m_trialCount++;
     if (m_model->dof() == 2)
         return simulate<2>(plan, monitor, noiseStream);
     return simulate<Eigen::Dynamic>(plan, monitor, noiseStream);

@@ -90,10 +90,14 @@ Scenario withRobotDefaults(const Scenario &scenario, const RobotModel &model)
     return s;
 }
 
-std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
-                                                   std::shared_ptr<const RobotModel> model)
+namespace {
+
+std::shared_ptr<SimulatedRobot> simulatedRobot(const Scenario &scenario,
+                                               std::shared_ptr<const RobotModel> model,
+                                               quint64 firstNoiseStream)
 {
     MeasurementOptions measurement;
+    measurement.firstNoiseStream = firstNoiseStream;
     measurement.encoderCounts = scenario.simulation.encoderCounts;
     measurement.torqueNoise = scenario.simulation.torqueNoise;
     measurement.seed = scenario.simulation.seed;
@@ -101,6 +105,14 @@ std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
     measurement.realism = simulatedJoints(scenario, *model);
     Eigen::VectorXd truePhi = simulatedTrueParameters(scenario, *model);
     return std::make_shared<SimulatedRobot>(std::move(model), std::move(truePhi), measurement);
+}
+
+} // namespace
+
+std::shared_ptr<SimulatedRobot> makeSimulatedRobot(const Scenario &scenario,
+                                                   std::shared_ptr<const RobotModel> model)
+{
+    return simulatedRobot(scenario, std::move(model), 0);
 }
 
 Eigen::VectorXd simulatedTrueParameters(const Scenario &scenario, const RobotModel &model)
@@ -122,7 +134,9 @@ std::shared_ptr<SimulatedRobot> makeSimulatedBareRobot(const Scenario &scenario,
     Scenario bare = scenario;
     bare.simulation.payload = SimulatedPayload();
     bare.payload.enabled = false;
-    return makeSimulatedRobot(bare, std::move(model));
+    // One machine with its payload off: its own noise, not a replay of the loaded trials' (the
+    // same streams would cancel the payload trials' noise against the baseline's).
+    return simulatedRobot(bare, std::move(model), quint64(1) << 30);
 }
 
 } // namespace learnid

@@ -1,11 +1,13 @@
 #pragma once
 // Test support: the trial rows `learnid-cli run` prints for a payload session (index, max error,
-// RMS error, mass, (cx, cy, cz) in mm, update CPU, identified).
+// RMS error, mass, (cx, cy, cz) in mm, update CPU, identified), and the rows of the payload's
+// table that `run` and `identify --payload` print after them (value, estimate, std. error).
 
 #include <Eigen/Core>
 #include <QList>
 #include <QRegularExpression>
 #include <QString>
+#include <cmath>
 
 namespace learnid::test {
 
@@ -33,6 +35,34 @@ inline QList<PayloadRow> payloadTrialRows(const QString &out)
                      m.captured(9).trimmed()});
     }
     return rows;
+}
+
+// The estimate on the table row whose name starts the line ("m [kg]", "cx [m]").
+inline double tableValue(const QString &out, const QString &name)
+{
+    const QRegularExpression row(
+        QStringLiteral("^%1 \\[[^\\]]*\\]\\s+(\\S+)").arg(QRegularExpression::escape(name)),
+        QRegularExpression::MultilineOption);
+    const QRegularExpressionMatch m = row.match(out);
+    return m.hasMatch() ? m.captured(1).toDouble() : NAN;
+}
+
+// The standard error on that row (the column after the estimate).
+inline double tableStdError(const QString &out, const QString &name)
+{
+    const QRegularExpression row(
+        QStringLiteral("^%1 \\[[^\\]]*\\]\\s+\\S+\\s+(\\S+)").arg(QRegularExpression::escape(name)),
+        QRegularExpression::MultilineOption);
+    const QRegularExpressionMatch m = row.match(out);
+    return m.hasMatch() ? m.captured(1).toDouble() : NAN;
+}
+
+inline QString tableRow(const QString &out, const QString &name)
+{
+    for (const QString &line : out.split(QLatin1Char('\n')))
+        if (line.startsWith(name + QStringLiteral(" [")))
+            return line;
+    return {};
 }
 
 } // namespace learnid::test

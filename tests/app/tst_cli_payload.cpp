@@ -9,6 +9,7 @@
 #include "../support/SharedData.h"
 #include "../support/ToolRun.h"
 #include "PayloadLogs.h"
+#include "PayloadTrialRows.h"
 #include "model/ChainPerturbation.h"
 #include "model/Payload.h"
 
@@ -21,39 +22,14 @@
 
 using namespace learnid;
 using learnid::test::payloadLog;
+using learnid::test::tableRow;
+using learnid::test::tableStdError;
+using learnid::test::tableValue;
 using learnid::test::truePayload;
 
 namespace {
 
 const QString cli = QStringLiteral(LEARNID_CLI_PATH);
-
-// The estimate on the table row whose name starts the line ("m [kg]", "cx [m]").
-double tableValue(const QString &out, const QString &name)
-{
-    const QRegularExpression row(
-        QStringLiteral("^%1 \\[[^\\]]*\\]\\s+(\\S+)").arg(QRegularExpression::escape(name)),
-        QRegularExpression::MultilineOption);
-    const QRegularExpressionMatch m = row.match(out);
-    return m.hasMatch() ? m.captured(1).toDouble() : NAN;
-}
-
-// The standard error on that row (the column after the estimate).
-double tableStdError(const QString &out, const QString &name)
-{
-    const QRegularExpression row(
-        QStringLiteral("^%1 \\[[^\\]]*\\]\\s+\\S+\\s+(\\S+)").arg(QRegularExpression::escape(name)),
-        QRegularExpression::MultilineOption);
-    const QRegularExpressionMatch m = row.match(out);
-    return m.hasMatch() ? m.captured(1).toDouble() : NAN;
-}
-
-QString tableRow(const QString &out, const QString &name)
-{
-    for (const QString &line : out.split(QLatin1Char('\n')))
-        if (line.startsWith(name + QStringLiteral(" [")))
-            return line;
-    return {};
-}
 
 } // namespace
 

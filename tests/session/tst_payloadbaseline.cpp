@@ -11,6 +11,7 @@
 #include "model/ModelFactory.h"
 #include "session/PayloadSession.h"
 #include "session/ScenarioRobot.h"
+#include "session/TrialPlanner.h"
 
 #include <QTest>
 
@@ -197,6 +198,31 @@ private slots:
             message.startsWith(QStringLiteral("other.csv does not follow the path of with.csv: "
                                               "their joint angles differ by 2.16 deg RMS")),
             qPrintable(message));
+    }
+
+    void bareRobot_drawsNoiseOfItsOwn()
+    {
+        // One machine with and without a payload of zero mass: the same motion, and torque noise
+        // of 1 % of each joint's limit drawn independently in each, so the measured torques
+        // differ by sqrt(2) of that, RMS. A baseline that replayed the payload trials' noise
+        // would cancel it against them and promise more than a real machine gives.
+        Scenario s = test::pandaWithPayload();
+        s.simulation.payload = SimulatedPayload();
+        s.payload.enabled = false;
+        const auto model = makeRobotModel(s.model, s.urdf);
+        s = withRobotDefaults(s, *model);
+        const TrialPlan plan = TrialPlanner(s, model).plan(s.initialParameters);
+        const TrialRecord loaded = makeSimulatedRobot(s, model)->runTrial(plan, {});
+        const TrialRecord bare = makeSimulatedBareRobot(s, model)->runTrial(plan, {});
+        QVERIFY(loaded.completed() && bare.completed());
+        QCOMPARE(bare.q, loaded.q); // torque noise is measured, not applied
+        for (int j = 0; j < model->dof(); ++j) {
+            const double sigma = s.simulation.torqueNoise * s.torqueLimits[j];
+            const double rms = std::sqrt((bare.tau.row(j) - loaded.tau.row(j)).squaredNorm() /
+                                         double(bare.tau.cols()));
+            QVERIFY2(std::abs(rms / (std::sqrt(2.0) * sigma) - 1.0) < 0.1,
+                     qPrintable(QStringLiteral("joint %1: %2 N m").arg(j + 1).arg(rms)));
+        }
     }
 
     void session_withABaselineTrial_learnsThePayloadOfAWrongArm()
