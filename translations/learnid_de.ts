@@ -1777,7 +1777,7 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
-        <location filename="../core/can/ManufacturerObjects.cpp" line="+119"/>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+121"/>
         <source>No node to write the parameters to.</source>
         <translation>Kein Knoten, in den die Parameter geschrieben werden können.</translation>
     </message>
@@ -1944,12 +1944,17 @@
 <context>
     <name>ParameterFile</name>
     <message>
-        <location filename="../core/io/ParameterDcf.cpp" line="+32"/>
+        <location filename="../core/io/ParameterDcf.cpp" line="+35"/>
         <source>does not fit a REAL32 object entry, got %1</source>
         <translation>passt nicht in einen REAL32-Objekteintrag, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+109"/>
+        <source>the payload object is written in part</source>
+        <translation>das Nutzlast-Objekt wird nur teilweise geschrieben</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>DCF fragment: joint %1 does not exist; the robot has %2 joints</source>
         <translation>DCF-Fragment: Gelenk %1 existiert nicht; der Roboter hat %2 Gelenke</translation>
     </message>
@@ -2354,7 +2359,7 @@
 <context>
     <name>PayloadObjects</name>
     <message>
-        <location filename="../core/can/PayloadObjects.cpp" line="+25"/>
+        <location filename="../core/can/PayloadObjects.cpp" line="+66"/>
         <source>The payload&apos;s joint %1 is not one of the robot&apos;s joints 1 to %2.</source>
         <translation>Das Gelenk %1 der Nutzlast ist keines der Robotergelenke 1 bis %2.</translation>
     </message>
@@ -2499,7 +2504,7 @@
 <context>
     <name>PayloadRunExport</name>
     <message numerus="yes">
-        <location filename="../core/service/PayloadRunExport.cpp" line="+39"/>
+        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
         <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
         <translation>
             <numerusform>%1 mit einer Nutzlast an %2, gelernt in %n Versuch mit festgehaltenem Modell des Arms</numerusform>
@@ -3448,7 +3453,7 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+107"/>
+        <location filename="../core/service/SessionExport.cpp" line="+110"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>nur URDF-Roboter haben ein URDF, das sich exportieren lässt</translation>
     </message>

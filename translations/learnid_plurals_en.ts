@@ -82,7 +82,7 @@
 <context>
     <name>PayloadRunExport</name>
     <message numerus="yes">
-        <location filename="../core/service/PayloadRunExport.cpp" line="+39"/>
+        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
         <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
         <translation>
             <numerusform>%1 with a payload on %2 learned in %n trial with the arm&apos;s model held fixed</numerusform>

@@ -1768,7 +1768,7 @@
 <context>
     <name>ManufacturerObjects</name>
     <message>
-        <location filename="../core/can/ManufacturerObjects.cpp" line="+119"/>
+        <location filename="../core/can/ManufacturerObjects.cpp" line="+121"/>
         <source>No node to write the parameters to.</source>
         <translation>没有可写入参数的节点。</translation>
     </message>
@@ -1935,12 +1935,17 @@
 <context>
     <name>ParameterFile</name>
     <message>
-        <location filename="../core/io/ParameterDcf.cpp" line="+32"/>
+        <location filename="../core/io/ParameterDcf.cpp" line="+35"/>
         <source>does not fit a REAL32 object entry, got %1</source>
         <translation>无法放入 REAL32 对象条目，实际为 %1</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+109"/>
+        <source>the payload object is written in part</source>
+        <translation>负载对象只被部分写入</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>DCF fragment: joint %1 does not exist; the robot has %2 joints</source>
         <translation>DCF 片段：关节 %1 不存在；机器人有 %2 个关节</translation>
     </message>
@@ -2345,7 +2350,7 @@
 <context>
     <name>PayloadObjects</name>
     <message>
-        <location filename="../core/can/PayloadObjects.cpp" line="+25"/>
+        <location filename="../core/can/PayloadObjects.cpp" line="+66"/>
         <source>The payload&apos;s joint %1 is not one of the robot&apos;s joints 1 to %2.</source>
         <translation>负载的关节 %1 不是机器人的关节 1 到 %2 之一。</translation>
     </message>
@@ -2490,7 +2495,7 @@
 <context>
     <name>PayloadRunExport</name>
     <message numerus="yes">
-        <location filename="../core/service/PayloadRunExport.cpp" line="+39"/>
+        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
         <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
         <translation>
             <numerusform>%1，负载位于 %2，在手臂模型保持不变的情况下经 %n 次试验学习</numerusform>
@@ -3435,7 +3440,7 @@
 <context>
     <name>SessionExport</name>
     <message>
-        <location filename="../core/service/SessionExport.cpp" line="+107"/>
+        <location filename="../core/service/SessionExport.cpp" line="+110"/>
         <source>only URDF robots have a URDF to export</source>
         <translation>只有 URDF 机器人才有可导出的 URDF</translation>
     </message>

@@ -1,6 +1,7 @@
 #include "can/ManufacturerObjects.h"
 
 #include "can/JointIdentity.h"
+#include "can/PayloadObjects.h"
 #include "can/SdoAbortCode.h"
 #include "model/Error.h"
 
@@ -26,6 +27,7 @@ int objectCode(quint16 index)
 {
     switch (index) {
     case gains:
+    case payload:
         return 0x9;
     case identifiedParameters:
         return 0x8;

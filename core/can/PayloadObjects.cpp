@@ -4,6 +4,7 @@
 #include "model/Error.h"
 
 #include <QCoreApplication>
+#include <limits>
 
 namespace learnid::objects {
 
@@ -16,8 +17,48 @@ struct Text
 
 const char *const kNames[payloadParameterCount] = {"m",   "m cx", "m cy", "m cz", "Ixx",
                                                    "Ixy", "Iyy",  "Ixz",  "Iyz",  "Izz"};
+const char *const kUnits[payloadParameterCount] = {
+    "kg", "kg m", "kg m", "kg m", "kg m^2", "kg m^2", "kg m^2", "kg m^2", "kg m^2", "kg m^2"};
 
 } // namespace
+
+QList<ObjectDescription> payloadObjectDescriptions()
+{
+    using Access = ObjectDictionary::Access;
+    using canopen::DataType;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    constexpr double highest = payloadHighestSubIndex;
+    // Names are not translated: DCF files are read by machines and drive vendors.
+    QList<ObjectDescription> list = {
+        {payload,
+         0,
+         DataType::Unsigned8,
+         Access::ReadOnly,
+         highest,
+         {highest, true, highest},
+         QStringLiteral("Highest sub-index supported"),
+         {}},
+        {payload,
+         payloadJoint,
+         DataType::Unsigned8,
+         Access::ReadWrite,
+         0,
+         {0, true, 127},
+         QStringLiteral("Payload joint"),
+         {}},
+    };
+    for (int i = 0; i < payloadParameterCount; ++i) {
+        list.append({payload,
+                     quint8(payloadFirstParameter + i),
+                     DataType::Real32,
+                     Access::ReadWrite,
+                     0,
+                     {-inf, true, inf},
+                     QStringLiteral("Payload %1").arg(QLatin1String(kNames[i])),
+                     QLatin1String(kUnits[i])});
+    }
+    return list;
+}
 
 QList<SdoWrite> payloadWrites(const QList<int> &nodes, int joint, const Eigen::VectorXd &body)
 {

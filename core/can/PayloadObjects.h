@@ -1,5 +1,6 @@
 #pragma once
 
+#include "can/ManufacturerObjects.h"
 #include "can/SdoWrite.h"
 
 #include <Eigen/Core>
@@ -19,6 +20,10 @@ constexpr quint8 payloadJoint = 1;
 constexpr quint8 payloadFirstParameter = 2;
 constexpr int payloadParameterCount = 10;
 constexpr quint8 payloadHighestSubIndex = payloadFirstParameter + payloadParameterCount - 1;
+
+/// The payload object's entries, sub 0 to 11, as the simulated drive's dictionary and the DCF
+/// fragment describe them: sub 1 from 0 (no payload) to 127, the parameters any finite REAL32.
+QList<ObjectDescription> payloadObjectDescriptions();
 
 /// The writes of a payload on joint `joint` (1 .. nodes.size()) with parameters `body` (10, in
 /// that joint's body frame) to every node, node after node: 0x2500:01 = joint, then

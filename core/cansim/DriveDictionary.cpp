@@ -136,14 +136,9 @@ void addDriveObjects(ObjectDictionary &od, const DriveNodeSettings &s)
     od.add(jointIdentity, jointIdentityJoint, DataType::Unsigned8, Access::ReadWrite,
            s.commissionedJoint, ObjectDictionary::rangeValidator(DataType::Unsigned8, 0, 127));
     // The payload (0x2500): none until a payload session's apply writes one.
-    od.add(payload, 0, DataType::Unsigned8, Access::ReadOnly, payloadHighestSubIndex);
-    od.add(payload, payloadJoint, DataType::Unsigned8, Access::ReadWrite, 0,
-           ObjectDictionary::rangeValidator(DataType::Unsigned8, 0, 127));
-    for (quint8 sub = payloadFirstParameter; sub <= payloadHighestSubIndex; ++sub) {
-        od.add(payload, sub, DataType::Real32, Access::ReadWrite, 0, [](const QByteArray &raw) {
-            return std::isfinite(canopen::decodeValue(DataType::Real32, raw))
-                       ? quint32(0)
-                       : sdoabort::invalidValue;
+    for (const ObjectDescription &o : payloadObjectDescriptions()) {
+        od.add(o.index, o.subIndex, o.type, o.access, o.defaultValue, [o](const QByteArray &raw) {
+            return writeAbortCode(o, canopen::decodeValue(o.type, raw));
         });
     }
 

@@ -1,17 +1,20 @@
 #include "can/ManufacturerObjects.h"
+#include "can/PayloadObjects.h"
 #include "io/JsonReader.h"
 #include "io/ParameterFile.h"
 #include "model/Error.h"
 
 #include <QCoreApplication>
+#include <QMap>
 #include <cmath>
 #include <limits>
 
 // CiA 306 DCF fragment of the manufacturer objects learnid writes (docs/file-formats.md), one
 // per drive, generated from the same table as the simulated drive's dictionary
 // (objects::manufacturerObjects): 0x2100 the joint's gains (RECORD), 0x2200 the identified
-// parameters with their count in sub 0 (ARRAY). Each drive holds its own joint's gains and the
-// whole parameter vector. 0x2300 (torque limit) is not in a parameter file, so not here.
+// parameters with their count in sub 0 (ARRAY), and 0x2500 the payload (RECORD) when the file's
+// canWrites write one. Each drive holds its own joint's gains and the whole parameter vector.
+// 0x2300 (torque limit) is not in a parameter file, so not here.
 // The text of the fragment is not translated: configuration tools and records compare it.
 
 namespace learnid {
@@ -118,6 +121,34 @@ void writeObject(QByteArray &out, quint16 index, const QString &name, const QLis
     }
 }
 
+// The payload object's entries with the values the file's canWrites send to node (those are
+// payloadWrites(): in the body frame the drive takes, which the file's payload section, about
+// its own link, is not). None when no write goes to 0x2500 on that node.
+QList<Entry> payloadEntries(const ParameterFileContent &content, int node)
+{
+    QMap<quint8, const SdoWrite *> written;
+    for (const SdoWrite &w : content.canWrites)
+        if (w.node == node && w.index == objects::payload)
+            written.insert(w.subIndex, &w);
+    if (written.isEmpty())
+        return {};
+    QList<Entry> entries;
+    for (const objects::ObjectDescription &o : objects::payloadObjectDescriptions()) {
+        const QString name =
+            o.unit.isEmpty() ? o.name : QStringLiteral("%1 [%2]").arg(o.name, o.unit);
+        const SdoWrite *w = written.value(o.subIndex);
+        const QString path = QStringLiteral("canWrites (node %1, 0x2500:%2)")
+                                 .arg(node)
+                                 .arg(o.subIndex, 2, 16, QLatin1Char('0'));
+        if (o.subIndex > 0 && !w)
+            throwAtKey(path, Text::tr("the payload object is written in part"));
+        entries.append(
+            {o, name,
+             w ? valueText(o.type, w->value, path) : valueText(o.type, o.defaultValue, {})});
+    }
+    return entries;
+}
+
 } // namespace
 
 QByteArray parameterDcfFragment(const ParameterFileContent &content, int joint)
@@ -171,20 +202,26 @@ QByteArray parameterDcfFragment(const ParameterFileContent &content, int joint)
             .arg(joint + 1)
             .arg(content.robotModel, content.law,
                  content.created.toUTC().toString(Qt::ISODateWithMs), content.toolVersion);
+    const QList<Entry> payload = payloadEntries(content, nodes.at(joint));
     QByteArray out = comments.toUtf8();
     out += "[DeviceComissioning]\nNodeID=" + QByteArray::number(nodes.at(joint)) + "\n\n";
-    // Without recorded gains the fragment holds the identified parameters alone.
-    if (content.hasController) {
-        out += "[ManufacturerObjects]\nSupportedObjects=2\n";
-        out +=
-            "1=0x" + hex(objects::gains) + "\n2=0x" + hex(objects::identifiedParameters) + "\n\n";
+    // Without recorded gains the fragment holds the identified parameters (and payload) alone.
+    QList<quint16> supported;
+    if (content.hasController)
+        supported << objects::gains;
+    supported << objects::identifiedParameters;
+    if (!payload.isEmpty())
+        supported << objects::payload;
+    out += "[ManufacturerObjects]\nSupportedObjects=" + QByteArray::number(supported.size()) + "\n";
+    for (qsizetype i = 0; i < supported.size(); ++i)
+        out += QByteArray::number(i + 1) + "=0x" + hex(supported[i]) + "\n";
+    out += "\n";
+    if (content.hasController)
         writeObject(out, objects::gains, QStringLiteral("Joint controller gains"), gains);
-    } else {
-        out += "[ManufacturerObjects]\nSupportedObjects=1\n";
-        out += "1=0x" + hex(objects::identifiedParameters) + "\n\n";
-    }
     writeObject(out, objects::identifiedParameters, QStringLiteral("Identified dynamic parameters"),
                 parameters);
+    if (!payload.isEmpty())
+        writeObject(out, objects::payload, QStringLiteral("Payload"), payload);
     return out;
 }
 

@@ -1,6 +1,7 @@
 // The DCF fragment learnid exports against the drive learnid-robot-sim serves: a drive set up
 // from the DCF must be the drive the master talks to (one object table behind both).
 #include "CanSimTestBus.h"
+#include "can/PayloadObjects.h"
 #include "can/SdoAbortCode.h"
 #include "cansim/CanArmSimulator.h"
 #include "cansim/ScenarioCanArm.h"
@@ -27,6 +28,10 @@ ParameterFileContent contentFor(const Scenario &scenario)
     c.law = QStringLiteral("improved");
     c.parameters = makeRobotModel(c.robotModel)->parameters();
     c.values = Eigen::Vector3d(20.25, 5.5, 8.125);
+    // A payload on joint 2, as a payload session's file writes it (0x2500 in the fragment).
+    Eigen::VectorXd body(10);
+    body << 0.5, 0.025, 0.0, 0.01, 1e-3, 0.0, 1e-3, 0.0, 0.0, 5e-4;
+    c.canWrites = objects::payloadWrites(c.nodes(), 2, body);
     return c;
 }
 
@@ -112,7 +117,7 @@ void TestDcfDrive::exportedDcf_describesEachObjectTheDriveAnswers()
                          qPrintable(where + QStringLiteral(" is the last entry in the DCF")));
             }
         }
-        QCOMPARE(entries, 5 + 1 + 3); // 0x2100:00..04, 0x2200:00..03
+        QCOMPARE(entries, 5 + 1 + 3 + 12); // 0x2100:00..04, 0x2200:00..03, 0x2500:00..0B
     }
 }
 

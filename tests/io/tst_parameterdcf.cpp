@@ -1,5 +1,6 @@
 #include "IoTestSupport.h"
 #include "ParameterFileSample.h"
+#include "can/PayloadObjects.h"
 #include "io/ParameterFile.h"
 
 #include <QMap>
@@ -62,6 +63,8 @@ private slots:
     void real32Values_readBackToTheSameFloat();
     void jointOutOfRange_isRejected();
     void valueBeyondReal32_isRejected();
+    void payloadWrites_becomeThePayloadObjectOfEachNode();
+    void payloadWrittenInPart_isRejectedNamingTheEntry();
 };
 
 void TestParameterDcf::jointFragment_holdsGainsAndParametersAsRealObjects()
@@ -170,6 +173,54 @@ void TestParameterDcf::valueBeyondReal32_isRejected()
                          QStringLiteral("parameters[2].value: the drives store it as REAL32, so it "
                                         "must be a finite number of at "
                                         "most 3.40282e+38 in magnitude, got 1e+39"));
+}
+
+// The payload's body as a payload session's file sends it (payloadWrites, joint 2), and the
+// fragment of every node holds it as the drive's 0x2500 RECORD.
+void TestParameterDcf::payloadWrites_becomeThePayloadObjectOfEachNode()
+{
+    ParameterFileContent c = sampleParameterFile();
+    c.jointNodes = {12, 5};
+    Eigen::VectorXd body(10);
+    body << 1.5, 0.075, -0.002, 0.12, 0.0121, 5e-4, 0.0113, -1e-4, 2e-5, 0.003;
+    c.canWrites += objects::payloadWrites(c.nodes(), 2, body);
+    for (int joint = 0; joint < 2; ++joint) {
+        const IniSections ini = parseIni(parameterDcfFragment(c, joint));
+        QCOMPARE(ini.value("ManufacturerObjects").value("SupportedObjects"), QStringLiteral("3"));
+        QCOMPARE(ini.value("ManufacturerObjects").value("3"), QStringLiteral("0x2500"));
+        QCOMPARE(ini.value("2500").value("ObjectType"), QStringLiteral("0x9"));
+        QCOMPARE(ini.value("2500").value("SubNumber"), QStringLiteral("12"));
+        QCOMPARE(ini.value("2500sub0").value("AccessType"), QStringLiteral("ro"));
+        QCOMPARE(ini.value("2500sub0").value("ParameterValue"), QStringLiteral("11"));
+        QCOMPARE(ini.value("2500sub1").value("DataType"), QStringLiteral("0x0005"));
+        QCOMPARE(ini.value("2500sub1").value("ParameterValue"), QStringLiteral("2"));
+        QCOMPARE(ini.value("2500sub1").value("DefaultValue"), QStringLiteral("0"));
+        for (int i = 0; i < 10; ++i) {
+            const QString section =
+                QStringLiteral("2500sub") + QString::number(i + 2, 16).toUpper();
+            QCOMPARE(ini.value(section).value("DataType"), QStringLiteral("0x0008"));
+            QCOMPARE(ini.value(section).value("AccessType"), QStringLiteral("rw"));
+            QCOMPARE(real32(ini, section), float(body[i]));
+        }
+        QCOMPARE(ini.value("2500sub2").value("ParameterName"), QStringLiteral("Payload m [kg]"));
+        QCOMPARE(ini.value("2500sub5").value("ParameterName"),
+                 QStringLiteral("Payload m cz [kg m]"));
+        QCOMPARE(ini.value("2500subB").value("ParameterName"),
+                 QStringLiteral("Payload Izz [kg m^2]"));
+        QVERIFY(!ini.contains("2500subC"));
+    }
+}
+
+void TestParameterDcf::payloadWrittenInPart_isRejectedNamingTheEntry()
+{
+    ParameterFileContent c = sampleParameterFile();
+    QList<SdoWrite> writes = objects::payloadWrites(c.nodes(), 1, Eigen::VectorXd::Ones(10));
+    writes.removeIf([](const SdoWrite &w) { return w.node == 2 && w.subIndex == 5; });
+    c.canWrites += writes;
+    QVERIFY(parseIni(parameterDcfFragment(c, 0)).contains("2500subB"));
+    LEARNID_VERIFY_ERROR(parameterDcfFragment(c, 1),
+                         QStringLiteral("canWrites (node 2, 0x2500:05): the payload object is "
+                                        "written in part"));
 }
 
 QTEST_GUILESS_MAIN(TestParameterDcf)
