@@ -2496,7 +2496,7 @@
         <translation>robot.model: unbekanntes Robotermodell &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+97"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>aus keinem Versuch wurde gelernt: die Nutzlast ist nicht geschätzt</translation>
     </message>
@@ -4163,7 +4163,7 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+135"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+137"/>
         <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+9"/>
@@ -6995,6 +6995,11 @@ Verhältnis %</translation>
         <translation>&amp;Stopp</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>&amp;Continue</source>
+        <translation>&amp;Weiter</translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>&amp;Accept</source>
         <translation>&amp;Übernehmen</translation>
@@ -7020,7 +7025,7 @@ Verhältnis %</translation>
         <translation>Auf den Roboter über&amp;tragen…</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+50"/>
         <source>Payload and prior</source>
         <translation>Nutzlast und Vorwissen</translation>
     </message>
@@ -7030,7 +7035,7 @@ Verhältnis %</translation>
         <translation>Was die Bahn die Versuche erfassen lässt</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Trials</source>
         <translation>Versuche</translation>
     </message>
@@ -7046,6 +7051,16 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+23"/>
+        <source>The CAN robot %1/%2</source>
+        <translation>Der CAN-Roboter %1/%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The run asks you to take the payload off before the baseline trials and to mount it after them.</source>
+        <translation>Der Lauf fordert Sie auf, die Nutzlast vor den Basisversuchen abzunehmen und danach zu montieren.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>The trials cannot be planned: %1</source>
         <translation>Die Versuche lassen sich nicht planen: %1</translation>
     </message>
@@ -7075,12 +7090,12 @@ Verhältnis %</translation>
         <translation>Nutzlast nicht gelernt: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Stopped; nothing of this run is kept or written.</source>
         <translation>Gestoppt; von diesem Lauf wird nichts behalten oder geschrieben.</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <source>Run the trials to learn the payload.</source>
         <translation>Die Versuche ausführen, um die Nutzlast zu lernen.</translation>
     </message>
@@ -7103,6 +7118,24 @@ Verhältnis %</translation>
         <location line="+19"/>
         <source>Stopping the running trial…</source>
         <translation>Der laufende Versuch wird gestoppt…</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The baseline trials are done: mount the payload on %1, then press Continue.</source>
+        <translation>Die Basisversuche sind fertig: montieren Sie die Nutzlast an %1 und drücken Sie dann Weiter.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Take the payload off %1 for the %n baseline trial(s), then press Continue.</source>
+        <translation>
+            <numerusform>Nehmen Sie die Nutzlast für den %n Basisversuch von %1 ab und drücken Sie dann Weiter.</numerusform>
+            <numerusform>Nehmen Sie die Nutzlast für die %n Basisversuche von %1 ab und drücken Sie dann Weiter.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Starting the next trial…</source>
+        <translation>Der nächste Versuch beginnt…</translation>
     </message>
     <message>
         <location filename="../ui/PayloadDialogExport.cpp" line="-15"/>
@@ -7334,11 +7367,6 @@ Verhältnis %</translation>
         <location filename="../core/service/PayloadRunJob.cpp" line="+92"/>
         <source>the run&apos;s robot is no longer connected: run again</source>
         <translation>der Roboter des Laufs ist nicht mehr verbunden: erneut ausführen</translation>
-    </message>
-    <message>
-        <location line="+34"/>
-        <source>payload.baselineTrials: the window does not ask for the payload to be taken off and mounted between trials yet: set it to 0, or run the baseline trials with learnid-cli run --robot can</source>
-        <translation>payload.baselineTrials: das Fenster fragt noch nicht nach dem Abnehmen und Montieren der Nutzlast zwischen den Versuchen: auf 0 setzen, oder die Referenzversuche mit learnid-cli run --robot can ausführen</translation>
     </message>
 </context>
 <context>

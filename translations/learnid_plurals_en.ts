@@ -165,6 +165,17 @@
     </message>
 </context>
 <context>
+    <name>learnid::PayloadDialog</name>
+    <message numerus="yes">
+        <location filename="../ui/PayloadDialog.cpp" line="+322"/>
+        <source>Take the payload off %1 for the %n baseline trial(s), then press Continue.</source>
+        <translation>
+            <numerusform>Take the payload off %1 for the %n baseline trial, then press Continue.</numerusform>
+            <numerusform>Take the payload off %1 for the %n baseline trials, then press Continue.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>learnid::RobotChooser</name>
     <message numerus="yes">
         <location filename="../ui/RobotChooser.cpp" line="+174"/>

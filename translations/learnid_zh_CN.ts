@@ -2487,7 +2487,7 @@
         <translation>robot.model：未知的机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+97"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>没有从任何试验中学习：未估计负载</translation>
     </message>
@@ -4149,7 +4149,7 @@
         <location line="+37"/>
         <location filename="../app/cli/LoopCommands.cpp" line="+19"/>
         <location filename="../app/cli/PayloadCommand.cpp" line="+215"/>
-        <location filename="../app/cli/PayloadRunCommand.cpp" line="+135"/>
+        <location filename="../app/cli/PayloadRunCommand.cpp" line="+137"/>
         <location line="+13"/>
         <location filename="../app/cli/RunCommand.cpp" line="+106"/>
         <location line="+9"/>
@@ -6973,6 +6973,11 @@ ratio %</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>&amp;Continue</source>
+        <translation>继续(&amp;C)</translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>&amp;Accept</source>
         <translation>接受(&amp;A)</translation>
@@ -6998,7 +7003,7 @@ ratio %</source>
         <translation>应用到机器人(&amp;P)…</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+50"/>
         <source>Payload and prior</source>
         <translation>负载与先验</translation>
     </message>
@@ -7008,7 +7013,7 @@ ratio %</source>
         <translation>该路径让试验看到什么</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Trials</source>
         <translation>试验</translation>
     </message>
@@ -7024,6 +7029,16 @@ ratio %</source>
     </message>
     <message>
         <location line="+23"/>
+        <source>The CAN robot %1/%2</source>
+        <translation>CAN 机器人 %1/%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The run asks you to take the payload off before the baseline trials and to mount it after them.</source>
+        <translation>运行会要求您在基线试验前取下负载，并在试验后装上。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>The trials cannot be planned: %1</source>
         <translation>无法规划试验：%1</translation>
     </message>
@@ -7053,12 +7068,12 @@ ratio %</source>
         <translation>负载未学习：%1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Stopped; nothing of this run is kept or written.</source>
         <translation>已停止；本次运行的任何结果都不会保留或写入。</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <source>Run the trials to learn the payload.</source>
         <translation>运行试验以学习负载。</translation>
     </message>
@@ -7081,6 +7096,23 @@ ratio %</source>
         <location line="+19"/>
         <source>Stopping the running trial…</source>
         <translation>正在停止当前试验…</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The baseline trials are done: mount the payload on %1, then press Continue.</source>
+        <translation>基线试验已完成：请将负载装到 %1 上，然后按“继续”。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Take the payload off %1 for the %n baseline trial(s), then press Continue.</source>
+        <translation>
+            <numerusform>请为 %n 次基线试验从 %1 上取下负载，然后按“继续”。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Starting the next trial…</source>
+        <translation>正在开始下一次试验…</translation>
     </message>
     <message>
         <location filename="../ui/PayloadDialogExport.cpp" line="-15"/>
@@ -7312,11 +7344,6 @@ ratio %</source>
         <location filename="../core/service/PayloadRunJob.cpp" line="+92"/>
         <source>the run&apos;s robot is no longer connected: run again</source>
         <translation>该次运行的机器人已不再连接：请重新运行</translation>
-    </message>
-    <message>
-        <location line="+34"/>
-        <source>payload.baselineTrials: the window does not ask for the payload to be taken off and mounted between trials yet: set it to 0, or run the baseline trials with learnid-cli run --robot can</source>
-        <translation>payload.baselineTrials：窗口尚不会在试验之间要求卸下和安装负载：请设为 0，或使用 learnid-cli run --robot can 运行基准试验</translation>
     </message>
 </context>
 <context>

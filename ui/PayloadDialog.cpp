@@ -48,6 +48,7 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     , m_preview(new QLabel)
     , m_run(namedButton(tr("&Run trials"), "runPayloadButton"))
     , m_stop(namedButton(tr("&Stop"), "stopPayloadButton"))
+    , m_continue(namedButton(tr("&Continue"), "continuePayloadButton"))
     , m_progress(new QProgressBar)
     , m_stage(new QLabel)
     , m_trials(new PayloadTrialTableModel(this))
@@ -87,6 +88,7 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     connect(m_checkTimer, &QTimer::timeout, this, &PayloadDialog::requestCheck);
     connect(m_run, &QPushButton::clicked, this, &PayloadDialog::run);
     connect(m_stop, &QPushButton::clicked, this, &PayloadDialog::stop);
+    connect(m_continue, &QPushButton::clicked, this, &PayloadDialog::continueAfterMounting);
     connect(m_accept, &QPushButton::clicked, this, &PayloadDialog::acceptResult);
     connect(m_exportParameters, &QPushButton::clicked, this, &PayloadDialog::exportParameterFile);
     connect(m_exportUrdf, &QPushButton::clicked, this, &PayloadDialog::exportUrdf);
@@ -115,6 +117,7 @@ void PayloadDialog::buildLayout()
     auto *runRow = new QHBoxLayout;
     runRow->addWidget(m_run);
     runRow->addWidget(m_stop);
+    runRow->addWidget(m_continue);
     runRow->addWidget(m_progress, 1);
     auto *trials = new QGroupBox(tr("Trials"));
     auto *trialLayout = new QVBoxLayout(trials);
@@ -155,8 +158,22 @@ void PayloadDialog::buildLayout()
 void PayloadDialog::connectJob()
 {
     connect(m_job, &PayloadRunJob::checked, this, [this](const PayloadPreview &p) {
-        m_preview->setText(
-            payloadPreviewHtml(p, m_form->scenario().value_or(Scenario()).simulation.payload));
+        // The check plans on the simulated arm; the run goes to the robot the dialog was given.
+        PayloadPreview shown = p;
+        SimulatedPayload simulated = m_form->scenario().value_or(Scenario()).simulation.payload;
+        if (m_robot.kind == RobotRequest::Kind::Can) {
+            shown.robotDescription =
+                tr("The CAN robot %1/%2").arg(m_robot.can.plugin, m_robot.can.interface);
+            simulated = SimulatedPayload(); // what it carries is what is mounted
+        }
+        QString text = payloadPreviewHtml(shown, simulated);
+        if (m_robot.kind == RobotRequest::Kind::Can && p.baselineTrials > 0) {
+            text += QStringLiteral("<p>") +
+                    tr("The run asks you to take the payload off before the baseline trials and "
+                       "to mount it after them.") +
+                    QStringLiteral("</p>");
+        }
+        m_preview->setText(text);
         emit previewShown(true);
     });
     connect(m_job, &PayloadRunJob::checkFailed, this, [this](const QString &message) {
@@ -200,6 +217,7 @@ void PayloadDialog::connectJob()
         emit runFinished(false);
     });
     connect(m_job, &PayloadRunJob::applied, this, &PayloadDialog::showApplied);
+    connect(m_job, &PayloadRunJob::mountingRequested, this, &PayloadDialog::askForMounting);
     connect(m_job, &PayloadRunJob::cancelled, this, [this] {
         setBusy(false);
         m_message->showMessage(tr("Stopped; nothing of this run is kept or written."),
@@ -231,6 +249,7 @@ void PayloadDialog::setBusy(bool busy)
 {
     m_form->setEditable(!busy);
     m_stop->setEnabled(busy);
+    m_continue->hide();
     m_progress->setVisible(busy);
     if (!busy)
         m_stage->clear();
@@ -293,6 +312,28 @@ void PayloadDialog::stop()
 {
     m_job->cancel();
     m_stage->setText(tr("Stopping the running trial\u2026"));
+}
+
+void PayloadDialog::askForMounting(bool mount, const QString &link, int baselineTrials)
+{
+    const QString what =
+        mount ? tr("The baseline trials are done: mount the payload on %1, then press Continue.")
+                    .arg(link)
+              : tr("Take the payload off %1 for the %n baseline trial(s), then press Continue.",
+                   nullptr, baselineTrials)
+                    .arg(link);
+    m_stage->setText(what);
+    m_message->showMessage(what, MessageBar::Severity::Info);
+    m_continue->show();
+    m_continue->setFocus();
+}
+
+void PayloadDialog::continueAfterMounting()
+{
+    m_continue->hide();
+    m_message->hide();
+    m_stage->setText(tr("Starting the next trial…"));
+    m_job->confirmMounting();
 }
 
 void PayloadDialog::reject()

@@ -31,8 +31,9 @@ class UiSettings;
 /// standard error, prior and source (PayloadEstimateTableModel); Accept enables the exports: the
 /// parameter file with a payload section (and its DCF) and the URDF with a fixed payload link,
 /// written all or none (writePayloadRunExport); on the CAN robot it also enables Apply, which
-/// writes the payload to the drives (PayloadRunJob::applyResult). A stopped or failed run leaves no
-/// result.
+/// writes the payload to the drives (PayloadRunJob::applyResult). Baseline trials on the CAN
+/// robot wait for the technician to take the payload off, then to mount it (Continue). A stopped
+/// or failed run leaves no result.
 class PayloadDialog : public QDialog
 {
     Q_OBJECT
@@ -70,6 +71,8 @@ public:
 public slots:
     void run();
     void stop();
+    /// The technician has taken the payload off or mounted it, as the run asked (CAN robot).
+    void continueAfterMounting();
     void acceptResult();
     /// Writes the accepted payload to the CAN robot's drives and stores it, after a confirmation.
     void applyToRobot();
@@ -94,6 +97,7 @@ private:
     void requestCheck();
     void writeExport(ExportKind kind);
     void showApplied(const QString &error);
+    void askForMounting(bool mount, const QString &link, int baselineTrials);
 
     UiSettings *m_settings;
     MessageBar *m_message;
@@ -101,6 +105,7 @@ private:
     QLabel *m_preview;
     QPushButton *m_run;
     QPushButton *m_stop;
+    QPushButton *m_continue; ///< shown while the run waits for the technician
     QProgressBar *m_progress;
     QLabel *m_stage;
     PayloadTrialTableModel *m_trials;

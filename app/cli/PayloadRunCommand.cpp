@@ -55,19 +55,21 @@ bool waitForEnter()
 QString confirmMounting(const PayloadSession &session, int i, const QString &link, QTextStream &err)
 {
     const int baselines = session.scenario().payload.baselineTrials;
-    if (baselines == 0 || (i != 0 && i != baselines))
+    const PayloadMounting mounting = payloadMountingBefore(i, baselines);
+    if (mounting == PayloadMounting::Unchanged)
         return {};
-    err << (i == 0 ? QCoreApplication::translate("learnid-cli",
-                                                 "learnid-cli: take the payload off %1 for the "
-                                                 "%2 baseline trial(s), then press Enter "
-                                                 "(Ctrl-C stops)")
-                         .arg(link)
-                         .arg(baselines)
-                   : QCoreApplication::translate("learnid-cli",
-                                                 "learnid-cli: the baseline trials are done: "
-                                                 "mount the payload on %1, then press Enter "
-                                                 "(Ctrl-C stops)")
-                         .arg(link))
+    err << (mounting == PayloadMounting::TakeOff
+                ? QCoreApplication::translate("learnid-cli",
+                                              "learnid-cli: take the payload off %1 for the "
+                                              "%2 baseline trial(s), then press Enter "
+                                              "(Ctrl-C stops)")
+                      .arg(link)
+                      .arg(baselines)
+                : QCoreApplication::translate("learnid-cli",
+                                              "learnid-cli: the baseline trials are done: "
+                                              "mount the payload on %1, then press Enter "
+                                              "(Ctrl-C stops)")
+                      .arg(link))
         << Qt::endl;
     if (waitForEnter())
         return {};

@@ -60,6 +60,15 @@ PayloadRunSession makeCanPayloadSession(const Scenario &given, const RobotReques
     return run;
 }
 
+PayloadMounting payloadMountingBefore(int trial, int baselineTrials)
+{
+    if (baselineTrials <= 0)
+        return PayloadMounting::Unchanged;
+    if (trial == 0)
+        return PayloadMounting::TakeOff;
+    return trial == baselineTrials ? PayloadMounting::Mount : PayloadMounting::Unchanged;
+}
+
 PayloadPreview payloadPreview(PayloadSession &session)
 {
     PayloadPreview p;

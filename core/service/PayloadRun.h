@@ -42,6 +42,12 @@ PayloadRunSession makeSimulatedPayloadSession(const Scenario &given);
 /// Throws Error naming the key as makeSimulatedPayloadSession() does.
 PayloadRunSession makeCanPayloadSession(const Scenario &given, const RobotRequest &request);
 
+/// What the technician does before trial `trial` (from 0, baselines first) on a robot that
+/// carries the payload itself (the CAN robot), with `baselineTrials` baseline trials: take the
+/// payload off before the first of them, mount it before the first payload trial.
+enum class PayloadMounting { Unchanged, TakeOff, Mount };
+PayloadMounting payloadMountingBefore(int trial, int baselineTrials);
+
 /// What the path lets the trials see before any motion (PayloadSession::observability()), and
 /// the next trial's check.
 struct PayloadPreview

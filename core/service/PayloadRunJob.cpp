@@ -122,10 +122,9 @@ void PayloadRunJob::runInThread(const Scenario &scenario, const RobotRequest &ro
     std::shared_ptr<const PayloadRunResult> result;
     QString error;
     try {
-        if (robot.kind == RobotRequest::Kind::Can && scenario.payload.baselineTrials > 0) {
-            throw Error(tr("payload.baselineTrials: the window does not ask for the payload to be "
-                           "taken off and mounted between trials yet: set it to 0, or run the "
-                           "baseline trials with learnid-cli run --robot can"));
+        {
+            QMutexLocker lock(&m_mountMutex);
+            m_mountConfirmed = false;
         }
         auto made = std::make_shared<PayloadRunSession>(
             robot.kind == RobotRequest::Kind::Can ? makeCanPayloadSession(scenario, robot)
@@ -149,8 +148,20 @@ void PayloadRunJob::runInThread(const Scenario &scenario, const RobotRequest &ro
                 job->m_session = nullptr;
             }
         } registration(this, s.session.get());
-        const int total = s.session->scenario().payload.baselineTrials + scenario.iterations;
+        const int baselines = s.session->scenario().payload.baselineTrials;
+        const int total = baselines + scenario.iterations;
+        const QString link = s.session->payloadModel().link();
         for (int i = 0; i < total && !cancel->load(); ++i) {
+            // The CAN robot carries the payload itself: the technician changes it.
+            const PayloadMounting mounting = payloadMountingBefore(i, baselines);
+            if (robot.kind == RobotRequest::Kind::Can && mounting != PayloadMounting::Unchanged) {
+                const bool mount = mounting == PayloadMounting::Mount;
+                post([this, mount, link, baselines] {
+                    emit mountingRequested(mount, link, baselines);
+                });
+                if (!waitForMounting(*cancel))
+                    break;
+            }
             const bool baseline = s.session->nextTrialIsBaseline();
             post([this, i, total, baseline] { emit trialStarted(i, total, baseline); });
             const PayloadTrial &t = s.session->runTrial();
@@ -188,12 +199,36 @@ void PayloadRunJob::runInThread(const Scenario &scenario, const RobotRequest &ro
         Qt::QueuedConnection);
 }
 
+bool PayloadRunJob::waitForMounting(const std::atomic<bool> &cancel)
+{
+    QMutexLocker lock(&m_mountMutex);
+    while (!m_mountConfirmed && !cancel.load())
+        m_mountWake.wait(&m_mountMutex, 200); // cancel() wakes it; the timeout is a safety net
+    const bool confirmed = m_mountConfirmed && !cancel.load();
+    m_mountConfirmed = false;
+    return confirmed;
+}
+
+void PayloadRunJob::confirmMounting()
+{
+    if (!m_running)
+        return;
+    qCInfo(lcService) << "payload mounting confirmed";
+    QMutexLocker lock(&m_mountMutex);
+    m_mountConfirmed = true;
+    m_mountWake.wakeAll();
+}
+
 void PayloadRunJob::cancel()
 {
     if (!m_running || !m_cancel)
         return;
     qCInfo(lcService) << "payload run cancel requested";
     m_cancel->store(true);
+    {
+        QMutexLocker lock(&m_mountMutex);
+        m_mountWake.wakeAll();
+    }
     QMutexLocker lock(&m_sessionMutex);
     if (m_session)
         m_session->requestCancel();

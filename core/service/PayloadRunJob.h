@@ -5,6 +5,7 @@
 #include <QMutex>
 #include <QObject>
 #include <QThread>
+#include <QWaitCondition>
 #include <atomic>
 #include <memory>
 
@@ -17,6 +18,9 @@ namespace learnid {
 /// reporting trialStarted() and trialFinished() per trial, then one of succeeded(), failed() or
 /// cancelled(). applyResult() writes the last successful run's payload to its robot (applied()).
 /// Everything comes back queued, in the thread the job lives in. One run or apply at a time.
+/// On the CAN robot a run with baseline trials waits before the first of them for the payload to
+/// be taken off, and before the first payload trial for it to be mounted: mountingRequested(),
+/// then confirmMounting() (or cancel()) lets it go on.
 /// cancel() stops the running trial at its next sample (PayloadSession::requestCancel()); a
 /// cancelled or failed run has no result, so nothing of it can be accepted, applied or exported,
 /// and a check superseded by a newer one is dropped. The robot of the last successful run stays
@@ -36,8 +40,7 @@ public slots:
     /// Plans the scenario's first trial in the job's thread; ignored (false) while a run runs.
     bool check(const learnid::Scenario &scenario);
     /// Starts a run of the scenario on the requested robot (the simulated one, or a CAN robot:
-    /// its payload.baselineTrials refused, makeCanPayloadSession()); ignored (false) while one
-    /// runs.
+    /// makeCanPayloadSession()); ignored (false) while one runs.
     bool start(const learnid::Scenario &scenario,
                const learnid::RobotRequest &robot = learnid::RobotRequest());
     /// Writes the last successful run's payload to its robot and stores it (applyRunPayload());
@@ -45,6 +48,8 @@ public slots:
     bool applyResult();
     /// Asks the running trial to stop at its next sample; cancelled() follows.
     void cancel();
+    /// The technician has done what mountingRequested() asked: the run goes on.
+    void confirmMounting();
 
 signals:
     void checked(const learnid::PayloadPreview &preview);
@@ -53,6 +58,9 @@ signals:
     /// index counts from 0 over all trials (the baseline trials first), of `total`.
     void trialStarted(int index, int total, bool baseline);
     void trialFinished(const learnid::PayloadTrialRow &row);
+    /// The run waits for the technician (CAN robot): to take the payload off `link` for the
+    /// `baselineTrials` baseline trials (mount false), or to mount it after them (mount true).
+    void mountingRequested(bool mount, const QString &link, int baselineTrials);
     void succeeded(std::shared_ptr<const learnid::PayloadRunResult> result);
     /// A trial was refused or not usable, or the session could not be made: message says why.
     void failed(const QString &message);
@@ -64,6 +72,8 @@ private:
     void runInThread(const Scenario &scenario, const RobotRequest &robot, int run,
                      std::shared_ptr<std::atomic<bool>> cancel);
     void checkInThread(const Scenario &scenario, int check);
+    /// In m_thread: waits for confirmMounting(); false when the run was cancelled.
+    bool waitForMounting(const std::atomic<bool> &cancel);
 
     QThread m_thread;
     QObject *m_context; ///< lives in m_thread: the queued calls run there
@@ -72,6 +82,9 @@ private:
     std::shared_ptr<std::atomic<bool>> m_cancel;
     int m_run = 0;
     std::atomic<int> m_check{0}; ///< the newest check; older ones are dropped
+    QMutex m_mountMutex;
+    QWaitCondition m_mountWake;
+    bool m_mountConfirmed = false; ///< under m_mountMutex
     bool m_running = false;
     /// The last successful run's session and robot (used in m_thread only) and its result.
     std::shared_ptr<PayloadRunSession> m_last;

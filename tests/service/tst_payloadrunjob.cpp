@@ -112,27 +112,18 @@ private slots:
                  session->history().back().fit->estimate.parameters);
     }
 
-    void baselineTrialsOnTheCanRobot_refusedBeforeConnecting()
+    void mounting_offBeforeTheBaselinesAndOnAfterThem()
     {
-        // The window does not ask for the payload to be taken off and mounted between trials:
-        // it refuses, naming the key, before any connection (nobody listens on this bus).
-        Scenario s = test::pandaWithPayload();
-        s.payload.baselineTrials = 1;
-        RobotRequest can;
-        can.kind = RobotRequest::Kind::Can;
-        can.can.plugin = QStringLiteral("virtualcan");
-        can.can.interface = QStringLiteral("tcp://127.0.0.1:1/can0");
-        can.can.nodes = {1, 2, 3, 4, 5, 6, 7};
-        PayloadRunJob job;
-        QSignalSpy failed(&job, &PayloadRunJob::failed);
-        QSignalSpy started(&job, &PayloadRunJob::trialStarted);
-        QVERIFY(job.start(s, can));
-        QVERIFY(failed.wait(5000));
-        QVERIFY2(failed.constFirst().at(0).toString().startsWith(
-                     QStringLiteral("payload.baselineTrials: the window does not ask")),
-                 qPrintable(failed.constFirst().at(0).toString()));
-        QVERIFY(started.isEmpty());
-        QVERIFY(!job.applyResult()); // no result to apply
+        // The technician's part on the CAN robot (the CLI asks on stdin, the window with
+        // Continue; tst_cli_can_payload, tst_ui_canpayload): trial indices count the baselines.
+        QCOMPARE(payloadMountingBefore(0, 0), PayloadMounting::Unchanged);
+        QCOMPARE(payloadMountingBefore(1, 0), PayloadMounting::Unchanged);
+        QCOMPARE(payloadMountingBefore(0, 2), PayloadMounting::TakeOff);
+        QCOMPARE(payloadMountingBefore(1, 2), PayloadMounting::Unchanged);
+        QCOMPARE(payloadMountingBefore(2, 2), PayloadMounting::Mount);
+        QCOMPARE(payloadMountingBefore(3, 2), PayloadMounting::Unchanged);
+        QCOMPARE(payloadMountingBefore(0, 1), PayloadMounting::TakeOff);
+        QCOMPARE(payloadMountingBefore(1, 1), PayloadMounting::Mount);
     }
 
     void stop_endsTheRunningTrialAndLeavesNoResult()

@@ -1,7 +1,9 @@
 // The payload step on the window's CAN robot, by clicking: learnid-robot-sim over virtualcan (a
 // second process) moves the Panda's seven drives carrying 1.5 kg 5 cm off the flange axis; the
 // step learns it through the bus, Accept enables Apply, and Apply (confirmed) stores on every
-// drive what the estimate table shows. The step is refused while the arm's session holds the bus.
+// drive what the estimate table shows. Baseline trials wait for the technician to take the payload
+// off and mount it (Continue), and Stop ends that wait. The step is refused while the arm's
+// session holds the bus.
 #include "../session/PayloadScenarios.h"
 #include "../support/RobotSimProcess.h"
 #include "UiTestSupport.h"
@@ -11,9 +13,12 @@
 #include "ui/MainActions.h"
 #include "ui/MessageBar.h"
 #include "ui/PayloadDialog.h"
+#include "ui/PayloadTrialTableModel.h"
 
 #include <QAction>
 #include <QComboBox>
+#include <QElapsedTimer>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -114,6 +119,113 @@ private slots:
             stored << double(float(v));
         const QString mismatch = storedPayloadMismatch(state, 7, 7, stored, 0.0, 0.0);
         QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+    }
+
+    void baselineOnTheCanRobot_waitsForTheTechnicianToTakeOffAndMount()
+    {
+        // The arm's model 10 % off the drives' arm (seed 8): one baseline trial without the
+        // payload, which the technician takes off when asked (the simulator starts without it)
+        // and mounts after it, each confirmed with Continue.
+        WindowFixture f;
+        Scenario s = pandaAt4ms();
+        s.simulation.inertiaPerturbation = 0.1;
+        s.simulation.seed = 8;
+        s.payload.baselineTrials = 1;
+        const QString scenario = f.dir.filePath(QStringLiteral("panda-baseline-4ms.json"));
+        writeScenarioFile(scenario, s);
+        const quint16 port = freeLoopbackPort();
+        QVERIFY(port > 0);
+        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
+        RobotSimProcess sim(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+        QVERIFY(
+            sim.start(interface, {QStringLiteral("--scenario"), scenario, QStringLiteral("--nodes"),
+                                  kNodes, QStringLiteral("--payload-off")}));
+        chooseCan(f, interface);
+        f.window->files()->openScenarioFrom(scenario);
+        PayloadDialog *d = f.window->payloadDialog();
+        QVERIFY(d);
+        QTRY_VERIFY(d->isVisible());
+        auto *run = d->findChild<QPushButton *>(QStringLiteral("runPayloadButton"));
+        auto *next = d->findChild<QPushButton *>(QStringLiteral("continuePayloadButton"));
+        auto *stage = d->findChild<QLabel *>(QStringLiteral("payloadStage"));
+        QVERIFY(run && next && stage);
+        QVERIFY(next->isHidden());
+        QTRY_VERIFY(run->isEnabled());
+        // The preview speaks of the robot the run goes to, and says what it will ask.
+        QTRY_VERIFY2(d->previewText().contains(QStringLiteral("take the payload off before the "
+                                                              "baseline trials")),
+                     qPrintable(d->previewText()));
+        QVERIFY2(d->previewText().contains(QStringLiteral("The CAN robot virtualcan/")) &&
+                     !d->previewText().contains(QStringLiteral("simulat")),
+                 qPrintable(d->previewText()));
+
+        QSignalSpy finished(d, &PayloadDialog::runFinished);
+        QTest::mouseClick(run, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!next->isHidden(), 30000);
+        QVERIFY2(stage->text().contains(
+                     QStringLiteral("Take the payload off panda_link7 for the 1 baseline trial")),
+                 qPrintable(stage->text()));
+        QCOMPARE(d->trialTable()->rowCount(), 0); // nothing moves before the answer
+        QTest::mouseClick(next, Qt::LeftButton);
+        QVERIFY(next->isHidden());
+
+        QTRY_VERIFY_WITH_TIMEOUT(!next->isHidden(), 60000);
+        QVERIFY2(stage->text().contains(QStringLiteral("mount the payload on panda_link7")),
+                 qPrintable(stage->text()));
+        QCOMPARE(d->trialTable()->rowCount(), 1); // the baseline
+        sim.write("mount\n");
+        QVERIFY(sim.waitForLine(QByteArrayLiteral("payload mounted"), 10000));
+        QTest::mouseClick(next, Qt::LeftButton);
+        QVERIFY(finished.wait(120000));
+        QVERIFY2(finished.constFirst().at(0).toBool(), qPrintable(d->messageBar()->text()));
+        QCOMPARE(d->trialTable()->rowCount(), 4);
+        // The arm's error taken out (the mass 14 % off without the baseline): the mass within
+        // 1 %, the centre of mass within 4 of its standard errors (tst_cli_can_payload).
+        const PayloadEstimate &e = d->result()->fit.estimate;
+        QVERIFY2(std::abs(e.body.mass - 1.5) < 0.015, qPrintable(QString::number(e.body.mass)));
+        const Eigen::Vector3d trueCom(0.05, 0.0, 0.08);
+        for (int i = 0; i < 3; ++i) {
+            const double se = e.bodyStandardError[size_t(1 + i)];
+            QVERIFY2(se > 0.0 && se < 1.5e-3 && std::abs(e.body.com[i] - trueCom[i]) < 4.0 * se,
+                     qPrintable(QStringLiteral("c%1 %2 +- %3").arg(i).arg(e.body.com[i]).arg(se)));
+        }
+    }
+
+    void stopWhileWaitingForTheTechnician_endsTheRunWithNothingMoved()
+    {
+        WindowFixture f;
+        Scenario s = pandaAt4ms();
+        s.payload.baselineTrials = 1;
+        const QString scenario = f.dir.filePath(QStringLiteral("panda-baseline-stop.json"));
+        writeScenarioFile(scenario, s);
+        const quint16 port = freeLoopbackPort();
+        QVERIFY(port > 0);
+        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
+        RobotSimProcess sim(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
+        QVERIFY(sim.start(interface, {QStringLiteral("--scenario"), scenario,
+                                      QStringLiteral("--nodes"), kNodes}));
+        chooseCan(f, interface);
+        f.window->files()->openScenarioFrom(scenario);
+        PayloadDialog *d = f.window->payloadDialog();
+        QVERIFY(d);
+        QTRY_VERIFY(d->isVisible());
+        auto *run = d->findChild<QPushButton *>(QStringLiteral("runPayloadButton"));
+        auto *next = d->findChild<QPushButton *>(QStringLiteral("continuePayloadButton"));
+        auto *stop = d->findChild<QPushButton *>(QStringLiteral("stopPayloadButton"));
+        QTRY_VERIFY(run->isEnabled());
+        QSignalSpy finished(d, &PayloadDialog::runFinished);
+        QTest::mouseClick(run, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!next->isHidden(), 30000);
+        QElapsedTimer clock;
+        clock.start();
+        QTest::mouseClick(stop, Qt::LeftButton);
+        QVERIFY(finished.wait(5000));
+        QVERIFY2(clock.elapsed() < 2000, qPrintable(QString::number(clock.elapsed())));
+        QVERIFY(!finished.constFirst().at(0).toBool());
+        QVERIFY(next->isHidden());
+        QCOMPARE(d->trialTable()->rowCount(), 0);
+        QVERIFY(!d->result());
+        QVERIFY(run->isEnabled()); // the bus is free again for the next run
     }
 
     void payloadStep_refusedWhileTheArmsSessionHoldsTheBus()
