@@ -7015,7 +7015,7 @@ Verhältnis %</translation>
         <translation>&amp;URDF exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/PayloadDialogExport.cpp" line="+44"/>
+        <location filename="../ui/PayloadDialogExport.cpp" line="+46"/>
         <source>Learn a payload (simulated robot)</source>
         <translation>Nutzlast lernen (simulierter Roboter)</translation>
     </message>
@@ -7025,7 +7025,12 @@ Verhältnis %</translation>
         <translation>Auf den Roboter über&amp;tragen…</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+1"/>
+        <source>Sa&amp;ve scenario…</source>
+        <translation>Szenario spei&amp;chern…</translation>
+    </message>
+    <message>
+        <location line="+51"/>
         <source>Payload and prior</source>
         <translation>Nutzlast und Vorwissen</translation>
     </message>
@@ -7050,7 +7055,7 @@ Verhältnis %</translation>
         <translation>Schließen</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>The CAN robot %1/%2</source>
         <translation>Der CAN-Roboter %1/%2</translation>
     </message>
@@ -7095,7 +7100,7 @@ Verhältnis %</translation>
         <translation>Gestoppt; von diesem Lauf wird nichts behalten oder geschrieben.</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>Run the trials to learn the payload.</source>
         <translation>Die Versuche ausführen, um die Nutzlast zu lernen.</translation>
     </message>
@@ -7216,6 +7221,26 @@ Verhältnis %</translation>
         <location line="+3"/>
         <source>Not written: %1</source>
         <translation>Nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Save scenario</source>
+        <translation>Szenario speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scenario files (*.json)</source>
+        <translation>Szenariodateien (*.json)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Scenario saved: %1</source>
+        <translation>Szenario gespeichert: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Scenario not saved: %1</source>
+        <translation>Szenario nicht gespeichert: %1</translation>
     </message>
 </context>
 <context>

@@ -6993,7 +6993,7 @@ ratio %</source>
         <translation>导出 URDF(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../ui/PayloadDialogExport.cpp" line="+44"/>
+        <location filename="../ui/PayloadDialogExport.cpp" line="+46"/>
         <source>Learn a payload (simulated robot)</source>
         <translation>学习负载（仿真机器人）</translation>
     </message>
@@ -7003,7 +7003,12 @@ ratio %</source>
         <translation>应用到机器人(&amp;P)…</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+1"/>
+        <source>Sa&amp;ve scenario…</source>
+        <translation>保存场景(&amp;V)…</translation>
+    </message>
+    <message>
+        <location line="+51"/>
         <source>Payload and prior</source>
         <translation>负载与先验</translation>
     </message>
@@ -7028,7 +7033,7 @@ ratio %</source>
         <translation>关闭</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>The CAN robot %1/%2</source>
         <translation>CAN 机器人 %1/%2</translation>
     </message>
@@ -7073,7 +7078,7 @@ ratio %</source>
         <translation>已停止；本次运行的任何结果都不会保留或写入。</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>Run the trials to learn the payload.</source>
         <translation>运行试验以学习负载。</translation>
     </message>
@@ -7193,6 +7198,26 @@ ratio %</source>
         <location line="+3"/>
         <source>Not written: %1</source>
         <translation>未写入：%1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Save scenario</source>
+        <translation>保存场景</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scenario files (*.json)</source>
+        <translation>场景文件 (*.json)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Scenario saved: %1</source>
+        <translation>场景已保存：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Scenario not saved: %1</source>
+        <translation>场景未保存：%1</translation>
     </message>
 </context>
 <context>

@@ -61,6 +61,7 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
           namedButton(tr("Export &parameter file\u2026"), "exportPayloadParametersButton"))
     , m_exportUrdf(namedButton(tr("Export &URDF\u2026"), "exportPayloadUrdfButton"))
     , m_apply(namedButton(tr("A&pply to the robot\u2026"), "applyPayloadButton"))
+    , m_saveScenario(namedButton(tr("Sa&ve scenario\u2026"), "savePayloadScenarioButton"))
     , m_job(new PayloadRunJob(this))
     , m_checkTimer(new QTimer(this))
 {
@@ -93,6 +94,7 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     connect(m_exportParameters, &QPushButton::clicked, this, &PayloadDialog::exportParameterFile);
     connect(m_exportUrdf, &QPushButton::clicked, this, &PayloadDialog::exportUrdf);
     connect(m_apply, &QPushButton::clicked, this, &PayloadDialog::applyToRobot);
+    connect(m_saveScenario, &QPushButton::clicked, this, &PayloadDialog::saveScenario);
     setBusy(false);
     clearResult();
     const QSize available = screen() ? screen()->availableGeometry().size() : QSize(1280, 860);
@@ -148,6 +150,7 @@ void PayloadDialog::buildLayout()
     buttons->addWidget(m_exportUrdf);
     buttons->addWidget(m_apply);
     buttons->addStretch(1);
+    buttons->addWidget(m_saveScenario);
     buttons->addWidget(close);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_message);
@@ -260,6 +263,7 @@ void PayloadDialog::updateActions()
 {
     const bool running = isRunning();
     m_run->setEnabled(!running && m_form->isValid());
+    m_saveScenario->setEnabled(!running && m_form->isValid());
     const bool result = m_result && !running;
     m_accept->setEnabled(result && !m_accepted);
     m_exportParameters->setEnabled(result && m_accepted);

@@ -30,7 +30,8 @@ class UiSettings;
 /// adds a row (PayloadTrialTableModel). A run that completes shows the estimate with each value's
 /// standard error, prior and source (PayloadEstimateTableModel); Accept enables the exports: the
 /// parameter file with a payload section (and its DCF) and the URDF with a fixed payload link,
-/// written all or none (writePayloadRunExport); on the CAN robot it also enables Apply, which
+/// written all or none (writePayloadRunExport); Save scenario keeps the step's edits as a scenario
+/// file at any time but a run; on the CAN robot Accept also enables Apply, which
 /// writes the payload to the drives (PayloadRunJob::applyResult). Baseline trials on the CAN
 /// robot wait for the technician to take the payload off, then to mount it (Continue). A stopped
 /// or failed run leaves no result.
@@ -39,7 +40,7 @@ class PayloadDialog : public QDialog
     Q_OBJECT
 
 public:
-    enum class ExportKind { ParameterFile, Urdf };
+    enum class ExportKind { ParameterFile, Urdf, Scenario };
     /// Asks for a path to write (empty: cancelled); the default shows a file dialog.
     using PathChooser = std::function<QString(ExportKind kind, const QString &suggested)>;
     /// Asks whether to go on (the question in words); the default shows a message box.
@@ -78,6 +79,8 @@ public slots:
     void applyToRobot();
     void exportParameterFile();
     void exportUrdf();
+    /// Saves the form's scenario, its payload section included, to a scenario file.
+    void saveScenario();
     void reject() override;
 
 signals:
@@ -117,6 +120,7 @@ private:
     QPushButton *m_exportParameters;
     QPushButton *m_exportUrdf;
     QPushButton *m_apply;
+    QPushButton *m_saveScenario;
     PayloadRunJob *m_job;
     QTimer *m_checkTimer;
     PathChooser m_chooser;

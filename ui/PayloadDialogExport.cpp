@@ -1,10 +1,12 @@
 // The result side of the payload step (PayloadDialog.h): the robot, Accept, the apply to a CAN
-// robot's drives and the exports of an accepted result, written all or none.
+// robot's drives, the exports of an accepted result, written all or none, and the scenario.
+#include "io/ScenarioFile.h"
 #include "model/Error.h"
 #include "service/PayloadRunExport.h"
 #include "service/PayloadRunJob.h"
 #include "ui/MessageBar.h"
 #include "ui/PayloadDialog.h"
+#include "ui/PayloadForm.h"
 #include "ui/UiSettings.h"
 
 #include <QDateTime>
@@ -126,6 +128,31 @@ void PayloadDialog::writeExport(ExportKind kind)
             MessageBar::Severity::Success);
     } catch (const Error &e) {
         m_message->showMessage(tr("Not written: %1").arg(e.message()), MessageBar::Severity::Error);
+    }
+}
+
+void PayloadDialog::saveScenario()
+{
+    const auto scenario = m_form->scenario();
+    if (!scenario || isRunning())
+        return;
+    const QString dir = m_settings ? m_settings->lastDirectory() : QDir::homePath();
+    const QString suggested = QDir(dir).filePath(QStringLiteral("payload-scenario.json"));
+    const QString path = m_chooser
+                             ? m_chooser(ExportKind::Scenario, suggested)
+                             : QFileDialog::getSaveFileName(this, tr("Save scenario"), suggested,
+                                                            tr("Scenario files (*.json)"));
+    if (path.isEmpty())
+        return;
+    try {
+        writeScenarioFile(path, *scenario);
+        if (m_settings)
+            m_settings->setLastDirectory(QFileInfo(path).absolutePath());
+        m_message->showMessage(tr("Scenario saved: %1").arg(QDir::toNativeSeparators(path)),
+                               MessageBar::Severity::Success);
+    } catch (const Error &e) {
+        m_message->showMessage(tr("Scenario not saved: %1").arg(e.message()),
+                               MessageBar::Severity::Error);
     }
 }
 

@@ -81,4 +81,25 @@ inline Scenario pandaWithPayload()
     return s;
 }
 
+/// The Panda at its rated payload, the 3 kg case: 3 kg 5 cm off the flange axis (cz 8
+/// cm), the prior 2.5 kg on the axis at 5 cm, from the payload starter (scenarioForRobot with the
+/// prior: gains and path for the arm carrying it; the bare arm's stretched path needs more than
+/// the planner allows at joint 2 once the estimate nears 3 kg).
+inline Scenario pandaWithRatedPayload()
+{
+    PayloadSettings prior;
+    prior.enabled = true;
+    prior.link = QStringLiteral("panda_link7");
+    prior.mass = 2.5;
+    prior.com = Eigen::Vector3d(0.0, 0.0, 0.05);
+    Scenario s = scenarioForRobot(QStringLiteral("panda"), {}, prior);
+    s.simulation.inertiaPerturbation = 0.0; // the arm's model is the true arm
+    s.iterations = 3;
+    s.simulation.payload.present = true;
+    s.simulation.payload.mass = 3.0;
+    s.simulation.payload.com = Eigen::Vector3d(0.05, 0.0, 0.08);
+    s.simulation.payload.inertia << 0.012, 0.001, 0.011, 0.0, 0.0, 0.006;
+    return s;
+}
+
 } // namespace learnid::test

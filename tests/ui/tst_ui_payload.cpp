@@ -1,8 +1,9 @@
 // The payload step through its real widgets (PayloadDialog, offscreen): the simulated Panda
 // carrying 1.5 kg 5 cm off the flange axis (test::pandaWithPayload()) learned to the issue's
 // targets by clicking, the estimate table against the run's result, the exports read back, Stop
-// leaving no result, refused values named at their fields, and the window routing a scenario file
-// with a payload section to the payload step instead of the arm's session.
+// leaving no result, refused values named at their fields, Save scenario keeping the edits, and
+// the window routing a scenario file with a payload section to the payload step instead of the
+// arm's session.
 #include "../session/PayloadScenarios.h"
 #include "UiTestSupport.h"
 #include "io/ParameterFile.h"
@@ -23,6 +24,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace learnid;
@@ -153,6 +155,38 @@ private slots:
         QVERIFY(!d.findChild<QPushButton *>(QStringLiteral("acceptPayloadButton"))->isEnabled());
         QVERIFY(d.findChild<QPushButton *>(QStringLiteral("runPayloadButton"))->isEnabled());
         QCOMPARE(d.messageBar()->severity(), MessageBar::Severity::Info);
+    }
+
+    void saveScenario_keepsTheStepsEdits_andNotWhileAFieldIsWrong()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        PayloadDialog d(nullptr);
+        d.setScenario(test::pandaWithPayload());
+        const QString file = dir.filePath(QStringLiteral("edited.json"));
+        d.setPathChooser([&file](PayloadDialog::ExportKind kind, const QString &) {
+            return kind == PayloadDialog::ExportKind::Scenario ? file : QString();
+        });
+        auto *save = d.findChild<QPushButton *>(QStringLiteral("savePayloadScenarioButton"));
+        QVERIFY(save && save->isEnabled());
+        PayloadForm *form = d.form();
+        typeInto(form->field(QStringLiteral("payload.prior.mass")), QStringLiteral("1.35"));
+        typeInto(form->field(QStringLiteral("payload.baselineTrials")), QStringLiteral("2"));
+        QVERIFY(form->isValid());
+        QTest::mouseClick(save, Qt::LeftButton);
+        QVERIFY2(d.messageBar()->text().startsWith(QStringLiteral("Scenario saved")),
+                 qPrintable(d.messageBar()->text()));
+        // Read back as the window and learnid-cli read it: the edits, and the form's scenario.
+        const Scenario read = readScenarioFile(file);
+        QCOMPARE(read.payload.mass, 1.35);
+        QCOMPARE(read.payload.baselineTrials, 2);
+        QCOMPARE(read.payload.link, QStringLiteral("panda_link7"));
+        QCOMPARE(scenarioToJson(read), scenarioToJson(*form->scenario()));
+
+        // A wrong field: nothing to save, and the file keeps what was saved.
+        typeInto(form->field(QStringLiteral("payload.prior.mass")), QStringLiteral("-1"));
+        QVERIFY(!save->isEnabled());
+        QCOMPARE(readScenarioFile(file).payload.mass, 1.35);
     }
 
     void badInput_isShownAtItsField()
