@@ -7015,7 +7015,7 @@ Verhältnis %</translation>
         <translation>&amp;URDF exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/PayloadDialogExport.cpp" line="+46"/>
+        <location filename="../ui/PayloadDialogExport.cpp" line="+48"/>
         <source>Learn a payload (simulated robot)</source>
         <translation>Nutzlast lernen (simulierter Roboter)</translation>
     </message>
@@ -7030,12 +7030,17 @@ Verhältnis %</translation>
         <translation>Szenario spei&amp;chern…</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+1"/>
+        <source>Design &amp;gains for this payload</source>
+        <translation>&amp;Verstärkungen für diese Nutzlast auslegen</translation>
+    </message>
+    <message>
+        <location line="+52"/>
         <source>Payload and prior</source>
         <translation>Nutzlast und Vorwissen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+5"/>
         <source>What the path lets the trials see</source>
         <translation>Was die Bahn die Versuche erfassen lässt</translation>
     </message>
@@ -7100,7 +7105,7 @@ Verhältnis %</translation>
         <translation>Gestoppt; von diesem Lauf wird nichts behalten oder geschrieben.</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+54"/>
         <source>Run the trials to learn the payload.</source>
         <translation>Die Versuche ausführen, um die Nutzlast zu lernen.</translation>
     </message>
@@ -7223,7 +7228,22 @@ Verhältnis %</translation>
         <translation>Nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+21"/>
+        <source>Gains designed for the arm carrying %1 kg on %2 (planning fraction %3); the preview checks the first trial with them.</source>
+        <translation>Verstärkungen für den Arm mit %1 kg an %2 ausgelegt (Planungsanteil %3); die Vorschau prüft den ersten Versuch damit.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the tip link</source>
+        <translation>das Endglied</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Gains not designed: %1</source>
+        <translation>Verstärkungen nicht ausgelegt: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Save scenario</source>
         <translation>Szenario speichern</translation>
     </message>

@@ -167,7 +167,7 @@
 <context>
     <name>learnid::PayloadDialog</name>
     <message numerus="yes">
-        <location filename="../ui/PayloadDialog.cpp" line="+326"/>
+        <location filename="../ui/PayloadDialog.cpp" line="+333"/>
         <source>Take the payload off %1 for the %n baseline trial(s), then press Continue.</source>
         <translation>
             <numerusform>Take the payload off %1 for the %n baseline trial, then press Continue.</numerusform>

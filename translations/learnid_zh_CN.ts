@@ -6993,7 +6993,7 @@ ratio %</source>
         <translation>导出 URDF(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../ui/PayloadDialogExport.cpp" line="+46"/>
+        <location filename="../ui/PayloadDialogExport.cpp" line="+48"/>
         <source>Learn a payload (simulated robot)</source>
         <translation>学习负载（仿真机器人）</translation>
     </message>
@@ -7008,12 +7008,17 @@ ratio %</source>
         <translation>保存场景(&amp;V)…</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+1"/>
+        <source>Design &amp;gains for this payload</source>
+        <translation>为此负载设计增益(&amp;G)</translation>
+    </message>
+    <message>
+        <location line="+52"/>
         <source>Payload and prior</source>
         <translation>负载与先验</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+5"/>
         <source>What the path lets the trials see</source>
         <translation>该路径让试验看到什么</translation>
     </message>
@@ -7078,7 +7083,7 @@ ratio %</source>
         <translation>已停止；本次运行的任何结果都不会保留或写入。</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+54"/>
         <source>Run the trials to learn the payload.</source>
         <translation>运行试验以学习负载。</translation>
     </message>
@@ -7200,7 +7205,22 @@ ratio %</source>
         <translation>未写入：%1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+21"/>
+        <source>Gains designed for the arm carrying %1 kg on %2 (planning fraction %3); the preview checks the first trial with them.</source>
+        <translation>已为在 %2 上承载 %1 kg 的机械臂设计增益（规划比例 %3）；预览会用它们检查第一次试验。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the tip link</source>
+        <translation>末端连杆</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Gains not designed: %1</source>
+        <translation>未设计增益：%1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Save scenario</source>
         <translation>保存场景</translation>
     </message>

@@ -62,6 +62,7 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     , m_exportUrdf(namedButton(tr("Export &URDF\u2026"), "exportPayloadUrdfButton"))
     , m_apply(namedButton(tr("A&pply to the robot\u2026"), "applyPayloadButton"))
     , m_saveScenario(namedButton(tr("Sa&ve scenario\u2026"), "savePayloadScenarioButton"))
+    , m_design(namedButton(tr("Design &gains for this payload"), "designPayloadGainsButton"))
     , m_job(new PayloadRunJob(this))
     , m_checkTimer(new QTimer(this))
 {
@@ -95,6 +96,7 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     connect(m_exportUrdf, &QPushButton::clicked, this, &PayloadDialog::exportUrdf);
     connect(m_apply, &QPushButton::clicked, this, &PayloadDialog::applyToRobot);
     connect(m_saveScenario, &QPushButton::clicked, this, &PayloadDialog::saveScenario);
+    connect(m_design, &QPushButton::clicked, this, &PayloadDialog::designForPayload);
     setBusy(false);
     clearResult();
     const QSize available = screen() ? screen()->availableGeometry().size() : QSize(1280, 860);
@@ -113,6 +115,10 @@ void PayloadDialog::buildLayout()
     auto *leftLayout = new QVBoxLayout(left);
     leftLayout->setContentsMargins(0, 0, 0, 0);
     leftLayout->addWidget(titledGroup(tr("Payload and prior"), m_form));
+    auto *designRow = new QHBoxLayout;
+    designRow->addStretch(1);
+    designRow->addWidget(m_design);
+    leftLayout->addLayout(designRow);
     leftLayout->addWidget(titledGroup(tr("What the path lets the trials see"), previewScroll), 1);
     left->setMinimumWidth(460);
 
@@ -264,6 +270,7 @@ void PayloadDialog::updateActions()
     const bool running = isRunning();
     m_run->setEnabled(!running && m_form->isValid());
     m_saveScenario->setEnabled(!running && m_form->isValid());
+    m_design->setEnabled(!running && m_form->isValid());
     const bool result = m_result && !running;
     m_accept->setEnabled(result && !m_accepted);
     m_exportParameters->setEnabled(result && m_accepted);

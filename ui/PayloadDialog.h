@@ -81,6 +81,10 @@ public slots:
     void exportUrdf();
     /// Saves the form's scenario, its payload section included, to a scenario file.
     void saveScenario();
+    /// Designs the gains, the planning fraction and the baseline trials' gains for the arm
+    /// carrying the form's prior (the payload starter: scenarioForRobot() with the payload), and
+    /// keeps everything else of the form's scenario; the preview checks them.
+    void designForPayload();
     void reject() override;
 
 signals:
@@ -121,6 +125,7 @@ private:
     QPushButton *m_exportUrdf;
     QPushButton *m_apply;
     QPushButton *m_saveScenario;
+    QPushButton *m_design;
     PayloadRunJob *m_job;
     QTimer *m_checkTimer;
     PathChooser m_chooser;

@@ -1,9 +1,11 @@
 // The result side of the payload step (PayloadDialog.h): the robot, Accept, the apply to a CAN
-// robot's drives, the exports of an accepted result, written all or none, and the scenario.
+// robot's drives, the exports of an accepted result, written all or none, and the scenario
+// (gains designed for the payload, saved to a file).
 #include "io/ScenarioFile.h"
 #include "model/Error.h"
 #include "service/PayloadRunExport.h"
 #include "service/PayloadRunJob.h"
+#include "session/RobotScenario.h"
 #include "ui/MessageBar.h"
 #include "ui/PayloadDialog.h"
 #include "ui/PayloadForm.h"
@@ -128,6 +130,35 @@ void PayloadDialog::writeExport(ExportKind kind)
             MessageBar::Severity::Success);
     } catch (const Error &e) {
         m_message->showMessage(tr("Not written: %1").arg(e.message()), MessageBar::Severity::Error);
+    }
+}
+
+void PayloadDialog::designForPayload()
+{
+    const auto given = m_form->scenario();
+    if (!given || isRunning())
+        return;
+    try {
+        const Scenario designed = scenarioForRobot(given->model, given->urdf, given->payload);
+        Scenario s = *given;
+        const double samplePeriod = s.controller.samplePeriod; // the robot's clock stays
+        s.controller = designed.controller;
+        s.controller.samplePeriod = samplePeriod;
+        s.planningFraction = designed.planningFraction;
+        s.payload.baselineKp = designed.payload.baselineKp;
+        s.payload.baselineKi = designed.payload.baselineKi;
+        s.payload.baselineKd = designed.payload.baselineKd;
+        m_form->setScenario(s);
+        m_message->showMessage(
+            tr("Gains designed for the arm carrying %1 kg on %2 (planning fraction %3); the "
+               "preview checks the first trial with them.")
+                .arg(s.payload.mass)
+                .arg(s.payload.link.isEmpty() ? tr("the tip link") : s.payload.link)
+                .arg(s.planningFraction, 0, 'g', 2),
+            MessageBar::Severity::Info);
+    } catch (const Error &e) {
+        m_message->showMessage(tr("Gains not designed: %1").arg(e.message()),
+                               MessageBar::Severity::Error);
     }
 }
 

@@ -1,7 +1,8 @@
 // The payload step through its real widgets (PayloadDialog, offscreen): the simulated Panda
 // carrying 1.5 kg 5 cm off the flange axis (test::pandaWithPayload()) learned to the issue's
 // targets by clicking, the estimate table against the run's result, the exports read back, Stop
-// leaving no result, refused values named at their fields, Save scenario keeping the edits, and
+// leaving no result, refused values named at their fields, the gains designed for the payload
+// (the Panda's rated 3 kg then learned), Save scenario keeping the edits, and
 // the window routing a scenario file with a payload section to the payload step instead of the
 // arm's session.
 #include "../session/PayloadScenarios.h"
@@ -10,6 +11,7 @@
 #include "io/ScenarioFile.h"
 #include "service/PayloadRun.h"
 #include "service/SessionController.h"
+#include "session/RobotScenario.h"
 #include "ui/FileController.h"
 #include "ui/MainActions.h"
 #include "ui/MessageBar.h"
@@ -155,6 +157,67 @@ private slots:
         QVERIFY(!d.findChild<QPushButton *>(QStringLiteral("acceptPayloadButton"))->isEnabled());
         QVERIFY(d.findChild<QPushButton *>(QStringLiteral("runPayloadButton"))->isEnabled());
         QCOMPARE(d.messageBar()->severity(), MessageBar::Severity::Info);
+    }
+
+    void designForPayload_stiffensForThePrior_keepsTheRest_andLearnsTheRatedPayload()
+    {
+        // The Panda's bare starter with its rated 3 kg mounted (prior 2.5 kg): the bare gains
+        // let the first trial sag to the 5 deg limit (learnid-bench-payload --starter); the
+        // technician designs the gains for the payload in the step.
+        Scenario s = scenarioForRobot(QStringLiteral("panda"));
+        s.simulation.inertiaPerturbation = 0.0;
+        s.iterations = 3;
+        s.payload.enabled = true;
+        s.payload.link = QStringLiteral("panda_link7");
+        s.payload.mass = 2.5;
+        s.payload.com = Eigen::Vector3d(0.0, 0.0, 0.05);
+        s.simulation.payload = test::pandaWithRatedPayload().simulation.payload;
+        PayloadDialog d(nullptr);
+        QSignalSpy preview(&d, &PayloadDialog::previewShown);
+        d.setScenario(s);
+        d.show();
+        QVERIFY(preview.wait(20000));
+        auto *design = d.findChild<QPushButton *>(QStringLiteral("designPayloadGainsButton"));
+        QVERIFY(design && design->isEnabled());
+        preview.clear();
+        QTest::mouseClick(design, Qt::LeftButton);
+        QVERIFY2(d.messageBar()->text().startsWith(
+                     QStringLiteral("Gains designed for the arm carrying 2.5 kg on panda_link7")),
+                 qPrintable(d.messageBar()->text()));
+        const Scenario after = *d.form()->scenario();
+        // Stiffer where the payload's weight acts (the shoulder and the wrist), the baseline
+        // trials on the bare arm's own gains, everything else as it was.
+        QVERIFY(after.controller.kp[1] > s.controller.kp[1]);
+        QVERIFY(after.controller.kp[5] > s.controller.kp[5]);
+        QCOMPARE(after.payload.baselineKp, s.controller.kp);
+        QCOMPARE(after.path.waypoints, s.path.waypoints);
+        QCOMPARE(after.simulation.payload.mass, 3.0);
+        QCOMPARE(after.payload.mass, 2.5);
+        QCOMPARE(after.iterations, 3);
+        QVERIFY(preview.wait(20000)); // planned again with the new gains
+        QVERIFY2(d.previewText().contains(QStringLiteral("The first trial passes its check")),
+                 qPrintable(d.previewText()));
+
+        // And the payload it was designed for is learned.
+        QSignalSpy finished(&d, &PayloadDialog::runFinished);
+        QTest::mouseClick(d.findChild<QPushButton *>(QStringLiteral("runPayloadButton")),
+                          Qt::LeftButton);
+        QVERIFY(finished.wait(120000));
+        QVERIFY2(finished.constFirst().at(0).toBool(), qPrintable(d.messageBar()->text()));
+        const PayloadBody &b = d.result()->fit.estimate.body;
+        QVERIFY2(std::abs(b.mass - 3.0) < 0.03, qPrintable(QString::number(b.mass)));
+        QVERIFY2((b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 3e-3,
+                 qPrintable(QString::number(b.com.z())));
+
+        // On a slower clock (a CAN bus at 4 ms) the robot's period stays, and the preview checks
+        // the gains at it (the starter designs for 2 ms: docs/user-guide.md).
+        s.controller.samplePeriod = 0.004;
+        d.setScenario(s);
+        QVERIFY(preview.wait(20000));
+        preview.clear();
+        QTest::mouseClick(design, Qt::LeftButton);
+        QCOMPARE(d.form()->scenario()->controller.samplePeriod, 0.004);
+        QVERIFY(preview.wait(20000));
     }
 
     void saveScenario_keepsTheStepsEdits_andNotWhileAFieldIsWrong()
