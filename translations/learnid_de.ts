@@ -2486,7 +2486,7 @@
 <context>
     <name>PayloadRun</name>
     <message>
-        <location filename="../core/service/PayloadRun.cpp" line="+28"/>
+        <location filename="../core/service/PayloadRun.cpp" line="+31"/>
         <source>payload: the scenario has no payload section</source>
         <translation>payload: das Szenario hat keinen Abschnitt payload</translation>
     </message>
@@ -2504,12 +2504,17 @@
 <context>
     <name>PayloadRunExport</name>
     <message numerus="yes">
-        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
+        <location filename="../core/service/PayloadRunExport.cpp" line="+41"/>
         <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
         <translation>
             <numerusform>%1 mit einer Nutzlast an %2, gelernt in %n Versuch mit festgehaltenem Modell des Arms</numerusform>
             <numerusform>%1 mit einer Nutzlast an %2, gelernt in %n Versuchen mit festgehaltenem Modell des Arms</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>%1: the folder for the trial CSVs cannot be created</source>
+        <translation>%1: der Ordner für die Versuchs-CSVs kann nicht angelegt werden</translation>
     </message>
 </context>
 <context>
@@ -7035,7 +7040,12 @@ Verhältnis %</translation>
         <translation>&amp;Verstärkungen für diese Nutzlast auslegen</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+1"/>
+        <source>Save report and &amp;trials…</source>
+        <translation>&amp;Bericht und Versuche speichern…</translation>
+    </message>
+    <message>
+        <location line="+53"/>
         <source>Payload and prior</source>
         <translation>Nutzlast und Vorwissen</translation>
     </message>
@@ -7060,7 +7070,7 @@ Verhältnis %</translation>
         <translation>Schließen</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>The CAN robot %1/%2</source>
         <translation>Der CAN-Roboter %1/%2</translation>
     </message>
@@ -7105,7 +7115,7 @@ Verhältnis %</translation>
         <translation>Gestoppt; von diesem Lauf wird nichts behalten oder geschrieben.</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+55"/>
         <source>Run the trials to learn the payload.</source>
         <translation>Die Versuche ausführen, um die Nutzlast zu lernen.</translation>
     </message>
@@ -7224,11 +7234,12 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+55"/>
         <source>Not written: %1</source>
         <translation>Nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="-34"/>
         <source>Gains designed for the arm carrying %1 kg on %2 (planning fraction %3); the preview checks the first trial with them.</source>
         <translation>Verstärkungen für den Arm mit %1 kg an %2 ausgelegt (Planungsanteil %3); die Vorschau prüft den ersten Versuch damit.</translation>
     </message>
@@ -7243,7 +7254,25 @@ Verhältnis %</translation>
         <translation>Verstärkungen nicht ausgelegt: %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>Save the run&apos;s report and trials</source>
+        <translation>Bericht und Versuche des Laufs speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Payload reports (*.json)</source>
+        <translation>Nutzlastberichte (*.json)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>Written: %1 and %n trial CSV(s) in %2</source>
+        <translation>
+            <numerusform>Geschrieben: %1 und %n Versuchs-CSV in %2</numerusform>
+            <numerusform>Geschrieben: %1 und %n Versuchs-CSVs in %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Save scenario</source>
         <translation>Szenario speichern</translation>
     </message>

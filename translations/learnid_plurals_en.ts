@@ -82,7 +82,7 @@
 <context>
     <name>PayloadRunExport</name>
     <message numerus="yes">
-        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
+        <location filename="../core/service/PayloadRunExport.cpp" line="+41"/>
         <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
         <translation>
             <numerusform>%1 with a payload on %2 learned in %n trial with the arm&apos;s model held fixed</numerusform>
@@ -167,11 +167,19 @@
 <context>
     <name>learnid::PayloadDialog</name>
     <message numerus="yes">
-        <location filename="../ui/PayloadDialog.cpp" line="+333"/>
+        <location filename="../ui/PayloadDialog.cpp" line="+337"/>
         <source>Take the payload off %1 for the %n baseline trial(s), then press Continue.</source>
         <translation>
             <numerusform>Take the payload off %1 for the %n baseline trial, then press Continue.</numerusform>
             <numerusform>Take the payload off %1 for the %n baseline trials, then press Continue.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/PayloadDialogExport.cpp" line="+182"/>
+        <source>Written: %1 and %n trial CSV(s) in %2</source>
+        <translation>
+            <numerusform>Written: %1 and %n trial CSV in %2</numerusform>
+            <numerusform>Written: %1 and %n trial CSVs in %2</numerusform>
         </translation>
     </message>
 </context>

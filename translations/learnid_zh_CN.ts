@@ -2477,7 +2477,7 @@
 <context>
     <name>PayloadRun</name>
     <message>
-        <location filename="../core/service/PayloadRun.cpp" line="+28"/>
+        <location filename="../core/service/PayloadRun.cpp" line="+31"/>
         <source>payload: the scenario has no payload section</source>
         <translation>payload：场景没有 payload 部分</translation>
     </message>
@@ -2495,11 +2495,16 @@
 <context>
     <name>PayloadRunExport</name>
     <message numerus="yes">
-        <location filename="../core/service/PayloadRunExport.cpp" line="+38"/>
+        <location filename="../core/service/PayloadRunExport.cpp" line="+41"/>
         <source>%1 with a payload on %2 learned in %n trial(s) with the arm&apos;s model held fixed</source>
         <translation>
             <numerusform>%1，负载位于 %2，在手臂模型保持不变的情况下经 %n 次试验学习</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>%1: the folder for the trial CSVs cannot be created</source>
+        <translation>%1：无法创建试验 CSV 的文件夹</translation>
     </message>
 </context>
 <context>
@@ -7013,7 +7018,12 @@ ratio %</source>
         <translation>为此负载设计增益(&amp;G)</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+1"/>
+        <source>Save report and &amp;trials…</source>
+        <translation>保存报告和试验(&amp;T)…</translation>
+    </message>
+    <message>
+        <location line="+53"/>
         <source>Payload and prior</source>
         <translation>负载与先验</translation>
     </message>
@@ -7038,7 +7048,7 @@ ratio %</source>
         <translation>关闭</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>The CAN robot %1/%2</source>
         <translation>CAN 机器人 %1/%2</translation>
     </message>
@@ -7083,7 +7093,7 @@ ratio %</source>
         <translation>已停止；本次运行的任何结果都不会保留或写入。</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+55"/>
         <source>Run the trials to learn the payload.</source>
         <translation>运行试验以学习负载。</translation>
     </message>
@@ -7201,11 +7211,12 @@ ratio %</source>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+55"/>
         <source>Not written: %1</source>
         <translation>未写入：%1</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="-34"/>
         <source>Gains designed for the arm carrying %1 kg on %2 (planning fraction %3); the preview checks the first trial with them.</source>
         <translation>已为在 %2 上承载 %1 kg 的机械臂设计增益（规划比例 %3）；预览会用它们检查第一次试验。</translation>
     </message>
@@ -7220,7 +7231,24 @@ ratio %</source>
         <translation>未设计增益：%1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>Save the run&apos;s report and trials</source>
+        <translation>保存本次运行的报告和试验</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Payload reports (*.json)</source>
+        <translation>负载报告 (*.json)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>Written: %1 and %n trial CSV(s) in %2</source>
+        <translation>
+            <numerusform>已写入：%1 以及 %2 中的 %n 个试验 CSV</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Save scenario</source>
         <translation>保存场景</translation>
     </message>

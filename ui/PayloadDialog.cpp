@@ -63,6 +63,7 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     , m_apply(namedButton(tr("A&pply to the robot\u2026"), "applyPayloadButton"))
     , m_saveScenario(namedButton(tr("Sa&ve scenario\u2026"), "savePayloadScenarioButton"))
     , m_design(namedButton(tr("Design &gains for this payload"), "designPayloadGainsButton"))
+    , m_saveRecord(namedButton(tr("Save report and &trials\u2026"), "savePayloadRecordButton"))
     , m_job(new PayloadRunJob(this))
     , m_checkTimer(new QTimer(this))
 {
@@ -97,6 +98,7 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     connect(m_apply, &QPushButton::clicked, this, &PayloadDialog::applyToRobot);
     connect(m_saveScenario, &QPushButton::clicked, this, &PayloadDialog::saveScenario);
     connect(m_design, &QPushButton::clicked, this, &PayloadDialog::designForPayload);
+    connect(m_saveRecord, &QPushButton::clicked, this, &PayloadDialog::saveRecord);
     setBusy(false);
     clearResult();
     const QSize available = screen() ? screen()->availableGeometry().size() : QSize(1280, 860);
@@ -155,6 +157,7 @@ void PayloadDialog::buildLayout()
     buttons->addWidget(m_exportParameters);
     buttons->addWidget(m_exportUrdf);
     buttons->addWidget(m_apply);
+    buttons->addWidget(m_saveRecord);
     buttons->addStretch(1);
     buttons->addWidget(m_saveScenario);
     buttons->addWidget(close);
@@ -273,6 +276,7 @@ void PayloadDialog::updateActions()
     m_design->setEnabled(!running && m_form->isValid());
     const bool result = m_result && !running;
     m_accept->setEnabled(result && !m_accepted);
+    m_saveRecord->setEnabled(result);
     m_exportParameters->setEnabled(result && m_accepted);
     m_exportUrdf->setEnabled(result && m_accepted);
     m_apply->setEnabled(result && m_accepted);

@@ -40,7 +40,7 @@ class PayloadDialog : public QDialog
     Q_OBJECT
 
 public:
-    enum class ExportKind { ParameterFile, Urdf, Scenario };
+    enum class ExportKind { ParameterFile, Urdf, Scenario, Record };
     /// Asks for a path to write (empty: cancelled); the default shows a file dialog.
     using PathChooser = std::function<QString(ExportKind kind, const QString &suggested)>;
     /// Asks whether to go on (the question in words); the default shows a message box.
@@ -81,6 +81,8 @@ public slots:
     void exportUrdf();
     /// Saves the form's scenario, its payload section included, to a scenario file.
     void saveScenario();
+    /// Saves the last run's report and trial CSVs (writePayloadRecord), accepted or not.
+    void saveRecord();
     /// Designs the gains, the planning fraction and the baseline trials' gains for the arm
     /// carrying the form's prior (the payload starter: scenarioForRobot() with the payload), and
     /// keeps everything else of the form's scenario; the preview checks them.
@@ -126,6 +128,7 @@ private:
     QPushButton *m_apply;
     QPushButton *m_saveScenario;
     QPushButton *m_design;
+    QPushButton *m_saveRecord;
     PayloadRunJob *m_job;
     QTimer *m_checkTimer;
     PathChooser m_chooser;

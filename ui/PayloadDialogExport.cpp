@@ -1,6 +1,6 @@
 // The result side of the payload step (PayloadDialog.h): the robot, Accept, the apply to a CAN
 // robot's drives, the exports of an accepted result, written all or none, and the scenario
-// (gains designed for the payload, saved to a file).
+// (gains designed for the payload, saved to a file), and the run's record (report, trial CSVs).
 #include "io/ScenarioFile.h"
 #include "model/Error.h"
 #include "service/PayloadRunExport.h"
@@ -159,6 +159,32 @@ void PayloadDialog::designForPayload()
     } catch (const Error &e) {
         m_message->showMessage(tr("Gains not designed: %1").arg(e.message()),
                                MessageBar::Severity::Error);
+    }
+}
+
+void PayloadDialog::saveRecord()
+{
+    if (!m_result || isRunning())
+        return;
+    const QString dir = m_settings ? m_settings->lastDirectory() : QDir::homePath();
+    const QString suggested = QDir(dir).filePath(QStringLiteral("payload-run.json"));
+    const QString path =
+        m_chooser ? m_chooser(ExportKind::Record, suggested)
+                  : QFileDialog::getSaveFileName(this, tr("Save the run's report and trials"),
+                                                 suggested, tr("Payload reports (*.json)"));
+    if (path.isEmpty())
+        return;
+    try {
+        writePayloadRecord(*m_result, path);
+        if (m_settings)
+            m_settings->setLastDirectory(QFileInfo(path).absolutePath());
+        m_message->showMessage(
+            tr("Written: %1 and %n trial CSV(s) in %2", nullptr, int(m_result->trialCsvs.size()))
+                .arg(QDir::toNativeSeparators(path),
+                     QDir::toNativeSeparators(payloadRecordTrialFolder(path))),
+            MessageBar::Severity::Success);
+    } catch (const Error &e) {
+        m_message->showMessage(tr("Not written: %1").arg(e.message()), MessageBar::Severity::Error);
     }
 }
 

@@ -1,5 +1,8 @@
 #include "service/PayloadRun.h"
 
+#include "service/PayloadReport.h"
+#include "service/PayloadRunExport.h"
+
 #include "io/ScenarioFile.h"
 #include "model/Error.h"
 #include "model/ModelFactory.h"
@@ -128,6 +131,8 @@ PayloadRunResult payloadRunResult(const PayloadRunSession &run)
     if (!learned)
         throw Error(Text::tr("no trial was learned from: the payload is not estimated"));
     r.learnedTrial = learned->index;
+    r.report = payloadReportJson(s);
+    r.trialCsvs = payloadTrialCsvFiles(s.history(), QString());
     r.fit = *learned->fit;
     r.maxTrackingErrorDeg = learned->maxTrackingErrorDeg;
     r.rmsTrackingErrorDeg = learned->rmsTrackingErrorDeg;

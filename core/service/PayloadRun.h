@@ -8,6 +8,9 @@
 #include "types/Scenario.h"
 
 #include <Eigen/Core>
+#include <QByteArray>
+#include <QList>
+#include <QPair>
 #include <QString>
 #include <QStringList>
 #include <array>
@@ -97,6 +100,10 @@ struct PayloadRunResult
     std::vector<PayloadTrialRow> trials;
     int learnedTrial = -1; ///< the trial whose fit is the result
     PayloadFit fit;
+    /// The run's record, built in the job's thread: its report (payloadReportJson()) and the CSV
+    /// of every trial that moved, as (trial-NNN.csv, content) (payloadTrialCsvFiles()).
+    QByteArray report;
+    QList<QPair<QString, QByteArray>> trialCsvs;
     Eigen::VectorXd maxTrackingErrorDeg; ///< that trial's, per joint [deg] (n)
     Eigen::VectorXd rmsTrackingErrorDeg; ///< per joint [deg] (n)
 };

@@ -7,12 +7,15 @@
 #include "io/AtomicFile.h"
 #include "io/TrialCsv.h"
 #include "io/UrdfPayload.h"
+#include "model/Error.h"
 #include "model/ModelFactory.h"
 #include "service/PayloadExport.h"
 #include "service/SessionExport.h"
 #include "service/StandardExport.h"
 
 #include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
 
 namespace learnid {
 
@@ -100,6 +103,23 @@ QList<QPair<QString, QByteArray>> payloadTrialCsvFiles(const std::vector<Payload
 QStringList writePayloadRunExport(const PayloadRunResult &r, const LogExportRequest &request)
 {
     const QList<QPair<QString, QByteArray>> files = payloadRunExportFiles(r, request);
+    return writeExportFiles(files);
+}
+
+QString payloadRecordTrialFolder(const QString &reportPath)
+{
+    const QFileInfo report(reportPath);
+    return report.dir().filePath(report.completeBaseName() + QStringLiteral("-trials"));
+}
+
+QStringList writePayloadRecord(const PayloadRunResult &r, const QString &reportPath)
+{
+    const QString folder = payloadRecordTrialFolder(reportPath);
+    QList<QPair<QString, QByteArray>> files{{reportPath, r.report}};
+    for (const auto &[name, content] : r.trialCsvs)
+        files.append({QDir(folder).filePath(name), content});
+    if (!QDir().mkpath(folder))
+        throw Error(Text::tr("%1: the folder for the trial CSVs cannot be created").arg(folder));
     return writeExportFiles(files);
 }
 

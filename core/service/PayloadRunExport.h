@@ -38,4 +38,13 @@ QList<QPair<QString, QByteArray>> payloadTrialCsvFiles(const std::vector<Payload
 /// Writes the request's files all or none and returns their paths; throws Error naming the file.
 QStringList writePayloadRunExport(const PayloadRunResult &result, const LogExportRequest &request);
 
+/// Where the trial CSVs of a run's record go: beside the report, in a folder named after it
+/// (run.json -> run-trials/).
+QString payloadRecordTrialFolder(const QString &reportPath);
+
+/// Writes the run's record, all or none: its report (learnid-payload-report/1) at reportPath and
+/// its trial CSVs in payloadRecordTrialFolder(reportPath), created first. Returns the paths;
+/// throws Error naming the file or folder that could not be written.
+QStringList writePayloadRecord(const PayloadRunResult &result, const QString &reportPath);
+
 } // namespace learnid

@@ -1,10 +1,10 @@
 // The payload step through its real widgets (PayloadDialog, offscreen): the simulated Panda
 // carrying 1.5 kg 5 cm off the flange axis (test::pandaWithPayload()) learned to the issue's
-// targets by clicking, the estimate table against the run's result, the exports read back, Stop
-// leaving no result, refused values named at their fields, the gains designed for the payload
-// (the Panda's rated 3 kg then learned), Save scenario keeping the edits, and
-// the window routing a scenario file with a payload section to the payload step instead of the
-// arm's session.
+// targets by clicking, the estimate table against the run's result, the run's report and trial
+// CSVs and the exports read back, Stop leaving no result, refused values named at their fields,
+// the gains designed for the payload (the Panda's rated 3 kg then learned), Save scenario keeping
+// the edits, and the window routing a scenario file with a payload section to the payload step
+// instead of the arm's session.
 #include "../session/PayloadScenarios.h"
 #include "UiTestSupport.h"
 #include "io/ParameterFile.h"
@@ -23,6 +23,10 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -107,16 +111,40 @@ private slots:
         QCOMPARE(cell(t, 0, Column::Prior), 1.2);
         QCOMPARE(cell(t, 0, Column::StandardError), result->fit.estimate.bodyStandardError[0]);
 
-        // Accept, then both exports, written where the chooser says; they read back.
-        QVERIFY(accept->isEnabled() && !exportFile->isEnabled());
-        QTest::mouseClick(accept, Qt::LeftButton);
-        QVERIFY(exportFile->isEnabled() && exportUrdf->isEnabled());
+        // The run's record, before any Accept: the report and every trial's CSV, read back
+        // against the table (the same report `learnid-cli run --report` writes).
         QTemporaryDir dir;
         d.setPathChooser([&dir](PayloadDialog::ExportKind kind, const QString &) {
             return dir.filePath(kind == PayloadDialog::ExportKind::ParameterFile
                                     ? QStringLiteral("panda-payload.json")
+                                : kind == PayloadDialog::ExportKind::Record
+                                    ? QStringLiteral("run.json")
                                     : QStringLiteral("panda-payload.urdf"));
         });
+        auto *record = d.findChild<QPushButton *>(QStringLiteral("savePayloadRecordButton"));
+        QVERIFY(record && record->isEnabled());
+        QTest::mouseClick(record, Qt::LeftButton);
+        QVERIFY2(d.messageBar()->severity() == MessageBar::Severity::Success,
+                 qPrintable(d.messageBar()->text()));
+        QFile reportFile(dir.filePath(QStringLiteral("run.json")));
+        QVERIFY(reportFile.open(QIODevice::ReadOnly));
+        const QJsonObject report = QJsonDocument::fromJson(reportFile.readAll()).object();
+        QCOMPARE(report.value(QStringLiteral("schema")).toString(),
+                 QStringLiteral("learnid-payload-report/1"));
+        const QJsonArray reported = report.value(QStringLiteral("trials")).toArray();
+        QCOMPARE(reported.size(), d.trialTable()->rowCount());
+        QCOMPARE(reported.last().toObject().value(QStringLiteral("mass")).toDouble(),
+                 result->fit.estimate.body.mass);
+        for (int i = 0; i < 3; ++i) {
+            const QString csv = dir.filePath(
+                QStringLiteral("run-trials/trial-%1.csv").arg(i, 3, 10, QLatin1Char('0')));
+            QVERIFY2(QFileInfo(csv).size() > 0, qPrintable(csv));
+        }
+
+        // Accept, then both exports, written where the chooser says; they read back.
+        QVERIFY(accept->isEnabled() && !exportFile->isEnabled());
+        QTest::mouseClick(accept, Qt::LeftButton);
+        QVERIFY(exportFile->isEnabled() && exportUrdf->isEnabled());
         QTest::mouseClick(exportFile, Qt::LeftButton);
         QCOMPARE(d.messageBar()->severity(), MessageBar::Severity::Success);
         const ParameterFileContent file =
@@ -132,7 +160,7 @@ private slots:
         // An edit makes the result stale: it is dropped, nothing left to export.
         typeInto(d.form()->field(QStringLiteral("payload.prior.mass")), QStringLiteral("1.3"));
         QVERIFY(!d.result());
-        QVERIFY(!exportFile->isEnabled() && !accept->isEnabled());
+        QVERIFY(!exportFile->isEnabled() && !accept->isEnabled() && !record->isEnabled());
         QCOMPARE(d.estimateTable()->rowCount(), 0);
     }
 
