@@ -7203,7 +7203,7 @@ Verhältnis %</translation>
         <translation>Nicht übertragen: %1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+35"/>
         <source>Export parameter file</source>
         <translation>Parameterdatei exportieren</translation>
     </message>
@@ -7213,12 +7213,12 @@ Verhältnis %</translation>
         <translation>Parameterdateien (*.json)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Export URDF with the payload</source>
         <translation>URDF mit der Nutzlast exportieren</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>URDF (*.urdf)</source>
         <translation>URDF (*.urdf)</translation>
     </message>
@@ -7228,18 +7228,18 @@ Verhältnis %</translation>
         <translation>learnid %1, %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Written: %1</source>
         <translation>Geschrieben: %1</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+55"/>
+        <location line="+51"/>
         <source>Not written: %1</source>
         <translation>Nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location line="-34"/>
+        <location line="-30"/>
         <source>Gains designed for the arm carrying %1 kg on %2 (planning fraction %3); the preview checks the first trial with them.</source>
         <translation>Verstärkungen für den Arm mit %1 kg an %2 ausgelegt (Planungsanteil %3); die Vorschau prüft den ersten Versuch damit.</translation>
     </message>
@@ -7254,17 +7254,17 @@ Verhältnis %</translation>
         <translation>Verstärkungen nicht ausgelegt: %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
         <source>Save the run&apos;s report and trials</source>
         <translation>Bericht und Versuche des Laufs speichern</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Payload reports (*.json)</source>
         <translation>Nutzlastberichte (*.json)</translation>
     </message>
     <message numerus="yes">
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Written: %1 and %n trial CSV(s) in %2</source>
         <translation>
             <numerusform>Geschrieben: %1 und %n Versuchs-CSV in %2</numerusform>
@@ -7272,17 +7272,17 @@ Verhältnis %</translation>
         </translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+15"/>
         <source>Save scenario</source>
         <translation>Szenario speichern</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Scenario files (*.json)</source>
         <translation>Szenariodateien (*.json)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Scenario saved: %1</source>
         <translation>Szenario gespeichert: %1</translation>
     </message>

@@ -175,7 +175,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/PayloadDialogExport.cpp" line="+182"/>
+        <location filename="../ui/PayloadDialogExport.cpp" line="+188"/>
         <source>Written: %1 and %n trial CSV(s) in %2</source>
         <translation>
             <numerusform>Written: %1 and %n trial CSV in %2</numerusform>

@@ -7180,7 +7180,7 @@ ratio %</source>
         <translation>未应用：%1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+35"/>
         <source>Export parameter file</source>
         <translation>导出参数文件</translation>
     </message>
@@ -7190,12 +7190,12 @@ ratio %</source>
         <translation>参数文件 (*.json)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Export URDF with the payload</source>
         <translation>导出带负载的 URDF</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>URDF (*.urdf)</source>
         <translation>URDF (*.urdf)</translation>
     </message>
@@ -7205,18 +7205,18 @@ ratio %</source>
         <translation>learnid %1，%2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Written: %1</source>
         <translation>已写入：%1</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+55"/>
+        <location line="+51"/>
         <source>Not written: %1</source>
         <translation>未写入：%1</translation>
     </message>
     <message>
-        <location line="-34"/>
+        <location line="-30"/>
         <source>Gains designed for the arm carrying %1 kg on %2 (planning fraction %3); the preview checks the first trial with them.</source>
         <translation>已为在 %2 上承载 %1 kg 的机械臂设计增益（规划比例 %3）；预览会用它们检查第一次试验。</translation>
     </message>
@@ -7231,34 +7231,34 @@ ratio %</source>
         <translation>未设计增益：%1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
         <source>Save the run&apos;s report and trials</source>
         <translation>保存本次运行的报告和试验</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Payload reports (*.json)</source>
         <translation>负载报告 (*.json)</translation>
     </message>
     <message numerus="yes">
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Written: %1 and %n trial CSV(s) in %2</source>
         <translation>
             <numerusform>已写入：%1 以及 %2 中的 %n 个试验 CSV</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+15"/>
         <source>Save scenario</source>
         <translation>保存场景</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Scenario files (*.json)</source>
         <translation>场景文件 (*.json)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Scenario saved: %1</source>
         <translation>场景已保存：%1</translation>
     </message>

@@ -105,6 +105,11 @@ private:
     void updateActions();
     void requestCheck();
     void writeExport(ExportKind kind);
+    /// Where to write (empty: cancelled): the chooser, or a file dialog in the last folder.
+    QString choosePath(ExportKind kind, const QString &fileName, const QString &title,
+                       const QString &filter);
+    /// Remembers the folder of a file just written, for the next choice.
+    void rememberFolder(const QString &writtenPath);
     void showApplied(const QString &error);
     void askForMounting(bool mount, const QString &link, int baselineTrials);
 

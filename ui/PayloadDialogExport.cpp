@@ -100,20 +100,31 @@ void PayloadDialog::exportUrdf()
     writeExport(ExportKind::Urdf);
 }
 
+QString PayloadDialog::choosePath(ExportKind kind, const QString &fileName, const QString &title,
+                                  const QString &filter)
+{
+    const QString dir = m_settings ? m_settings->lastDirectory() : QDir::homePath();
+    const QString suggested = QDir(dir).filePath(fileName);
+    return m_chooser ? m_chooser(kind, suggested)
+                     : QFileDialog::getSaveFileName(this, title, suggested, filter);
+}
+
+void PayloadDialog::rememberFolder(const QString &writtenPath)
+{
+    if (m_settings)
+        m_settings->setLastDirectory(QFileInfo(writtenPath).absolutePath());
+}
+
 void PayloadDialog::writeExport(ExportKind kind)
 {
     if (!m_result || !m_accepted)
         return;
     const bool parameters = kind == ExportKind::ParameterFile;
-    const QString dir = m_settings ? m_settings->lastDirectory() : QDir::homePath();
-    const QString suggested = QDir(dir).filePath(parameters ? QStringLiteral("payload.json")
-                                                            : QStringLiteral("payload.urdf"));
     const QString path =
-        m_chooser    ? m_chooser(kind, suggested)
-        : parameters ? QFileDialog::getSaveFileName(this, tr("Export parameter file"), suggested,
-                                                    tr("Parameter files (*.json)"))
-                     : QFileDialog::getSaveFileName(this, tr("Export URDF with the payload"),
-                                                    suggested, tr("URDF (*.urdf)"));
+        parameters ? choosePath(kind, QStringLiteral("payload.json"), tr("Export parameter file"),
+                                tr("Parameter files (*.json)"))
+                   : choosePath(kind, QStringLiteral("payload.urdf"),
+                                tr("Export URDF with the payload"), tr("URDF (*.urdf)"));
     if (path.isEmpty())
         return;
     LogExportRequest request;
@@ -123,8 +134,7 @@ void PayloadDialog::writeExport(ExportKind kind)
                                    QDateTime::currentDateTimeUtc().toString(Qt::ISODate));
     try {
         const QStringList paths = writePayloadRunExport(*m_result, request);
-        if (m_settings)
-            m_settings->setLastDirectory(QFileInfo(path).absolutePath());
+        rememberFolder(path);
         m_message->showMessage(
             tr("Written: %1").arg(QDir::toNativeSeparators(paths.join(QStringLiteral(", ")))),
             MessageBar::Severity::Success);
@@ -166,18 +176,14 @@ void PayloadDialog::saveRecord()
 {
     if (!m_result || isRunning())
         return;
-    const QString dir = m_settings ? m_settings->lastDirectory() : QDir::homePath();
-    const QString suggested = QDir(dir).filePath(QStringLiteral("payload-run.json"));
     const QString path =
-        m_chooser ? m_chooser(ExportKind::Record, suggested)
-                  : QFileDialog::getSaveFileName(this, tr("Save the run's report and trials"),
-                                                 suggested, tr("Payload reports (*.json)"));
+        choosePath(ExportKind::Record, QStringLiteral("payload-run.json"),
+                   tr("Save the run's report and trials"), tr("Payload reports (*.json)"));
     if (path.isEmpty())
         return;
     try {
         writePayloadRecord(*m_result, path);
-        if (m_settings)
-            m_settings->setLastDirectory(QFileInfo(path).absolutePath());
+        rememberFolder(path);
         m_message->showMessage(
             tr("Written: %1 and %n trial CSV(s) in %2", nullptr, int(m_result->trialCsvs.size()))
                 .arg(QDir::toNativeSeparators(path),
@@ -193,18 +199,13 @@ void PayloadDialog::saveScenario()
     const auto scenario = m_form->scenario();
     if (!scenario || isRunning())
         return;
-    const QString dir = m_settings ? m_settings->lastDirectory() : QDir::homePath();
-    const QString suggested = QDir(dir).filePath(QStringLiteral("payload-scenario.json"));
-    const QString path = m_chooser
-                             ? m_chooser(ExportKind::Scenario, suggested)
-                             : QFileDialog::getSaveFileName(this, tr("Save scenario"), suggested,
-                                                            tr("Scenario files (*.json)"));
+    const QString path = choosePath(ExportKind::Scenario, QStringLiteral("payload-scenario.json"),
+                                    tr("Save scenario"), tr("Scenario files (*.json)"));
     if (path.isEmpty())
         return;
     try {
         writeScenarioFile(path, *scenario);
-        if (m_settings)
-            m_settings->setLastDirectory(QFileInfo(path).absolutePath());
+        rememberFolder(path);
         m_message->showMessage(tr("Scenario saved: %1").arg(QDir::toNativeSeparators(path)),
                                MessageBar::Severity::Success);
     } catch (const Error &e) {

@@ -37,24 +37,26 @@ inline QList<PayloadRow> payloadTrialRows(const QString &out)
     return rows;
 }
 
-// The estimate on the table row whose name starts the line ("m [kg]", "cx [m]").
-inline double tableValue(const QString &out, const QString &name)
+// Column `column` (0: the estimate, 1: its standard error) of the payload table's row whose
+// name starts the line ("m [kg]", "cx [m]"); NaN when there is none.
+inline double tableNumber(const QString &out, const QString &name, int column)
 {
-    const QRegularExpression row(
-        QStringLiteral("^%1 \\[[^\\]]*\\]\\s+(\\S+)").arg(QRegularExpression::escape(name)),
-        QRegularExpression::MultilineOption);
+    const QRegularExpression row(QStringLiteral("^%1 \\[[^\\]]*\\](?:\\s+\\S+){%2}\\s+(\\S+)")
+                                     .arg(QRegularExpression::escape(name))
+                                     .arg(column),
+                                 QRegularExpression::MultilineOption);
     const QRegularExpressionMatch m = row.match(out);
     return m.hasMatch() ? m.captured(1).toDouble() : NAN;
 }
 
-// The standard error on that row (the column after the estimate).
+inline double tableValue(const QString &out, const QString &name)
+{
+    return tableNumber(out, name, 0);
+}
+
 inline double tableStdError(const QString &out, const QString &name)
 {
-    const QRegularExpression row(
-        QStringLiteral("^%1 \\[[^\\]]*\\]\\s+\\S+\\s+(\\S+)").arg(QRegularExpression::escape(name)),
-        QRegularExpression::MultilineOption);
-    const QRegularExpressionMatch m = row.match(out);
-    return m.hasMatch() ? m.captured(1).toDouble() : NAN;
+    return tableNumber(out, name, 1);
 }
 
 inline QString tableRow(const QString &out, const QString &name)

@@ -47,6 +47,33 @@ Scenario pandaAt4ms()
     return s;
 }
 
+// A window on the CAN robot that learnid-robot-sim (a second process) serves over virtualcan,
+// and the payload step opened by opening a scenario file there.
+struct CanPayloadStep
+{
+    WindowFixture f;
+    RobotSimProcess sim{QStringLiteral(LEARNID_ROBOT_SIM_PATH)};
+    PayloadDialog *dialog = nullptr;
+
+    // Writes s as `name`, starts the simulator with it (simArgs after --scenario and --nodes),
+    // chooses the CAN robot and opens the file; true when the step is shown.
+    bool open(const Scenario &s, const QString &name, const QStringList &simArgs = {})
+    {
+        const QString scenario = f.dir.filePath(name);
+        writeScenarioFile(scenario, s);
+        const quint16 port = freeLoopbackPort();
+        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
+        if (port == 0 || !sim.start(interface, QStringList{QStringLiteral("--scenario"), scenario,
+                                                           QStringLiteral("--nodes"), kNodes} +
+                                                   simArgs))
+            return false;
+        chooseCan(f, interface);
+        f.window->files()->openScenarioFrom(scenario); // routed to the payload step
+        dialog = f.window->payloadDialog();
+        return dialog && QTest::qWaitFor([this] { return dialog->isVisible(); });
+    }
+};
+
 } // namespace
 
 class TestUiCanPayload : public QObject
@@ -56,22 +83,11 @@ class TestUiCanPayload : public QObject
 private slots:
     void payloadOnTheCanRobot_learnedAcceptedApplied()
     {
-        WindowFixture f;
-        const QString scenario = f.dir.filePath(QStringLiteral("panda-payload-4ms.json"));
-        writeScenarioFile(scenario, pandaAt4ms());
-        const quint16 port = freeLoopbackPort();
-        QVERIFY(port > 0);
-        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
-        const QString state = f.dir.filePath(QStringLiteral("state.json"));
-        RobotSimProcess sim(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-        QVERIFY(
-            sim.start(interface, {QStringLiteral("--scenario"), scenario, QStringLiteral("--nodes"),
-                                  kNodes, QStringLiteral("--state"), state}));
-        chooseCan(f, interface);
-        f.window->files()->openScenarioFrom(scenario); // routed to the payload step
-        PayloadDialog *d = f.window->payloadDialog();
-        QVERIFY(d);
-        QTRY_VERIFY(d->isVisible());
+        CanPayloadStep step;
+        const QString state = step.f.dir.filePath(QStringLiteral("state.json"));
+        QVERIFY(step.open(pandaAt4ms(), QStringLiteral("panda-payload-4ms.json"),
+                          {QStringLiteral("--state"), state}));
+        PayloadDialog *d = step.dialog;
         QVERIFY2(d->windowTitle().contains(QStringLiteral("CAN robot virtualcan")),
                  qPrintable(d->windowTitle()));
         auto *run = d->findChild<QPushButton *>(QStringLiteral("runPayloadButton"));
@@ -126,25 +142,14 @@ private slots:
         // The arm's model 10 % off the drives' arm (seed 8): one baseline trial without the
         // payload, which the technician takes off when asked (the simulator starts without it)
         // and mounts after it, each confirmed with Continue.
-        WindowFixture f;
         Scenario s = pandaAt4ms();
         s.simulation.inertiaPerturbation = 0.1;
         s.simulation.seed = 8;
         s.payload.baselineTrials = 1;
-        const QString scenario = f.dir.filePath(QStringLiteral("panda-baseline-4ms.json"));
-        writeScenarioFile(scenario, s);
-        const quint16 port = freeLoopbackPort();
-        QVERIFY(port > 0);
-        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
-        RobotSimProcess sim(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-        QVERIFY(
-            sim.start(interface, {QStringLiteral("--scenario"), scenario, QStringLiteral("--nodes"),
-                                  kNodes, QStringLiteral("--payload-off")}));
-        chooseCan(f, interface);
-        f.window->files()->openScenarioFrom(scenario);
-        PayloadDialog *d = f.window->payloadDialog();
-        QVERIFY(d);
-        QTRY_VERIFY(d->isVisible());
+        CanPayloadStep step;
+        QVERIFY(step.open(s, QStringLiteral("panda-baseline-4ms.json"),
+                          {QStringLiteral("--payload-off")}));
+        PayloadDialog *d = step.dialog;
         auto *run = d->findChild<QPushButton *>(QStringLiteral("runPayloadButton"));
         auto *next = d->findChild<QPushButton *>(QStringLiteral("continuePayloadButton"));
         auto *stage = d->findChild<QLabel *>(QStringLiteral("payloadStage"));
@@ -173,8 +178,8 @@ private slots:
         QVERIFY2(stage->text().contains(QStringLiteral("mount the payload on panda_link7")),
                  qPrintable(stage->text()));
         QCOMPARE(d->trialTable()->rowCount(), 1); // the baseline
-        sim.write("mount\n");
-        QVERIFY(sim.waitForLine(QByteArrayLiteral("payload mounted"), 10000));
+        step.sim.write("mount\n");
+        QVERIFY(step.sim.waitForLine(QByteArrayLiteral("payload mounted"), 10000));
         QTest::mouseClick(next, Qt::LeftButton);
         QVERIFY(finished.wait(120000));
         QVERIFY2(finished.constFirst().at(0).toBool(), qPrintable(d->messageBar()->text()));
@@ -193,22 +198,11 @@ private slots:
 
     void stopWhileWaitingForTheTechnician_endsTheRunWithNothingMoved()
     {
-        WindowFixture f;
         Scenario s = pandaAt4ms();
         s.payload.baselineTrials = 1;
-        const QString scenario = f.dir.filePath(QStringLiteral("panda-baseline-stop.json"));
-        writeScenarioFile(scenario, s);
-        const quint16 port = freeLoopbackPort();
-        QVERIFY(port > 0);
-        const QString interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
-        RobotSimProcess sim(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-        QVERIFY(sim.start(interface, {QStringLiteral("--scenario"), scenario,
-                                      QStringLiteral("--nodes"), kNodes}));
-        chooseCan(f, interface);
-        f.window->files()->openScenarioFrom(scenario);
-        PayloadDialog *d = f.window->payloadDialog();
-        QVERIFY(d);
-        QTRY_VERIFY(d->isVisible());
+        CanPayloadStep step;
+        QVERIFY(step.open(s, QStringLiteral("panda-baseline-stop.json")));
+        PayloadDialog *d = step.dialog;
         auto *run = d->findChild<QPushButton *>(QStringLiteral("runPayloadButton"));
         auto *next = d->findChild<QPushButton *>(QStringLiteral("continuePayloadButton"));
         auto *stop = d->findChild<QPushButton *>(QStringLiteral("stopPayloadButton"));
