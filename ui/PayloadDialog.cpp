@@ -6,6 +6,7 @@
 #include "ui/PayloadForm.h"
 #include "ui/PayloadText.h"
 #include "ui/PayloadTrialTableModel.h"
+#include "ui/TrackingErrorPlot.h"
 #include "ui/WidgetFactory.h"
 
 #include <QGroupBox>
@@ -53,6 +54,7 @@ PayloadDialog::PayloadDialog(UiSettings *settings, QWidget *parent)
     , m_stage(new QLabel)
     , m_trials(new PayloadTrialTableModel(this))
     , m_trialView(tableView(m_trials, "payloadTrialTable"))
+    , m_plot(new TrackingErrorPlot)
     , m_summary(new QLabel)
     , m_estimate(new PayloadEstimateTableModel(this))
     , m_estimateView(tableView(m_estimate, "payloadEstimateTable"))
@@ -138,11 +140,13 @@ void PayloadDialog::buildLayout()
     auto *estimateLayout = new QVBoxLayout(estimate);
     estimateLayout->addWidget(m_summary);
     estimateLayout->addWidget(m_estimateView, 1);
+    m_plot->setObjectName(QStringLiteral("payloadTrackingPlot"));
     auto *right = new QSplitter(Qt::Vertical);
     right->setChildrenCollapsible(false);
     right->addWidget(trials);
+    right->addWidget(titledGroup(tr("Tracking error"), m_plot));
     right->addWidget(estimate);
-    right->setSizes({1, 2});
+    right->setSizes({2, 3, 3});
 
     auto *main = new QSplitter(Qt::Horizontal);
     main->addWidget(left);
@@ -186,6 +190,7 @@ void PayloadDialog::connectJob()
                     QStringLiteral("</p>");
         }
         m_preview->setText(text);
+        m_plot->setJointNames(p.jointNames);
         emit previewShown(true);
     });
     connect(m_job, &PayloadRunJob::checkFailed, this, [this](const QString &message) {
@@ -204,6 +209,8 @@ void PayloadDialog::connectJob()
     });
     connect(m_job, &PayloadRunJob::trialFinished, this, [this](const PayloadTrialRow &row) {
         m_trials->addRow(row);
+        if (!row.curves.isEmpty())
+            m_plot->setTrialCurves(row.index, row.curves);
         m_progress->setValue(row.index + 1);
         m_trialView->resizeColumnsToContents();
         m_trialView->scrollToBottom();
@@ -211,6 +218,7 @@ void PayloadDialog::connectJob()
     connect(m_job, &PayloadRunJob::succeeded, this,
             [this](std::shared_ptr<const PayloadRunResult> result) {
                 m_result = std::move(result);
+                m_record = std::shared_ptr<const PayloadRunRecord>(m_result, &m_result->record);
                 setBusy(false);
                 m_summary->setText(payloadResultHtml(*m_result));
                 m_estimate->setEstimate(m_result->fit.estimate);
@@ -222,18 +230,29 @@ void PayloadDialog::connectJob()
                     MessageBar::Severity::Success);
                 emit runFinished(true);
             });
+    connect(m_job, &PayloadRunJob::endedEarlyRecord, this,
+            [this](std::shared_ptr<const PayloadRunRecord> record) {
+                m_record = std::move(record);
+            });
     connect(m_job, &PayloadRunJob::failed, this, [this](const QString &message) {
         setBusy(false);
-        m_message->showMessage(tr("Payload not learned: %1").arg(message),
-                               MessageBar::Severity::Error);
+        m_message->showMessage(
+            m_record ? tr("Payload not learned: %1. The report and trials of the run can be "
+                          "saved (Save report and trials).")
+                           .arg(message)
+                     : tr("Payload not learned: %1").arg(message),
+            MessageBar::Severity::Error);
         emit runFinished(false);
     });
     connect(m_job, &PayloadRunJob::applied, this, &PayloadDialog::showApplied);
     connect(m_job, &PayloadRunJob::mountingRequested, this, &PayloadDialog::askForMounting);
     connect(m_job, &PayloadRunJob::cancelled, this, [this] {
         setBusy(false);
-        m_message->showMessage(tr("Stopped; nothing of this run is kept or written."),
-                               MessageBar::Severity::Info);
+        m_message->showMessage(
+            m_record ? tr("Stopped; no payload is kept from this run. Its report and trials can "
+                          "be saved (Save report and trials).")
+                     : tr("Stopped; nothing of this run is kept or written."),
+            MessageBar::Severity::Info);
         emit runFinished(false);
     });
 }
@@ -244,6 +263,8 @@ void PayloadDialog::setScenario(const Scenario &scenario)
         return;
     m_form->setScenario(scenario);
     m_trials->clear();
+    m_plot->clear();
+    m_record.reset();
     m_message->hide();
 }
 
@@ -276,7 +297,7 @@ void PayloadDialog::updateActions()
     m_design->setEnabled(!running && m_form->isValid());
     const bool result = m_result && !running;
     m_accept->setEnabled(result && !m_accepted);
-    m_saveRecord->setEnabled(result);
+    m_saveRecord->setEnabled(m_record && !running);
     m_exportParameters->setEnabled(result && m_accepted);
     m_exportUrdf->setEnabled(result && m_accepted);
     m_apply->setEnabled(result && m_accepted);
@@ -317,6 +338,8 @@ void PayloadDialog::run()
     }
     clearResult();
     m_trials->clear();
+    m_plot->clear();
+    m_record.reset();
     m_message->hide();
     m_progress->setRange(0, 0);
     if (m_job->start(*s, m_robot))

@@ -19,6 +19,7 @@ class PayloadEstimateTableModel;
 class PayloadForm;
 class PayloadRunJob;
 class PayloadTrialTableModel;
+class TrackingErrorPlot;
 class UiSettings;
 
 /// The payload step (docs/payload.md, "In the window"): a payload learned on the simulated robot,
@@ -27,14 +28,15 @@ class UiSettings;
 /// motion the dialog shows what the path lets the trials see and whether the first trial passes its
 /// check (PayloadRunJob:: check(), redone after each edit). Run runs the baseline and payload
 /// trials in a worker thread (PayloadRunJob) with progress per trial and Stop; each finished trial
-/// adds a row (PayloadTrialTableModel). A run that completes shows the estimate with each value's
+/// adds a row (PayloadTrialTableModel) and its tracking error over time (TrackingErrorPlot). A run that completes shows the estimate with each value's
 /// standard error, prior and source (PayloadEstimateTableModel); Accept enables the exports: the
 /// parameter file with a payload section (and its DCF) and the URDF with a fixed payload link,
 /// written all or none (writePayloadRunExport); Save scenario keeps the step's edits as a scenario
 /// file at any time but a run; on the CAN robot Accept also enables Apply, which
 /// writes the payload to the drives (PayloadRunJob::applyResult). Baseline trials on the CAN
 /// robot wait for the technician to take the payload off, then to mount it (Continue). A stopped
-/// or failed run leaves no result.
+/// or failed run leaves no result, but the record of the trials it ran (Save report and trials,
+/// the report marked as ended early and why).
 class PayloadDialog : public QDialog
 {
     Q_OBJECT
@@ -61,6 +63,8 @@ public:
     PayloadForm *form() const { return m_form; }
     PayloadTrialTableModel *trialTable() const { return m_trials; }
     PayloadEstimateTableModel *estimateTable() const { return m_estimate; }
+    /// Each trial's tracking error per joint over time (the trials that moved).
+    TrackingErrorPlot *trackingPlot() const { return m_plot; }
     MessageBar *messageBar() const { return m_message; }
     /// The rich text of what the path lets the trials see (or why it cannot be planned).
     QString previewText() const;
@@ -81,7 +85,8 @@ public slots:
     void exportUrdf();
     /// Saves the form's scenario, its payload section included, to a scenario file.
     void saveScenario();
-    /// Saves the last run's report and trial CSVs (writePayloadRecord), accepted or not.
+    /// Saves the last run's report and trial CSVs (writePayloadRecord), accepted or not, also of
+    /// a run that ended early.
     void saveRecord();
     /// Designs the gains, the planning fraction and the baseline trials' gains for the arm
     /// carrying the form's prior (the payload starter: scenarioForRobot() with the payload), and
@@ -124,6 +129,7 @@ private:
     QLabel *m_stage;
     PayloadTrialTableModel *m_trials;
     QTableView *m_trialView;
+    TrackingErrorPlot *m_plot;
     QLabel *m_summary;
     PayloadEstimateTableModel *m_estimate;
     QTableView *m_estimateView;
@@ -140,6 +146,8 @@ private:
     Confirmer m_confirmer;
     RobotRequest m_robot;
     std::shared_ptr<const PayloadRunResult> m_result;
+    /// The last run's record (of m_result, or of a run that ended early); null before a run.
+    std::shared_ptr<const PayloadRunRecord> m_record;
     bool m_accepted = false;
 };
 

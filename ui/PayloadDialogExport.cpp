@@ -47,6 +47,7 @@ void PayloadDialog::setRobotRequest(const RobotRequest &robot)
         can ? tr("Learn a payload (CAN robot %1/%2)").arg(robot.can.plugin, robot.can.interface)
             : tr("Learn a payload (simulated robot)"));
     m_apply->setVisible(can);
+    m_record.reset();
     clearResult(); // a result belongs to the robot it was learned on
 }
 
@@ -149,11 +150,11 @@ void PayloadDialog::designForPayload()
     if (!given || isRunning())
         return;
     try {
-        const Scenario designed = scenarioForRobot(given->model, given->urdf, given->payload);
+        // For the robot's clock, which stays.
+        const Scenario designed = scenarioForRobot(given->model, given->urdf, given->payload,
+                                                   given->controller.samplePeriod);
         Scenario s = *given;
-        const double samplePeriod = s.controller.samplePeriod; // the robot's clock stays
         s.controller = designed.controller;
-        s.controller.samplePeriod = samplePeriod;
         s.planningFraction = designed.planningFraction;
         s.payload.baselineKp = designed.payload.baselineKp;
         s.payload.baselineKi = designed.payload.baselineKi;
@@ -174,7 +175,7 @@ void PayloadDialog::designForPayload()
 
 void PayloadDialog::saveRecord()
 {
-    if (!m_result || isRunning())
+    if (!m_record || isRunning())
         return;
     const QString path =
         choosePath(ExportKind::Record, QStringLiteral("payload-run.json"),
@@ -182,12 +183,17 @@ void PayloadDialog::saveRecord()
     if (path.isEmpty())
         return;
     try {
-        writePayloadRecord(*m_result, path);
+        writePayloadRecord(*m_record, path);
         rememberFolder(path);
+        const int csvs = int(m_record->trialCsvs.size());
+        const QString folder = QDir::toNativeSeparators(payloadRecordTrialFolder(path));
         m_message->showMessage(
-            tr("Written: %1 and %n trial CSV(s) in %2", nullptr, int(m_result->trialCsvs.size()))
-                .arg(QDir::toNativeSeparators(path),
-                     QDir::toNativeSeparators(payloadRecordTrialFolder(path))),
+            m_record->endedEarly.isEmpty()
+                ? tr("Written: %1 and %n trial CSV(s) in %2", nullptr, csvs)
+                      .arg(QDir::toNativeSeparators(path), folder)
+                : tr("Written: %1 and %n trial CSV(s) in %2, of a run that ended early: %3",
+                     nullptr, csvs)
+                      .arg(QDir::toNativeSeparators(path), folder, m_record->endedEarly),
             MessageBar::Severity::Success);
     } catch (const Error &e) {
         m_message->showMessage(tr("Not written: %1").arg(e.message()), MessageBar::Severity::Error);

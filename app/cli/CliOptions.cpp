@@ -25,7 +25,8 @@ QString usageText()
         "      other than paper, the gains the window designs for it and a path of\n"
         "      joint waypoints inside its limits. With --payload --payload-mass KG\n"
         "      [--payload-com X,Y,Z] [--payload-link LINK] ...: a scenario that learns\n"
-        "      that payload, the gains designed for the arm carrying it.\n"
+        "      that payload, the gains designed for the arm carrying it. With\n"
+        "      --sample-period MS: gains that hold at the robot's clock (default 2 ms).\n"
         "  learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]\n"
         "                  [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]\n"
         "                  [--consistent] [--workspace DIR] [--quiet]\n"
@@ -98,8 +99,14 @@ CommandLine parseCommandLine(const QStringList &args)
                                     "The robot: paper (default), panda, puma560, double-pendulum, "
                                     "or a URDF file."),
         QStringLiteral("robot"));
+    const QCommandLineOption samplePeriod(
+        QStringLiteral("sample-period"),
+        QCoreApplication::translate("learnid-cli",
+                                    "The robot's clock in ms (default 2): the gains are designed "
+                                    "to hold in discrete time at it."),
+        QStringLiteral("ms"));
     if (command == QLatin1String("scenario")) {
-        parser.addOptions({print, robot, help});
+        parser.addOptions({print, robot, samplePeriod, help});
         parser.addOptions(payloadCliOptions(false));
         if (!parser.parse(args.mid(1))) {
             cl.error = parser.errorText();
@@ -117,8 +124,21 @@ CommandLine parseCommandLine(const QStringList &args)
             cl.error = error;
             cl.errorCode = ExitBadInput;
         } else {
+            bool ok = true;
+            const QString text = parser.value(samplePeriod);
+            const double ms = parser.isSet(samplePeriod) ? text.toDouble(&ok) : 2.0;
+            if (!ok || !std::isfinite(ms) || ms <= 0.0 || ms > 100.0) {
+                cl.error = QCoreApplication::translate(
+                               "learnid-cli",
+                               "--sample-period: the robot's clock must be a number of ms above "
+                               "0 and at most 100, not '%1'")
+                               .arg(text);
+                cl.errorCode = ExitBadInput;
+                return cl;
+            }
             cl.command = CommandLine::Command::PrintScenario;
             cl.scenarioRobot = parser.value(robot);
+            cl.scenarioSamplePeriod = ms / 1000.0;
         }
         return cl;
     }

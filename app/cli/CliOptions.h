@@ -62,6 +62,8 @@ struct CommandLine
     QString scenarioRobot;
     /// `scenario --print --payload ...`: a payload section, the gains for the arm carrying it.
     std::optional<PayloadOptions> scenarioPayload;
+    /// `scenario --print --sample-period MS`: the robot's clock the gains must hold at [s].
+    double scenarioSamplePeriod = 0.002;
     QString error;
     ExitCode errorCode = ExitUsage; ///< ExitUsage for syntax, ExitBadInput for a bad value
     QString usage;

@@ -35,20 +35,19 @@ PayloadSettings payloadSettings(const PayloadOptions &o)
 } // namespace
 
 ExitCode printScenarioCommand(const QString &robot, const std::optional<PayloadOptions> &payload,
-                              QTextStream &out, QTextStream &err)
+                              double samplePeriod, QTextStream &out, QTextStream &err)
 {
     QByteArray json;
+    const QString name = robot.isEmpty() ? QStringLiteral("paper") : robot;
     try {
         // The window's starter for the robot: the same gains, path and limits it opens with.
-        const Scenario scenario =
-            robot.isEmpty() ? Scenario{}
-                            : scenarioForRobotName(robot, payload ? payloadSettings(*payload)
-                                                                  : PayloadSettings());
+        const Scenario scenario = scenarioForRobotName(
+            name, payload ? payloadSettings(*payload) : PayloadSettings(), samplePeriod);
         validateScenario(scenario);
         json = scenarioToJson(scenario);
     } catch (const Error &e) {
         err << QCoreApplication::translate("learnid-cli", "learnid-cli: error: --robot %1: %2")
-                   .arg(robot, e.message())
+                   .arg(name, e.message())
             << Qt::endl;
         return ExitBadInput;
     }

@@ -37,7 +37,8 @@ int main(int argc, char **argv)
         out << QStringLiteral("learnid-cli %1\n").arg(QStringLiteral(LEARNID_VERSION));
         return ExitOk;
     case CommandLine::Command::PrintScenario:
-        return printScenarioCommand(cl.scenarioRobot, cl.scenarioPayload, out, err);
+        return printScenarioCommand(cl.scenarioRobot, cl.scenarioPayload, cl.scenarioSamplePeriod,
+                                    out, err);
     case CommandLine::Command::Run:
     case CommandLine::Command::Replay:
         return runCommand(cl.run, out, err);

@@ -10,6 +10,7 @@
 #include "session/ScenarioRobot.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 
 namespace learnid {
 
@@ -87,6 +88,7 @@ PayloadPreview payloadPreview(PayloadSession &session)
     const PreTrialCheck check = session.checkNextTrial();
     if (!check.passed())
         p.checkReason = check.reason();
+    p.jointNames = jointNames(session.payloadModel().arm());
     return p;
 }
 
@@ -110,7 +112,17 @@ PayloadTrialRow payloadTrialRow(const PayloadTrial &t)
         row.updateMs = 1000.0 * t.updateCpuSeconds;
     }
     row.message = t.message;
+    if (t.record.samples() > 0)
+        row.curves = trackingErrorCurves(t.index, t.plan(), t.record);
     return row;
+}
+
+PayloadRunRecord payloadRunRecord(const PayloadSession &s, const QString &endedEarly)
+{
+    PayloadRunRecord r{payloadReportJson(s, endedEarly), {}, endedEarly};
+    for (auto &[path, content] : payloadTrialCsvFiles(s.history(), QString()))
+        r.trialCsvs.append({QFileInfo(path).fileName(), std::move(content)});
+    return r;
 }
 
 PayloadRunResult payloadRunResult(const PayloadRunSession &run)
@@ -131,8 +143,7 @@ PayloadRunResult payloadRunResult(const PayloadRunSession &run)
     if (!learned)
         throw Error(Text::tr("no trial was learned from: the payload is not estimated"));
     r.learnedTrial = learned->index;
-    r.report = payloadReportJson(s);
-    r.trialCsvs = payloadTrialCsvFiles(s.history(), QString());
+    r.record = payloadRunRecord(s);
     r.fit = *learned->fit;
     r.maxTrackingErrorDeg = learned->maxTrackingErrorDeg;
     r.rmsTrackingErrorDeg = learned->rmsTrackingErrorDeg;

@@ -4,6 +4,7 @@
 #include "model/ChainModel.h"
 #include "model/PayloadPrior.h"
 #include "service/RobotRequest.h"
+#include "service/TrackingErrorData.h"
 #include "session/PayloadSession.h"
 #include "types/Scenario.h"
 
@@ -65,6 +66,7 @@ struct PayloadPreview
     /// change of the path that would measure it (PayloadSession::pathChange), if one does
     QStringList advice;
     QString checkReason; ///< why the first trial would be refused; empty: it passes
+    QStringList jointNames; ///< the arm's, in joint order (as its URDF has them)
 };
 
 /// The preview of a session that has run no trial yet (plans its first trial).
@@ -85,9 +87,25 @@ struct PayloadTrialRow
     std::array<bool, 10> identified{}; ///< PayloadEstimate::bodyIdentified
     double updateMs = 0.0;             ///< CPU time of the payload's update [ms]
     QString message;                   ///< why it was refused, ended early or not learned from
+    /// Its tracking error per joint over time, decimated for a plot (trackingErrorCurves());
+    /// empty for a trial that did not move.
+    QList<TrackingErrorCurve> curves;
 };
 
 PayloadTrialRow payloadTrialRow(const PayloadTrial &trial);
+
+/// A run's record, built in the job's thread: its report (payloadReportJson()) and the CSV of
+/// every trial that moved, as (trial-NNN.csv, content) (payloadTrialCsvFiles()). Kept also for a
+/// run that ended early, which the technician needs to see what happened.
+struct PayloadRunRecord
+{
+    QByteArray report;
+    QList<QPair<QString, QByteArray>> trialCsvs;
+    QString endedEarly; ///< why the run ended before its last trial (in the report); empty: it did not
+};
+
+/// The record of the trials session `s` has run so far; endedEarly as payloadReportJson().
+PayloadRunRecord payloadRunRecord(const PayloadSession &s, const QString &endedEarly = {});
 
 /// A run that completed all its trials: the payload after the last one.
 struct PayloadRunResult
@@ -100,10 +118,7 @@ struct PayloadRunResult
     std::vector<PayloadTrialRow> trials;
     int learnedTrial = -1; ///< the trial whose fit is the result
     PayloadFit fit;
-    /// The run's record, built in the job's thread: its report (payloadReportJson()) and the CSV
-    /// of every trial that moved, as (trial-NNN.csv, content) (payloadTrialCsvFiles()).
-    QByteArray report;
-    QList<QPair<QString, QByteArray>> trialCsvs;
+    PayloadRunRecord record; ///< the run's report and trial CSVs
     Eigen::VectorXd maxTrackingErrorDeg; ///< that trial's, per joint [deg] (n)
     Eigen::VectorXd rmsTrackingErrorDeg; ///< per joint [deg] (n)
 };

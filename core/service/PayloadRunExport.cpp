@@ -112,7 +112,7 @@ QString payloadRecordTrialFolder(const QString &reportPath)
     return report.dir().filePath(report.completeBaseName() + QStringLiteral("-trials"));
 }
 
-QStringList writePayloadRecord(const PayloadRunResult &r, const QString &reportPath)
+QStringList writePayloadRecord(const PayloadRunRecord &r, const QString &reportPath)
 {
     const QString folder = payloadRecordTrialFolder(reportPath);
     QList<QPair<QString, QByteArray>> files{{reportPath, r.report}};

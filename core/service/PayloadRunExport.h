@@ -42,9 +42,9 @@ QStringList writePayloadRunExport(const PayloadRunResult &result, const LogExpor
 /// (run.json -> run-trials/).
 QString payloadRecordTrialFolder(const QString &reportPath);
 
-/// Writes the run's record, all or none: its report (learnid-payload-report/1) at reportPath and
+/// Writes a run's record, all or none: its report (learnid-payload-report/1) at reportPath and
 /// its trial CSVs in payloadRecordTrialFolder(reportPath), created first. Returns the paths;
 /// throws Error naming the file or folder that could not be written.
-QStringList writePayloadRecord(const PayloadRunResult &result, const QString &reportPath);
+QStringList writePayloadRecord(const PayloadRunRecord &record, const QString &reportPath);
 
 } // namespace learnid

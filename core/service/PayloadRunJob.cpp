@@ -119,6 +119,7 @@ void PayloadRunJob::runInThread(const Scenario &scenario, const RobotRequest &ro
             },
             Qt::QueuedConnection);
     };
+    std::shared_ptr<PayloadRunSession> made;
     std::shared_ptr<const PayloadRunResult> result;
     QString error;
     try {
@@ -126,7 +127,7 @@ void PayloadRunJob::runInThread(const Scenario &scenario, const RobotRequest &ro
             QMutexLocker lock(&m_mountMutex);
             m_mountConfirmed = false;
         }
-        auto made = std::make_shared<PayloadRunSession>(
+        made = std::make_shared<PayloadRunSession>(
             robot.kind == RobotRequest::Kind::Can ? makeCanPayloadSession(scenario, robot)
                                                   : makeSimulatedPayloadSession(scenario));
         if (!made->session)
@@ -181,12 +182,25 @@ void PayloadRunJob::runInThread(const Scenario &scenario, const RobotRequest &ro
     } catch (const std::exception &e) {
         error = QString::fromLocal8Bit(e.what());
     }
+    // Nothing lost: a run that ended early keeps the record of the trials it ran.
+    std::shared_ptr<const PayloadRunRecord> record;
+    if (!result && made && made->session && !made->session->history().empty()) {
+        const QString why = cancel->load() ? tr("stopped (Stop) by the technician") : error;
+        try {
+            record = std::make_shared<const PayloadRunRecord>(
+                payloadRunRecord(*made->session, why));
+        } catch (const std::exception &e) {
+            qCWarning(lcService) << "payload run: the record of the ended run failed:" << e.what();
+        }
+    }
     QMetaObject::invokeMethod(
         this,
-        [this, run, result, error, cancel] {
+        [this, run, result, record, error, cancel] {
             if (run != m_run)
                 return;
             m_running = false;
+            if (record)
+                emit endedEarlyRecord(record);
             // A cancel that came after the last trial still wins: the window asked for no result.
             if (cancel->load())
                 emit cancelled();

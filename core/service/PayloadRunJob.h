@@ -23,7 +23,8 @@ namespace learnid {
 /// then confirmMounting() (or cancel()) lets it go on.
 /// cancel() stops the running trial at its next sample (PayloadSession::requestCancel()); a
 /// cancelled or failed run has no result, so nothing of it can be accepted, applied or exported,
-/// and a check superseded by a newer one is dropped. The robot of the last successful run stays
+/// but when it ran a trial its record comes first (endedEarlyRecord(): the report, marked as
+/// ended early and why, and the trial CSVs); a check superseded by a newer one is dropped. The robot of the last successful run stays
 /// connected until the next run or the job's end, for its apply.
 class PayloadRunJob : public QObject
 {
@@ -62,6 +63,9 @@ signals:
     /// `baselineTrials` baseline trials (mount false), or to mount it after them (mount true).
     void mountingRequested(bool mount, const QString &link, int baselineTrials);
     void succeeded(std::shared_ptr<const learnid::PayloadRunResult> result);
+    /// The record of a run that ended before its last trial (failed or cancelled, which follow),
+    /// when it ran at least one trial: record.endedEarly says why.
+    void endedEarlyRecord(std::shared_ptr<const learnid::PayloadRunRecord> record);
     /// A trial was refused or not usable, or the session could not be made: message says why.
     void failed(const QString &message);
     void cancelled();

@@ -38,16 +38,20 @@ QList<QPointF> decimateMinMax(const QList<QPointF> &points, int maxPoints)
 
 QList<TrackingErrorCurve> trackingErrorCurves(const TrialResult &trial, int maxPoints)
 {
+    return trackingErrorCurves(trial.index, trial.plan(), trial.record, maxPoints);
+}
+
+QList<TrackingErrorCurve> trackingErrorCurves(int index, const TrialPlan &plan,
+                                              const TrialRecord &record, int maxPoints)
+{
     QList<TrackingErrorCurve> curves;
-    const TrialRecord &record = trial.record;
-    const Eigen::MatrixXd &desired = trial.plan().desired.q;
+    const Eigen::MatrixXd &desired = plan.desired.q;
     const int samples = std::min<int>(record.samples(), int(desired.cols()));
     const int n = std::min<int>(int(record.q.rows()), int(desired.rows()));
-    const double ts =
-        record.samplePeriod > 0 ? record.samplePeriod : trial.plan().desired.samplePeriod;
+    const double ts = record.samplePeriod > 0 ? record.samplePeriod : plan.desired.samplePeriod;
     for (int j = 0; j < n; ++j) {
         TrackingErrorCurve curve;
-        curve.trial = trial.index;
+        curve.trial = index;
         curve.joint = j;
         curve.status = record.status;
         QList<QPointF> all;

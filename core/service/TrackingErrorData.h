@@ -23,6 +23,9 @@ struct TrackingErrorCurve
 /// decimation keeps every bucket's extremes, so peaks survive (maxPoints >= 4; 0 = all). The
 /// default, 400 buckets, is about the width of the plot in pixels: more points draw no more.
 QList<TrackingErrorCurve> trackingErrorCurves(const TrialResult &trial, int maxPoints = 800);
+/// The same for trial `index` of any session: its plan's desired path against its record.
+QList<TrackingErrorCurve> trackingErrorCurves(int index, const TrialPlan &plan,
+                                              const TrialRecord &record, int maxPoints = 800);
 
 /// Min/max decimation of a sampled curve to at most maxPoints points, in time order.
 QList<QPointF> decimateMinMax(const QList<QPointF> &points, int maxPoints);

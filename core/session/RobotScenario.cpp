@@ -5,6 +5,9 @@
 #include "model/ModelFactory.h"
 #include "model/Payload.h"
 #include "model/PayloadPrior.h"
+#include "session/SafetyCheck.h"
+#include "session/ScenarioRobot.h"
+#include "session/TrialPlanner.h"
 
 #include <Eigen/LU>
 #include <QCoreApplication>
@@ -60,6 +63,53 @@ void jointSpan(const ChainJoint &joint, double &middle, double &amplitude)
     amplitude = std::min(cap, 0.2 * (joint.upper - joint.lower));
 }
 
+// The controller of scenario `s` for its clock. The bandwidth rule assumes about 2 ms; a slower
+// clock lags the fast loops by half a sample more (the zero-order hold), and a derivative gain
+// large for a light joint (kd Ts over its lightest inertia near 1) then makes the discrete loop
+// unstable: on the Panda with 3 kg at 4 ms, its joints 1 and 3 (their kd, not their kp, moves
+// the pole). While the pre-trial check of `s` (its first trial, gentle or not, and a full-speed
+// one, planned with the arm `phi`, the CAD arm carrying the payload's prior) finds the closed
+// loop unstable at its sample period, kd is lowered by 0.8 at the joints whose kd Ts / inertia
+// is within 90 % of the largest. A design already stable is left as it is, and so is one whose
+// trial cannot be planned (the pre-trial check says why). Throws Error when 20 steps do not make
+// it stable.
+ControllerSettings softenedForClock(const Scenario &s,
+                                    const std::shared_ptr<const RobotModel> &model,
+                                    const Eigen::VectorXd &phi, const Eigen::VectorXd &inertia)
+{
+    ControllerSettings c = s.controller;
+    std::vector<TrialPlan> plans; // the gentle first trial's and a full-speed one's
+    try {
+        const TrialPlanner planner(withRobotDefaults(s, *model), model);
+        plans = {planner.plan(phi, nullptr, s.gentleTrials > 0), planner.plan(phi)};
+    } catch (const Error &) {
+        return c;
+    }
+    for (int step = 0;; ++step) {
+        SafetyVerdict v;
+        for (TrialPlan &plan : plans) {
+            plan.controller = c;
+            if (const SafetyVerdict w = checkTrial(*model, phi, plan);
+                !w.physical || w.worstSpectralRadius > v.worstSpectralRadius)
+                v = w;
+        }
+        if (v.stable || !v.physical)
+            return c;
+        if (step == 20)
+            throw Error(Text::tr("controller.samplePeriod: the starter's gains do not hold the arm "
+                                 "in discrete time at %1 ms, even with the derivative gains "
+                                 "lowered (a pole at |z| = %2)")
+                            .arg(1000.0 * c.samplePeriod)
+                            .arg(v.worstSpectralRadius, 0, 'f', 4));
+        const Eigen::VectorXd speed = c.kd.cwiseQuotient(inertia);
+        const double fastest = speed.maxCoeff();
+        for (int j = 0; j < c.dof(); ++j) {
+            if (speed[j] >= 0.9 * fastest)
+                c.kd[j] *= 0.8;
+        }
+    }
+}
+
 QString valueText(double v, bool prismatic)
 {
     return prismatic ? Text::tr("%1 m").arg(v, 0, 'f', 4)
@@ -69,7 +119,7 @@ QString valueText(double v, bool prismatic)
 } // namespace
 
 Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
-                          const PayloadSettings &payload)
+                          const PayloadSettings &payload, double samplePeriod)
 {
     Scenario s;
     if (!isUrdfModel(modelId)) {
@@ -77,6 +127,10 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
             throw Error(Text::tr("robot.model: unknown model \"%1\"").arg(modelId));
         if (payload.enabled)
             throw Error(Text::tr("payload: only a URDF robot carries a payload"));
+        if (std::abs(samplePeriod - s.controller.samplePeriod) > 1e-12)
+            throw Error(Text::tr("controller.samplePeriod: the paper scenario is the paper's, at "
+                                 "%1 ms; pick a URDF robot for another clock")
+                            .arg(1000.0 * s.controller.samplePeriod));
         return s; // the paper scenario
     }
     s.model = modelId;
@@ -180,6 +234,7 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
     }
     s.controller.ki = s.controller.kp * 0.1;
     s.controller.lambda = 1000.0;
+    s.controller.samplePeriod = samplePeriod;
     // The paper's arm keeps its feedforward at the sample instant (the paper's figures); a new
     // robot gets the one without the hold's half-sample lag.
     s.controller.feedforwardTime = FeedforwardTime::MidSample;
@@ -199,10 +254,11 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
     s.torqueLimits.resize(0);
     s.initialParameters.resize(0);
     s.simulation.trueParameters.resize(0);
+    s.controller = softenedForClock(s, model, cad, inertia);
     if (payload.enabled) {
         // Baseline trials run the bare arm: with the bare arm's gains, since those that hold the
         // payload can leave a light wrist unstable without it (the PUMA 560's with 2 kg).
-        const Scenario bareArm = scenarioForRobot(modelId, urdf, PayloadSettings());
+        const Scenario bareArm = scenarioForRobot(modelId, urdf, PayloadSettings(), samplePeriod);
         s.payload.baselineKp = bareArm.controller.kp;
         s.payload.baselineKi = bareArm.controller.ki;
         s.payload.baselineKd = bareArm.controller.kd;
@@ -214,12 +270,13 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
     return s;
 }
 
-Scenario scenarioForRobotName(const QString &robot, const PayloadSettings &payload)
+Scenario scenarioForRobotName(const QString &robot, const PayloadSettings &payload,
+                              double samplePeriod)
 {
     if (robot == QLatin1String("paper"))
-        return scenarioForRobot(QStringLiteral("paper-2link"), {}, payload);
+        return scenarioForRobot(QStringLiteral("paper-2link"), {}, payload, samplePeriod);
     if (knownRobotModels().contains(robot) && robot != QLatin1String("urdf"))
-        return scenarioForRobot(robot, {}, payload);
+        return scenarioForRobot(robot, {}, payload, samplePeriod);
     const QFileInfo file(robot);
     if (!robot.endsWith(QLatin1String(".urdf"), Qt::CaseInsensitive) && !file.isFile()) {
         QStringList known{QStringLiteral("paper")};
@@ -231,7 +288,7 @@ Scenario scenarioForRobotName(const QString &robot, const PayloadSettings &paylo
     }
     UrdfRobotSettings urdf;
     urdf.file = file.absoluteFilePath();
-    return scenarioForRobot(QStringLiteral("urdf"), urdf, payload);
+    return scenarioForRobot(QStringLiteral("urdf"), urdf, payload, samplePeriod);
 }
 
 QString waypointLimitError(const RobotModel &model, const std::vector<Eigen::VectorXd> &waypoints)

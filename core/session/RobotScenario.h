@@ -29,8 +29,14 @@ namespace learnid {
 /// (an estimate may be off by that much); kd is sized for the geometric mean of the joint's
 /// lightest and heaviest inertia along the path; the scenario gets that payload section. Throws
 /// Error naming the payload key when the prior is refused or the link is unknown.
+/// samplePeriod: the robot's clock [s]. The rule above assumes about 2 ms; where the pre-trial
+/// check of the first trial (and of a full-speed one) with the CAD arm carrying the prior finds
+/// the discrete closed loop unstable at this clock, the derivative gains of the joints whose
+/// kd Ts / lightest inertia is largest are lowered step by step (x 0.8) until it is stable;
+/// throws Error naming controller.samplePeriod when 20 steps do not do it, or for the paper's
+/// arm at another clock than its scenario's 2 ms.
 Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf = {},
-                          const PayloadSettings &payload = {});
+                          const PayloadSettings &payload = {}, double samplePeriod = 0.002);
 
 /// The same for a robot named as a technician names it (`learnid-cli scenario --print --robot`):
 /// "paper" or "paper-2link" (the paper scenario), a built-in URDF robot's id ("panda",
@@ -38,7 +44,8 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf 
 /// or any existing file), which becomes model "urdf" with the file's absolute path. Throws
 /// Error naming the robot when it is none of these, or naming the file when it cannot be read
 /// as a serial arm.
-Scenario scenarioForRobotName(const QString &robot, const PayloadSettings &payload = {});
+Scenario scenarioForRobotName(const QString &robot, const PayloadSettings &payload = {},
+                              double samplePeriod = 0.002);
 
 /// Why waypoints leave the robot's joint limits, or "" when they stay within: the first
 /// offending value named by key (path.waypoints[i][j]), joint, value and limit (in degrees for

@@ -28,6 +28,7 @@ private slots:
     void badRobot_isNamed_data();
     void badRobot_isNamed();
     void payload_printsItsSectionAndTheGainsForIt();
+    void samplePeriod_designsForTheRobotsClock();
 
 private:
     using Result = learnid::test::ToolRun;
@@ -191,6 +192,48 @@ void TestCliScenario::payload_printsItsSectionAndTheGainsForIt()
         paper.err.startsWith(QStringLiteral("learnid-cli: error: --robot paper: payload: only a "
                                             "URDF robot carries a payload")),
         qPrintable(paper.err));
+}
+
+void TestCliScenario::samplePeriod_designsForTheRobotsClock()
+{
+    // The Panda with 3 kg on a 4 ms bus: the starter the library designs for that clock
+    // (tst_payloadstarter runs it), its period in the scenario, its pre-trial check passed.
+    const QStringList args{QStringLiteral("scenario"),      QStringLiteral("--print"),
+                           QStringLiteral("--robot"),       QStringLiteral("panda"),
+                           QStringLiteral("--payload"),     QStringLiteral("--payload-mass"),
+                           QStringLiteral("3"),             QStringLiteral("--payload-com"),
+                           QStringLiteral("0,0,0.05"),      QStringLiteral("--sample-period"),
+                           QStringLiteral("4")};
+    const Result r = cli(args);
+    QCOMPARE(r.exitCode, 0);
+    const Scenario s = scenarioFromJson(r.out.toUtf8(), QStringLiteral("stdout"));
+    QCOMPARE(s.controller.samplePeriod, 0.004);
+    PayloadSettings prior;
+    prior.enabled = true;
+    prior.mass = 3.0;
+    prior.com = Eigen::Vector3d(0.0, 0.0, 0.05);
+    QCOMPARE(r.out.toUtf8(),
+             scenarioToJson(scenarioForRobot(QStringLiteral("panda"), {}, prior, 0.004)));
+    const Result at2ms = cli(args.mid(0, 9));
+    QCOMPARE(at2ms.exitCode, 0);
+    QVERIFY(r.out != at2ms.out);
+
+    for (const QString &bad : {QStringLiteral("0"), QStringLiteral("-2"), QStringLiteral("fast"),
+                               QStringLiteral("nan"), QStringLiteral("1000")}) {
+        const Result e = cli(args.mid(0, 4) + QStringList{QStringLiteral("--sample-period"), bad});
+        QCOMPARE(e.exitCode, 2);
+        QVERIFY2(e.err.startsWith(QStringLiteral("learnid-cli: error: --sample-period: the "
+                                                 "robot's clock must be a number of ms above 0 "
+                                                 "and at most 100, not '%1'")
+                                      .arg(bad)),
+                 qPrintable(e.err));
+        QCOMPARE(e.out, QString());
+    }
+    const Result paper = cli({QStringLiteral("scenario"), QStringLiteral("--print"),
+                              QStringLiteral("--sample-period"), QStringLiteral("4")});
+    QCOMPARE(paper.exitCode, 2);
+    QVERIFY2(paper.err.contains(QStringLiteral("controller.samplePeriod: the paper scenario")),
+             qPrintable(paper.err));
 }
 
 QTEST_GUILESS_MAIN(TestCliScenario)

@@ -12,6 +12,9 @@
 #include "session/ScenarioRobot.h"
 
 #include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -83,6 +86,18 @@ private slots:
             QCOMPARE(row.mass, t.fit->estimate.body.mass);
             QCOMPARE(row.com, t.fit->estimate.body.com);
             QCOMPARE(row.maxTrackingErrorDeg, t.maxTrackingErrorDeg.maxCoeff());
+            // Its curves for the plot: one per joint over the trial's time, whose largest error
+            // is the session's figure (kept through the decimation).
+            QCOMPARE(row.curves.size(), 7);
+            double worst = 0.0;
+            for (const TrackingErrorCurve &c : row.curves) {
+                QCOMPARE(c.trial, i);
+                QVERIFY(c.points.size() <= 800);
+                for (const QPointF &p : c.points)
+                    worst = std::max(worst, std::abs(p.y()));
+            }
+            QVERIFY2(std::abs(worst - row.maxTrackingErrorDeg) <= 1e-9 * row.maxTrackingErrorDeg,
+                     qPrintable(QString::number(worst - row.maxTrackingErrorDeg)));
         }
         // Issue 25's targets: mass within 1 %, centre of mass within 3 mm.
         const PayloadBody &b = result->fit.estimate.body;
@@ -142,6 +157,9 @@ private slots:
         QSignalSpy rows(&job, &PayloadRunJob::trialFinished);
         QSignalSpy cancelled(&job, &PayloadRunJob::cancelled);
         QSignalSpy succeeded(&job, &PayloadRunJob::succeeded);
+        QSignalSpy records(&job, &PayloadRunJob::endedEarlyRecord);
+        connect(&job, &PayloadRunJob::cancelled, this,
+                [&] { QCOMPARE(records.size(), 1); }); // the record comes first
         QElapsedTimer stopped;
         const auto stop = connect(&job, &PayloadRunJob::trialStarted, this, [&](int index) {
             if (index == 0) {
@@ -162,6 +180,21 @@ private slots:
         QVERIFY(!row.usable);
         QVERIFY2(row.message.contains(QStringLiteral("did not complete")), qPrintable(row.message));
         qInfo("stopped %lld ms after Stop", stopped.elapsed());
+        // Nothing lost: the stopped trial's record, up to the stop, and why the run ended.
+        QCOMPARE(records.size(), 1);
+        const auto record =
+            records.constFirst().at(0).value<std::shared_ptr<const PayloadRunRecord>>();
+        QCOMPARE(record->endedEarly, QStringLiteral("stopped (Stop) by the technician"));
+        QCOMPARE(record->trialCsvs.size(), 1);
+        QCOMPARE(record->trialCsvs.constFirst().first, QStringLiteral("trial-000.csv"));
+        const QJsonObject report = QJsonDocument::fromJson(record->report).object();
+        QCOMPARE(report.value(QStringLiteral("endedEarly")).toString(), record->endedEarly);
+        const QJsonObject trial = report.value(QStringLiteral("trials")).toArray().at(0).toObject();
+        QCOMPARE(trial.value(QStringLiteral("message")).toString(), row.message);
+        // A header line, then one line per sample recorded before the stop (file-formats.md).
+        const int samples = trial.value(QStringLiteral("samples")).toInt();
+        QVERIFY(samples > 0);
+        QCOMPARE(record->trialCsvs.constFirst().second.count('\n'), qsizetype(samples + 1));
 
         disconnect(stop);
         // Nothing of the stopped run is left: the next run learns what a fresh one learns.

@@ -130,6 +130,44 @@ private slots:
         QVERIFY2(same.reason().contains(QLatin1String("unstable")), qPrintable(same.reason()));
     }
 
+    void slowerClock_lowersTheFastestDerivativeGains_andTheRatedPayloadIsLearned()
+    {
+        // The Panda's rated 3 kg (prior 2.5 kg) on a CAN bus at 4 ms: the gains designed for
+        // 2 ms are unstable in discrete time there, and the pre-trial check refuses them.
+        Scenario at2ms = scenarioForRobot(QStringLiteral("panda"), {}, prior(2.5));
+        at2ms.controller.samplePeriod = 0.004;
+        const PreTrialCheck refused =
+            sessionFor(carrying(at2ms, 3.0, at2ms.payload))->checkNextTrial();
+        QVERIFY(!refused.passed());
+        QVERIFY2(refused.reason().contains(QLatin1String("unstable")), qPrintable(refused.reason()));
+
+        // Designed for 4 ms: the same kp and ki, some derivative gains lower, none higher.
+        const Scenario at4ms = scenarioForRobot(QStringLiteral("panda"), {}, prior(2.5), 0.004);
+        QCOMPARE(at4ms.controller.samplePeriod, 0.004);
+        const ControllerSettings &soft = at4ms.controller, &stiff = at2ms.controller;
+        QCOMPARE(soft.kp, stiff.kp);
+        QCOMPARE(soft.ki, stiff.ki);
+        QVERIFY((soft.kd.array() <= stiff.kd.array()).all());
+        QVERIFY((soft.kd.array() < stiff.kd.array()).any());
+        const Scenario s = carrying(at4ms, 3.0, at4ms.payload);
+        const auto session = sessionFor(s);
+        const PreTrialCheck check = session->checkNextTrial();
+        QVERIFY2(check.passed(), qPrintable(check.reason()));
+        QVERIFY2(session->runTrials(3), qPrintable(session->history().back().message));
+        const PayloadBody &b = session->history().back().fit->estimate.body;
+        QVERIFY2(std::abs(b.mass - 3.0) < 0.03, qPrintable(QString::number(b.mass)));
+        QVERIFY2(
+            (b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 0.003,
+            qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
+        QStringList ratio;
+        for (int j = 0; j < soft.dof(); ++j)
+            ratio << QString::number(soft.kd[j] / stiff.kd[j], 'g', 2);
+        qInfo("4 ms: kd x %s of 2 ms; trial 0 / 2 max tracking error %.3f / %.4f deg",
+              qPrintable(ratio.join(QLatin1Char(' '))),
+              session->history().front().maxTrackingErrorDeg.maxCoeff(),
+              session->history().back().maxTrackingErrorDeg.maxCoeff());
+    }
+
     void bareStarter_stopsAtTheLimit_andLearnsUpToTheStop()
     {
         // The bare arm's gains with 1.5 kg where 1.2 kg is believed: trial 0 stops at the

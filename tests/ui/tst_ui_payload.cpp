@@ -1,7 +1,8 @@
 // The payload step through its real widgets (PayloadDialog, offscreen): the simulated Panda
 // carrying 1.5 kg 5 cm off the flange axis (test::pandaWithPayload()) learned to the issue's
 // targets by clicking, the estimate table against the run's result, the run's report and trial
-// CSVs and the exports read back, Stop leaving no result, refused values named at their fields,
+// CSVs and the exports read back, Stop and a stop at the tracking limit leaving no result but
+// the record of the run's trials, refused values named at their fields,
 // the gains designed for the payload (the Panda's rated 3 kg then learned), Save scenario keeping
 // the edits, and the window routing a scenario file with a payload section to the payload step
 // instead of the arm's session.
@@ -20,6 +21,7 @@
 #include "ui/PayloadForm.h"
 #include "ui/PayloadTrialTableModel.h"
 #include "ui/ScenarioForm.h"
+#include "ui/TrackingErrorPlot.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -49,6 +51,33 @@ void typeInto(QLineEdit *edit, const QString &text)
 double cell(const QAbstractItemModel *m, int row, int column)
 {
     return m->index(row, column).data(Qt::UserRole).toDouble();
+}
+
+/// Saves the dialog's record by clicking `button` into a new folder, checks the report's trials
+/// and the CSV of each of the `rows` trials, and returns the report.
+QJsonObject savedRecord(PayloadDialog &d, QPushButton *button, int rows)
+{
+    QTemporaryDir dir;
+    d.setPathChooser([&dir](PayloadDialog::ExportKind, const QString &) {
+        return dir.filePath(QStringLiteral("ended.json"));
+    });
+    if (!button->isEnabled())
+        return {};
+    QTest::mouseClick(button, Qt::LeftButton);
+    if (d.messageBar()->severity() != MessageBar::Severity::Success)
+        return {};
+    QFile file(dir.filePath(QStringLiteral("ended.json")));
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    const QJsonObject report = QJsonDocument::fromJson(file.readAll()).object();
+    if (report.value(QStringLiteral("trials")).toArray().size() != rows)
+        return {};
+    for (int i = 0; i < rows; ++i)
+        if (QFileInfo(dir.filePath(QStringLiteral("ended-trials/trial-%1.csv")
+                                       .arg(i, 3, 10, QLatin1Char('0'))))
+                .size() == 0)
+            return {};
+    return report;
 }
 
 } // namespace
@@ -90,6 +119,9 @@ private slots:
         QCOMPARE(d.trialTable()->rowCount(), 3);
         QCOMPARE(cell(d.trialTable(), 2, PayloadTrialTableModel::Mass),
                  result->fit.estimate.body.mass);
+        // Every trial's tracking error drawn, the joints named as the URDF names them.
+        QCOMPARE(d.trackingPlot()->trialCount(), 3);
+        QCOMPARE(d.trackingPlot()->jointCount(), 7);
 
         // The estimate table: mass within 1 % and centre of mass within 3 mm of the simulated
         // payload, each with a standard error, from the trials' data.
@@ -157,14 +189,15 @@ private slots:
         QCOMPARE(d.messageBar()->severity(), MessageBar::Severity::Success);
         QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("panda-payload.urdf"))));
 
-        // An edit makes the result stale: it is dropped, nothing left to export.
+        // An edit makes the result stale: it is dropped, nothing left to export; the record of
+        // the trials in the table stays.
         typeInto(d.form()->field(QStringLiteral("payload.prior.mass")), QStringLiteral("1.3"));
         QVERIFY(!d.result());
-        QVERIFY(!exportFile->isEnabled() && !accept->isEnabled() && !record->isEnabled());
+        QVERIFY(!exportFile->isEnabled() && !accept->isEnabled() && record->isEnabled());
         QCOMPARE(d.estimateTable()->rowCount(), 0);
     }
 
-    void stop_leavesNoResult()
+    void stop_leavesNoResult_butTheRecordOfItsTrials()
     {
         Scenario s = test::pandaWithPayload();
         s.iterations = 5;
@@ -173,18 +206,58 @@ private slots:
         d.show();
         QSignalSpy finished(&d, &PayloadDialog::runFinished);
         auto *stop = d.findChild<QPushButton *>(QStringLiteral("stopPayloadButton"));
-        QVERIFY(!stop->isEnabled());
+        auto *record = d.findChild<QPushButton *>(QStringLiteral("savePayloadRecordButton"));
+        QVERIFY(!stop->isEnabled() && !record->isEnabled());
+        // Stop while the second trial runs: the first one finished.
+        connect(d.trialTable(), &QAbstractItemModel::rowsInserted, stop,
+                [stop] { QTest::mouseClick(stop, Qt::LeftButton); });
         d.run();
         QVERIFY(stop->isEnabled());
-        QTest::mouseClick(stop, Qt::LeftButton);
-        QVERIFY(finished.wait(30000));
+        QVERIFY(finished.wait(60000));
         QCOMPARE(finished.constFirst().at(0).toBool(), false);
         QVERIFY(!d.result());
         QCOMPARE(d.estimateTable()->rowCount(), 0);
-        QVERIFY(d.trialTable()->rowCount() < 5);
+        const int rows = d.trialTable()->rowCount();
+        QVERIFY2(rows >= 1 && rows < 5, qPrintable(QString::number(rows)));
         QVERIFY(!d.findChild<QPushButton *>(QStringLiteral("acceptPayloadButton"))->isEnabled());
         QVERIFY(d.findChild<QPushButton *>(QStringLiteral("runPayloadButton"))->isEnabled());
         QCOMPARE(d.messageBar()->severity(), MessageBar::Severity::Info);
+
+        // Nothing lost: the report, marked as stopped, and the CSV of every trial that moved.
+        const QJsonObject report = savedRecord(d, record, rows);
+        QCOMPARE(report.value(QStringLiteral("endedEarly")).toString(),
+                 QStringLiteral("stopped (Stop) by the technician"));
+        QVERIFY(report.value(QStringLiteral("result")).isNull() ||
+                report.value(QStringLiteral("result")).isObject()); // trial 0 may have learned
+    }
+
+    void trackingStop_failsTheRun_andKeepsItsRecord()
+    {
+        // An abort limit far below what the prior tracks (trial 0 of this payload: 1.6 deg): the
+        // first trial stops at once, and the run ends on a stop too short to learn from (or on
+        // the second stop in a row). No result; the record says why: the last trial's reason.
+        Scenario s = test::pandaWithPayload();
+        s.maxTrackingErrorDeg = 0.01;
+        PayloadDialog d(nullptr);
+        d.setScenario(s);
+        QSignalSpy finished(&d, &PayloadDialog::runFinished);
+        d.run();
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.constFirst().at(0).toBool(), false);
+        QVERIFY(!d.result());
+        QCOMPARE(d.messageBar()->severity(), MessageBar::Severity::Error);
+        const int rows = d.trialTable()->rowCount();
+        QVERIFY(rows >= 1 && rows <= 2);
+        auto *record = d.findChild<QPushButton *>(QStringLiteral("savePayloadRecordButton"));
+        const QJsonObject report = savedRecord(d, record, rows);
+        const QString why = report.value(QStringLiteral("endedEarly")).toString();
+        const QJsonArray trials = report.value(QStringLiteral("trials")).toArray();
+        QCOMPARE(trials.size(), rows);
+        QVERIFY(!why.isEmpty());
+        QCOMPARE(why, trials.last().toObject().value(QStringLiteral("message")).toString());
+        QVERIFY2(d.messageBar()->text().contains(why), qPrintable(d.messageBar()->text()));
+        QVERIFY(trials.first().toObject().value(QStringLiteral("status")).toString() !=
+                QStringLiteral("completed"));
     }
 
     void designForPayload_stiffensForThePrior_keepsTheRest_andLearnsTheRatedPayload()
@@ -237,8 +310,8 @@ private slots:
         QVERIFY2((b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 3e-3,
                  qPrintable(QString::number(b.com.z())));
 
-        // On a slower clock (a CAN bus at 4 ms) the robot's period stays, and the preview checks
-        // the gains at it (the starter designs for 2 ms: docs/user-guide.md).
+        // On a slower clock (a CAN bus at 4 ms) the robot's period stays, and the gains are
+        // designed for it: the 2 ms ones are unstable there, these pass the check.
         s.controller.samplePeriod = 0.004;
         d.setScenario(s);
         QVERIFY(preview.wait(20000));
@@ -246,6 +319,8 @@ private slots:
         QTest::mouseClick(design, Qt::LeftButton);
         QCOMPARE(d.form()->scenario()->controller.samplePeriod, 0.004);
         QVERIFY(preview.wait(20000));
+        QVERIFY2(d.previewText().contains(QStringLiteral("The first trial passes its check")),
+                 qPrintable(d.previewText()));
     }
 
     void saveScenario_keepsTheStepsEdits_andNotWhileAFieldIsWrong()
