@@ -2486,7 +2486,7 @@
 <context>
     <name>PayloadRun</name>
     <message>
-        <location filename="../core/service/PayloadRun.cpp" line="+31"/>
+        <location filename="../core/service/PayloadRun.cpp" line="+32"/>
         <source>payload: the scenario has no payload section</source>
         <translation>payload: das Szenario hat keinen Abschnitt payload</translation>
     </message>
@@ -2496,7 +2496,7 @@
         <translation>robot.model: unbekanntes Robotermodell &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+108"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>aus keinem Versuch wurde gelernt: die Nutzlast ist nicht geschätzt</translation>
     </message>
@@ -3038,7 +3038,12 @@
 <context>
     <name>RobotScenario</name>
     <message>
-        <location filename="../core/session/RobotScenario.cpp" line="+65"/>
+        <location filename="../core/session/RobotScenario.cpp" line="+99"/>
+        <source>controller.samplePeriod: the starter&apos;s gains do not hold the arm in discrete time at %1 ms, even with the derivative gains lowered (a pole at |z| = %2)</source>
+        <translation>controller.samplePeriod: die Verstärkungen des Startszenarios halten den Arm bei %1 ms zeitdiskret nicht, auch mit gesenkten D-Verstärkungen (ein Pol bei |z| = %2)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -3058,7 +3063,12 @@
         <translation>payload: nur ein URDF-Roboter trägt eine Nutzlast</translation>
     </message>
     <message>
-        <location line="+150"/>
+        <location line="+2"/>
+        <source>controller.samplePeriod: the paper scenario is the paper&apos;s, at %1 ms; pick a URDF robot for another clock</source>
+        <translation>controller.samplePeriod: das Szenario des Artikels ist das des Artikels, bei %1 ms; für einen anderen Takt einen URDF-Roboter wählen</translation>
+    </message>
+    <message>
+        <location line="+155"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>unbekannter Roboter „%1“; bekannt: %2 oder eine URDF-Datei (DATEI.urdf)</translation>
     </message>
@@ -4177,7 +4187,7 @@
         <location line="+14"/>
         <location line="+69"/>
         <location line="+62"/>
-        <location filename="../app/cli/main.cpp" line="+53"/>
+        <location filename="../app/cli/main.cpp" line="+54"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli: Fehler: %1</translation>
     </message>
@@ -4192,7 +4202,7 @@
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+70"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+71"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -4258,12 +4268,12 @@
         <translation>--robot %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+78"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+97"/>
         <source>Show this command&apos;s options.</source>
         <translation>Die Optionen dieses Befehls anzeigen.</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-73"/>
         <source>Print the default scenario.</source>
         <translation>Standardszenario ausgeben.</translation>
     </message>
@@ -4366,7 +4376,7 @@
         <translation>Ein aufgezeichneter Versuch (candump-Log); einmal pro Versuch, der Reihe nach.</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="-75"/>
+        <location filename="../app/cli/CliOptions.cpp" line="-76"/>
         <source>Usage:
   learnid-cli scenario --print [--robot ROBOT]
       Print a complete scenario as JSON. ROBOT: paper (the default: the paper
@@ -4374,7 +4384,8 @@
       other than paper, the gains the window designs for it and a path of
       joint waypoints inside its limits. With --payload --payload-mass KG
       [--payload-com X,Y,Z] [--payload-link LINK] ...: a scenario that learns
-      that payload, the gains designed for the arm carrying it.
+      that payload, the gains designed for the arm carrying it. With
+      --sample-period MS: gains that hold at the robot&apos;s clock (default 2 ms).
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--consistent] [--workspace DIR] [--quiet]
@@ -4418,6 +4429,7 @@
       auslegt, und eine Bahn aus Gelenk-Stützpunkten innerhalb seiner Grenzen.
       Mit --payload --payload-mass KG [--payload-com X,Y,Z] [--payload-link LINK] ...:
       ein Szenario, das diese Nutzlast lernt, mit Verstärkungen für den Arm, der sie trägt.
+      Mit --sample-period MS: Verstärkungen, die beim Takt des Roboters halten (Standard 2 ms).
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--consistent] [--workspace DIR] [--quiet]
@@ -4456,9 +4468,14 @@
 </translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+79"/>
         <source>The robot: paper (default), panda, puma560, double-pendulum, or a URDF file.</source>
         <translation>Der Roboter: paper (Standard), panda, puma560, double-pendulum oder eine URDF-Datei.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The robot&apos;s clock in ms (default 2): the gains are designed to hold in discrete time at it.</source>
+        <translation>Der Takt des Roboters in ms (Standard 2): die Verstärkungen werden so ausgelegt, dass sie zeitdiskret bei ihm halten.</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -4471,7 +4488,12 @@
         <translation>&apos;scenario&apos; braucht --print</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+10"/>
+        <source>--sample-period: the robot&apos;s clock must be a number of ms above 0 and at most 100, not &apos;%1&apos;</source>
+        <translation>--sample-period: der Takt des Roboters muss eine Zahl von ms über 0 und höchstens 100 sein, nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>no command given</source>
         <translation>kein Befehl angegeben</translation>
     </message>
@@ -5046,7 +5068,7 @@ neue Schätzung.
         <translation>t [s]</translation>
     </message>
     <message>
-        <location filename="../app/cli/ScenarioCommand.cpp" line="+50"/>
+        <location filename="../app/cli/ScenarioCommand.cpp" line="+49"/>
         <source>learnid-cli: error: --robot %1: %2</source>
         <translation>learnid-cli: Fehler: --robot %1: %2</translation>
     </message>
@@ -6990,7 +7012,7 @@ Verhältnis %</translation>
 <context>
     <name>learnid::PayloadDialog</name>
     <message>
-        <location filename="../ui/PayloadDialog.cpp" line="+49"/>
+        <location filename="../ui/PayloadDialog.cpp" line="+50"/>
         <source>&amp;Run trials</source>
         <translation>Versuche &amp;ausführen</translation>
     </message>
@@ -7005,7 +7027,7 @@ Verhältnis %</translation>
         <translation>&amp;Weiter</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>&amp;Accept</source>
         <translation>&amp;Übernehmen</translation>
     </message>
@@ -7065,7 +7087,12 @@ Verhältnis %</translation>
         <translation>Schätzung der Nutzlast</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+8"/>
+        <source>Tracking error</source>
+        <translation>Folgefehler</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Close</source>
         <translation>Schließen</translation>
     </message>
@@ -7080,7 +7107,7 @@ Verhältnis %</translation>
         <translation>Der Lauf fordert Sie auf, die Nutzlast vor den Basisversuchen abzunehmen und danach zu montieren.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>The trials cannot be planned: %1</source>
         <translation>Die Versuche lassen sich nicht planen: %1</translation>
     </message>
@@ -7095,7 +7122,7 @@ Verhältnis %</translation>
         <translation>Versuch %1 von %2 läuft mit der Nutzlast…</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>Payload learned: check the estimate, then accept it to apply it to the robot or export it.</source>
         <translation>Nutzlast gelernt: prüfen Sie die Schätzung und nehmen Sie sie an, um sie auf den Roboter zu übertragen oder zu exportieren.</translation>
     </message>
@@ -7105,17 +7132,27 @@ Verhältnis %</translation>
         <translation>Nutzlast gelernt: die Schätzung prüfen, dann zum Exportieren übernehmen.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
+        <source>Payload not learned: %1. The report and trials of the run can be saved (Save report and trials).</source>
+        <translation>Nutzlast nicht gelernt: %1. Bericht und Versuche des Laufs lassen sich speichern (Bericht und Versuche speichern).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Payload not learned: %1</source>
         <translation>Nutzlast nicht gelernt: %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
+        <source>Stopped; no payload is kept from this run. Its report and trials can be saved (Save report and trials).</source>
+        <translation>Gestoppt; von diesem Lauf wird keine Nutzlast behalten. Sein Bericht und seine Versuche lassen sich speichern (Bericht und Versuche speichern).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Stopped; nothing of this run is kept or written.</source>
         <translation>Gestoppt; von diesem Lauf wird nichts behalten oder geschrieben.</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+57"/>
         <source>Run the trials to learn the payload.</source>
         <translation>Die Versuche ausführen, um die Nutzlast zu lernen.</translation>
     </message>
@@ -7135,7 +7172,7 @@ Verhältnis %</translation>
         <translation>Ausführen nicht möglich: %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Stopping the running trial…</source>
         <translation>Der laufende Versuch wird gestoppt…</translation>
     </message>
@@ -7173,7 +7210,7 @@ Verhältnis %</translation>
         <translation>Eine Nutzlast lernen (CAN-Roboter %1/%2)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Write the payload on %1 (%2 kg, centre of mass (%3, %4, %5) mm) to every drive of %6/%7 (object 0x2500), read it back and store it?</source>
         <translation>Die Nutzlast an %1 (%2 kg, Schwerpunkt (%3, %4, %5) mm) in jeden Antrieb von %6/%7 schreiben (Objekt 0x2500), zurücklesen und speichern?</translation>
     </message>
@@ -7234,12 +7271,12 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+51"/>
+        <location line="+56"/>
         <source>Not written: %1</source>
         <translation>Nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location line="-30"/>
+        <location line="-35"/>
         <source>Gains designed for the arm carrying %1 kg on %2 (planning fraction %3); the preview checks the first trial with them.</source>
         <translation>Verstärkungen für den Arm mit %1 kg an %2 ausgelegt (Planungsanteil %3); die Vorschau prüft den ersten Versuch damit.</translation>
     </message>
@@ -7264,11 +7301,19 @@ Verhältnis %</translation>
         <translation>Nutzlastberichte (*.json)</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
+        <location line="+10"/>
         <source>Written: %1 and %n trial CSV(s) in %2</source>
         <translation>
             <numerusform>Geschrieben: %1 und %n Versuchs-CSV in %2</numerusform>
             <numerusform>Geschrieben: %1 und %n Versuchs-CSVs in %2</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Written: %1 and %n trial CSV(s) in %2, of a run that ended early: %3</source>
+        <translation>
+            <numerusform>Geschrieben: %1 und %n Versuchs-CSV in %2, aus einem vorzeitig beendeten Lauf: %3</numerusform>
+            <numerusform>Geschrieben: %1 und %n Versuchs-CSVs in %2, aus einem vorzeitig beendeten Lauf: %3</numerusform>
         </translation>
     </message>
     <message>
@@ -7441,6 +7486,11 @@ Verhältnis %</translation>
         <location filename="../core/service/PayloadRunJob.cpp" line="+92"/>
         <source>the run&apos;s robot is no longer connected: run again</source>
         <translation>der Roboter des Laufs ist nicht mehr verbunden: erneut ausführen</translation>
+    </message>
+    <message>
+        <location line="+96"/>
+        <source>stopped (Stop) by the technician</source>
+        <translation>vom Techniker gestoppt (Stopp)</translation>
     </message>
 </context>
 <context>

@@ -167,7 +167,7 @@
 <context>
     <name>learnid::PayloadDialog</name>
     <message numerus="yes">
-        <location filename="../ui/PayloadDialog.cpp" line="+337"/>
+        <location filename="../ui/PayloadDialog.cpp" line="+360"/>
         <source>Take the payload off %1 for the %n baseline trial(s), then press Continue.</source>
         <translation>
             <numerusform>Take the payload off %1 for the %n baseline trial, then press Continue.</numerusform>
@@ -175,11 +175,19 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/PayloadDialogExport.cpp" line="+188"/>
+        <location filename="../ui/PayloadDialogExport.cpp" line="+192"/>
         <source>Written: %1 and %n trial CSV(s) in %2</source>
         <translation>
             <numerusform>Written: %1 and %n trial CSV in %2</numerusform>
             <numerusform>Written: %1 and %n trial CSVs in %2</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Written: %1 and %n trial CSV(s) in %2, of a run that ended early: %3</source>
+        <translation>
+            <numerusform>Written: %1 and %n trial CSV in %2, of a run that ended early: %3</numerusform>
+            <numerusform>Written: %1 and %n trial CSVs in %2, of a run that ended early: %3</numerusform>
         </translation>
     </message>
 </context>

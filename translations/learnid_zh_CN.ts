@@ -2477,7 +2477,7 @@
 <context>
     <name>PayloadRun</name>
     <message>
-        <location filename="../core/service/PayloadRun.cpp" line="+31"/>
+        <location filename="../core/service/PayloadRun.cpp" line="+32"/>
         <source>payload: the scenario has no payload section</source>
         <translation>payload：场景没有 payload 部分</translation>
     </message>
@@ -2487,7 +2487,7 @@
         <translation>robot.model：未知的机器人模型“%1”</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+108"/>
         <source>no trial was learned from: the payload is not estimated</source>
         <translation>没有从任何试验中学习：未估计负载</translation>
     </message>
@@ -3025,7 +3025,12 @@
 <context>
     <name>RobotScenario</name>
     <message>
-        <location filename="../core/session/RobotScenario.cpp" line="+65"/>
+        <location filename="../core/session/RobotScenario.cpp" line="+99"/>
+        <source>controller.samplePeriod: the starter&apos;s gains do not hold the arm in discrete time at %1 ms, even with the derivative gains lowered (a pole at |z| = %2)</source>
+        <translation>controller.samplePeriod：即使降低微分增益，起始场景的增益在 %1 ms 下也无法在离散时间内稳住机械臂（极点 |z| = %2）</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -3045,7 +3050,12 @@
         <translation>payload：只有 URDF 机器人才能携带负载</translation>
     </message>
     <message>
-        <location line="+150"/>
+        <location line="+2"/>
+        <source>controller.samplePeriod: the paper scenario is the paper&apos;s, at %1 ms; pick a URDF robot for another clock</source>
+        <translation>controller.samplePeriod：论文场景即论文中的场景，采样周期为 %1 ms；如需其他周期，请选择 URDF 机器人</translation>
+    </message>
+    <message>
+        <location line="+155"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>未知机器人“%1”；已知：%2，或一个 URDF 文件（FILE.urdf）</translation>
     </message>
@@ -4163,7 +4173,7 @@
         <location line="+14"/>
         <location line="+69"/>
         <location line="+62"/>
-        <location filename="../app/cli/main.cpp" line="+53"/>
+        <location filename="../app/cli/main.cpp" line="+54"/>
         <source>learnid-cli: error: %1</source>
         <translation>learnid-cli：错误：%1</translation>
     </message>
@@ -4178,7 +4188,7 @@
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+70"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+71"/>
         <source>Usage: learnid-cli %1 [options]
 
 %2
@@ -4244,12 +4254,12 @@
         <translation>--robot %1：%2</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="+78"/>
+        <location filename="../app/cli/CliOptions.cpp" line="+97"/>
         <source>Show this command&apos;s options.</source>
         <translation>显示此命令的选项。</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-73"/>
         <source>Print the default scenario.</source>
         <translation>输出默认场景。</translation>
     </message>
@@ -4352,7 +4362,7 @@
         <translation>一次记录的试验（candump 日志）；每次试验一个，按顺序。</translation>
     </message>
     <message>
-        <location filename="../app/cli/CliOptions.cpp" line="-75"/>
+        <location filename="../app/cli/CliOptions.cpp" line="-76"/>
         <source>Usage:
   learnid-cli scenario --print [--robot ROBOT]
       Print a complete scenario as JSON. ROBOT: paper (the default: the paper
@@ -4360,7 +4370,8 @@
       other than paper, the gains the window designs for it and a path of
       joint waypoints inside its limits. With --payload --payload-mass KG
       [--payload-com X,Y,Z] [--payload-link LINK] ...: a scenario that learns
-      that payload, the gains designed for the arm carrying it.
+      that payload, the gains designed for the arm carrying it. With
+      --sample-period MS: gains that hold at the robot&apos;s clock (default 2 ms).
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--consistent] [--workspace DIR] [--quiet]
@@ -4403,6 +4414,7 @@
       增益，以及一条位于其关节限位内的关节路点路径。
       使用 --payload --payload-mass KG [--payload-com X,Y,Z] [--payload-link LINK] ...：
       生成学习该负载的场景，增益按携带该负载的机械臂设计。
+      使用 --sample-period MS：增益在机器人的控制周期下保持稳定（默认 2 ms）。
   learnid-cli run [--scenario FILE] [--estimator paper|improved] [--iterations N]
                   [--report FILE] [--export FILE] [--trial-csv DIR] [--apply]
                   [--consistent] [--workspace DIR] [--quiet]
@@ -4440,9 +4452,14 @@
 </translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+79"/>
         <source>The robot: paper (default), panda, puma560, double-pendulum, or a URDF file.</source>
         <translation>机器人：paper（默认）、panda、puma560、double-pendulum 或一个 URDF 文件。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The robot&apos;s clock in ms (default 2): the gains are designed to hold in discrete time at it.</source>
+        <translation>机器人的控制周期，单位 ms（默认 2）：增益按在该周期下离散时间稳定来设计。</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -4455,7 +4472,12 @@
         <translation>&apos;scenario&apos; 需要 --print</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+10"/>
+        <source>--sample-period: the robot&apos;s clock must be a number of ms above 0 and at most 100, not &apos;%1&apos;</source>
+        <translation>--sample-period：机器人的控制周期必须是大于 0 且不超过 100 的毫秒数，而不是 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>no command given</source>
         <translation>未给出命令</translation>
     </message>
@@ -5028,7 +5050,7 @@ stdout, and the next plan uses the new estimate.
         <translation>t [s]</translation>
     </message>
     <message>
-        <location filename="../app/cli/ScenarioCommand.cpp" line="+50"/>
+        <location filename="../app/cli/ScenarioCommand.cpp" line="+49"/>
         <source>learnid-cli: error: --robot %1: %2</source>
         <translation>learnid-cli：错误：--robot %1：%2</translation>
     </message>
@@ -6968,7 +6990,7 @@ ratio %</source>
 <context>
     <name>learnid::PayloadDialog</name>
     <message>
-        <location filename="../ui/PayloadDialog.cpp" line="+49"/>
+        <location filename="../ui/PayloadDialog.cpp" line="+50"/>
         <source>&amp;Run trials</source>
         <translation>运行试验(&amp;R)</translation>
     </message>
@@ -6983,7 +7005,7 @@ ratio %</source>
         <translation>继续(&amp;C)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>&amp;Accept</source>
         <translation>接受(&amp;A)</translation>
     </message>
@@ -7043,7 +7065,12 @@ ratio %</source>
         <translation>负载估计</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+8"/>
+        <source>Tracking error</source>
+        <translation>跟踪误差</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Close</source>
         <translation>关闭</translation>
     </message>
@@ -7058,7 +7085,7 @@ ratio %</source>
         <translation>运行会要求您在基线试验前取下负载，并在试验后装上。</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>The trials cannot be planned: %1</source>
         <translation>无法规划试验：%1</translation>
     </message>
@@ -7073,7 +7100,7 @@ ratio %</source>
         <translation>正在运行第 %1/%2 次试验，带负载…</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>Payload learned: check the estimate, then accept it to apply it to the robot or export it.</source>
         <translation>负载已学习：请检查估计值，然后接受它，以便将其应用到机器人或导出。</translation>
     </message>
@@ -7083,17 +7110,27 @@ ratio %</source>
         <translation>负载已学习：请检查估计值，然后接受以导出。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
+        <source>Payload not learned: %1. The report and trials of the run can be saved (Save report and trials).</source>
+        <translation>未学到负载：%1。可以保存本次运行的报告和试验（保存报告和试验）。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Payload not learned: %1</source>
         <translation>负载未学习：%1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
+        <source>Stopped; no payload is kept from this run. Its report and trials can be saved (Save report and trials).</source>
+        <translation>已停止；本次运行不保留负载。可以保存其报告和试验（保存报告和试验）。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Stopped; nothing of this run is kept or written.</source>
         <translation>已停止；本次运行的任何结果都不会保留或写入。</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+57"/>
         <source>Run the trials to learn the payload.</source>
         <translation>运行试验以学习负载。</translation>
     </message>
@@ -7113,7 +7150,7 @@ ratio %</source>
         <translation>无法运行：%1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Stopping the running trial…</source>
         <translation>正在停止当前试验…</translation>
     </message>
@@ -7150,7 +7187,7 @@ ratio %</source>
         <translation>学习负载（CAN 机器人 %1/%2）</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Write the payload on %1 (%2 kg, centre of mass (%3, %4, %5) mm) to every drive of %6/%7 (object 0x2500), read it back and store it?</source>
         <translation>将 %1 上的负载（%2 kg，质心 (%3, %4, %5) mm）写入 %6/%7 的每个驱动器（对象 0x2500），回读并存储？</translation>
     </message>
@@ -7211,12 +7248,12 @@ ratio %</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+51"/>
+        <location line="+56"/>
         <source>Not written: %1</source>
         <translation>未写入：%1</translation>
     </message>
     <message>
-        <location line="-30"/>
+        <location line="-35"/>
         <source>Gains designed for the arm carrying %1 kg on %2 (planning fraction %3); the preview checks the first trial with them.</source>
         <translation>已为在 %2 上承载 %1 kg 的机械臂设计增益（规划比例 %3）；预览会用它们检查第一次试验。</translation>
     </message>
@@ -7241,10 +7278,17 @@ ratio %</source>
         <translation>负载报告 (*.json)</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
+        <location line="+10"/>
         <source>Written: %1 and %n trial CSV(s) in %2</source>
         <translation>
             <numerusform>已写入：%1 以及 %2 中的 %n 个试验 CSV</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Written: %1 and %n trial CSV(s) in %2, of a run that ended early: %3</source>
+        <translation>
+            <numerusform>已写入：%1 以及 %2 中的 %n 个试验 CSV，来自一次提前结束的运行：%3</numerusform>
         </translation>
     </message>
     <message>
@@ -7417,6 +7461,11 @@ ratio %</source>
         <location filename="../core/service/PayloadRunJob.cpp" line="+92"/>
         <source>the run&apos;s robot is no longer connected: run again</source>
         <translation>该次运行的机器人已不再连接：请重新运行</translation>
+    </message>
+    <message>
+        <location line="+96"/>
+        <source>stopped (Stop) by the technician</source>
+        <translation>由技术人员停止（停止）</translation>
     </message>
 </context>
 <context>

@@ -177,6 +177,7 @@ NewtonResult minimiseWithBarriers(const PlausibleObjective &o, Eigen::VectorXd s
     Eigen::MatrixXd hessian;
     Eigen::LDLT<Eigen::MatrixXd> ldlt;
     double value = evaluate(o, result.pi, mu, &gradient, &hessian);
+    bool stalled = false; ///< the last step lowered the objective by no more than its rounding
     while (result.steps < maxSteps && std::isfinite(value)) {
         // Scaled to a unit diagonal first: a link whose prior is nearly degenerate (a published
         // massless link made a real body) has curvatures 1e12 times the others'.
@@ -186,7 +187,8 @@ NewtonResult minimiseWithBarriers(const PlausibleObjective &o, Eigen::VectorXd s
         step = scale.asDiagonal() * ldlt.solve(-scale.cwiseProduct(gradient));
         const double decrement = -gradient.dot(step); // Newton decrement^2 of f + mu phi
         ++result.steps;
-        if (!(decrement > 1e-9 * mu + 1e-13 * cost)) { // centred for this mu
+        if (!(decrement > 1e-9 * mu + 1e-13 * cost) || stalled) { // centred for this mu
+            stalled = false;
             if (nu * mu <= relativeGap * cost || nu == 0) {
                 result.converged = true;
                 break;
@@ -195,6 +197,7 @@ NewtonResult minimiseWithBarriers(const PlausibleObjective &o, Eigen::VectorXd s
             value = evaluate(o, result.pi, mu, &gradient, &hessian);
             continue;
         }
+        const double before = value;
         bool accepted = false;
         for (double t = 1.0; t > 1e-20 && !accepted; t *= 0.5) {
             trial = result.pi + t * step;
@@ -210,6 +213,12 @@ NewtonResult minimiseWithBarriers(const PlausibleObjective &o, Eigen::VectorXd s
         }
         value = evaluate(o, result.pi, mu, &gradient, &hessian);
         cost = objectiveValue(o, result.pi);
+        // A step that lowers the objective only by its rounding error (the sum of many terms;
+        // the line search accepts it by chance) makes no progress: as centred as doubles tell.
+        // Seen on the PUMA's log fit, on one CPU and not another (glibc's libm differs by an
+        // ulp between them), stuck at one mu for the rest of maxSteps.
+        stalled = before - value <= 256.0 * std::numeric_limits<double>::epsilon() *
+                                         std::abs(before);
     }
     result.cost = objectiveValue(o, result.pi);
     return result;

@@ -28,6 +28,7 @@ private slots:
     void paperArm_isThePaperScenario();
     void waypointBeyondALimit_isNamedWithJointAndLimit();
     void unknownModel_isRefused();
+    void clockOf2ms_keepsTheRulesGains();
 };
 
 void TestRobotScenario::builtInRobot_learnsFromItsDefaultScenario_data()
@@ -138,6 +139,28 @@ void TestRobotScenario::unknownModel_isRefused()
         QFAIL("an unknown model was accepted");
     } catch (const Error &e) {
         QCOMPARE(e.message(), QStringLiteral("robot.model: unknown model \"no-such-robot\""));
+    }
+}
+
+void TestRobotScenario::clockOf2ms_keepsTheRulesGains()
+{
+    // The clock step of the design (scenarioForRobot's samplePeriod) lowers gains only where the
+    // pre-trial check finds the loop unstable: at 2 ms every built-in robot, bare or carrying
+    // 1 kg, keeps the gains it has at a clock four times faster (where the rule's hold).
+    PayloadSettings payload;
+    payload.enabled = true;
+    payload.mass = 1.0;
+    payload.com = Eigen::Vector3d(0.0, 0.0, 0.05);
+    for (const QString &robot : knownRobotModels()) {
+        if (!isUrdfModel(robot) || robot == QLatin1String("urdf"))
+            continue;
+        for (const PayloadSettings &p : {PayloadSettings(), payload}) {
+            const ControllerSettings at2ms = scenarioForRobot(robot, {}, p, 0.002).controller;
+            const ControllerSettings fast = scenarioForRobot(robot, {}, p, 0.0005).controller;
+            QVERIFY2(at2ms.kd == fast.kd && at2ms.kp == fast.kp,
+                     qPrintable(robot + (p.enabled ? QStringLiteral(" with 1 kg") : QString())));
+            QCOMPARE(at2ms.samplePeriod, 0.002);
+        }
     }
 }
 
