@@ -146,7 +146,9 @@ void PayloadDialog::buildLayout()
     right->addWidget(trials);
     right->addWidget(titledGroup(tr("Tracking error"), m_plot));
     right->addWidget(estimate);
-    right->setSizes({2, 3, 3});
+    for (const int i : {0, 1, 2})
+        right->setStretchFactor(i, i + 2); // the estimate most, the trial table least
+    right->setSizes({200, 280, 360});
 
     auto *main = new QSplitter(Qt::Horizontal);
     main->addWidget(left);
