@@ -5,7 +5,7 @@
 // fit), the median of 20. With --loop: the payload learned in the learning loop instead
 // (payloadloop.cpp); with --arm-error FRACTION: the bias of a wrong arm model, with and without a
 // baseline trial (payloadarmerror.cpp); with --starter: the starting scenario for an arm with a
-// payload (payloadstarter.cpp).
+// payload (payloadstarter.cpp); with --starter MS: the same at a robot's clock of MS ms.
 #include "../tests/identify/PayloadPaths.h"
 #include "BenchSupport.h"
 #include "identify/LogSignals.h"
@@ -102,14 +102,20 @@ void armErrorFromLogs(const std::shared_ptr<const ChainModel> &arm, double fract
 
 int payloadLoopBench();
 int payloadArmErrorBench(double fraction);
-int payloadStarterBench();
+int payloadStarterBench(double samplePeriod);
 
 int main(int argc, char **argv)
 {
     if (argc > 1 && std::strcmp(argv[1], "--loop") == 0)
         return payloadLoopBench();
-    if (argc > 1 && std::strcmp(argv[1], "--starter") == 0)
-        return payloadStarterBench();
+    if (argc > 1 && std::strcmp(argv[1], "--starter") == 0) {
+        const double ms = argc > 2 ? std::atof(argv[2]) : 2.0;
+        if (!(ms > 0.0 && ms <= 100.0)) {
+            std::printf("--starter: a clock in ms, above 0 and at most 100, not %s\n", argv[2]);
+            return 2;
+        }
+        return payloadStarterBench(ms / 1000.0);
+    }
     if (argc > 2 && std::strcmp(argv[1], "--arm-error") == 0) {
         const double fraction = std::atof(argv[2]);
         if (!(fraction >= 0.0 && fraction < 1.0)) {

@@ -232,10 +232,9 @@ void PayloadDialog::connectJob()
                     MessageBar::Severity::Success);
                 emit runFinished(true);
             });
-    connect(m_job, &PayloadRunJob::endedEarlyRecord, this,
-            [this](std::shared_ptr<const PayloadRunRecord> record) {
-                m_record = std::move(record);
-            });
+    connect(
+        m_job, &PayloadRunJob::endedEarlyRecord, this,
+        [this](std::shared_ptr<const PayloadRunRecord> record) { m_record = std::move(record); });
     connect(m_job, &PayloadRunJob::failed, this, [this](const QString &message) {
         setBusy(false);
         m_message->showMessage(

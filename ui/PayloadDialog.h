@@ -28,15 +28,15 @@ class UiSettings;
 /// motion the dialog shows what the path lets the trials see and whether the first trial passes its
 /// check (PayloadRunJob:: check(), redone after each edit). Run runs the baseline and payload
 /// trials in a worker thread (PayloadRunJob) with progress per trial and Stop; each finished trial
-/// adds a row (PayloadTrialTableModel) and its tracking error over time (TrackingErrorPlot). A run that completes shows the estimate with each value's
-/// standard error, prior and source (PayloadEstimateTableModel); Accept enables the exports: the
-/// parameter file with a payload section (and its DCF) and the URDF with a fixed payload link,
-/// written all or none (writePayloadRunExport); Save scenario keeps the step's edits as a scenario
-/// file at any time but a run; on the CAN robot Accept also enables Apply, which
-/// writes the payload to the drives (PayloadRunJob::applyResult). Baseline trials on the CAN
-/// robot wait for the technician to take the payload off, then to mount it (Continue). A stopped
-/// or failed run leaves no result, but the record of the trials it ran (Save report and trials,
-/// the report marked as ended early and why).
+/// adds a row (PayloadTrialTableModel) and its tracking error over time (TrackingErrorPlot). A run
+/// that completes shows the estimate with each value's standard error, prior and source
+/// (PayloadEstimateTableModel); Accept enables the exports: the parameter file with a payload
+/// section (and its DCF) and the URDF with a fixed payload link, written all or none
+/// (writePayloadRunExport); Save scenario keeps the step's edits as a scenario file at any time but
+/// a run; on the CAN robot Accept also enables Apply, which writes the payload to the drives
+/// (PayloadRunJob::applyResult). Baseline trials on the CAN robot wait for the technician to take
+/// the payload off, then to mount it (Continue). A stopped or failed run leaves no result, but the
+/// record of the trials it ran (Save report and trials, the report marked as ended early and why).
 class PayloadDialog : public QDialog
 {
     Q_OBJECT

@@ -217,8 +217,8 @@ NewtonResult minimiseWithBarriers(const PlausibleObjective &o, Eigen::VectorXd s
         // the line search accepts it by chance) makes no progress: as centred as doubles tell.
         // Seen on the PUMA's log fit, on one CPU and not another (glibc's libm differs by an
         // ulp between them), stuck at one mu for the rest of maxSteps.
-        stalled = before - value <= 256.0 * std::numeric_limits<double>::epsilon() *
-                                         std::abs(before);
+        stalled =
+            before - value <= 256.0 * std::numeric_limits<double>::epsilon() * std::abs(before);
     }
     result.cost = objectiveValue(o, result.pi);
     return result;

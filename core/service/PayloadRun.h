@@ -65,7 +65,7 @@ struct PayloadPreview
     /// observability.advice(link): what the path does not see and why; then the smallest
     /// change of the path that would measure it (PayloadSession::pathChange), if one does
     QStringList advice;
-    QString checkReason; ///< why the first trial would be refused; empty: it passes
+    QString checkReason;    ///< why the first trial would be refused; empty: it passes
     QStringList jointNames; ///< the arm's, in joint order (as its URDF has them)
 };
 
@@ -101,7 +101,8 @@ struct PayloadRunRecord
 {
     QByteArray report;
     QList<QPair<QString, QByteArray>> trialCsvs;
-    QString endedEarly; ///< why the run ended before its last trial (in the report); empty: it did not
+    QString
+        endedEarly; ///< why the run ended before its last trial (in the report); empty: it did not
 };
 
 /// The record of the trials session `s` has run so far; endedEarly as payloadReportJson().
@@ -118,7 +119,7 @@ struct PayloadRunResult
     std::vector<PayloadTrialRow> trials;
     int learnedTrial = -1; ///< the trial whose fit is the result
     PayloadFit fit;
-    PayloadRunRecord record; ///< the run's report and trial CSVs
+    PayloadRunRecord record;             ///< the run's report and trial CSVs
     Eigen::VectorXd maxTrackingErrorDeg; ///< that trial's, per joint [deg] (n)
     Eigen::VectorXd rmsTrackingErrorDeg; ///< per joint [deg] (n)
 };

@@ -127,9 +127,9 @@ void PayloadRunJob::runInThread(const Scenario &scenario, const RobotRequest &ro
             QMutexLocker lock(&m_mountMutex);
             m_mountConfirmed = false;
         }
-        made = std::make_shared<PayloadRunSession>(
-            robot.kind == RobotRequest::Kind::Can ? makeCanPayloadSession(scenario, robot)
-                                                  : makeSimulatedPayloadSession(scenario));
+        made = std::make_shared<PayloadRunSession>(robot.kind == RobotRequest::Kind::Can
+                                                       ? makeCanPayloadSession(scenario, robot)
+                                                       : makeSimulatedPayloadSession(scenario));
         if (!made->session)
             throw Error(made->connectError);
         PayloadRunSession &s = *made;
@@ -187,8 +187,8 @@ void PayloadRunJob::runInThread(const Scenario &scenario, const RobotRequest &ro
     if (!result && made && made->session && !made->session->history().empty()) {
         const QString why = cancel->load() ? tr("stopped (Stop) by the technician") : error;
         try {
-            record = std::make_shared<const PayloadRunRecord>(
-                payloadRunRecord(*made->session, why));
+            record =
+                std::make_shared<const PayloadRunRecord>(payloadRunRecord(*made->session, why));
         } catch (const std::exception &e) {
             qCWarning(lcService) << "payload run: the record of the ended run failed:" << e.what();
         }

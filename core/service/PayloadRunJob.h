@@ -24,8 +24,9 @@ namespace learnid {
 /// cancel() stops the running trial at its next sample (PayloadSession::requestCancel()); a
 /// cancelled or failed run has no result, so nothing of it can be accepted, applied or exported,
 /// but when it ran a trial its record comes first (endedEarlyRecord(): the report, marked as
-/// ended early and why, and the trial CSVs); a check superseded by a newer one is dropped. The robot of the last successful run stays
-/// connected until the next run or the job's end, for its apply.
+/// ended early and why, and the trial CSVs); a check superseded by a newer one is dropped. The
+/// robot of the last successful run stays connected until the next run or the job's end, for its
+/// apply.
 class PayloadRunJob : public QObject
 {
     Q_OBJECT

@@ -198,11 +198,11 @@ void TestCliScenario::samplePeriod_designsForTheRobotsClock()
 {
     // The Panda with 3 kg on a 4 ms bus: the starter the library designs for that clock
     // (tst_payloadstarter runs it), its period in the scenario, its pre-trial check passed.
-    const QStringList args{QStringLiteral("scenario"),      QStringLiteral("--print"),
-                           QStringLiteral("--robot"),       QStringLiteral("panda"),
-                           QStringLiteral("--payload"),     QStringLiteral("--payload-mass"),
-                           QStringLiteral("3"),             QStringLiteral("--payload-com"),
-                           QStringLiteral("0,0,0.05"),      QStringLiteral("--sample-period"),
+    const QStringList args{QStringLiteral("scenario"),  QStringLiteral("--print"),
+                           QStringLiteral("--robot"),   QStringLiteral("panda"),
+                           QStringLiteral("--payload"), QStringLiteral("--payload-mass"),
+                           QStringLiteral("3"),         QStringLiteral("--payload-com"),
+                           QStringLiteral("0,0,0.05"),  QStringLiteral("--sample-period"),
                            QStringLiteral("4")};
     const Result r = cli(args);
     QCOMPARE(r.exitCode, 0);

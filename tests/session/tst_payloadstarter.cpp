@@ -139,7 +139,8 @@ private slots:
         const PreTrialCheck refused =
             sessionFor(carrying(at2ms, 3.0, at2ms.payload))->checkNextTrial();
         QVERIFY(!refused.passed());
-        QVERIFY2(refused.reason().contains(QLatin1String("unstable")), qPrintable(refused.reason()));
+        QVERIFY2(refused.reason().contains(QLatin1String("unstable")),
+                 qPrintable(refused.reason()));
 
         // Designed for 4 ms: the same kp and ki, some derivative gains lower, none higher.
         const Scenario at4ms = scenarioForRobot(QStringLiteral("panda"), {}, prior(2.5), 0.004);

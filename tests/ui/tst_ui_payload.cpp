@@ -61,23 +61,19 @@ QJsonObject savedRecord(PayloadDialog &d, QPushButton *button, int rows)
     d.setPathChooser([&dir](PayloadDialog::ExportKind, const QString &) {
         return dir.filePath(QStringLiteral("ended.json"));
     });
-    if (!button->isEnabled())
-        return {};
-    QTest::mouseClick(button, Qt::LeftButton);
-    if (d.messageBar()->severity() != MessageBar::Severity::Success)
-        return {};
     QFile file(dir.filePath(QStringLiteral("ended.json")));
-    if (!file.open(QIODevice::ReadOnly))
+    if (button->isEnabled())
+        QTest::mouseClick(button, Qt::LeftButton);
+    if (d.messageBar()->severity() != MessageBar::Severity::Success ||
+        !file.open(QIODevice::ReadOnly))
         return {};
     const QJsonObject report = QJsonDocument::fromJson(file.readAll()).object();
-    if (report.value(QStringLiteral("trials")).toArray().size() != rows)
-        return {};
-    for (int i = 0; i < rows; ++i)
-        if (QFileInfo(dir.filePath(QStringLiteral("ended-trials/trial-%1.csv")
-                                       .arg(i, 3, 10, QLatin1Char('0'))))
-                .size() == 0)
+    for (int i = 0; i < rows; ++i) {
+        const QString csv = QStringLiteral("ended-trials/trial-%1.csv").arg(i, 3, 10, QChar('0'));
+        if (QFileInfo(dir.filePath(csv)).size() == 0)
             return {};
-    return report;
+    }
+    return report.value(QStringLiteral("trials")).toArray().size() == rows ? report : QJsonObject();
 }
 
 } // namespace
