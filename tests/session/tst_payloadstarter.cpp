@@ -44,6 +44,19 @@ std::unique_ptr<PayloadSession> sessionFor(Scenario s)
                                             makeSimulatedBareRobot(s, model));
 }
 
+// Why the session's last fit misses the targets for a payload of `mass` at (5, 0, 8) cm
+// (mass within massShare of it, centre of mass within 3 mm); empty when it meets them.
+QString missedTargets(const PayloadSession &session, double mass, double massShare = 0.01)
+{
+    const PayloadBody &b = session.history().back().fit->estimate.body;
+    const double com = (b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm();
+    if (std::abs(b.mass - mass) >= massShare * mass)
+        return QStringLiteral("mass %1 kg").arg(b.mass);
+    if (com >= 0.003)
+        return QStringLiteral("centre of mass %1 mm off").arg(1000.0 * com);
+    return {};
+}
+
 } // namespace
 
 class TestPayloadStarter : public QObject
@@ -69,12 +82,8 @@ private slots:
         QCOMPARE(starter.payload.mass, priorMass);
         const auto session = sessionFor(carrying(starter, trueMass, starter.payload));
         QVERIFY2(session->runTrials(3), qPrintable(session->history().back().message));
-        const PayloadBody &b = session->history().back().fit->estimate.body;
-        QVERIFY2(std::abs(b.mass - trueMass) < 0.01 * trueMass,
-                 qPrintable(QString::number(b.mass)));
-        QVERIFY2(
-            (b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 0.003,
-            qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
+        const QString missed = missedTargets(*session, trueMass);
+        QVERIFY2(missed.isEmpty(), qPrintable(missed));
         qInfo("trial 0 max tracking error %.2f deg",
               session->history().front().maxTrackingErrorDeg.maxCoeff());
 
@@ -93,11 +102,8 @@ private slots:
         s.payload.baselineTrials = 1;
         const auto session = sessionFor(s);
         QVERIFY2(session->runTrials(3), qPrintable(session->history().back().message));
-        const PayloadBody &b = session->history().back().fit->estimate.body;
-        QVERIFY2(std::abs(b.mass - 1.5) < 0.015, qPrintable(QString::number(b.mass)));
-        QVERIFY2(
-            (b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 0.003,
-            qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
+        const QString missed = missedTargets(*session, 1.5);
+        QVERIFY2(missed.isEmpty(), qPrintable(missed));
     }
 
     void baselineGains_holdTheBarePumaWhoseWristThePayloadGainsLeaveUnstable()
@@ -155,11 +161,8 @@ private slots:
         const PreTrialCheck check = session->checkNextTrial();
         QVERIFY2(check.passed(), qPrintable(check.reason()));
         QVERIFY2(session->runTrials(3), qPrintable(session->history().back().message));
-        const PayloadBody &b = session->history().back().fit->estimate.body;
-        QVERIFY2(std::abs(b.mass - 3.0) < 0.03, qPrintable(QString::number(b.mass)));
-        QVERIFY2(
-            (b.com - Eigen::Vector3d(0.05, 0.0, 0.08)).norm() < 0.003,
-            qPrintable(QString::number(1000.0 * (b.com - Eigen::Vector3d(0.05, 0, 0.08)).norm())));
+        const QString missed = missedTargets(*session, 3.0);
+        QVERIFY2(missed.isEmpty(), qPrintable(missed));
         QStringList ratio;
         for (int j = 0; j < soft.dof(); ++j)
             ratio << QString::number(soft.kd[j] / stiff.kd[j], 'g', 2);
