@@ -46,7 +46,8 @@ learnid_install_deps() {
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
-# Configures and builds into $1 (default: build) with extra CMake arguments after it.
+# Configures and builds into $1 (default: build) with extra CMake arguments after it; only the
+# targets in LEARNID_BUILD_TARGETS (and what they need) when it is set.
 learnid_build() {
     local dir="${1:-build}"
     shift || true
@@ -57,5 +58,10 @@ learnid_build() {
         launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
     fi
     cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${launcher[@]}" "$@"
-    cmake --build "$dir" -j "$(nproc)"
+    local targets=()
+    if [ -n "${LEARNID_BUILD_TARGETS:-}" ]; then
+        read -r -a targets <<<"$LEARNID_BUILD_TARGETS"
+        targets=(--target "${targets[@]}")
+    fi
+    cmake --build "$dir" -j "$(nproc)" "${targets[@]}"
 }

@@ -3491,7 +3491,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+129"/>
+        <location filename="../core/service/SessionReport.cpp" line="+131"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>Schätzung %1 existiert in dieser Sitzung nicht</translation>
     </message>
@@ -5879,13 +5879,21 @@ neue Schätzung.
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
+    <message numerus="yes">
+        <location line="+14"/>
+        <source>%n set-point(s) reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</source>
+        <translation>
+            <numerusform>%n Sollwert erreichte die Antriebe nach seinem SYNC (Statuswort Bit 12): Die Antriebe hielten den vorherigen, daher entspricht die Bewegung dieses Versuchs nicht ganz dem Plan und das daraus Gelernte ebenso wenig; schließen Sie andere Programme auf diesem Rechner</numerusform>
+            <numerusform>%n Sollwerte erreichten die Antriebe nach ihrem SYNC (Statuswort Bit 12): Die Antriebe hielten jeweils den vorherigen, daher entspricht die Bewegung dieses Versuchs nicht ganz dem Plan und das daraus Gelernte ebenso wenig; schließen Sie andere Programme auf diesem Rechner</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+37"/>
+        <location line="+31"/>
         <source>repetition %1 of %2: %3</source>
         <translation>Wiederholung %1 von %2: %3</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>trial %1 stopped at the tracking limit after %2 s: too short to learn from once the filter has settled (%3 s); the estimate is unchanged</source>
         <translation>Versuch %1 stoppte nach %2 s an der Grenze des Folgefehlers: zu kurz, um nach dem Einschwingen des Filters (%3 s) daraus zu lernen; die Schätzung bleibt unverändert</translation>
     </message>
@@ -7092,7 +7100,7 @@ Verhältnis %</translation>
         <translation>Folgefehler</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>Close</source>
         <translation>Schließen</translation>
     </message>
@@ -7132,7 +7140,7 @@ Verhältnis %</translation>
         <translation>Nutzlast gelernt: die Schätzung prüfen, dann zum Exportieren übernehmen.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Payload not learned: %1. The report and trials of the run can be saved (Save report and trials).</source>
         <translation>Nutzlast nicht gelernt: %1. Bericht und Versuche des Laufs lassen sich speichern (Bericht und Versuche speichern).</translation>
     </message>
@@ -8603,7 +8611,12 @@ Verhältnis %</translation>
         <translation>Versuch %1 gestoppt: %2. Aus seinen ersten %3 s gelernt (ein abgebrochener Versuch); der nächste Versuch läuft mit der neuen Schätzung.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
+        <source>Trial %1: %2.</source>
+        <translation>Versuch %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Trial %1 %2: %3. Its data are kept.</source>
         <translation>Versuch %1 %2: %3. Seine Daten bleiben erhalten.</translation>
     </message>
@@ -8855,7 +8868,7 @@ Verhältnis %</translation>
         <translation>nur %1 von %2 Abtastwerten wurden aufgezeichnet</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>an unknown node</source>
         <translation>ein unbekannter Knoten</translation>
     </message>

@@ -146,6 +146,17 @@
     </message>
 </context>
 <context>
+    <name>learnid::CommissioningSession</name>
+    <message numerus="yes">
+        <location filename="../core/session/CommissioningSession.cpp" line="+101"/>
+        <source>%n set-point(s) reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</source>
+        <translation>
+            <numerusform>%n set-point reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</numerusform>
+            <numerusform>%n set-points reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>learnid::FileController</name>
     <message numerus="yes">
         <location filename="../ui/FileController.cpp" line="+59"/>
@@ -167,7 +178,7 @@
 <context>
     <name>learnid::PayloadDialog</name>
     <message numerus="yes">
-        <location filename="../ui/PayloadDialog.cpp" line="+360"/>
+        <location filename="../ui/PayloadDialog.cpp" line="+361"/>
         <source>Take the payload off %1 for the %n baseline trial(s), then press Continue.</source>
         <translation>
             <numerusform>Take the payload off %1 for the %n baseline trial, then press Continue.</numerusform>

@@ -3478,7 +3478,7 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../core/service/SessionReport.cpp" line="+129"/>
+        <location filename="../core/service/SessionReport.cpp" line="+131"/>
         <source>estimate %1 does not exist in this session</source>
         <translation>本会话中不存在估计 %1</translation>
     </message>
@@ -5859,13 +5859,20 @@ stdout, and the next plan uses the new estimate.
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
+    <message numerus="yes">
+        <location line="+14"/>
+        <source>%n set-point(s) reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</source>
+        <translation>
+            <numerusform>%n 个设定值在其 SYNC 之后才到达驱动器（状态字第 12 位）：驱动器保持了上一个设定值，因此本次试验的运动与计划不完全一致，从中学到的也是如此；请关闭这台计算机上的其他程序</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+37"/>
+        <location line="+31"/>
         <source>repetition %1 of %2: %3</source>
         <translation>第 %1 次重复（共 %2 次）：%3</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>trial %1 stopped at the tracking limit after %2 s: too short to learn from once the filter has settled (%3 s); the estimate is unchanged</source>
         <translation>试验 %1 在 %2 s 后于跟踪误差限值处停止：除去滤波器的稳定时间（%3 s）后太短，无法学习；估计保持不变</translation>
     </message>
@@ -7070,7 +7077,7 @@ ratio %</source>
         <translation>跟踪误差</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>Close</source>
         <translation>关闭</translation>
     </message>
@@ -7110,7 +7117,7 @@ ratio %</source>
         <translation>负载已学习：请检查估计值，然后接受以导出。</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Payload not learned: %1. The report and trials of the run can be saved (Save report and trials).</source>
         <translation>未学到负载：%1。可以保存本次运行的报告和试验（保存报告和试验）。</translation>
     </message>
@@ -8575,7 +8582,12 @@ ratio %</source>
         <translation>试验 %1 已停止：%2。已从其前 %3 s 学习（部分试验）；下一次试验使用新的估计运行。</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
+        <source>Trial %1: %2.</source>
+        <translation>试验 %1：%2。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Trial %1 %2: %3. Its data are kept.</source>
         <translation>试验 %1 %2：%3。其数据已保留。</translation>
     </message>
@@ -8826,7 +8838,7 @@ ratio %</source>
         <translation>%2 个采样点中只记录了 %1 个</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>an unknown node</source>
         <translation>未知节点</translation>
     </message>

@@ -65,9 +65,13 @@ SessionPresenter::SessionPresenter(SessionController *controller, Views views, Q
                             .arg(t.record.message)
                             .arg(t.partialSamples * t.record.samplePeriod, 0, 'f', 3),
                         MessageBar::Severity::Info);
-                } else if (t.learned())
+                } else if (t.learned()) {
                     m_views.run->trialDone(int(m_controller->estimates().size()) - 1);
-                else if (t.status() == TrialStatus::Refused) { // nothing moved, nothing recorded
+                    if (t.record.lateSetpoints > 0) // the CAN robot: the PC missed deadlines
+                        m_views.message->showMessage(
+                            tr("Trial %1: %2.").arg(t.index).arg(t.message),
+                            MessageBar::Severity::Info);
+                } else if (t.status() == TrialStatus::Refused) { // nothing moved, nothing recorded
                     QString text = t.message;
                     if (!text.isEmpty())
                         text[0] = text[0].toUpper();

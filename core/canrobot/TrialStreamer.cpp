@@ -249,9 +249,8 @@ void TrialStreamer::finish()
                       .arg(m_collector->recordedSamples())
                       .arg(m_plan.samples());
     }
-    if (m_stats.lateSetpoints > 0)
-        qCWarning(lcCan) << m_stats.lateSetpoints << "set-points arrived late (statusword bit 12)";
     TrialRecord record = m_collector->record(status, message);
+    record.lateSetpoints = m_stats.lateSetpoints;
     record.stopCause = status == TrialStatus::Completed ? TrialStopCause::None : cause;
     if (Done done = std::exchange(m_done, nullptr))
         done(record);

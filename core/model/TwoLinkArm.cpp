@@ -12,11 +12,11 @@ QList<ParameterInfo> TwoLinkArm::parameters() const
     const QString unit = QStringLiteral("kg m^2");
     return {
         {QStringLiteral("a"), unit,
-         QCoreApplication::translate("TwoLinkArm", "inertia of the base axis")},
+         QCoreApplication::translate("TwoLinkArm", "inertia of the base axis"), QString()},
         {QStringLiteral("b"), unit,
-         QCoreApplication::translate("TwoLinkArm", "coupling inertia of the two links")},
+         QCoreApplication::translate("TwoLinkArm", "coupling inertia of the two links"), QString()},
         {QStringLiteral("c"), unit,
-         QCoreApplication::translate("TwoLinkArm", "inertia of the second link")},
+         QCoreApplication::translate("TwoLinkArm", "inertia of the second link"), QString()},
     };
 }
 

@@ -35,6 +35,8 @@ QJsonObject trialEntry(const PayloadTrial &t)
         o.insert(QStringLiteral("identified"), identified);
         o.insert(QStringLiteral("updateCpuMs"), row.updateMs);
     }
+    if (t.record.lateSetpoints > 0)
+        o.insert(QStringLiteral("lateSetpoints"), t.record.lateSetpoints);
     if (!t.message.isEmpty())
         o.insert(QStringLiteral("message"), t.message);
     return o;

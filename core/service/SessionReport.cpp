@@ -89,6 +89,8 @@ QByteArray sessionReportJson(const CommissioningSession &session, const QString 
         o.insert(QStringLiteral("rmsTrackingErrorDeg"), reportNumbers(t->rmsTrackingErrorDeg));
         o.insert(QStringLiteral("durationS"), reportNumber(t->check.rule.duration));
         o.insert(QStringLiteral("samples"), t->record.samples());
+        if (t->record.lateSetpoints > 0)
+            o.insert(QStringLiteral("lateSetpoints"), t->record.lateSetpoints);
         if (t->update) {
             o.insert(QStringLiteral("condition"), reportNumber(t->update->condition));
             o.insert(QStringLiteral("rank"), t->update->rank);

@@ -96,6 +96,10 @@ const TrialResult &CommissioningSession::runNextTrial()
         else if (result.record.stoppedAtTrackingLimit())
             learnFromPartial(result);
         // Never learned from: a fault, an EMCY, a lost heartbeat, missing samples, Stop.
+        if (result.record.lateSetpoints > 0 && result.message.isEmpty()) {
+            result.message = lateSetpointsNote(result.record);
+            qCWarning(lcSession).noquote() << result.message;
+        }
         result.seriesStop = seriesStopAfterAbort(m_history, result);
         result.worseTracking = worseTrackingNote(m_history, result);
         for (const QString &note : {result.seriesStop, result.worseTracking})
@@ -130,6 +134,7 @@ TrialRecord CommissioningSession::runRepetitions(const TrialPlan &plan, int inde
         } else {
             sum.q += record.q;
             sum.tau += record.tau;
+            sum.lateSetpoints += record.lateSetpoints;
         }
     }
     sum.q /= double(reps);

@@ -172,6 +172,7 @@ const PayloadTrial &PayloadSession::runTrial()
     t.record = robot.runTrial(t.plan(), monitor);
     trackingErrorFigures(t.plan(), t.record, t.maxTrackingErrorDeg, t.rmsTrackingErrorDeg);
     t.partial = !t.baseline && t.record.stoppedAtTrackingLimit();
+    t.message = lateSetpointsNote(t.record); // replaced by a reason the trial ended or failed
     if (!t.record.completed() && !t.partial) {
         t.message = Text::tr("trial %1 did not complete (%2): the payload estimate is unchanged")
                         .arg(t.index)

@@ -37,7 +37,7 @@ struct TrialResult
     Eigen::VectorXd maxTrackingErrorDeg;   ///< max |q_d - q| per joint over the record [deg] (n)
     Eigen::VectorXd rmsTrackingErrorDeg;   ///< RMS of q_d - q per joint [deg] (n)
     std::optional<ParameterUpdate> update; ///< the learning step made from this trial
-    QString message;                       ///< why it was refused, ended early or not learned from
+    QString message; ///< why it was refused, ended early or not learned from; or late set-points
     /// A trial stopped by the tracking limit and learned from: the samples learned from (the
     /// record's, less the filter's settling at its end); 0 for a completed trial.
     int partialSamples = 0;
@@ -58,6 +58,10 @@ struct TrialResult
 /// Tracking error figures of a record against its plan [deg], per joint.
 void trackingErrorFigures(const TrialPlan &plan, const TrialRecord &record, Eigen::VectorXd &maxDeg,
                           Eigen::VectorXd &rmsDeg);
+
+/// What a technician should know of a record's late set-points (TrialRecord::lateSetpoints), in
+/// words; empty when there were none.
+QString lateSetpointsNote(const TrialRecord &record);
 
 } // namespace learnid
 

@@ -71,6 +71,10 @@ struct TrialRecord
     TrialStatus status = TrialStatus::Completed;
     QString message; ///< why the trial ended early, in words for the technician
     TrialStopCause stopCause = TrialStopCause::None; ///< what ended it early (None: completed)
+    /// Samples at which a drive reported its set-point late (CiA 402 statusword bit 12 clear),
+    /// summed over the joints: the drive held the previous one there, so the motion is not
+    /// quite the plan's (0 for a simulated robot).
+    int lateSetpoints = 0;
 
     int samples() const { return int(q.cols()); }
     bool completed() const { return status == TrialStatus::Completed; }

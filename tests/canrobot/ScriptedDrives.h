@@ -101,6 +101,9 @@ public:
     qint64 syncs() const { return m_syncs; }
     /// Returns true to drop the TPDO of node at SYNC number n (1-based).
     std::function<bool(int node, qint64 n)> dropTpdo;
+    /// Returns true to make node's set-point late at SYNC number n: the drive holds the one
+    /// before and clears statusword bit 12 (only where the two differ, so that it shows).
+    std::function<bool(int node, qint64 n)> lateSetpoint;
     /// Called at every SYNC in which a node is Operation enabled, after applying set-points.
     std::function<void(qint64 n)> onSync;
     QList<quint16> controlwords; ///< every controlword received in an RPDO, in order
@@ -209,10 +212,13 @@ private:
                 n->hasControlword = false;
             }
             const bool enabled = n->drive.state() == cia402::State::OperationEnabled;
-            if (enabled && n->fresh)
+            const bool late = enabled && n->fresh && n->target != n->position && lateSetpoint &&
+                              lateSetpoint(nid, m_syncs);
+            const bool followed = enabled && n->fresh && !late;
+            if (followed)
                 n->position = n->target; // an ideal drive
             quint16 sw = n->drive.statusword();
-            if (enabled && n->fresh)
+            if (followed)
                 sw |= 0x1000;
             n->answered = n->fresh;
             n->fresh = false;

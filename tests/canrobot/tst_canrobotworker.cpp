@@ -31,6 +31,7 @@ class TestCanRobotWorker : public QObject
 
 private slots:
     void trial_collectsSamplesBySyncAcrossCounterWrap();
+    void lateSetpoints_countedInTheRecord();
     void configurationAbort_namesObjectAndCode_nothingMoves();
     void missingTpdo_abortsWithQuickStop();
     void emcy_abortsFaultedWithQuickStop();
@@ -75,6 +76,30 @@ void TestCanRobotWorker::trial_collectsSamplesBySyncAcrossCounterWrap()
     QTRY_COMPARE(s.drives.node(2).nmt, NmtState::PreOperational); // after the trial
     QVERIFY(s.drives.controlwords.contains(0x0006));              // shutdown at the end
     QCOMPARE(s.worker->lastStatistics().lateSetpoints, 0);
+    QCOMPARE(r.lateSetpoints, 0);
+}
+
+void TestCanRobotWorker::lateSetpoints_countedInTheRecord()
+{
+    WorkerSetup s;
+    s.drives.lateSetpoint = [](int node, qint64 n) {
+        return node == 1 && n % 23 == 0;
+    };
+    s.drives.startSync();
+    const TrialPlan plan = test::testPlan(300);
+    const TrialRecord r = s.run(plan);
+    QVERIFY2(r.completed(), qPrintable(r.message));
+    QCOMPARE(r.samples(), plan.samples());
+    // The ideal drive follows every set-point but the late ones, where it holds the one before:
+    // joint 1 is off the plan's sample there, joint 2 never.
+    int held = 0;
+    for (int k = 0; k < r.samples(); ++k) {
+        held += r.q(0, k) != scaling.toRad(scaling.toIncrements(plan.desired.q(0, k)));
+        QCOMPARE(r.q(1, k), scaling.toRad(scaling.toIncrements(plan.desired.q(1, k))));
+    }
+    QVERIFY2(held >= 10, qPrintable(QString::number(held))); // about 300 / 23 SYNCs
+    QCOMPARE(r.lateSetpoints, held);
+    QCOMPARE(s.worker->lastStatistics().lateSetpoints, held);
 }
 
 void TestCanRobotWorker::configurationAbort_namesObjectAndCode_nothingMoves()

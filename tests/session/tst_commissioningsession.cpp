@@ -8,6 +8,37 @@
 
 using namespace learnid;
 
+namespace {
+
+// The simulated robot, with drives that report some set-points late at every run (as CanRobot
+// counts them from statusword bit 12).
+class LateSetpointRobot final : public Robot
+{
+public:
+    LateSetpointRobot(std::shared_ptr<SimulatedRobot> robot, int late)
+        : m_robot(std::move(robot))
+        , m_late(late)
+    {}
+    QString description() const override { return m_robot->description(); }
+    TrialRecord runTrial(const TrialPlan &plan, const TrialMonitor &monitor) override
+    {
+        TrialRecord r = m_robot->runTrial(plan, monitor);
+        r.lateSetpoints = m_late;
+        return r;
+    }
+    QString applyParameters(const Eigen::VectorXd &phi) override
+    {
+        return m_robot->applyParameters(phi);
+    }
+    Eigen::VectorXd storedParameters() const override { return m_robot->storedParameters(); }
+
+private:
+    std::shared_ptr<SimulatedRobot> m_robot;
+    int m_late = 0;
+};
+
+} // namespace
+
 class TestCommissioningSession : public QObject
 {
     Q_OBJECT
@@ -23,6 +54,7 @@ private slots:
     void robotFault_stopsSeriesKeepingPartialData();
     void nonFiniteMeasurement_isNotLearnedFrom();
     void repetitions_averageTorqueNoise();
+    void lateSetpoints_learnedFrom_andSaidInTheMessage();
     void mismatchedScenario_throws();
 
 private:
@@ -218,6 +250,22 @@ void TestCommissioningSession::repetitions_averageTorqueNoise()
     const double sd = std::sqrt(d.row(0).squaredNorm() / double(d.cols()));
     const double expected = 0.01 * s.torqueLimits[0] / 2.0;
     QVERIFY2(std::abs(sd / expected - 1.0) < 0.1, qPrintable(QString::number(sd)));
+}
+
+void TestCommissioningSession::lateSetpoints_learnedFrom_andSaidInTheMessage()
+{
+    Scenario s;
+    s.repetitions = 2;
+    const auto model = std::make_shared<TwoLinkArm>();
+    const auto sim = std::make_shared<SimulatedRobot>(model, s.simulation.trueParameters);
+    CommissioningSession session(s, model, std::make_shared<LateSetpointRobot>(sim, 3));
+    const TrialResult &t = session.runTrial();
+    QVERIFY(t.learned());
+    QCOMPARE(t.record.lateSetpoints, 6); // over both repetitions
+    QVERIFY2(t.message.startsWith(QLatin1String("6 set-point")), qPrintable(t.message));
+    Fixture onTime = make(s);
+    QVERIFY2(onTime.session->runTrial().message.isEmpty(),
+             qPrintable(onTime.session->history().constLast().message));
 }
 
 void TestCommissioningSession::mismatchedScenario_throws()
