@@ -2535,17 +2535,17 @@
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>trial %1 did not complete (%2): the payload estimate is unchanged</source>
         <translation>Versuch %1 wurde nicht vollständig ausgeführt (%2): die Schätzung der Nutzlast bleibt unverändert</translation>
     </message>
     <message>
-        <location line="-112"/>
+        <location line="-113"/>
         <source>trial %1</source>
         <translation>Versuch %1</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+124"/>
         <source>baseline trial %1 not usable: %2</source>
         <translation>Referenzfahrt %1 nicht verwendbar: %2</translation>
     </message>
@@ -3682,6 +3682,17 @@
         <location line="+24"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>nur ebene Zweigelenkarme haben eine kartesische Geradenkinematik</translation>
+    </message>
+</context>
+<context>
+    <name>TrialResult</name>
+    <message numerus="yes">
+        <location filename="../core/session/TrialResult.cpp" line="+36"/>
+        <source>%n set-point(s) reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</source>
+        <translation>
+            <numerusform>%n Sollwert erreichte die Antriebe nach seinem SYNC (Statuswort Bit 12): Die Antriebe hielten den vorherigen, daher entspricht die Bewegung dieses Versuchs nicht ganz dem Plan und das daraus Gelernte ebenso wenig; schließen Sie andere Programme auf diesem Rechner</numerusform>
+            <numerusform>%n Sollwerte erreichten die Antriebe nach ihrem SYNC (Statuswort Bit 12): Die Antriebe hielten jeweils den vorherigen, daher entspricht die Bewegung dieses Versuchs nicht ganz dem Plan und das daraus Gelernte ebenso wenig; schließen Sie andere Programme auf diesem Rechner</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5879,16 +5890,8 @@ neue Schätzung.
         <source>trial %1 refused before motion: %2</source>
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
-    <message numerus="yes">
-        <location line="+14"/>
-        <source>%n set-point(s) reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</source>
-        <translation>
-            <numerusform>%n Sollwert erreichte die Antriebe nach seinem SYNC (Statuswort Bit 12): Die Antriebe hielten den vorherigen, daher entspricht die Bewegung dieses Versuchs nicht ganz dem Plan und das daraus Gelernte ebenso wenig; schließen Sie andere Programme auf diesem Rechner</numerusform>
-            <numerusform>%n Sollwerte erreichten die Antriebe nach ihrem SYNC (Statuswort Bit 12): Die Antriebe hielten jeweils den vorherigen, daher entspricht die Bewegung dieses Versuchs nicht ganz dem Plan und das daraus Gelernte ebenso wenig; schließen Sie andere Programme auf diesem Rechner</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+31"/>
+        <location line="+41"/>
         <source>repetition %1 of %2: %3</source>
         <translation>Wiederholung %1 von %2: %3</translation>
     </message>

@@ -124,6 +124,17 @@
     </message>
 </context>
 <context>
+    <name>TrialResult</name>
+    <message numerus="yes">
+        <location filename="../core/session/TrialResult.cpp" line="+36"/>
+        <source>%n set-point(s) reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</source>
+        <translation>
+            <numerusform>%n set-point reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</numerusform>
+            <numerusform>%n set-points reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>learnid-cli</name>
     <message numerus="yes">
         <location filename="../app/cli/IdentifyCommand.cpp" line="+116"/>
@@ -142,17 +153,6 @@
 </numerusform>
             <numerusform>Fitted to %n logs, %1 samples: %2 of 10 directions determined (condition %3).
 </numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>learnid::CommissioningSession</name>
-    <message numerus="yes">
-        <location filename="../core/session/CommissioningSession.cpp" line="+101"/>
-        <source>%n set-point(s) reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</source>
-        <translation>
-            <numerusform>%n set-point reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</numerusform>
-            <numerusform>%n set-points reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</numerusform>
         </translation>
     </message>
 </context>

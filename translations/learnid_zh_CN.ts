@@ -2525,17 +2525,17 @@
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>trial %1 did not complete (%2): the payload estimate is unchanged</source>
         <translation>试验 %1 未完成（%2）：负载估计保持不变</translation>
     </message>
     <message>
-        <location line="-112"/>
+        <location line="-113"/>
         <source>trial %1</source>
         <translation>试验 %1</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+124"/>
         <source>baseline trial %1 not usable: %2</source>
         <translation>基线试验 %1 不可用：%2</translation>
     </message>
@@ -3669,6 +3669,16 @@
         <location line="+24"/>
         <source>only planar 2-link arms have Cartesian line kinematics</source>
         <translation>只有平面二连杆机械臂具有笛卡尔直线运动学</translation>
+    </message>
+</context>
+<context>
+    <name>TrialResult</name>
+    <message numerus="yes">
+        <location filename="../core/session/TrialResult.cpp" line="+36"/>
+        <source>%n set-point(s) reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</source>
+        <translation>
+            <numerusform>%n 个设定值在其 SYNC 之后才到达驱动器（状态字第 12 位）：驱动器保持了上一个设定值，因此本次试验的运动与计划不完全一致，从中学到的也是如此；请关闭这台计算机上的其他程序</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5859,15 +5869,8 @@ stdout, and the next plan uses the new estimate.
         <source>trial %1 refused before motion: %2</source>
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
-    <message numerus="yes">
-        <location line="+14"/>
-        <source>%n set-point(s) reached the drives after their SYNC (statusword bit 12): the drives held the previous one, so this trial&apos;s motion is not quite the plan&apos;s and neither is what it teaches; close other programs on this computer</source>
-        <translation>
-            <numerusform>%n 个设定值在其 SYNC 之后才到达驱动器（状态字第 12 位）：驱动器保持了上一个设定值，因此本次试验的运动与计划不完全一致，从中学到的也是如此；请关闭这台计算机上的其他程序</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+31"/>
+        <location line="+41"/>
         <source>repetition %1 of %2: %3</source>
         <translation>第 %1 次重复（共 %2 次）：%3</translation>
     </message>
