@@ -10,6 +10,7 @@
 #include "../support/RobotSimProcess.h"
 #include "../support/ToolRun.h"
 
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
@@ -82,6 +83,9 @@ private slots:
     void busFault_stopsWithTheInterfaceAndErrorWithinOneSecond();
 
 private:
+    /// One live session recorded by candump, then replayed from that recording. why: set when
+    /// the replay differed from the recording (a frame candump missed).
+    void recordAndReplay(QString *why);
     QStringList canRun() const
     {
         return QStringList{QStringLiteral("run"), QStringLiteral("--robot"),
@@ -125,10 +129,31 @@ void TestCanE2eSocketCan::initTestCase()
 void TestCanE2eSocketCan::sessionRecordedByCandump_replaysToTheLiveEstimate()
 {
     // candump sees the bus as any other node does: boot-ups, both trials, the apply between
-    // and after them (SDO), heartbeats; the replay picks the trials out of it.
+    // and after them (SDO), heartbeats; the replay picks the trials out of it. A frame candump
+    // misses makes the replay differ from the recording: in the VM a run here once replayed to
+    // an SDO timeout where the live session had had its answer (after 51 late set-points, so
+    // the VM was stalling). candump gets a 4 MiB socket buffer, and a session whose replay
+    // differs is recorded once more; twice is a failure.
+    for (int attempt = 1;; ++attempt) {
+        QString why;
+        recordAndReplay(&why);
+        if (QTest::currentTestFailed())
+            return;
+        if (why.isEmpty())
+            break;
+        QVERIFY2(attempt < 2, qPrintable(why));
+        qInfo("the replay of session %d differed from its candump log, recording again: %s",
+              attempt, qPrintable(why));
+    }
+}
+
+void TestCanE2eSocketCan::recordAndReplay(QString *why)
+{
+    QVERIFY(QDir(m_dir.filePath(QStringLiteral("logs"))).removeRecursively());
     QProcess candump;
     candump.setStandardOutputFile(m_dir.filePath(QStringLiteral("session.log")));
-    candump.start(QStringLiteral("candump"), {QStringLiteral("-L"), m_interface});
+    candump.start(QStringLiteral("candump"), {QStringLiteral("-L"), QStringLiteral("-r"),
+                                              QStringLiteral("4194304"), m_interface});
     QVERIFY(candump.waitForStarted());
     QTest::qWait(300);
     test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
@@ -170,6 +195,10 @@ void TestCanE2eSocketCan::sessionRecordedByCandump_replaysToTheLiveEstimate()
         cli({QStringLiteral("replay"), QStringLiteral("--scenario"), m_scenario,
              QStringLiteral("--candump"), QStringLiteral("session.log"), QStringLiteral("--report"),
              QStringLiteral("replay.json")});
+    if (replay.exitCode != 0 && replay.err.contains(QLatin1String("differs from the recorded"))) {
+        *why = replay.err;
+        return;
+    }
     QVERIFY2(replay.exitCode == 0, qPrintable(replay.err));
     QCOMPARE(finalEstimate(m_dir.filePath(QStringLiteral("replay.json"))), m_liveEstimate);
 }
