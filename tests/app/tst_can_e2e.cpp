@@ -20,6 +20,7 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+#include <algorithm>
 
 using namespace learnid;
 
@@ -124,18 +125,28 @@ void TestCanE2e::canSession_identifiesAsTheSimulatedRobot()
     const QList<double> simEstimate = finalEstimate(m_dir.filePath(QStringLiteral("sim.json")));
     QCOMPARE(simEstimate.size(), 3);
     // The two sessions run the same motion only when every set-point reached its drive in time:
-    // a drive holds a late one over (docs/cli.md), and the session's report counts them. The VM
-    // of scripts/test-socketcan does not always keep the SYNC clock, so up to three sessions
-    // run for one on time.
+    // a drive holds a late one over (docs/cli.md), and the session's report counts them. A few
+    // move the estimate by far less than the tolerance, so the comparison is made on a session
+    // with at most 0.25 % of its set-points late; up to three sessions run for one. A machine
+    // that is late more often (virtualcan at 2 ms here: 54 to 172 of 13 850, 0.005 % to 0.013 %;
+    // the VM of scripts/test-socketcan at 10 ms: up to 20 of 2 800, 0.6 %) is held to 2 % on
+    // its session with the fewest: enough to catch a wrong scale, sign or joint on the bus.
     QList<int> late;
-    for (int attempt = 0; attempt < 3 && (late.isEmpty() || late.constLast() > 0); ++attempt) {
+    bool compared = false;
+    double fewestLateWorst = 0;
+    for (int attempt = 0; attempt < 3 && !compared; ++attempt) {
         QVERIFY(QDir(m_dir.filePath(QStringLiteral("logs"))).removeRecursively());
         const quint16 port = test::canE2ePort();
         QVERIFY(port != 0 || test::canE2eOnSocketCan());
         test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-        QVERIFY(
-            startRobot(robot, port,
-                       {QStringLiteral("--state"), m_dir.filePath(QStringLiteral("state.json"))}));
+        // The drives wait 25 SYNC periods for a set-point on socketcan too, as over virtualcan
+        // (RobotSimProcess::start): in the VM the tool paused longer than the default 5 periods
+        // (EMCY 0x8100). This test is about identification; the fault tests keep the default.
+        QStringList options{QStringLiteral("--state"),
+                            m_dir.filePath(QStringLiteral("state.json"))};
+        if (test::canE2eOnSocketCan())
+            options << QStringLiteral("--setpoint-timeout") << QStringLiteral("25");
+        QVERIFY(startRobot(robot, port, options));
         const Result can =
             cli(canRun(port) + QStringList{QStringLiteral("--iterations"), QStringLiteral("3"),
                                            QStringLiteral("--report"), QStringLiteral("can.json"),
@@ -151,8 +162,14 @@ void TestCanE2e::canSession_identifiesAsTheSimulatedRobot()
         }
         const QJsonObject report = readJson(m_dir.filePath(QStringLiteral("can.json")));
         int lateHere = 0;
-        for (const QJsonValue &t : report.value(QStringLiteral("trials")).toArray())
-            lateHere += t.toObject().value(QStringLiteral("lateSetpoints")).toInt();
+        int setpoints = 0;
+        for (const QJsonValue &v : report.value(QStringLiteral("trials")).toArray()) {
+            const QJsonObject t = v.toObject();
+            lateHere += t.value(QStringLiteral("lateSetpoints")).toInt();
+            setpoints += t.value(QStringLiteral("samples")).toInt() *
+                         int(t.value(QStringLiteral("maxTrackingErrorDeg")).toArray().size());
+        }
+        QVERIFY(setpoints > 0);
         late << lateHere;
         // Late set-points are said in the trial's line.
         QCOMPARE((can.out + can.err).contains(QLatin1String("reached the drives after")),
@@ -163,28 +180,29 @@ void TestCanE2e::canSession_identifiesAsTheSimulatedRobot()
         for (int i = 0; i < 3; ++i)
             worst = std::max(worst, std::abs(m_canEstimate[i] - simEstimate[i]) /
                                         std::abs(simEstimate[i]));
-        qInfo("CAN %.6f %.6f %.6f, simulated %.6f %.6f %.6f: largest difference %.3g %%, %d "
-              "set-points late (%lld ms)",
+        qInfo("CAN %.6f %.6f %.6f, simulated %.6f %.6f %.6f: largest difference %.3g %%, %d of "
+              "%d set-points late (%lld ms)",
               m_canEstimate[0], m_canEstimate[1], m_canEstimate[2], simEstimate[0], simEstimate[1],
-              simEstimate[2], 100 * worst, lateHere, can.ms);
+              simEstimate[2], 100 * worst, lateHere, setpoints, can.ms);
         for (int k = 0; k < 3; ++k)
             QVERIFY(QFileInfo::exists(m_dir.filePath(
                 QStringLiteral("logs/trial-%1.log").arg(k, 3, 10, QLatin1Char('0')))));
         // Integer positions (2^24 increments) and torques (limit / 25000) on the bus: see
         // docs/can-protocol.md, "Master side".
-        if (lateHere == 0)
+        compared = lateHere <= 0.0025 * setpoints;
+        if (compared)
             QVERIFY(worst < 5e-3);
+        if (late.size() == 1 || lateHere < *std::min_element(late.begin(), late.end() - 1))
+            fewestLateWorst = worst;
     }
-    if (late.constLast() > 0) {
+    if (!compared) {
         QStringList counts;
         for (const int n : late)
             counts << QString::number(n);
-        QSKIP(qPrintable(QStringLiteral("no CAN session on time in %1 (set-points late: %2): "
-                                        "this machine did not keep the %3 ms SYNC clock, so "
-                                        "the motion was not the simulated session's")
-                             .arg(late.size())
-                             .arg(counts.join(QStringLiteral(", ")))
-                             .arg(m_periodMs)));
+        qInfo("no session with at most 0.25 %% of its set-points late (late: %s): the one with "
+              "the fewest is held to 2 %%",
+              qPrintable(counts.join(QStringLiteral(", "))));
+        QVERIFY2(fewestLateWorst < 2e-2, qPrintable(QString::number(100 * fewestLateWorst)));
     }
 }
 
