@@ -96,9 +96,10 @@ const TrialResult &CommissioningSession::runNextTrial()
         else if (result.record.stoppedAtTrackingLimit())
             learnFromPartial(result);
         // Never learned from: a fault, an EMCY, a lost heartbeat, missing samples, Stop.
-        if (result.record.lateSetpoints > 0 && result.message.isEmpty()) {
+        if (result.message.isEmpty()) { // nothing else to say: the late set-points, if any
             result.message = lateSetpointsNote(result.record);
-            qCWarning(lcSession).noquote() << result.message;
+            if (!result.message.isEmpty())
+                qCWarning(lcSession).noquote() << result.message;
         }
         result.seriesStop = seriesStopAfterAbort(m_history, result);
         result.worseTracking = worseTrackingNote(m_history, result);
