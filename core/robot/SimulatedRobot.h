@@ -5,6 +5,7 @@
 #include "robot/Robot.h"
 
 #include <memory>
+#include <optional>
 
 namespace learnid {
 
@@ -21,6 +22,12 @@ struct SimulatedFaults
 
 /// The robot as a simulation: the true dynamics integrated with RK4 at a sub-step of the sample
 /// period, torque held over each sample, the joint PID of the plan, torque saturation.
+///
+/// The arm is deterministic: the torque noise is measurement noise and reaches neither the plant
+/// nor the controller. A run of the plan the robot ran last (with no fault injected) is therefore
+/// not integrated again: its motion and noise-free torques are reused and the run's own noise
+/// is drawn, which gives the record a new simulation would, to the bit (tst_simulatedrobot). So
+/// N runs per trial (estimator.repetitions) cost one simulation.
 class SimulatedRobot final : public Robot
 {
 public:
@@ -37,9 +44,18 @@ public:
     std::optional<Eigen::VectorXd> trueParameters() const override { return m_truePhi; }
 
 private:
-    template <int N>
-    TrialRecord simulate(const TrialPlan &plan, const TrialMonitor &monitor,
-                         quint64 noiseStream) const;
+    /// The run without torque noise.
+    template <int N> TrialRecord simulate(const TrialPlan &plan, const TrialMonitor &monitor) const;
+    /// The last run served again: noise-free samples up to where it ended, or up to a stop the
+    /// monitor asks for, as simulate() would stop.
+    TrialRecord replayLastRun(const TrialMonitor &monitor) const;
+    bool faultsInjected() const;
+
+    struct NoiseFreeRun
+    {
+        TrialPlan plan;
+        TrialRecord record;
+    };
 
     std::shared_ptr<const RobotModel> m_model;
     Eigen::VectorXd m_truePhi;
@@ -47,6 +63,7 @@ private:
     SimulatedFaults m_faults;
     Eigen::VectorXd m_stored;
     quint64 m_trialCount = 0;
+    std::optional<NoiseFreeRun> m_lastRun;
 };
 
 } // namespace learnid

@@ -22,6 +22,8 @@ private slots:
     void driveFault_endsTrialWithPartialRecord();
     void disturbance_abortsOnTrackingErrorNamingJoint();
     void cancel_stopsAtNextSample();
+    void repeatedPlan_recordsWhatANewSimulationRecords();
+    void repeatedAbortOrStop_endsWhereANewSimulationEnds();
     void apply_storesOrRefusesWithoutChange();
 
 private:
@@ -168,6 +170,75 @@ void TestSimulatedRobot::cancel_stopsAtNextSample()
     QCOMPARE(r.status, TrialStatus::Cancelled);
     QCOMPARE(r.samples(), 401);
     QVERIFY(calls >= 4);
+}
+
+// A run of the plan run last reuses the motion (SimulatedRobot.h): its record must be the one a
+// robot that simulates it afresh, drawing the same noise stream, records, to the bit.
+void TestSimulatedRobot::repeatedPlan_recordsWhatANewSimulationRecords()
+{
+    MeasurementOptions options;
+    options.torqueNoise = 0.01;
+    options.encoderCounts = 1 << 16;
+    options.seed = 3;
+    MeasurementOptions second = options; // trial 1 of the first robot draws stream 1
+    second.firstNoiseStream = 1;
+    const TrialPlan plan = paperPlan(Eigen::Vector3d(40, 20, 30));
+    SimulatedRobot robot(m_model, m_truth, options);
+    const TrialRecord first = robot.runTrial(plan, {});
+    const TrialRecord again = robot.runTrial(plan, {});
+    const TrialRecord fresh = SimulatedRobot(m_model, m_truth, second).runTrial(plan, {});
+    QVERIFY(again.completed());
+    QCOMPARE(again.q, fresh.q);
+    QCOMPARE(again.tau, fresh.tau);
+    QCOMPARE(again.q, first.q);
+    QVERIFY(again.tau != first.tau); // its own noise
+    // Another plan (other gains) moves the arm otherwise: simulated, not reused.
+    TrialPlan stiffer = plan;
+    stiffer.controller.kp *= 2.0;
+    MeasurementOptions third = options;
+    third.firstNoiseStream = 2;
+    const TrialRecord other = robot.runTrial(stiffer, {});
+    QCOMPARE(other.q, SimulatedRobot(m_model, m_truth, third).runTrial(stiffer, {}).q);
+    QVERIFY(other.q != first.q);
+}
+
+void TestSimulatedRobot::repeatedAbortOrStop_endsWhereANewSimulationEnds()
+{
+    MeasurementOptions options;
+    options.torqueNoise = 0.01;
+    MeasurementOptions second = options;
+    second.firstNoiseStream = 1;
+    TrialPlan plan = paperPlan(Eigen::Vector3d(40, 20, 30)); // far off the truth
+    const TrialRecord unlimited = SimulatedRobot(m_model, m_truth).runTrial(plan, {});
+    plan.maxTrackingError = 0.5 * (plan.desired.q - unlimited.q).cwiseAbs().maxCoeff();
+    SimulatedRobot robot(m_model, m_truth, options);
+    const TrialRecord first = robot.runTrial(plan, {});
+    QCOMPARE(first.status, TrialStatus::Aborted);
+    const TrialRecord again = robot.runTrial(plan, {});
+    const TrialRecord fresh = SimulatedRobot(m_model, m_truth, second).runTrial(plan, {});
+    QCOMPARE(again.status, TrialStatus::Aborted);
+    QCOMPARE(again.message, fresh.message);
+    QCOMPARE(again.tau, fresh.tau);
+
+    // Stop during a repeated run ends it at the same sample as during a simulated one.
+    plan.maxTrackingError = 1e9;
+    std::atomic_bool cancel{false};
+    TrialMonitor monitor;
+    monitor.cancel = &cancel;
+    monitor.progress = [&](int done, int) {
+        if (done >= 400)
+            cancel.store(true);
+    };
+    const TrialRecord whole = robot.runTrial(plan, {});
+    const TrialRecord stopped = robot.runTrial(plan, monitor);
+    QCOMPARE(stopped.status, TrialStatus::Cancelled);
+    QCOMPARE(stopped.stopCause, TrialStopCause::Operator);
+    QCOMPARE(stopped.samples(), 401);
+    QCOMPARE(stopped.q, whole.q.leftCols(401).eval());
+    cancel.store(false);
+    const TrialRecord after = robot.runTrial(plan, {}); // the stop did not spoil the reuse
+    QCOMPARE(after.q, whole.q);
+    QCOMPARE(after.status, TrialStatus::Completed);
 }
 
 void TestSimulatedRobot::apply_storesOrRefusesWithoutChange()

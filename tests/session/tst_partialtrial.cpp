@@ -320,6 +320,15 @@ void TestPartialTrial::worseTracking_proposesTheEstimateThatTrackedBest()
     // An aborted trial between does not count as tracking.
     QVERIFY(worseTrackingNote(h, syntheticAbort(5, 100, 5.0)).isEmpty());
     QCOMPARE(proposedEstimate({}, 1), 0);
+    // The first learned estimate tracks worse than the starting one: said, and no earlier
+    // learned estimate is named; Accept proposes the newest, as the note implies.
+    const QVector<TrialResult> first{syntheticCompleted(0, 0.7)};
+    const TrialResult worseThanStart = syntheticCompleted(1, 3.2);
+    const QString startNote = worseTrackingNote(first, worseThanStart);
+    QVERIFY2(startNote.contains(QStringLiteral("trial 1 tracked worse than trial 0")) &&
+                 !startNote.contains(QStringLiteral("Accept proposes")),
+             qPrintable(startNote));
+    QCOMPARE(proposedEstimate(QVector<TrialResult>(first) << worseThanStart, 3), 2);
 }
 
 QTEST_GUILESS_MAIN(TestPartialTrial)
