@@ -165,8 +165,13 @@ int main(int argc, char **argv)
                                     QStringLiteral("Runs per trial, averaged (estimator."
                                                    "repetitions; the CPU target is for 1)."),
                                     QStringLiteral("n"), QStringLiteral("1"));
+    const QCommandLineOption armatureOpt(
+        QStringLiteral("armature"),
+        QStringLiteral("robot.jointTerms.armature on or off (the model learns each joint's "
+                       "rotor inertia); default: the scenario's (the starter's on)."),
+        QStringLiteral("on|off"));
     parser.addOptions({seedsOpt, robotsOpt, docsOpt, limitOpt, floorOpt, verboseOpt, coulombOpt,
-                       truthOpt, newestOpt, rankOpt, stdOpt, repOpt, jointOpt});
+                       truthOpt, newestOpt, rankOpt, stdOpt, repOpt, jointOpt, armatureOpt});
     parser.process(app);
     ZooOptions o;
     o.seeds = parser.value(seedsOpt).toInt();
@@ -182,22 +187,27 @@ int main(int argc, char **argv)
     o.maxRelativeStd = parser.value(stdOpt).toDouble();
     o.repetitions = std::max(1, parser.value(repOpt).toInt());
     o.jointLevels = parser.isSet(jointOpt);
+    o.armature = parser.value(armatureOpt);
 
     const QString cadPath = QStringLiteral(LEARNID_SHARED_DATA "/kuka-lwr4/kuka_lwr4.urdf");
     QTemporaryDir dir;
     QString cad;
+    bool armature = false;
     try {
         cad = readText(cadPath);
+        armature = zooScenario(o, cadPath, cadPath, 'a', 1, false).urdf.jointTerms.armature;
     } catch (const std::exception &e) {
         std::fprintf(stderr, "learnid-bench-zoo: %s\n", e.what());
         return 1;
     }
-    std::printf("KUKA LWR4+ from the CAD URDF, %s, %.0f deg abort limit, 2^20 counts, 1 %% "
-                "torque noise, %d trials (Run all) of %d run(s) each, %d seeds per robot; the "
-                "floor: the same robot with an ideal encoder and no noise, %d trials\n\n",
+    std::printf("KUKA LWR4+ from the CAD URDF, %s, rotor inertia %s, %.0f deg abort limit, "
+                "2^20 counts, 1 %% torque noise, %d trials (Run all) of %d run(s) each, %d seeds "
+                "per robot; the floor: the same robot with an ideal encoder and no noise, %d "
+                "trials\n\n",
                 o.docsGains ? "docs/scenario.md's gains and path"
                             : "scenario --print's gains, path and gentle first trial",
-                o.limitDeg, o.trials, o.repetitions, o.seeds, o.floorTrials);
+                armature ? "learned" : "not in the model", o.limitDeg, o.trials, o.repetitions,
+                o.seeds, o.floorTrials);
     std::printf(
         "| robot | trials needed to <= 5 %% of trial 0, median / worst | trials aborted, "
         "median / worst | best trial / trial 0, median / worst | path-torque error, "

@@ -24,6 +24,9 @@ struct ZooOptions
     double maxRelativeStd = -1.0; ///< estimator.partialMaxRelativeStd (< 0: the scenario's)
     int repetitions = 1;          ///< estimator.repetitions: runs per trial, averaged
     bool jointLevels = false;     ///< EstimatorSettings::jointLevelObservability
+    /// robot.jointTerms.armature (the model learns rotor inertia): "on", "off", else the
+    /// scenario's (the starter's: on; docs/scenario.md's: off)
+    QString armature;
 };
 
 /// Robot (a) of issue 23 from the CAD URDF's text: link masses x0.8 or x1.25 and centres of

@@ -49,6 +49,8 @@ Scenario zooScenario(const ZooOptions &o, const QString &cadPath, const QString 
             o.maxRelativeStd > 0 ? o.maxRelativeStd : std::numeric_limits<double>::infinity();
     s.repetitions = o.repetitions;
     s.estimator.jointLevelObservability = o.jointLevels;
+    if (o.armature == QLatin1String("on") || o.armature == QLatin1String("off"))
+        s.urdf.jointTerms.armature = o.armature == QLatin1String("on");
     if (o.coulombVelocity > 0)
         s.urdf.jointTerms.coulombVelocity = o.coulombVelocity;
     SimulationSettings &sim = s.simulation;

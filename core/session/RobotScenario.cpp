@@ -135,6 +135,10 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
     }
     s.model = modelId;
     s.urdf = urdf;
+    // A geared joint's rotor inertia, as the joint sees it, is of the order of its link's own
+    // inertia about the axis, and no URDF holds it: the model learns it (docs/benchmarks.md,
+    // "Realistic robots": robot (c) with it unmodelled levels off higher).
+    s.urdf.jointTerms.armature = true;
     const auto model = makeRobotModel(modelId, urdf);
     const auto *chain = dynamic_cast<const ChainModel *>(model.get());
     const int n = model->dof();
