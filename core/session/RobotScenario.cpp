@@ -139,7 +139,7 @@ Scenario scenarioForRobot(const QString &modelId, const UrdfRobotSettings &urdf,
     // inertia about the axis, and no URDF holds it: the model learns it (docs/benchmarks.md,
     // "Realistic robots": robot (c) with it unmodelled levels off higher).
     s.urdf.jointTerms.armature = true;
-    const auto model = makeRobotModel(modelId, urdf);
+    const auto model = makeRobotModel(modelId, s.urdf); // the scenario's model designs the gains
     const auto *chain = dynamic_cast<const ChainModel *>(model.get());
     const int n = model->dof();
     Eigen::VectorXd middle(n), amplitude(n);
