@@ -23,6 +23,11 @@ constexpr int heartbeatLossFactor = 3;
 /// 20 periods (the drive needs 12), at least 100 ms.
 constexpr int stopBoundPeriods = 20;
 constexpr int stopBoundFloorMs = 100;
+/// A replay of recorded trials waits this much longer for a SYNC, a heartbeat or the enable walk:
+/// it plays the recording at the master's pace, so a pause of the master (a loaded machine) is
+/// no pause of the robot's, and only a gap in the recording leaves it waiting. Added to each
+/// wait, it keeps their order: a robot fallen silent misses its SYNC before its heartbeat.
+constexpr int replayExtraWaitMs = 2000;
 
 /// max(periods x Ts, floorMs) in whole milliseconds (rounded up).
 int periodsWithFloorMs(double ts, int periods, int floorMs);

@@ -117,7 +117,7 @@ QString canNodeOptionsError(const CanRobotOptions &options)
     if (options.connectTimeoutMs <= 0 || options.sdoTimeoutMs <= 0 ||
         options.heartbeatPeriodMs < 0 || options.heartbeatPeriodMs > 65535 ||
         options.enableTimeoutMs <= 0 || options.syncTimeoutMs < 0 || !(options.syncPeriod > 0) ||
-        !(options.bitrate > 0))
+        !(options.bitrate > 0) || options.extraWaitMs < 0)
         return Text::tr("CAN timing options must be positive (heartbeat period at most 65535 ms)");
     return {};
 }
@@ -153,6 +153,15 @@ int effectiveSyncTimeoutMs(const CanRobotOptions &options)
         return cantimeouts::syncTimeoutMs(options.syncPeriod);
     return std::max(options.syncTimeoutMs,
                     cantimeouts::periodsWithFloorMs(options.syncPeriod, 2, 0));
+}
+
+CanRobotOptions replayOptions(CanRobotOptions options)
+{
+    options.plugin = QStringLiteral("candump");
+    options.interface = QStringLiteral("replay");
+    options.checkJointIdentity = false;
+    options.extraWaitMs = cantimeouts::replayExtraWaitMs;
+    return options;
 }
 
 int effectiveHeartbeatPeriodMs(const CanRobotOptions &options)

@@ -42,7 +42,16 @@ struct CanRobotOptions
     /// Read and check every node's identity before a trial or apply; off only for a replay of
     /// recorded trials (whose logs begin at the trial's first NMT command).
     bool checkJointIdentity = true;
+    /// Added to a trial's waits for a SYNC, a heartbeat and the enable walk [ms]; 0 but in a
+    /// replay (replayOptions).
+    int extraWaitMs = 0;
 };
+
+/// The options of a replay of recorded trials (CandumpReplayDevice): the device candump/replay,
+/// no identity check (the logs begin at each trial's first NMT command), and waits longer by
+/// cantimeouts::replayExtraWaitMs. A trial that the recording ends on a timeout (a silent robot)
+/// ends the same way in the replay, only later.
+CanRobotOptions replayOptions(CanRobotOptions options);
 
 /// Creates the (not yet connected) CAN device in the calling thread; on failure returns null
 /// and sets error. The default factory asks QCanBus for plugin and interface.

@@ -45,7 +45,7 @@ TrialStreamer::TrialStreamer(CanLink *link, Nmt *nmt, HeartbeatConsumer *heartbe
                     tr("%1 did not reach Operation enabled within %2 ms: it reports %3 "
                        "(statusword 0x%4)")
                         .arg(nodeName(j))
-                        .arg(m_options.enableTimeoutMs)
+                        .arg(enableTimeoutMs())
                         .arg(m_collector->hasFeedback(j) ? cia402::stateName(state) : tr("no TPDO"))
                         .arg(m_collector->feedback(j).statusword, 4, 16, QLatin1Char('0')));
                 return;
@@ -84,9 +84,11 @@ void TrialStreamer::start(const RobotModel &model, const TrialPlan &plan, const 
 
     m_connections << connect(m_link, &CanLink::frameReceived, this, &TrialStreamer::onFrame);
     // The options' SYNC period is the plan's (CanRobotWorker::runTrial).
-    m_watchdog.start(nodes, effectiveHeartbeatPeriodMs(options) * cantimeouts::heartbeatLossFactor,
-                     effectiveSyncTimeoutMs(options));
-    m_deadline.start(options.enableTimeoutMs);
+    m_watchdog.start(nodes,
+                     effectiveHeartbeatPeriodMs(options) * cantimeouts::heartbeatLossFactor +
+                         options.extraWaitMs,
+                     effectiveSyncTimeoutMs(options) + options.extraWaitMs);
+    m_deadline.start(enableTimeoutMs());
     if (!m_nmt->startNode(0))
         QMetaObject::invokeMethod(
             this, [this] { abort(TrialStatus::Aborted, m_link->lastError()); },

@@ -89,6 +89,8 @@ private:
     void buildSchedule();
     void finish();
     QString nodeName(int joint) const;
+    /// The enable walk's time limit: the options', longer in a replay.
+    int enableTimeoutMs() const { return m_options.enableTimeoutMs + m_options.extraWaitMs; }
     int jointOfNode(quint8 node) const;
 
     CanLink *m_link;

@@ -53,7 +53,7 @@ void TrialStreamer::enableStep()
     // counts from the plan's end, as the watchdog's (buildSchedule).
     if (m_schedule.size() == 0) {
         buildSchedule();
-        m_deadline.start(m_options.enableTimeoutMs);
+        m_deadline.start(enableTimeoutMs());
     }
 }
 

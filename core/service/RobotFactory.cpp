@@ -39,11 +39,8 @@ RobotConnection makeRobot(const RobotRequest &request, const Scenario &scenario,
     }
     CanRobotOptions options = request.can;
     setSyncPeriod(options, scenario.controller.samplePeriod); // the bus load at the real cycle
-    if (request.kind == RobotRequest::Kind::Replay) {
-        options.plugin = QStringLiteral("candump");
-        options.interface = QStringLiteral("replay");
-        options.checkJointIdentity = false; // the logs begin at each trial's first NMT command
-    }
+    if (request.kind == RobotRequest::Kind::Replay)
+        options = replayOptions(std::move(options));
     auto robot = std::make_shared<CanRobot>(std::move(model), options, std::move(factory));
     c.connectError = robot->connectBus();
     if (c.connectError.isEmpty())

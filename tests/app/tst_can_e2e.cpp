@@ -139,14 +139,9 @@ void TestCanE2e::canSession_identifiesAsTheSimulatedRobot()
         const quint16 port = test::canE2ePort();
         QVERIFY(port != 0 || test::canE2eOnSocketCan());
         test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
-        // The drives wait 25 SYNC periods for a set-point on socketcan too, as over virtualcan
-        // (RobotSimProcess::start): in the VM the tool paused longer than the default 5 periods
-        // (EMCY 0x8100). This test is about identification; the fault tests keep the default.
-        QStringList options{QStringLiteral("--state"),
-                            m_dir.filePath(QStringLiteral("state.json"))};
-        if (test::canE2eOnSocketCan())
-            options << QStringLiteral("--setpoint-timeout") << QStringLiteral("25");
-        QVERIFY(startRobot(robot, port, options));
+        QVERIFY(
+            startRobot(robot, port,
+                       {QStringLiteral("--state"), m_dir.filePath(QStringLiteral("state.json"))}));
         const Result can =
             cli(canRun(port) + QStringList{QStringLiteral("--iterations"), QStringLiteral("3"),
                                            QStringLiteral("--report"), QStringLiteral("can.json"),

@@ -324,12 +324,9 @@ void TestCanE2e7Axis::robotKilledMidTrial_clearErrorWithinOneSecond_nothingAppli
     // The simulator as a process of this test's own, so that it can be killed (SIGKILL: no
     // goodbye on the bus; over virtualcan it hosts the server, so the tool's socket closes).
     QProcess robot;
-    robot.start(QStringLiteral(LEARNID_ROBOT_SIM_PATH),
-                test::canE2eBusOptions(port) +
-                    (test::canE2eOnSocketCan() ? QStringList{}
-                                               : QStringList{QStringLiteral("--setpoint-timeout"),
-                                                             QStringLiteral("25")}) +
-                    simOptions(state));
+    robot.start(QStringLiteral(LEARNID_ROBOT_SIM_PATH), test::canE2eBusOptions(port) +
+                                                            test::RobotSimProcess::drivesWait() +
+                                                            simOptions(state));
     QElapsedTimer ready;
     ready.start();
     while (!robot.canReadLine() && ready.elapsed() < 10000)

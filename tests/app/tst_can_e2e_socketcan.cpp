@@ -158,12 +158,8 @@ void TestCanE2eSocketCan::recordAndReplay(QString *why)
     QTest::qWait(300);
     test::RobotSimProcess robot(QStringLiteral(LEARNID_ROBOT_SIM_PATH));
     const QString state = m_dir.filePath(QStringLiteral("session-state.json"));
-    // The drives wait 25 SYNC periods for a set-point, as over virtualcan (RobotSimProcess):
-    // the VM's one emulated vCPU runs the tool, the simulator and candump, and a pause of 50 ms
-    // (the default: 5 periods) in the tool's stream once faulted a drive with EMCY 0x8100 in
-    // CI. This test is about the bus and the recording; the fault tests below keep the default.
-    QVERIFY(startRobot(robot, {QStringLiteral("--state"), state,
-                               QStringLiteral("--setpoint-timeout"), QStringLiteral("25")}));
+    // The drives wait 25 SYNC periods for a set-point (RobotSimProcess::drivesWait).
+    QVERIFY(startRobot(robot, {QStringLiteral("--state"), state}));
     const QList<QList<double>> storedBefore = storedParameters(state);
     const test::ToolRun live =
         cli(canRun() + QStringList{QStringLiteral("--iterations"), QStringLiteral("2"),

@@ -11,6 +11,7 @@
 #include <QDir>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
 
 using namespace learnid;
 
@@ -46,6 +47,8 @@ class TestCanRobot : public QObject
 private slots:
     void session_identifiesAsOnSimulatedRobot();
     void candumpLog_replayed_givesTheSameRecordsAndEstimate();
+    void replay_masterPausedOrRobotSilent_endsAsRecorded_data();
+    void replay_masterPausedOrRobotSilent_endsAsRecorded();
     void unreachableDevice_failsWithinTheConnectTimeout();
 };
 
@@ -89,10 +92,10 @@ void TestCanRobot::candumpLog_replayed_givesTheSameRecordsAndEstimate()
         entries += candump::readFile(
             dir.filePath(QStringLiteral("trial-%1.log").arg(k, 3, 10, QLatin1Char('0'))));
     QVERIFY(entries.size() > 10000);
-    CanRobotOptions replayOptions = memoryOptions();
-    replayOptions.checkJointIdentity = false; // the logs begin at each trial's NMT command
-    auto replay = std::make_shared<CanRobot>(
-        model, replayOptions, [entries](QString *) { return new CandumpReplayDevice(entries); });
+    auto replay =
+        std::make_shared<CanRobot>(model, replayOptions(memoryOptions()), [entries](QString *) {
+            return new CandumpReplayDevice(entries);
+        });
     CommissioningSession replayed(scenario, model, replay);
     QVERIFY2(replayed.runTrials(scenario.iterations),
              qPrintable(replayed.history().constLast().message));
@@ -100,6 +103,76 @@ void TestCanRobot::candumpLog_replayed_givesTheSameRecordsAndEstimate()
         QCOMPARE(replayed.history()[k].record.q, recorded.history()[k].record.q);
         QCOMPARE(replayed.history()[k].record.tau, recorded.history()[k].record.tau);
     }
+    QCOMPARE(replayed.currentEstimate(), recorded.currentEstimate());
+}
+
+void TestCanRobot::replay_masterPausedOrRobotSilent_endsAsRecorded_data()
+{
+    QTest::addColumn<qint64>("silentAfterFrames");
+    QTest::addColumn<int>("stallAtWrite");
+    // The recorded session completes; its replay's master pauses 1 s mid-trial (the live waits:
+    // heartbeat 300 ms, SYNC 50 ms), as a loaded machine once did to a replay in the VM of
+    // scripts/test-socketcan.
+    QTest::newRow("master paused") << qint64(-1) << 1500;
+    // The robot side fell silent in trial 0: the replay ends there as the session did.
+    QTest::newRow("robot silent") << qint64(2500) << -1;
+}
+
+void TestCanRobot::replay_masterPausedOrRobotSilent_endsAsRecorded()
+{
+    QFETCH(qint64, silentAfterFrames);
+    QFETCH(int, stallAtWrite);
+    QTemporaryDir dir;
+    const Scenario scenario = shortScenario();
+    const auto model = makeRobotModel(scenario.model, scenario.urdf);
+    CanSimFaults faults;
+    faults.silentAfterFrames = silentAfterFrames;
+    auto live = std::make_shared<CanRobot>(
+        model, memoryOptions(dir.path()),
+        test::canSimFactory(canArmSettings(scenario, model, {1, 2}), faults));
+    CommissioningSession recorded(scenario, model, live);
+    const bool completed = recorded.runTrials(scenario.iterations);
+    QCOMPARE(completed, silentAfterFrames < 0);
+    const QString ending = recorded.history().constLast().message;
+    QVERIFY2(completed || ending.contains(QLatin1String("no SYNC")), qPrintable(ending));
+
+    QList<CandumpEntry> entries;
+    for (int k = 0; k < recorded.history().size(); ++k)
+        entries += candump::readFile(
+            dir.filePath(QStringLiteral("trial-%1.log").arg(k, 3, 10, QLatin1Char('0'))));
+    // The master's thread stops for 1 s in its stallAtWrite-th frame.
+    class Pausing : public CandumpReplayDevice
+    {
+    public:
+        Pausing(QList<CandumpEntry> entries, int pauseAt)
+            : CandumpReplayDevice(std::move(entries))
+            , m_pauseAt(pauseAt)
+        {}
+        bool writeFrame(const QCanBusFrame &frame) override
+        {
+            if (++m_writes == m_pauseAt)
+                QThread::msleep(1000);
+            return CandumpReplayDevice::writeFrame(frame);
+        }
+
+    private:
+        int m_pauseAt;
+        int m_writes = 0;
+    };
+    auto replay = std::make_shared<CanRobot>(
+        model, replayOptions(memoryOptions()),
+        [entries, stallAtWrite](QString *) { return new Pausing(entries, stallAtWrite); });
+    CommissioningSession replayed(scenario, model, replay);
+    QCOMPARE(replayed.runTrials(scenario.iterations), completed);
+    QCOMPARE(replayed.history().size(), recorded.history().size());
+    for (int k = 0; k < recorded.history().size(); ++k) {
+        QCOMPARE(replayed.history()[k].record.status, recorded.history()[k].record.status);
+        QCOMPARE(replayed.history()[k].record.q, recorded.history()[k].record.q);
+        QCOMPARE(replayed.history()[k].record.tau, recorded.history()[k].record.tau);
+    }
+    const QString replayEnding = replayed.history().constLast().message;
+    QVERIFY2(completed || replayEnding.contains(QLatin1String("no SYNC")),
+             qPrintable(replayEnding));
     QCOMPARE(replayed.currentEstimate(), recorded.currentEstimate());
 }
 
