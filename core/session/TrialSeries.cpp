@@ -145,21 +145,20 @@ QString worseTrackingNote(const QVector<TrialResult> &earlier, const TrialResult
             return {};
         QVector<TrialResult> all = earlier;
         all.append(latest);
-        // Name the proposal only when it is an earlier learned estimate, as proposedEstimate()
-        // does: when the latest trial ran with the only learned estimate so far (the one before
-        // it ran with the starting one), none tracked better, and Accept proposes the newest.
-        const std::optional<int> best = bestTrackingEstimate(all);
-        const bool earlierBest = best && *best != estimateIndices(all).constLast();
+        // What Accept will propose: an earlier learned estimate, or the newest (one past the
+        // latest trial's), which the note does not name.
+        const int newest = estimateIndices(all).constLast() + 1;
+        const int proposal = proposedEstimate(all, newest + 1);
         const QString worse = Text::tr("trial %1 tracked worse than trial %2 (max %3 deg against "
                                        "%4 deg)")
                                   .arg(latest.index)
                                   .arg(before.index)
                                   .arg(maxErrorDeg(latest), 0, 'g', 4)
                                   .arg(maxErrorDeg(before), 0, 'g', 4);
-        return earlierBest ? Text::tr("%1; Accept proposes estimate %2, which tracked best")
-                                 .arg(worse)
-                                 .arg(best.value_or(0))
-                           : worse;
+        return proposal != newest ? Text::tr("%1; Accept proposes estimate %2, which tracked best")
+                                        .arg(worse)
+                                        .arg(proposal)
+                                  : worse;
     }
     return {};
 }

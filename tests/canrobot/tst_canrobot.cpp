@@ -46,9 +46,8 @@ class TestCanRobot : public QObject
 
 private slots:
     void session_identifiesAsOnSimulatedRobot();
-    void candumpLog_replayed_givesTheSameRecordsAndEstimate();
-    void replay_masterPausedOrRobotSilent_endsAsRecorded_data();
-    void replay_masterPausedOrRobotSilent_endsAsRecorded();
+    void replay_asRecordedPausedOrSilent_endsAsRecorded_data();
+    void replay_asRecordedPausedOrSilent_endsAsRecorded();
     void unreachableDevice_failsWithinTheConnectTimeout();
 };
 
@@ -75,41 +74,12 @@ void TestCanRobot::session_identifiesAsOnSimulatedRobot()
     QCOMPARE(can->lastTrialStatistics().lateSetpoints, 0);
 }
 
-void TestCanRobot::candumpLog_replayed_givesTheSameRecordsAndEstimate()
-{
-    QTemporaryDir dir;
-    Scenario scenario = shortScenario();
-    const auto model = makeRobotModel(scenario.model, scenario.urdf);
-    auto live =
-        std::make_shared<CanRobot>(model, memoryOptions(dir.path()),
-                                   test::canSimFactory(canArmSettings(scenario, model, {1, 2})));
-    CommissioningSession recorded(scenario, model, live);
-    QVERIFY2(recorded.runTrials(scenario.iterations),
-             qPrintable(recorded.history().constLast().message));
-
-    QList<CandumpEntry> entries;
-    for (int k = 0; k < scenario.iterations; ++k)
-        entries += candump::readFile(
-            dir.filePath(QStringLiteral("trial-%1.log").arg(k, 3, 10, QLatin1Char('0'))));
-    QVERIFY(entries.size() > 10000);
-    auto replay =
-        std::make_shared<CanRobot>(model, replayOptions(memoryOptions()), [entries](QString *) {
-            return new CandumpReplayDevice(entries);
-        });
-    CommissioningSession replayed(scenario, model, replay);
-    QVERIFY2(replayed.runTrials(scenario.iterations),
-             qPrintable(replayed.history().constLast().message));
-    for (int k = 0; k < scenario.iterations; ++k) {
-        QCOMPARE(replayed.history()[k].record.q, recorded.history()[k].record.q);
-        QCOMPARE(replayed.history()[k].record.tau, recorded.history()[k].record.tau);
-    }
-    QCOMPARE(replayed.currentEstimate(), recorded.currentEstimate());
-}
-
-void TestCanRobot::replay_masterPausedOrRobotSilent_endsAsRecorded_data()
+void TestCanRobot::replay_asRecordedPausedOrSilent_endsAsRecorded_data()
 {
     QTest::addColumn<qint64>("silentAfterFrames");
     QTest::addColumn<int>("stallAtWrite");
+    // A recorded session replayed: the very same records and estimate.
+    QTest::newRow("as recorded") << qint64(-1) << -1;
     // The recorded session completes; its replay's master pauses 1 s mid-trial (the live waits:
     // heartbeat 300 ms, SYNC 50 ms), as a loaded machine once did to a replay in the VM of
     // scripts/test-socketcan.
@@ -118,7 +88,7 @@ void TestCanRobot::replay_masterPausedOrRobotSilent_endsAsRecorded_data()
     QTest::newRow("robot silent") << qint64(2500) << -1;
 }
 
-void TestCanRobot::replay_masterPausedOrRobotSilent_endsAsRecorded()
+void TestCanRobot::replay_asRecordedPausedOrSilent_endsAsRecorded()
 {
     QFETCH(qint64, silentAfterFrames);
     QFETCH(int, stallAtWrite);
@@ -140,6 +110,7 @@ void TestCanRobot::replay_masterPausedOrRobotSilent_endsAsRecorded()
     for (int k = 0; k < recorded.history().size(); ++k)
         entries += candump::readFile(
             dir.filePath(QStringLiteral("trial-%1.log").arg(k, 3, 10, QLatin1Char('0'))));
+    QVERIFY(entries.size() > (completed ? 10000 : 1000));
     // The master's thread stops for 1 s in its stallAtWrite-th frame.
     class Pausing : public CandumpReplayDevice
     {
