@@ -1,7 +1,9 @@
 #pragma once
 
+#include "model/ModelFactory.h"
 #include "types/Scenario.h"
 
+#include <QCoreApplication>
 #include <QString>
 
 namespace learnid::bench {
@@ -27,7 +29,14 @@ struct ZooOptions
     /// robot.jointTerms.armature (the model learns rotor inertia): "on", "off", else the
     /// scenario's (the starter's: on; docs/scenario.md's: off)
     QString armature;
+    /// estimator.jointTorqueSensor: "on", "off", else on for (d) alone, whose simulated sensor
+    /// measures the spring behind the rotor (the others' measure the drive's torque)
+    QString jointTorqueSensor;
+    bool ownLawRotor = true; ///< ownLawError(): the feedforward has the rotor inertia
 };
+
+/// The options of learnid-bench-zoo's command line (exits with usage on an unknown one).
+ZooOptions parseZooOptions(const QCoreApplication &app);
 
 /// Robot (a) of issue 23 from the CAD URDF's text: link masses x0.8 or x1.25 and centres of
 /// mass moved 2 cm in a direction drawn with `seed`, inertia x1.4, support::kRobotACoulomb, viscous
@@ -40,5 +49,12 @@ Scenario zooScenario(const ZooOptions &o, const QString &cadPath, const QString 
                      char robot, quint64 seed, bool ideal);
 
 QString readText(const QString &path);
+
+/// The max tracking error [deg] of a trial at the planned speed (no gentle planning) whose
+/// feedforward is the simulated robot's own law on the desired path: its rigid-body truth,
+/// its rotor inertia, and Stribeck friction with the exact sign of the desired velocity. No
+/// identified model can give the controller more. Elastic joints: their rigid law (the spring's
+/// own dynamics left out). rotor false: without the rotor inertia.
+double ownLawError(const Scenario &scenario, bool rotor = true);
 
 } // namespace learnid::bench

@@ -4,6 +4,7 @@
 #include "identify/GramBlock.h"
 #include "identify/JointRows.h"
 #include "identify/ObservableUpdate.h"
+#include "identify/RotorTorque.h"
 #include "identify/TaskThreads.h"
 #include "model/Error.h"
 #include "model/VectorState.h"
@@ -72,6 +73,8 @@ std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialData &t
     std::vector<JointRows> a = midSampleJointRows(model, hat.q, hat.qd, hat.qdd, threads);
     const Eigen::Index rows = std::max(samples - 1, 0);
     Eigen::MatrixXd tauf = record.tau.leftCols(rows).transpose();
+    if (settings.jointTorqueSensor) // the rotor a joint torque sensor does not see
+        tauf += rotorTorque(filter, plan, record, hat.qdd, used);
     auto out = std::make_shared<TrialGram>();
     out->rho = settings.rho;
     GramBlock &block = out->block;

@@ -197,6 +197,16 @@ void validateScenario(const Scenario &s)
     checkIntegerRange(key("estimator.iterations"), s.iterations, 1, scenarioLimits::maxIterations);
     checkIntegerRange(key("estimator.repetitions"), s.repetitions, 1,
                       scenarioLimits::maxRepetitions);
+    if (s.estimator.jointTorqueSensor && s.law != QLatin1String("improved")) {
+        throwAtKey(
+            key("estimator.jointTorqueSensor"),
+            Text::tr("needs the improved law (estimator.law \"improved\"), got \"%1\"").arg(s.law));
+    }
+    if (s.estimator.jointTorqueSensor && !(urdf && s.urdf.jointTerms.armature)) {
+        throwAtKey(key("estimator.jointTorqueSensor"),
+                   Text::tr("needs a URDF robot with robot.jointTerms.armature true: the rotor "
+                            "inertia the sensor does not see is learned as the armature term"));
+    }
 
     checkOptionalVector(key("simulation.trueParameters"), s.simulation.trueParameters, m,
                         perParameter, EntryRule::Finite, urdf);

@@ -17,6 +17,10 @@ struct EstimatorSettings
     /// relative to the parameters' scale, is above this is not learned from.
     double partialMaxRelativeStd = std::numeric_limits<double>::infinity();
     bool accumulate = true; ///< improved law: fit all valid trials so far, not the last
+    /// The measured torques come from joint torque sensors behind the gears (docs/scenario.md,
+    /// estimator.jointTorqueSensor): the improved law adds the rotor's torque, which such a
+    /// sensor does not see, from the drive's command (identify/RotorTorque.h).
+    bool jointTorqueSensor = false;
 };
 
 } // namespace learnid
