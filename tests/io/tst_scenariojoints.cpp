@@ -1,5 +1,6 @@
 // The scenario's realistic-joint keys under simulation (docs/scenario.md): read, written back
-// bit-exactly, and every bad value refused with its key path.
+// bit-exactly, and every bad value refused with its key path; estimator.jointTorqueSensor, the
+// identification's side of such joints, the same.
 #include "IoTestSupport.h"
 #include "io/ScenarioFile.h"
 
@@ -39,6 +40,7 @@ private slots:
     void badValue_isRejectedWithKeyPath_data();
     void badValue_isRejectedWithKeyPath();
     void nanInCode_isRejectedWithKeyPath();
+    void jointTorqueSensor_isReadWrittenAndChecked();
 };
 
 void TestScenarioJoints::allKeys_readAndWriteBackBitExactly()
@@ -181,6 +183,55 @@ void TestScenarioJoints::nanInCode_isRejectedWithKeyPath()
     s.simulation.jointStiffness = Eigen::Vector2d(nan, 1000);
     QCOMPARE(test::errorOf([&] { validateScenario(s); }),
              QStringLiteral("simulation.jointStiffness[0]: must be a positive number, got nan"));
+}
+
+void TestScenarioJoints::jointTorqueSensor_isReadWrittenAndChecked()
+{
+    // Off by default and then not written; on, it is written and read back.
+    QVERIFY(!QJsonDocument::fromJson(scenarioToJson(Scenario{}))
+                 .object()
+                 .value(QStringLiteral("estimator"))
+                 .toObject()
+                 .contains(QStringLiteral("jointTorqueSensor")));
+    Scenario s;
+    s.model = QStringLiteral("double-pendulum");
+    s.urdf.jointTerms.armature = true;
+    s.torqueLimits.resize(0);
+    s.initialParameters.resize(0);
+    s.simulation.trueParameters.resize(0);
+    s.path.kind = PathKind::Waypoints;
+    s.path.waypoints = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1.2, -0.8)};
+    s.estimator.jointTorqueSensor = true;
+    QVERIFY(scenarioFromJson(scenarioToJson(s), source).estimator.jointTorqueSensor);
+
+    const auto errorWith = [&](const char *estimator, bool armature) {
+        QJsonObject root = QJsonDocument::fromJson(scenarioToJson(s)).object();
+        QJsonObject robot = root.value(QStringLiteral("robot")).toObject();
+        QJsonObject terms = robot.value(QStringLiteral("jointTerms")).toObject();
+        terms.insert(QStringLiteral("armature"), armature);
+        robot.insert(QStringLiteral("jointTerms"), terms);
+        root.insert(QStringLiteral("robot"), robot);
+        QJsonObject e = root.value(QStringLiteral("estimator")).toObject();
+        const QJsonObject change = QJsonDocument::fromJson(estimator).object();
+        for (auto it = change.begin(); it != change.end(); ++it)
+            e.insert(it.key(), it.value());
+        root.insert(QStringLiteral("estimator"), e);
+        return test::errorOf([&] { scenarioFromJson(QJsonDocument(root).toJson(), source); });
+    };
+    QCOMPARE(errorWith("{\"jointTorqueSensor\": \"yes\"}", true),
+             QStringLiteral("scenario.json: estimator.jointTorqueSensor: must be true or false, "
+                            "got \"yes\""));
+    QCOMPARE(errorWith("{\"law\": \"paper\"}", true),
+             QStringLiteral("scenario.json: estimator.jointTorqueSensor: needs the improved law "
+                            "(estimator.law \"improved\"), got \"paper\""));
+    const QString needsArmature =
+        QStringLiteral("estimator.jointTorqueSensor: needs a URDF robot with "
+                       "robot.jointTerms.armature true: the rotor inertia the sensor does not "
+                       "see is learned as the armature term");
+    QCOMPARE(errorWith("{}", false), source + QStringLiteral(": ") + needsArmature);
+    Scenario paper; // the paper's arm has no joint terms
+    paper.estimator.jointTorqueSensor = true;
+    QCOMPARE(test::errorOf([&] { validateScenario(paper); }), needsArmature);
 }
 
 QTEST_GUILESS_MAIN(TestScenarioJoints)

@@ -1,0 +1,165 @@
+// estimator.jointTorqueSensor (identify/RotorTorque.h): the drive's command reconstructed from a
+// record is the torque the simulated drives applied; behind a joint torque sensor (elastic
+// joints: the sensor measures the spring) the rotor's inertia is fitted from the command minus
+// the measurement, and a session learns it as the armature term, which it cannot without.
+#include "identify/FilteringEstimator.h"
+#include "identify/LearningLaw.h"
+#include "identify/RotorTorque.h"
+#include "model/ModelFactory.h"
+#include "session/CommissioningSession.h"
+#include "session/ScenarioRobot.h"
+#include "session/ScenarioRobotJoints.h"
+#include "session/TrialPlanner.h"
+
+#include <QTest>
+
+using namespace learnid;
+
+namespace {
+
+// The double pendulum on a joint path, its model learning rotor inertia; the simulated robot
+// is the URDF's (the initial estimate is its rigid truth) with an ideal encoder and no noise.
+Scenario doublePendulum()
+{
+    Scenario s;
+    s.model = QStringLiteral("double-pendulum");
+    s.urdf.jointTerms.armature = true;
+    s.torqueLimits.resize(0);
+    s.initialParameters.resize(0);
+    s.simulation.trueParameters.resize(0);
+    s.simulation.encoderCounts = 0;
+    s.simulation.torqueNoise = 0.0;
+    s.path.kind = PathKind::Waypoints;
+    s.path.waypoints = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1.2, -0.8), Eigen::Vector2d(0, 0)};
+    s.controller.kp = Eigen::Vector2d(20, 8);
+    s.controller.ki = Eigen::Vector2d(2, 1);
+    s.controller.kd = Eigen::Vector2d(1.5, 0.6);
+    return s;
+}
+
+// Elastic joints whose motors carry `factor` times their link's inertia about the axis: the
+// torque sensor measures the spring, behind the rotor.
+Scenario behindAJointSensor(double factor)
+{
+    Scenario s = doublePendulum();
+    s.simulation.armatureFactor = Eigen::Vector2d::Constant(factor);
+    s.simulation.jointStiffness = Eigen::Vector2d::Constant(2000.0);
+    s.simulation.jointDamping = Eigen::Vector2d::Constant(1.0);
+    s.simulation.linkSideEncoder = false;
+    // Slow enough that the first trial, without the rotor, stays within the limit.
+    s.planningFraction = 0.3;
+    s.maxTrackingErrorDeg = 20.0;
+    return s;
+}
+
+// Relative RMS difference of the learned model's torque on the plan's path against the motor's
+// true torque there: the rigid truth plus the rotor's Ia qdd.
+double motorTorqueError(const RobotModel &model, const TrialPlan &plan, const Eigen::VectorXd &phi,
+                        const Eigen::VectorXd &truth, const Eigen::VectorXd &rotor)
+{
+    const JointTrajectory &d = plan.desired;
+    Eigen::VectorXd learned(2), actual(2);
+    double diff = 0.0, level = 0.0;
+    for (int k = 0; k < d.samples(); ++k) {
+        model.inverseDynamics(d.q.col(k), d.qd.col(k), d.qdd.col(k), phi, learned);
+        model.inverseDynamics(d.q.col(k), d.qd.col(k), d.qdd.col(k), truth, actual);
+        actual += rotor.cwiseProduct(d.qdd.col(k));
+        diff += (learned - actual).squaredNorm();
+        level += actual.squaredNorm();
+    }
+    return std::sqrt(diff / level);
+}
+
+} // namespace
+
+class TestJointTorqueSensor : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void driveCommand_isWhatTheSimulatedDrivesApplied();
+    void rotorTorque_fitsTheRotorBehindTheSensor();
+    void session_learnsTheRotorOnlyWithTheSetting();
+};
+
+void TestJointTorqueSensor::driveCommand_isWhatTheSimulatedDrivesApplied()
+{
+    // A rigid robot's torque reading is the command it applied. Limits below the planned
+    // torque make the commands saturate; a quantised encoder feeds the PIDs the recorded angles.
+    Scenario s = doublePendulum();
+    s.simulation.encoderCounts = 1 << 16;
+    const auto model = makeRobotModel(s.model, s.urdf);
+    s = withRobotDefaults(s, *model);
+    TrialPlan plan = TrialPlanner(s, model).plan(s.initialParameters);
+    plan.torqueLimit = 0.7 * plan.feedforward.cwiseAbs().rowwise().maxCoeff();
+    plan.maxTrackingError = 1.0;
+    const TrialRecord record = makeSimulatedRobot(s, model)->runTrial(plan, TrialMonitor{});
+    QVERIFY2(record.completed(), qPrintable(record.message));
+    const Eigen::MatrixXd command = driveCommand(plan, record);
+    QCOMPARE(command.cols(), record.tau.cols());
+    const Eigen::ArrayXXd limit = plan.torqueLimit.replicate(1, command.cols()).array();
+    QVERIFY2((command.array().abs() >= limit).any(), "no command saturated");
+    QVERIFY((command - record.tau).cwiseAbs().maxCoeff() <= 1e-12 * limit.maxCoeff());
+    // The feedforward alone is not it: the PIDs' part is there.
+    QVERIFY((plan.feedforward - record.tau).cwiseAbs().maxCoeff() > 1e-3);
+}
+
+void TestJointTorqueSensor::rotorTorque_fitsTheRotorBehindTheSensor()
+{
+    for (const double factor : {0.5, 2.0}) {
+        Scenario s = behindAJointSensor(factor);
+        const auto model = makeRobotModel(s.model, s.urdf);
+        s = withRobotDefaults(s, *model);
+        const Eigen::VectorXd rotor = simulatedJoints(s, *model).armature;
+        CommissioningSession session(s, model, makeSimulatedRobot(s, model));
+        const TrialResult &result = session.runTrial();
+        QVERIFY2(result.record.completed(), qPrintable(result.message));
+        const FilteringEstimator filter(s.estimator.rho, result.record.samplePeriod);
+        const JointStateEstimate hat =
+            estimateJointStates(filter, result.plan(), result.record, true);
+        Eigen::VectorXd inertia;
+        const Eigen::MatrixXd torque = rotorTorque(filter, result.plan(), result.record, hat.qdd,
+                                                   result.record.samples() - 1, &inertia);
+        QCOMPARE(torque.rows(), Eigen::Index(result.record.samples() - 1));
+        qInfo("rotor x%g: fitted %.6g, %.6g kg m^2; simulated %.6g, %.6g", factor, inertia[0],
+              inertia[1], rotor[0], rotor[1]);
+        for (int j = 0; j < 2; ++j) {
+            QVERIFY2(std::abs(inertia[j] - rotor[j]) < 0.06 * rotor[j],
+                     qPrintable(QStringLiteral("factor %1, joint %2: fitted %3, simulated %4")
+                                    .arg(factor)
+                                    .arg(j + 1)
+                                    .arg(inertia[j])
+                                    .arg(rotor[j])));
+            QVERIFY(torque.col(j).isApprox(
+                inertia[j] * 0.5 *
+                    (hat.qdd.row(j).head(torque.rows()) + hat.qdd.row(j).tail(torque.rows()))
+                        .transpose(),
+                1e-12));
+        }
+    }
+}
+
+void TestJointTorqueSensor::session_learnsTheRotorOnlyWithTheSetting()
+{
+    double errors[2] = {0.0, 0.0};
+    for (const bool sensor : {false, true}) {
+        Scenario s = behindAJointSensor(1.0);
+        s.estimator.jointTorqueSensor = sensor;
+        const auto model = makeRobotModel(s.model, s.urdf);
+        s = withRobotDefaults(s, *model);
+        const Eigen::VectorXd rotor = simulatedJoints(s, *model).armature;
+        CommissioningSession session(s, model, makeSimulatedRobot(s, model));
+        for (int k = 0; k < 2; ++k)
+            QVERIFY2(session.runTrial().learned(), "a trial was not learned from");
+        errors[sensor] =
+            motorTorqueError(*model, session.history().constLast().plan(),
+                             session.estimates().constLast(), s.simulation.trueParameters, rotor);
+    }
+    qInfo("motor-torque error on the path: %.3f %% without the setting, %.3f %% with it",
+          100.0 * errors[0], 100.0 * errors[1]);
+    QVERIFY2(errors[1] < 0.01, "the rotor's torque is not learned");
+    QVERIFY2(errors[0] > 5.0 * errors[1], "without the setting the rotor is learned anyway");
+}
+
+QTEST_GUILESS_MAIN(TestJointTorqueSensor)
+#include "tst_jointtorquesensor.moc"
