@@ -1,12 +1,14 @@
 // CanRobot, the threaded front, against the robot simulator (learnid_cansim) over the memory
 // bus: a session on it identifies what the same session on SimulatedRobot identifies, and a
 // trial's candump log replayed gives the very same record and estimate.
+#include "../support/RotorScenario.h"
 #include "CanSimRig.h"
 #include "canrobot/CanRobot.h"
 #include "canrobot/CandumpReplayDevice.h"
 #include "model/ModelFactory.h"
 #include "session/CommissioningSession.h"
 #include "session/ScenarioRobot.h"
+#include "session/ScenarioRobotJoints.h"
 
 #include <QDir>
 #include <QTemporaryDir>
@@ -46,6 +48,7 @@ class TestCanRobot : public QObject
 
 private slots:
     void session_identifiesAsOnSimulatedRobot();
+    void jointTorqueSensor_learnsTheRotorAsOnSimulatedRobot();
     void replay_asRecordedPausedOrSilent_endsAsRecorded_data();
     void replay_asRecordedPausedOrSilent_endsAsRecorded();
     void unreachableDevice_failsWithinTheConnectTimeout();
@@ -72,6 +75,33 @@ void TestCanRobot::session_identifiesAsOnSimulatedRobot()
     QVERIFY(largestRelativeDifference(phiCan, phiSim) < 5e-3);
     QVERIFY(!can->trueParameters().has_value());
     QCOMPARE(can->lastTrialStatistics().lateSetpoints, 0);
+}
+
+void TestCanRobot::jointTorqueSensor_learnsTheRotorAsOnSimulatedRobot()
+{
+    // The drives run the PIDs the tool reconstructs the command with, on the angles they report;
+    // the offset reaches them rounded to per mille of the rated torque.
+    Scenario scenario = test::behindAJointSensor(1.0);
+    scenario.estimator.jointTorqueSensor = true;
+    scenario.iterations = 2;
+    const auto model = makeRobotModel(scenario.model, scenario.urdf);
+    scenario = withRobotDefaults(scenario, *model);
+    const Eigen::VectorXd rotor = simulatedJoints(scenario, *model).armature;
+    auto can = std::make_shared<CanRobot>(
+        model, memoryOptions(), test::canSimFactory(canArmSettings(scenario, model, {1, 2})));
+    CommissioningSession onCan(scenario, model, can);
+    QVERIFY2(onCan.runTrials(scenario.iterations), qPrintable(onCan.history().constLast().message));
+    CommissioningSession onSim(scenario, model, makeSimulatedRobot(scenario, model));
+    QVERIFY(onSim.runTrials(scenario.iterations));
+    const TrialPlan &plan = onSim.history().constLast().plan();
+    const double errorCan = test::motorTorqueError(*model, plan, onCan.currentEstimate(),
+                                                   scenario.simulation.trueParameters, rotor);
+    const double errorSim = test::motorTorqueError(*model, plan, onSim.currentEstimate(),
+                                                   scenario.simulation.trueParameters, rotor);
+    qInfo("motor-torque error on the path: CAN %.3f %%, simulated robot %.3f %%", 100 * errorCan,
+          100 * errorSim);
+    QVERIFY(errorSim < 0.01);
+    QVERIFY(errorCan < 0.02);
 }
 
 void TestCanRobot::replay_asRecordedPausedOrSilent_endsAsRecorded_data()

@@ -2,6 +2,7 @@
 // record is the torque the simulated drives applied; behind a joint torque sensor (elastic
 // joints: the sensor measures the spring) the rotor's inertia is fitted from the command minus
 // the measurement, and a session learns it as the armature term, which it cannot without.
+#include "../support/RotorScenario.h"
 #include "identify/FilteringEstimator.h"
 #include "identify/LearningLaw.h"
 #include "identify/RotorTorque.h"
@@ -14,63 +15,7 @@
 #include <QTest>
 
 using namespace learnid;
-
-namespace {
-
-// The double pendulum on a joint path, its model learning rotor inertia; the simulated robot
-// is the URDF's (the initial estimate is its rigid truth) with an ideal encoder and no noise.
-Scenario doublePendulum()
-{
-    Scenario s;
-    s.model = QStringLiteral("double-pendulum");
-    s.urdf.jointTerms.armature = true;
-    s.torqueLimits.resize(0);
-    s.initialParameters.resize(0);
-    s.simulation.trueParameters.resize(0);
-    s.simulation.encoderCounts = 0;
-    s.simulation.torqueNoise = 0.0;
-    s.path.kind = PathKind::Waypoints;
-    s.path.waypoints = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1.2, -0.8), Eigen::Vector2d(0, 0)};
-    s.controller.kp = Eigen::Vector2d(20, 8);
-    s.controller.ki = Eigen::Vector2d(2, 1);
-    s.controller.kd = Eigen::Vector2d(1.5, 0.6);
-    return s;
-}
-
-// Elastic joints whose motors carry `factor` times their link's inertia about the axis: the
-// torque sensor measures the spring, behind the rotor.
-Scenario behindAJointSensor(double factor)
-{
-    Scenario s = doublePendulum();
-    s.simulation.armatureFactor = Eigen::Vector2d::Constant(factor);
-    s.simulation.jointStiffness = Eigen::Vector2d::Constant(2000.0);
-    s.simulation.jointDamping = Eigen::Vector2d::Constant(1.0);
-    s.simulation.linkSideEncoder = false;
-    // Slow enough that the first trial, without the rotor, stays within the limit.
-    s.planningFraction = 0.3;
-    s.maxTrackingErrorDeg = 20.0;
-    return s;
-}
-
-// Relative RMS difference of the learned model's torque on the plan's path against the motor's
-// true torque there: the rigid truth plus the rotor's Ia qdd.
-double motorTorqueError(const RobotModel &model, const TrialPlan &plan, const Eigen::VectorXd &phi,
-                        const Eigen::VectorXd &truth, const Eigen::VectorXd &rotor)
-{
-    const JointTrajectory &d = plan.desired;
-    Eigen::VectorXd learned(2), actual(2);
-    double diff = 0.0, level = 0.0;
-    for (int k = 0; k < d.samples(); ++k) {
-        model.inverseDynamics(d.q.col(k), d.qd.col(k), d.qdd.col(k), phi, learned);
-        model.inverseDynamics(d.q.col(k), d.qd.col(k), d.qdd.col(k), truth, actual);
-        actual += rotor.cwiseProduct(d.qdd.col(k));
-        diff += (learned - actual).squaredNorm();
-        level += actual.squaredNorm();
-    }
-    return std::sqrt(diff / level);
-}
-
-} // namespace
+using namespace learnid::test;
 
 class TestJointTorqueSensor : public QObject
 {
@@ -86,7 +31,7 @@ void TestJointTorqueSensor::driveCommand_isWhatTheSimulatedDrivesApplied()
 {
     // A rigid robot's torque reading is the command it applied. Limits below the planned
     // torque make the commands saturate; a quantised encoder feeds the PIDs the recorded angles.
-    Scenario s = doublePendulum();
+    Scenario s = rotorDoublePendulum();
     s.simulation.encoderCounts = 1 << 16;
     const auto model = makeRobotModel(s.model, s.urdf);
     s = withRobotDefaults(s, *model);
