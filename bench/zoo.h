@@ -54,7 +54,8 @@ QString readText(const QString &path);
 /// feedforward is the simulated robot's own law on the desired path: its rigid-body truth,
 /// its rotor inertia, and Stribeck friction with the exact sign of the desired velocity. No
 /// identified model can give the controller more. Elastic joints: their rigid law (the spring's
-/// own dynamics left out). rotor false: without the rotor inertia.
+/// own dynamics left out). rotor false: without the rotor inertia. Infinite when the trial
+/// stops at the tracking limit.
 double ownLawError(const Scenario &scenario, bool rotor = true);
 
 } // namespace learnid::bench

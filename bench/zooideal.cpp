@@ -57,6 +57,8 @@ double ownLawError(const Scenario &requested, bool rotor)
         }
     }
     const TrialRecord record = makeSimulatedRobot(s, model)->runTrial(plan, TrialMonitor{});
+    if (!record.completed()) // stopped at the limit: the gains do not hold this robot
+        return INFINITY;
     const int n = record.samples();
     return (plan.desired.q.leftCols(n) - record.q).cwiseAbs().maxCoeff() * 180.0 / M_PI;
 }

@@ -359,17 +359,17 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+64"/>
+        <location line="+73"/>
         <source>node %1 is listed twice</source>
         <translation>Knoten %1 ist zweimal aufgeführt</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-66"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN-Zeitoptionen müssen positiv sein (Heartbeat-Periode höchstens 65535 ms)</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+61"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; ist keine CANopen-Knoten-ID (1 bis 127)</translation>
     </message>
@@ -1402,13 +1402,13 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+57"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+58"/>
         <location filename="../core/identify/PaperLaw.cpp" line="+44"/>
         <source>trial record has only %1 samples to learn from</source>
         <translation>die Versuchsaufzeichnung hat nur %1 Abtastwerte zum Lernen</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+76"/>
         <location filename="../core/identify/PaperLaw.cpp" line="-26"/>
         <source>no completed trial to learn from</source>
         <translation>kein abgeschlossener Versuch, aus dem gelernt werden kann</translation>
@@ -3068,7 +3068,7 @@
         <translation>controller.samplePeriod: das Szenario des Artikels ist das des Artikels, bei %1 ms; für einen anderen Takt einen URDF-Roboter wählen</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+159"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>unbekannter Roboter „%1“; bekannt: %2 oder eine URDF-Datei (DATEI.urdf)</translation>
     </message>
@@ -3129,17 +3129,17 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+217"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+227"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+292"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+296"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-141"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-151"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
@@ -3160,7 +3160,7 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-258"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-262"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -3170,7 +3170,7 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+89"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
@@ -3230,7 +3230,17 @@
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+37"/>
+        <source>needs the improved law (estimator.law &quot;improved&quot;), got &quot;%1&quot;</source>
+        <translation>braucht das verbesserte Gesetz (estimator.law &quot;improved&quot;), erhalten &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>needs a URDF robot with robot.jointTerms.armature true: the rotor inertia the sensor does not see is learned as the armature term</source>
+        <translation>braucht einen URDF-Roboter mit robot.jointTerms.armature true: die Rotorträgheit, die der Sensor nicht sieht, wird als Rotorträgheitsterm (armature) gelernt</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>muss 0 (idealer Encoder) oder eine ganze Zahl von %1 bis %2 sein, gefunden: %3</translation>
     </message>
@@ -3499,12 +3509,12 @@
 <context>
     <name>SimulatedRobot</name>
     <message>
-        <location filename="../core/robot/SimulatedRobot.cpp" line="+32"/>
+        <location filename="../core/robot/SimulatedRobot.cpp" line="+57"/>
         <source>simulated %1</source>
         <translation>Simulation %1</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+96"/>
         <source>tracking error of joint %1 reached %2 deg at t = %3 s (limit %4 deg): quick stop</source>
         <translation>Folgefehler von Gelenk %1 erreichte %2° bei t = %3 s (Grenze %4°): Schnellhalt</translation>
     </message>
@@ -3514,12 +3524,12 @@
         <translation>Antrieb von Gelenk 1 meldete bei t = %1 s einen Fehler (eingespeist)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-121"/>
         <source>stopped by the operator at t = %1 s</source>
         <translation>vom Bediener gestoppt bei t = %1 s</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+148"/>
         <source>the simulated controller refused the parameter write (injected fault); its stored parameters are unchanged</source>
         <translation>die simulierte Steuerung lehnte das Schreiben der Parameter ab (eingespeister Fehler); ihre gespeicherten Parameter sind unverändert</translation>
     </message>
@@ -3703,7 +3713,7 @@
         <translation>„Alle starten“ hält an: %1 Versuche hintereinander stoppten an der Grenze des Folgefehlers, und Versuch %2 war kein Fortschritt gegenüber Versuch %3 (gestoppt bei t = %4 s mit %5 Grad, gegenüber t = %6 s mit %7 Grad)</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+82"/>
         <source>trial %1 tracked worse than trial %2 (max %3 deg against %4 deg)</source>
         <translation>Versuch %1 folgte schlechter als Versuch %2 (max. %3 Grad gegenüber %4 Grad)</translation>
     </message>
@@ -5891,7 +5901,7 @@ neue Schätzung.
         <translation>Versuch %1 vor der Bewegung abgelehnt: %2</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>repetition %1 of %2: %3</source>
         <translation>Wiederholung %1 von %2: %3</translation>
     </message>
@@ -8437,12 +8447,13 @@ Verhältnis %</translation>
 <context>
     <name>learnid::ScenarioForm</name>
     <message>
-        <location filename="../ui/ScenarioForm.cpp" line="+63"/>
+        <location filename="../ui/ScenarioForm.cpp" line="+64"/>
+        <location line="+30"/>
         <source>Scenario key %1</source>
         <translation>Szenario-Schlüssel %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-28"/>
         <source>URDF robots: empty takes the robot&apos;s</source>
         <translation>URDF-Roboter: leer übernimmt die Werte des Roboters</translation>
     </message>
@@ -8467,12 +8478,27 @@ Verhältnis %</translation>
         <translation>Lerngesetz</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>the drives (motor current)</source>
+        <translation>die Antriebe (Motorstrom)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>joint torque sensors behind the gears</source>
+        <translation>Gelenkmomentsensoren hinter den Getrieben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torque measured by</source>
+        <translation>Drehmoment gemessen von</translation>
+    </message>
+    <message>
         <location line="+19"/>
         <source>unknown model &quot;%1&quot;</source>
         <translation>unbekanntes Modell „%1“</translation>
     </message>
     <message numerus="yes">
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Initial parameters (%n base parameter(s))</source>
         <translation>
             <numerusform>Anfangsparameter (%n Basisparameter)</numerusform>
@@ -8486,17 +8512,17 @@ Verhältnis %</translation>
     </message>
     <message>
         <location line="+13"/>
-        <location line="+110"/>
+        <location line="+112"/>
         <source>robot.model: %1</source>
         <translation>robot.model: %1</translation>
     </message>
     <message>
-        <location line="-76"/>
+        <location line="-78"/>
         <source>path.file: %1</source>
         <translation>path.file: %1</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+54"/>
         <source>enter one number</source>
         <translation>eine Zahl eingeben</translation>
     </message>
@@ -8829,14 +8855,14 @@ Verhältnis %</translation>
     <name>learnid::TrialStreamer</name>
     <message>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
-        <location line="+92"/>
+        <location line="+94"/>
         <location line="+68"/>
         <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+49"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-149"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 erreichte Betrieb freigegeben nicht innerhalb von %2 ms: meldet %3 (Statuswort 0x%4)</translation>
     </message>
@@ -8846,7 +8872,7 @@ Verhältnis %</translation>
         <translation>kein TPDO</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+80"/>
         <source>stopped by the operator %1</source>
         <translation>vom Bediener gestoppt %1</translation>
     </message>

@@ -224,7 +224,7 @@
 <context>
     <name>learnid::ScenarioForm</name>
     <message numerus="yes">
-        <location filename="../ui/ScenarioForm.cpp" line="+138"/>
+        <location filename="../ui/ScenarioForm.cpp" line="+148"/>
         <source>Initial parameters (%n base parameter(s))</source>
         <translation>
             <numerusform>Initial parameters (%n base parameter)</numerusform>

@@ -359,17 +359,17 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+64"/>
+        <location line="+73"/>
         <source>node %1 is listed twice</source>
         <translation>节点 %1 被列出两次</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-66"/>
         <source>CAN timing options must be positive (heartbeat period at most 65535 ms)</source>
         <translation>CAN 定时选项必须为正（心跳周期最多 65535 ms）</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+61"/>
         <source>&apos;%1&apos; is not a CANopen node id (1 to 127)</source>
         <translation>&apos;%1&apos; 不是 CANopen 节点 ID（1 到 127）</translation>
     </message>
@@ -1402,13 +1402,13 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+57"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+58"/>
         <location filename="../core/identify/PaperLaw.cpp" line="+44"/>
         <source>trial record has only %1 samples to learn from</source>
         <translation>试验记录只有 %1 个可用于学习的采样</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+76"/>
         <location filename="../core/identify/PaperLaw.cpp" line="-26"/>
         <source>no completed trial to learn from</source>
         <translation>没有可供学习的已完成试验</translation>
@@ -3055,7 +3055,7 @@
         <translation>controller.samplePeriod：论文场景即论文中的场景，采样周期为 %1 ms；如需其他周期，请选择 URDF 机器人</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+159"/>
         <source>unknown robot &quot;%1&quot;; known: %2, or a URDF file (FILE.urdf)</source>
         <translation>未知机器人“%1”；已知：%2，或一个 URDF 文件（FILE.urdf）</translation>
     </message>
@@ -3116,17 +3116,17 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+217"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+227"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+292"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+296"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-141"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-151"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
@@ -3147,7 +3147,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-258"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-262"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -3157,7 +3157,7 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+89"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
@@ -3217,7 +3217,17 @@
         <translation>必须是 1 或 -1，实际为 %1</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+37"/>
+        <source>needs the improved law (estimator.law &quot;improved&quot;), got &quot;%1&quot;</source>
+        <translation>需要改进律（estimator.law &quot;improved&quot;），实际为 &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>needs a URDF robot with robot.jointTerms.armature true: the rotor inertia the sensor does not see is learned as the armature term</source>
+        <translation>需要 robot.jointTerms.armature 为 true 的 URDF 机器人：传感器看不到的转子惯量作为转子惯量项（armature）学习</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>must be 0 (an ideal encoder) or an integer from %1 to %2, got %3</source>
         <translation>必须是 0（理想编码器）或 %1 到 %2 之间的整数，实际为 %3</translation>
     </message>
@@ -3486,12 +3496,12 @@
 <context>
     <name>SimulatedRobot</name>
     <message>
-        <location filename="../core/robot/SimulatedRobot.cpp" line="+32"/>
+        <location filename="../core/robot/SimulatedRobot.cpp" line="+57"/>
         <source>simulated %1</source>
         <translation>仿真 %1</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+96"/>
         <source>tracking error of joint %1 reached %2 deg at t = %3 s (limit %4 deg): quick stop</source>
         <translation>关节 %1 的跟踪误差在 t = %3 s 时达到 %2 度（限值 %4 度）：快速停止</translation>
     </message>
@@ -3501,12 +3511,12 @@
         <translation>关节 1 的驱动器在 t = %1 s 时报告故障（注入）</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-121"/>
         <source>stopped by the operator at t = %1 s</source>
         <translation>操作员在 t = %1 s 时停止</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+148"/>
         <source>the simulated controller refused the parameter write (injected fault); its stored parameters are unchanged</source>
         <translation>仿真控制器拒绝写入参数（注入故障）；其已存储参数未改变</translation>
     </message>
@@ -3689,7 +3699,7 @@
         <translation>全部运行停止：连续 %1 次试验在跟踪误差限值处停止，且试验 %2 相比试验 %3 没有进展（在 t = %4 s 以 %5 度停止，对比 t = %6 s 以 %7 度）</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+82"/>
         <source>trial %1 tracked worse than trial %2 (max %3 deg against %4 deg)</source>
         <translation>试验 %1 的跟踪比试验 %2 差（最大 %3 度，对比 %4 度）</translation>
     </message>
@@ -5870,7 +5880,7 @@ stdout, and the next plan uses the new estimate.
         <translation>试验 %1 在运动前被拒绝：%2</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>repetition %1 of %2: %3</source>
         <translation>第 %1 次重复（共 %2 次）：%3</translation>
     </message>
@@ -8409,12 +8419,13 @@ ratio %</source>
 <context>
     <name>learnid::ScenarioForm</name>
     <message>
-        <location filename="../ui/ScenarioForm.cpp" line="+63"/>
+        <location filename="../ui/ScenarioForm.cpp" line="+64"/>
+        <location line="+30"/>
         <source>Scenario key %1</source>
         <translation>场景键 %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-28"/>
         <source>URDF robots: empty takes the robot&apos;s</source>
         <translation>URDF 机器人：留空则采用机器人的值</translation>
     </message>
@@ -8439,12 +8450,27 @@ ratio %</source>
         <translation>学习律</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>the drives (motor current)</source>
+        <translation>驱动器（电机电流）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>joint torque sensors behind the gears</source>
+        <translation>减速器后的关节力矩传感器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torque measured by</source>
+        <translation>力矩测量来源</translation>
+    </message>
+    <message>
         <location line="+19"/>
         <source>unknown model &quot;%1&quot;</source>
         <translation>未知模型“%1”</translation>
     </message>
     <message numerus="yes">
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Initial parameters (%n base parameter(s))</source>
         <translation>
             <numerusform>初始参数（%n 个基参数）</numerusform>
@@ -8457,17 +8483,17 @@ ratio %</source>
     </message>
     <message>
         <location line="+13"/>
-        <location line="+110"/>
+        <location line="+112"/>
         <source>robot.model: %1</source>
         <translation>robot.model：%1</translation>
     </message>
     <message>
-        <location line="-76"/>
+        <location line="-78"/>
         <source>path.file: %1</source>
         <translation>path.file：%1</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+54"/>
         <source>enter one number</source>
         <translation>请输入一个数</translation>
     </message>
@@ -8799,14 +8825,14 @@ ratio %</source>
     <name>learnid::TrialStreamer</name>
     <message>
         <location filename="../core/canrobot/TrialStreamer.cpp" line="+32"/>
-        <location line="+92"/>
+        <location line="+94"/>
         <location line="+68"/>
         <location filename="../core/canrobot/TrialStreamerSteps.cpp" line="+49"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-149"/>
         <source>%1 did not reach Operation enabled within %2 ms: it reports %3 (statusword 0x%4)</source>
         <translation>%1 未在 %2 ms 内达到运行使能：报告为 %3（状态字 0x%4）</translation>
     </message>
@@ -8816,7 +8842,7 @@ ratio %</source>
         <translation>无 TPDO</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+80"/>
         <source>stopped by the operator %1</source>
         <translation>被操作员停止 %1</translation>
     </message>

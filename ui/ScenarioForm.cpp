@@ -37,6 +37,7 @@ QLabel *reasonLabel(QWidget *parent)
 ScenarioForm::ScenarioForm(QWidget *parent)
     : QWidget(parent)
     , m_law(new QComboBox(this))
+    , m_sensor(new QComboBox(this))
     , m_robot(new RobotChooser(this))
     , m_waypoints(new WaypointEditor(this))
     , m_otherError(reasonLabel(this))
@@ -86,8 +87,16 @@ ScenarioForm::ScenarioForm(QWidget *parent)
                                                              : tr("improved (zero-phase, WLS)"),
                                law);
             grid->addWidget(new QLabel(tr("Estimator law"), box), r, 0);
-            grid->addWidget(m_law, r, 1, 1, 2);
+            grid->addWidget(m_law, r++, 1, 1, 2);
             connect(m_law, &QComboBox::activated, this, &ScenarioForm::revalidate);
+            // Joint torque sensors do not see the rotors (docs/method.md §2.6).
+            m_sensor->setObjectName(QStringLiteral("estimator.jointTorqueSensor"));
+            m_sensor->setToolTip(tr("Scenario key %1").arg(m_sensor->objectName()));
+            m_sensor->addItem(tr("the drives (motor current)"), false);
+            m_sensor->addItem(tr("joint torque sensors behind the gears"), true);
+            grid->addWidget(new QLabel(tr("Torque measured by"), box), r, 0);
+            grid->addWidget(m_sensor, r, 1, 1, 2);
+            connect(m_sensor, &QComboBox::activated, this, &ScenarioForm::revalidate);
         }
         layout->addWidget(box);
     }
@@ -120,6 +129,7 @@ void ScenarioForm::setScenario(const Scenario &scenario)
         row.edit->setText(formatNumberList(row.field.read(scenario)));
     const int law = m_law->findData(scenario.law);
     m_law->setCurrentIndex(law >= 0 ? law : 0);
+    m_sensor->setCurrentIndex(scenario.estimator.jointTorqueSensor ? 1 : 0);
     revalidate();
 }
 
@@ -202,6 +212,7 @@ void ScenarioForm::setEditable(bool editable)
     for (Row &row : m_rows)
         row.edit->setReadOnly(!editable);
     m_law->setEnabled(editable);
+    m_sensor->setEnabled(editable);
     m_robot->setEditable(editable);
     m_waypoints->setEditable(editable);
 }
@@ -222,6 +233,7 @@ void ScenarioForm::revalidate()
     m_otherError->hide();
     Scenario s = m_base;
     s.law = m_law->currentData().toString();
+    s.estimator.jointTorqueSensor = m_sensor->currentData().toBool();
     bool parsed = true;
     for (Row &row : m_rows) {
         if (row.field.emptyTakesRobot && row.edit->text().trimmed().isEmpty() &&

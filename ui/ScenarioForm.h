@@ -75,6 +75,7 @@ private:
 
     QList<Row> m_rows;
     QComboBox *m_law;
+    QComboBox *m_sensor; ///< estimator.jointTorqueSensor
     RobotChooser *m_robot;
     WaypointEditor *m_waypoints;
     std::shared_ptr<const RobotModel> m_model;

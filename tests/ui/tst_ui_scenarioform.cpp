@@ -1,5 +1,6 @@
 #include "ui/ScenarioForm.h"
 
+#include <QComboBox>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QtTest>
@@ -106,6 +107,40 @@ private slots:
         type(form, QStringLiteral("safety.maxTrackingErrorDeg"), QStringLiteral("0"));
         QVERIFY(!form.isValid());
         QVERIFY(!form.reasonFor(QStringLiteral("safety.maxTrackingErrorDeg")).isEmpty());
+    }
+
+    void torqueSensor_isTheKeyAndIsChecked()
+    {
+        ScenarioForm form;
+        auto *sensor = form.findChild<QComboBox *>(QStringLiteral("estimator.jointTorqueSensor"));
+        QVERIFY(sensor);
+        QCOMPARE(sensor->currentIndex(), 0);
+        // The paper's arm has no rotor term to learn into: refused, with the key.
+        sensor->setFocus();
+        QTest::keyClick(sensor, Qt::Key_Down);
+        QCOMPARE(sensor->currentIndex(), 1);
+        QVERIFY(!form.isValid());
+        QVERIFY2(form.firstError().startsWith(
+                     QStringLiteral("estimator.jointTorqueSensor: needs a URDF robot with "
+                                    "robot.jointTerms.armature true")),
+                 qPrintable(form.firstError()));
+        // A URDF arm learning rotor inertia: the choice is the scenario's key, both ways.
+        Scenario s;
+        s.model = QStringLiteral("double-pendulum");
+        s.urdf.jointTerms.armature = true;
+        s.torqueLimits.resize(0);
+        s.initialParameters.resize(0);
+        s.simulation.trueParameters.resize(0);
+        s.path.kind = PathKind::Waypoints;
+        s.path.waypoints = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1.2, -0.8)};
+        s.estimator.jointTorqueSensor = true;
+        form.setScenario(s);
+        QCOMPARE(sensor->currentIndex(), 1);
+        QVERIFY2(form.isValid(), qPrintable(form.firstError()));
+        QVERIFY(form.scenario()->estimator.jointTorqueSensor);
+        QTest::keyClick(sensor, Qt::Key_Up);
+        QVERIFY(form.isValid());
+        QVERIFY(!form.scenario()->estimator.jointTorqueSensor);
     }
 };
 
