@@ -145,15 +145,18 @@ int main(int argc, char **argv)
         return 1;
     }
     std::printf("KUKA LWR4+ from the CAD URDF, %s, rotor inertia %s, joint torque sensor "
-                "(the rotor learned from the command) on%s, %.0f deg abort limit, "
+                "(the rotor learned from the command) on%s, sensor lag undone %s, %.0f deg "
+                "abort limit, "
                 "2^20 counts, 1 %% torque noise, %d trials (Run all) of %d run(s) each, %d seeds "
                 "per robot; the floor: the same robot with an ideal encoder and no noise, %d "
                 "trials\n\n",
                 o.docsGains ? "docs/scenario.md's gains and path"
                             : "scenario --print's gains, path and gentle first trial",
                 armature ? "learned" : "not in the model",
-                sensors.isEmpty() ? " no robot" : qPrintable(sensors), o.limitDeg, o.trials,
-                o.repetitions, o.seeds, o.floorTrials);
+                sensors.isEmpty() ? " no robot" : qPrintable(sensors),
+                o.sensorLag < 0 ? "as each robot's (1 ms on (d))"
+                                : qPrintable(QStringLiteral("%1 ms").arg(1000 * o.sensorLag)),
+                o.limitDeg, o.trials, o.repetitions, o.seeds, o.floorTrials);
     std::printf(
         "| robot | trials needed to <= 5 %% of trial 0, median / worst | trials aborted, "
         "median / worst | best trial / trial 0, median / worst | path-torque error, "

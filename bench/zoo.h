@@ -33,6 +33,9 @@ struct ZooOptions
     /// measures the spring behind the rotor (the others' measure the drive's torque)
     QString jointTorqueSensor;
     bool ownLawRotor = true; ///< ownLawError(): the feedforward has the rotor inertia
+    /// estimator.torqueSensorLag [s]; < 0: each robot's own sensor's (1 ms for (d), else 0), as
+    /// its data sheet gives it
+    double sensorLag = -1.0;
 };
 
 /// The options of learnid-bench-zoo's command line (exits with usage on an unknown one).

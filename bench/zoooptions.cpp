@@ -62,9 +62,14 @@ ZooOptions parseZooOptions(const QCoreApplication &app)
         QStringLiteral("Experiment: the own-law column's feedforward with (on, default) or "
                        "without (off) the rotor inertia."),
         QStringLiteral("on|off"), QStringLiteral("on"));
+    const QCommandLineOption lagOpt(
+        QStringLiteral("sensor-lag"),
+        QStringLiteral("estimator.torqueSensorLag [s] for every robot; default: each robot's "
+                       "own sensor lag (1 ms for (d), else 0)."),
+        QStringLiteral("s"), QStringLiteral("-1"));
     parser.addOptions({seedsOpt, robotsOpt, docsOpt, limitOpt, floorOpt, verboseOpt, coulombOpt,
                        truthOpt, newestOpt, rankOpt, stdOpt, repOpt, jointOpt, armatureOpt,
-                       sensorOpt, lawRotorOpt});
+                       sensorOpt, lawRotorOpt, lagOpt});
     parser.process(app);
     ZooOptions o;
     o.seeds = parser.value(seedsOpt).toInt();
@@ -83,6 +88,7 @@ ZooOptions parseZooOptions(const QCoreApplication &app)
     o.armature = parser.value(armatureOpt);
     o.jointTorqueSensor = parser.value(sensorOpt);
     o.ownLawRotor = parser.value(lawRotorOpt) != QStringLiteral("off");
+    o.sensorLag = parser.value(lagOpt).toDouble();
     return o;
 }
 

@@ -77,6 +77,7 @@ Scenario zooScenario(const ZooOptions &o, const QString &cadPath, const QString 
             sim.jointStiffness[j] = 5000.0 + 10000.0 * unit(rng);
         sim.torqueSensorLag = 0.001;
     }
+    s.estimator.torqueSensorLag = o.sensorLag >= 0 ? o.sensorLag : sim.torqueSensorLag;
     // (d)'s sensor measures the spring, behind the rotor: a joint torque sensor.
     s.estimator.jointTorqueSensor = o.jointTorqueSensor.isEmpty()
                                         ? robot == 'd' && s.urdf.jointTerms.armature

@@ -1402,13 +1402,13 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+58"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+59"/>
         <location filename="../core/identify/PaperLaw.cpp" line="+44"/>
         <source>trial record has only %1 samples to learn from</source>
         <translation>die Versuchsaufzeichnung hat nur %1 Abtastwerte zum Lernen</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+86"/>
         <location filename="../core/identify/PaperLaw.cpp" line="-26"/>
         <source>no completed trial to learn from</source>
         <translation>kein abgeschlossener Versuch, aus dem gelernt werden kann</translation>
@@ -3129,17 +3129,17 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+227"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+234"/>
         <source>must be %1, got %2</source>
         <translation>muss %1 sein, gefunden: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+296"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+299"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-151"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-157"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>unbekanntes Modell „%1“; bekannte Modelle: %2</translation>
     </message>
@@ -3160,7 +3160,7 @@
         <translation>einer pro Parameter von %1</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-262"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-265"/>
         <source>1 or -1</source>
         <translation>1 oder -1</translation>
     </message>
@@ -3170,7 +3170,7 @@
         <translation>muss 2 Einträge haben (x und y), gefunden: %1</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>diese Version von learnid liest „%1“ und „%2“, gefunden: %3</translation>
     </message>
@@ -3230,12 +3230,12 @@
         <translation>muss 1 oder -1 sein, gefunden: %1</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+40"/>
         <source>needs the improved law (estimator.law &quot;improved&quot;), got &quot;%1&quot;</source>
         <translation>braucht das verbesserte Gesetz (estimator.law &quot;improved&quot;), erhalten &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>needs a URDF robot with robot.jointTerms.armature true: the rotor inertia the sensor does not see is learned as the armature term</source>
         <translation>braucht einen URDF-Roboter mit robot.jointTerms.armature true: die Rotorträgheit, die der Sensor nicht sieht, wird als Rotorträgheitsterm (armature) gelernt</translation>
     </message>
@@ -8384,7 +8384,7 @@ Verhältnis %</translation>
         <translation>Anfangsparameter</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+63"/>
         <source>Safety</source>
         <translation>Sicherheit</translation>
     </message>
@@ -8404,12 +8404,17 @@ Verhältnis %</translation>
         <translation>Simulierter Roboter</translation>
     </message>
     <message>
-        <location line="-63"/>
+        <location line="-67"/>
         <source>True parameters</source>
         <translation>Wahre Parameter</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+54"/>
+        <source>Torque sensor lag</source>
+        <translation>Verzögerung des Momentsensors</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>CAD perturbation (URDF robots)</source>
         <translation>CAD-Abweichung (URDF-Roboter)</translation>
     </message>

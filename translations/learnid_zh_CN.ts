@@ -1402,13 +1402,13 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+58"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+59"/>
         <location filename="../core/identify/PaperLaw.cpp" line="+44"/>
         <source>trial record has only %1 samples to learn from</source>
         <translation>试验记录只有 %1 个可用于学习的采样</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+86"/>
         <location filename="../core/identify/PaperLaw.cpp" line="-26"/>
         <source>no completed trial to learn from</source>
         <translation>没有可供学习的已完成试验</translation>
@@ -3116,17 +3116,17 @@
 <context>
     <name>ScenarioFile</name>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="+227"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="+234"/>
         <source>must be %1, got %2</source>
         <translation>必须是%1，实际为 %2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="+296"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="+299"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioValidation.cpp" line="-151"/>
+        <location filename="../core/io/ScenarioValidation.cpp" line="-157"/>
         <source>unknown model &quot;%1&quot;; known models: %2</source>
         <translation>未知模型“%1”；已知模型：%2</translation>
     </message>
@@ -3147,7 +3147,7 @@
         <translation>%1 的每个参数一个</translation>
     </message>
     <message>
-        <location filename="../core/io/ScenarioFile.cpp" line="-262"/>
+        <location filename="../core/io/ScenarioFile.cpp" line="-265"/>
         <source>1 or -1</source>
         <translation>1 或 -1</translation>
     </message>
@@ -3157,7 +3157,7 @@
         <translation>必须有 2 个条目（x 和 y），实际为 %1</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>this version of learnid reads &quot;%1&quot; and &quot;%2&quot;, got %3</source>
         <translation>此版本的 learnid 读取“%1”和“%2”，实际为 %3</translation>
     </message>
@@ -3217,12 +3217,12 @@
         <translation>必须是 1 或 -1，实际为 %1</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+40"/>
         <source>needs the improved law (estimator.law &quot;improved&quot;), got &quot;%1&quot;</source>
         <translation>需要改进律（estimator.law &quot;improved&quot;），实际为 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>needs a URDF robot with robot.jointTerms.armature true: the rotor inertia the sensor does not see is learned as the armature term</source>
         <translation>需要 robot.jointTerms.armature 为 true 的 URDF 机器人：传感器看不到的转子惯量作为转子惯量项（armature）学习</translation>
     </message>
@@ -8356,7 +8356,7 @@ ratio %</source>
         <translation>初始参数</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+63"/>
         <source>Safety</source>
         <translation>安全</translation>
     </message>
@@ -8376,12 +8376,17 @@ ratio %</source>
         <translation>仿真机器人</translation>
     </message>
     <message>
-        <location line="-63"/>
+        <location line="-67"/>
         <source>True parameters</source>
         <translation>真实参数</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+54"/>
+        <source>Torque sensor lag</source>
+        <translation>力矩传感器滞后</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>CAD perturbation (URDF robots)</source>
         <translation>CAD 扰动（URDF 机器人）</translation>
     </message>

@@ -5,6 +5,7 @@
 #include "identify/JointRows.h"
 #include "identify/ObservableUpdate.h"
 #include "identify/RotorTorque.h"
+#include "identify/SensorLag.h"
 #include "identify/TaskThreads.h"
 #include "model/Error.h"
 #include "model/VectorState.h"
@@ -72,9 +73,18 @@ std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialData &t
     // filtered), the others stay exactly zero.
     std::vector<JointRows> a = midSampleJointRows(model, hat.q, hat.qd, hat.qdd, threads);
     const Eigen::Index rows = std::max(samples - 1, 0);
-    Eigen::MatrixXd tauf = record.tau.leftCols(rows).transpose();
-    if (settings.jointTorqueSensor) // the rotor a joint torque sensor does not see
-        tauf += rotorTorque(filter, plan, record, hat.qdd, used);
+    // The torques the sensors were given (their lag undone), then the rotors they do not see.
+    TrialRecord measured;
+    const TrialRecord *torques = &record;
+    if (settings.torqueSensorLag > 0.0) {
+        measured.samplePeriod = record.samplePeriod;
+        measured.q = record.q;
+        measured.tau = withoutSensorLag(record.tau, record.samplePeriod, settings.torqueSensorLag);
+        torques = &measured;
+    }
+    Eigen::MatrixXd tauf = torques->tau.leftCols(rows).transpose();
+    if (settings.jointTorqueSensor)
+        tauf += rotorTorque(filter, plan, *torques, hat.qdd, used);
     auto out = std::make_shared<TrialGram>();
     out->rho = settings.rho;
     GramBlock &block = out->block;

@@ -85,6 +85,7 @@ void readEstimator(JsonObjectReader r, Scenario &s)
     r.read(key("partialMaxRelativeStd"), s.estimator.partialMaxRelativeStd);
     r.read(key("accumulate"), s.estimator.accumulate);
     r.read(key("jointTorqueSensor"), s.estimator.jointTorqueSensor);
+    r.read(key("torqueSensorLag"), s.estimator.torqueSensorLag);
     r.readInteger(key("iterations"), s.iterations, 1, scenarioLimits::maxIterations);
     r.readInteger(key("repetitions"), s.repetitions, 1, scenarioLimits::maxRepetitions);
     r.rejectUnknownKeys();
@@ -247,9 +248,11 @@ QByteArray scenarioToJson(const Scenario &s)
         .insert(key("accumulate"), s.estimator.accumulate)
         .insert(key("iterations"), s.iterations)
         .insert(key("repetitions"), s.repetitions);
-    // Drive torques (the default) are the key left out.
+    // Drive torques and no lag (the defaults) are the keys left out.
     if (s.estimator.jointTorqueSensor)
         estimator.insert(key("jointTorqueSensor"), true);
+    if (s.estimator.torqueSensorLag != 0.0)
+        estimator.insert(key("torqueSensorLag"), s.estimator.torqueSensorLag);
     // No limit (the default) is the key left out: JSON has no infinity.
     if (std::isfinite(s.estimator.partialMaxRelativeStd))
         estimator.insert(key("partialMaxRelativeStd"), s.estimator.partialMaxRelativeStd);

@@ -8,6 +8,7 @@
 
 #include <QCoreApplication>
 #include <cmath>
+#include <utility>
 
 namespace learnid {
 
@@ -197,10 +198,16 @@ void validateScenario(const Scenario &s)
     checkIntegerRange(key("estimator.iterations"), s.iterations, 1, scenarioLimits::maxIterations);
     checkIntegerRange(key("estimator.repetitions"), s.repetitions, 1,
                       scenarioLimits::maxRepetitions);
-    if (s.estimator.jointTorqueSensor && s.law != QLatin1String("improved")) {
-        throwAtKey(
-            key("estimator.jointTorqueSensor"),
-            Text::tr("needs the improved law (estimator.law \"improved\"), got \"%1\"").arg(s.law));
+    checkInterval(key("estimator.torqueSensorLag"), s.estimator.torqueSensorLag, 0.0,
+                  scenarioLimits::maxTorqueSensorLag, Bounds::Closed);
+    for (const auto &[on, name] :
+         {std::pair{s.estimator.jointTorqueSensor, "estimator.jointTorqueSensor"},
+          std::pair{s.estimator.torqueSensorLag > 0.0, "estimator.torqueSensorLag"}}) {
+        if (on && s.law != QLatin1String("improved")) {
+            throwAtKey(key(name), Text::tr("needs the improved law (estimator.law \"improved\"), "
+                                           "got \"%1\"")
+                                      .arg(s.law));
+        }
     }
     if (s.estimator.jointTorqueSensor && !(urdf && s.urdf.jointTerms.armature)) {
         throwAtKey(key("estimator.jointTorqueSensor"),

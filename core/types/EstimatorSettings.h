@@ -21,6 +21,9 @@ struct EstimatorSettings
     /// estimator.jointTorqueSensor): the improved law adds the rotor's torque, which such a
     /// sensor does not see, from the drive's command (identify/RotorTorque.h).
     bool jointTorqueSensor = false;
+    /// The torque sensors' first-order lag [s] (docs/scenario.md, estimator.torqueSensorLag):
+    /// the improved law undoes it on the recorded torques (identify/SensorLag.h); 0: none.
+    double torqueSensorLag = 0.0;
 };
 
 } // namespace learnid

@@ -40,7 +40,7 @@ private slots:
     void badValue_isRejectedWithKeyPath_data();
     void badValue_isRejectedWithKeyPath();
     void nanInCode_isRejectedWithKeyPath();
-    void jointTorqueSensor_isReadWrittenAndChecked();
+    void estimatorSensorKeys_areReadWrittenAndChecked();
 };
 
 void TestScenarioJoints::allKeys_readAndWriteBackBitExactly()
@@ -185,14 +185,15 @@ void TestScenarioJoints::nanInCode_isRejectedWithKeyPath()
              QStringLiteral("simulation.jointStiffness[0]: must be a positive number, got nan"));
 }
 
-void TestScenarioJoints::jointTorqueSensor_isReadWrittenAndChecked()
+void TestScenarioJoints::estimatorSensorKeys_areReadWrittenAndChecked()
 {
     // Off by default and then not written; on, it is written and read back.
-    QVERIFY(!QJsonDocument::fromJson(scenarioToJson(Scenario{}))
-                 .object()
-                 .value(QStringLiteral("estimator"))
-                 .toObject()
-                 .contains(QStringLiteral("jointTorqueSensor")));
+    const QJsonObject defaults = QJsonDocument::fromJson(scenarioToJson(Scenario{}))
+                                     .object()
+                                     .value(QStringLiteral("estimator"))
+                                     .toObject();
+    QVERIFY(!defaults.contains(QStringLiteral("jointTorqueSensor")));
+    QVERIFY(!defaults.contains(QStringLiteral("torqueSensorLag")));
     Scenario s;
     s.model = QStringLiteral("double-pendulum");
     s.urdf.jointTerms.armature = true;
@@ -202,7 +203,10 @@ void TestScenarioJoints::jointTorqueSensor_isReadWrittenAndChecked()
     s.path.kind = PathKind::Waypoints;
     s.path.waypoints = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1.2, -0.8)};
     s.estimator.jointTorqueSensor = true;
-    QVERIFY(scenarioFromJson(scenarioToJson(s), source).estimator.jointTorqueSensor);
+    s.estimator.torqueSensorLag = 1.0 / 3000.0;
+    const Scenario back = scenarioFromJson(scenarioToJson(s), source);
+    QVERIFY(back.estimator.jointTorqueSensor);
+    QVERIFY(bitEqual(back.estimator.torqueSensorLag, s.estimator.torqueSensorLag));
 
     const auto errorWith = [&](const char *estimator, bool armature) {
         QJsonObject root = QJsonDocument::fromJson(scenarioToJson(s)).object();
@@ -221,6 +225,15 @@ void TestScenarioJoints::jointTorqueSensor_isReadWrittenAndChecked()
     QCOMPARE(errorWith("{\"jointTorqueSensor\": \"yes\"}", true),
              QStringLiteral("scenario.json: estimator.jointTorqueSensor: must be true or false, "
                             "got \"yes\""));
+    QCOMPARE(errorWith("{\"torqueSensorLag\": -0.001}", true),
+             QStringLiteral("scenario.json: estimator.torqueSensorLag: must be from 0 to 1, got "
+                            "-0.001"));
+    QCOMPARE(errorWith("{\"torqueSensorLag\": \"1 ms\"}", true),
+             QStringLiteral("scenario.json: estimator.torqueSensorLag: must be a number, got "
+                            "\"1 ms\""));
+    QCOMPARE(errorWith("{\"law\": \"paper\", \"jointTorqueSensor\": false}", true),
+             QStringLiteral("scenario.json: estimator.torqueSensorLag: needs the improved law "
+                            "(estimator.law \"improved\"), got \"paper\""));
     QCOMPARE(errorWith("{\"law\": \"paper\"}", true),
              QStringLiteral("scenario.json: estimator.jointTorqueSensor: needs the improved law "
                             "(estimator.law \"improved\"), got \"paper\""));

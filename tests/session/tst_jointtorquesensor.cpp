@@ -1,11 +1,13 @@
 // estimator.jointTorqueSensor (identify/RotorTorque.h): the drive's command reconstructed from a
 // record is the torque the simulated drives applied; behind a joint torque sensor (elastic
 // joints: the sensor measures the spring) the rotor's inertia is fitted from the command minus
-// the measurement, and a session learns it as the armature term, which it cannot without.
+// the measurement, and a session learns it as the armature term, which it cannot without; a
+// sensor's lag undone gives the torque it was given.
 #include "../support/RotorScenario.h"
 #include "identify/FilteringEstimator.h"
 #include "identify/LearningLaw.h"
 #include "identify/RotorTorque.h"
+#include "identify/SensorLag.h"
 #include "model/ModelFactory.h"
 #include "session/CommissioningSession.h"
 #include "session/ScenarioRobot.h"
@@ -25,6 +27,7 @@ private slots:
     void driveCommand_isWhatTheSimulatedDrivesApplied();
     void rotorTorque_fitsTheRotorBehindTheSensor();
     void session_learnsTheRotorOnlyWithTheSetting();
+    void withoutSensorLag_isTheTorqueTheSensorWasGiven();
 };
 
 void TestJointTorqueSensor::driveCommand_isWhatTheSimulatedDrivesApplied()
@@ -104,6 +107,26 @@ void TestJointTorqueSensor::session_learnsTheRotorOnlyWithTheSetting()
           100.0 * errors[0], 100.0 * errors[1]);
     QVERIFY2(errors[1] < 0.01, "the rotor's torque is not learned");
     QVERIFY2(errors[0] > 5.0 * errors[1], "without the setting the rotor is learned anyway");
+}
+
+void TestJointTorqueSensor::withoutSensorLag_isTheTorqueTheSensorWasGiven()
+{
+    // A rigid robot's sensor is given the drives' command; with a 5 ms lag it reads it late.
+    Scenario s = rotorDoublePendulum();
+    s.simulation.torqueSensorLag = 0.005;
+    const auto model = makeRobotModel(s.model, s.urdf);
+    s = withRobotDefaults(s, *model);
+    CommissioningSession session(s, model, makeSimulatedRobot(s, model));
+    const TrialResult &result = session.runTrial();
+    QVERIFY2(result.record.completed(), qPrintable(result.message));
+    const TrialRecord &record = result.record;
+    const Eigen::MatrixXd command = driveCommand(result.plan(), record);
+    const double scale = command.cwiseAbs().maxCoeff();
+    QVERIFY((record.tau - command).cwiseAbs().maxCoeff() > 0.01 * scale);
+    const Eigen::MatrixXd given =
+        withoutSensorLag(record.tau, record.samplePeriod, s.simulation.torqueSensorLag);
+    QVERIFY((given - command).cwiseAbs().maxCoeff() <= 1e-9 * scale);
+    QCOMPARE(withoutSensorLag(record.tau, record.samplePeriod, 0.0), record.tau);
 }
 
 QTEST_GUILESS_MAIN(TestJointTorqueSensor)

@@ -79,13 +79,15 @@ private slots:
         ScenarioForm form;
         for (const char *key :
              {"path.restBefore", "path.restAfter", "estimator.rankTolerance",
-              "estimator.repetitions", "safety.maxTrackingErrorDeg", "safety.stabilityMargin",
-              "simulation.trueParameters", "simulation.encoderCounts", "simulation.torqueNoise",
-              "simulation.seed", "simulation.substeps"})
+              "estimator.repetitions", "estimator.torqueSensorLag", "safety.maxTrackingErrorDeg",
+              "safety.stabilityMargin", "simulation.trueParameters", "simulation.encoderCounts",
+              "simulation.torqueNoise", "simulation.seed", "simulation.substeps"})
             QVERIFY2(form.findChild<QLineEdit *>(QLatin1String(key)), key);
         type(form, QStringLiteral("simulation.encoderCounts"), QStringLiteral("65536"));
         type(form, QStringLiteral("safety.maxTrackingErrorDeg"), QStringLiteral("0.25"));
+        type(form, QStringLiteral("estimator.torqueSensorLag"), QStringLiteral("0.001"));
         QVERIFY(form.isValid());
+        QCOMPARE(form.scenario()->estimator.torqueSensorLag, 0.001);
         QCOMPARE(form.scenario()->simulation.encoderCounts, qint64(65536));
         QCOMPARE(form.scenario()->maxTrackingErrorDeg, 0.25);
     }
