@@ -27,6 +27,8 @@ namespace {
 struct TrialGram final : LawCache
 {
     double rho = 0.0;
+    bool jointTorqueSensor = false; ///< the settings the rows were formed with
+    double torqueSensorLag = 0.0;
     GramBlock block;
 };
 
@@ -87,6 +89,8 @@ std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialData &t
         tauf += rotorTorque(filter, plan, *torques, hat.qdd, used);
     auto out = std::make_shared<TrialGram>();
     out->rho = settings.rho;
+    out->jointTorqueSensor = settings.jointTorqueSensor;
+    out->torqueSensorLag = settings.torqueSensorLag;
     GramBlock &block = out->block;
     block = GramBlock(n, model.parameterCount(), used, phiPrev);
     // Per joint: both sides filtered, then the normal equations of the OLS fit of step 4.
@@ -124,6 +128,8 @@ std::shared_ptr<const TrialGram> trialGramOf(const RobotModel &model, const Tria
     if (trial.cache) {
         if (auto cached = std::dynamic_pointer_cast<const TrialGram>(*trial.cache);
             cached && cached->rho == settings.rho &&
+            cached->jointTorqueSensor == settings.jointTorqueSensor &&
+            cached->torqueSensorLag == settings.torqueSensorLag &&
             cached->block.samples() == std::max(trial.usedSamples() - 1, 0))
             return cached;
     }
