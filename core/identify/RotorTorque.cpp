@@ -24,8 +24,9 @@ Eigen::MatrixXd driveCommand(const TrialPlan &plan, const TrialRecord &record)
 }
 
 Eigen::MatrixXd rotorTorque(const FilteringEstimator &filter, const TrialPlan &plan,
-                            const TrialRecord &record, const Eigen::MatrixXd &qddHat,
-                            Eigen::Index used, Eigen::VectorXd *inertia)
+                            const TrialRecord &record, const Eigen::MatrixXd &measured,
+                            const Eigen::MatrixXd &qddHat, Eigen::Index used,
+                            Eigen::VectorXd *inertia)
 {
     const Eigen::Index n = record.q.rows();
     const Eigen::Index rows = std::max<Eigen::Index>(record.samples() - 1, 0);
@@ -37,7 +38,7 @@ Eigen::MatrixXd rotorTorque(const FilteringEstimator &filter, const TrialPlan &p
     for (Eigen::Index k = 0; k < rows; ++k)
         acceleration.row(k) = 0.5 * (qddHat.col(k) + qddHat.col(k + 1)).transpose();
     Eigen::MatrixXd difference =
-        (command.leftCols(rows) - record.tau.leftCols(rows)).transpose().eval();
+        (command.leftCols(rows) - measured.leftCols(rows)).transpose().eval();
     Eigen::MatrixXd filtered = acceleration;
     filter.zeroPhaseLowPassColumnsInPlace(difference);
     filter.zeroPhaseLowPassColumnsInPlace(filtered);

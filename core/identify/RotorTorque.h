@@ -20,11 +20,13 @@ Eigen::MatrixXd driveCommand(const TrialPlan &plan, const TrialRecord &record);
 /// of the drive's command. So the command minus the measured torque is the rotor's torque: per
 /// joint, its least-squares fit against the joint's acceleration estimate qddHat (n x samples,
 /// the law's), both zero-phase filtered as the law filters its rows, over the first `used`
-/// mid-sample rows, gives Ia_j. Returns Ia_j qdd_j at the law's mid-sample rows (samples - 1
-/// rows x n): added to the measured torque, the model's armature term learns the rotor.
-/// `inertia`, when given, gets the Ia_j [kg m^2] (n).
+/// mid-sample rows, gives Ia_j. `measured` is the torque the sensors measured (n x samples:
+/// record.tau, or it with their lag undone). Returns Ia_j qdd_j at the law's mid-sample rows
+/// (samples - 1 rows x n): added to the measured torque, the model's armature term learns the
+/// rotor. `inertia`, when given, gets the Ia_j [kg m^2] (n).
 Eigen::MatrixXd rotorTorque(const FilteringEstimator &filter, const TrialPlan &plan,
-                            const TrialRecord &record, const Eigen::MatrixXd &qddHat,
-                            Eigen::Index used, Eigen::VectorXd *inertia = nullptr);
+                            const TrialRecord &record, const Eigen::MatrixXd &measured,
+                            const Eigen::MatrixXd &qddHat, Eigen::Index used,
+                            Eigen::VectorXd *inertia = nullptr);
 
 } // namespace learnid

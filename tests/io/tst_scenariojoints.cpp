@@ -1,6 +1,7 @@
 // The scenario's realistic-joint keys under simulation (docs/scenario.md): read, written back
 // bit-exactly, and every bad value refused with its key path; estimator.jointTorqueSensor, the
 // identification's side of such joints, the same.
+#include "../support/RotorScenario.h"
 #include "IoTestSupport.h"
 #include "io/ScenarioFile.h"
 
@@ -194,14 +195,7 @@ void TestScenarioJoints::estimatorSensorKeys_areReadWrittenAndChecked()
                                      .toObject();
     QVERIFY(!defaults.contains(QStringLiteral("jointTorqueSensor")));
     QVERIFY(!defaults.contains(QStringLiteral("torqueSensorLag")));
-    Scenario s;
-    s.model = QStringLiteral("double-pendulum");
-    s.urdf.jointTerms.armature = true;
-    s.torqueLimits.resize(0);
-    s.initialParameters.resize(0);
-    s.simulation.trueParameters.resize(0);
-    s.path.kind = PathKind::Waypoints;
-    s.path.waypoints = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1.2, -0.8)};
+    Scenario s = test::rotorDoublePendulum();
     s.estimator.jointTorqueSensor = true;
     s.estimator.torqueSensorLag = 1.0 / 3000.0;
     const Scenario back = scenarioFromJson(scenarioToJson(s), source);

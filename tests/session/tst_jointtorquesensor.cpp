@@ -66,8 +66,9 @@ void TestJointTorqueSensor::rotorTorque_fitsTheRotorBehindTheSensor()
         const JointStateEstimate hat =
             estimateJointStates(filter, result.plan(), result.record, true);
         Eigen::VectorXd inertia;
-        const Eigen::MatrixXd torque = rotorTorque(filter, result.plan(), result.record, hat.qdd,
-                                                   result.record.samples() - 1, &inertia);
+        const Eigen::MatrixXd torque =
+            rotorTorque(filter, result.plan(), result.record, result.record.tau, hat.qdd,
+                        result.record.samples() - 1, &inertia);
         QCOMPARE(torque.rows(), Eigen::Index(result.record.samples() - 1));
         qInfo("rotor x%g: fitted %.6g, %.6g kg m^2; simulated %.6g, %.6g", factor, inertia[0],
               inertia[1], rotor[0], rotor[1]);

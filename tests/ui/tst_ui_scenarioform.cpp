@@ -1,3 +1,4 @@
+#include "../support/RotorScenario.h"
 #include "ui/ScenarioForm.h"
 
 #include <QComboBox>
@@ -127,14 +128,7 @@ private slots:
                                     "robot.jointTerms.armature true")),
                  qPrintable(form.firstError()));
         // A URDF arm learning rotor inertia: the choice is the scenario's key, both ways.
-        Scenario s;
-        s.model = QStringLiteral("double-pendulum");
-        s.urdf.jointTerms.armature = true;
-        s.torqueLimits.resize(0);
-        s.initialParameters.resize(0);
-        s.simulation.trueParameters.resize(0);
-        s.path.kind = PathKind::Waypoints;
-        s.path.waypoints = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1.2, -0.8)};
+        Scenario s = test::rotorDoublePendulum();
         s.estimator.jointTorqueSensor = true;
         form.setScenario(s);
         QCOMPARE(sensor->currentIndex(), 1);
