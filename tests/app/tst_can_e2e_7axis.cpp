@@ -232,15 +232,27 @@ void TestCanE2e7Axis::sevenAxisSession_learnsAppliesWithReadBackAndStores()
     const double fall = test::canE2ePlugin() == QLatin1String("socketcan") ? 0.75 : 0.5;
     QVERIFY2(last < fall * first, qPrintable(QString::number(last) + " " + QString::number(first)));
 
-    // Apply: every node holds the final estimate (REAL32, read back before the store), stored.
+    // Apply: every node holds the estimate the session proposes (REAL32, read back before the
+    // store), stored. That is the newest unless a later trial tracked worse than an earlier
+    // one (TrialSeries.h); in the VM the third trial's error varies enough for that to happen.
+    const int proposed = report.value(QStringLiteral("proposedEstimate")).toInt(-1);
+    QVERIFY2(proposed >= 1 && proposed <= trials.size(), qPrintable(QString::number(proposed)));
+    QList<double> applied;
+    for (const QJsonValue v : proposed == trials.size()
+                                  ? report[QStringLiteral("final")][QStringLiteral("phi")].toArray()
+                                  : trials.at(proposed)[QStringLiteral("phi")].toArray())
+        applied << v.toDouble();
+    QVERIFY2(proposed == trials.size() ||
+                 can.err.contains(QStringLiteral("estimate %1 tracked best").arg(proposed)),
+             qPrintable(can.err));
     const QJsonObject nodes = readJson(state).value(QStringLiteral("nodes")).toObject();
     QCOMPARE(nodes.size(), kJoints);
     for (const QString &node : kNodes.split(QLatin1Char(','))) {
         const QJsonArray stored =
             nodes.value(node).toObject().value(QStringLiteral("storedParameters")).toArray();
-        QVERIFY2(stored.size() == m_canEstimate.size(), qPrintable(node));
+        QVERIFY2(stored.size() == applied.size(), qPrintable(node));
         for (int i = 0; i < stored.size(); ++i)
-            QCOMPARE(float(stored[i].toDouble()), float(m_canEstimate[i]));
+            QCOMPARE(float(stored[i].toDouble()), float(applied[i]));
     }
     for (int k = 0; k < 3; ++k)
         QVERIFY(QFileInfo::exists(
