@@ -1402,13 +1402,13 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+59"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+61"/>
         <location filename="../core/identify/PaperLaw.cpp" line="+44"/>
         <source>trial record has only %1 samples to learn from</source>
         <translation>die Versuchsaufzeichnung hat nur %1 Abtastwerte zum Lernen</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+87"/>
         <location filename="../core/identify/PaperLaw.cpp" line="-26"/>
         <source>no completed trial to learn from</source>
         <translation>kein abgeschlossener Versuch, aus dem gelernt werden kann</translation>
@@ -1709,12 +1709,12 @@
 <context>
     <name>LogSignals</name>
     <message>
-        <location filename="../core/identify/LogSignals.cpp" line="+55"/>
-        <source>the log filter needs positive bandwidths and a stride of 1 or more</source>
-        <translation>der Log-Filter braucht positive Bandbreiten und eine Schrittweite von 1 oder mehr</translation>
+        <location filename="../core/identify/LogSignals.cpp" line="+57"/>
+        <source>the log filter needs positive bandwidths, a stride of 1 or more and a torque sensor lag of 0 s or more</source>
+        <translation>der Log-Filter braucht positive Bandbreiten, eine Schrittweite von 1 oder mehr und eine Verzögerung der Drehmomentsensoren von 0 s oder mehr</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: the log has no measured velocities (dq columns) to use</source>
         <translation>%1: das Log hat keine gemessenen Geschwindigkeiten (dq-Spalten), die verwendet werden könnten</translation>
     </message>
@@ -4345,7 +4345,7 @@
         <translation>Ordner, ab dem relative Ausgabepfade gelten; Standard: das aktuelle Verzeichnis.</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+214"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+229"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -4426,9 +4426,9 @@
   learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
                        [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
                        [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
+                       [--max-gap MS] [--torque-sensor-lag MS] [--base-link L]
+                       [--tip-link L] [--export FILE] [--urdf-out FILE] [--report FILE]
+                       [--plots DIR] [--scenario FILE] [--workspace DIR] [--quiet]
       Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
       and compare the result with its URDF on the --validate logs.
   learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
@@ -4470,9 +4470,9 @@
   learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
                        [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
                        [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
+                       [--max-gap MS] [--torque-sensor-lag MS] [--base-link L]
+                       [--tip-link L] [--export FILE] [--urdf-out FILE] [--report FILE]
+                       [--plots DIR] [--scenario FILE] [--workspace DIR] [--quiet]
       Identifiziert Trägheit und Reibung eines realen Roboters aus seinen
       aufgezeichneten Logs (CSV) und vergleicht das Ergebnis an den --validate-Logs
       mit seinem URDF.
@@ -4763,7 +4763,7 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>learnid-cli: %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-169"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-184"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms: unbekannter Term &apos;%1&apos;; die Terme sind armature, viscous, coulomb und offset, oder none</translation>
     </message>
@@ -4788,7 +4788,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>--max-gap: muss eine positive Zahl von ms sein, gefunden: &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+9"/>
+        <source>--torque-sensor-lag: must be a number of ms from 0 to 1000, got &apos;%1&apos;</source>
+        <translation>--torque-sensor-lag: muss eine Zahl von 0 bis 1000 ms sein, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>--urdf-out: %1 is where --export writes</source>
         <translation>--urdf-out: nach %1 schreibt schon --export</translation>
     </message>
@@ -4838,7 +4843,12 @@ an CiA-402-Antrieben am CAN-Bus (docs/can-protocol.md).</translation>
         <translation>Längster erlaubter Zeitschritt in einem Log [ms]; Standard: die halbe Zeitkonstante 1/rho des Filters der Anpassung (10 ms bei rho 50), mindestens 2,5 Abtastperioden.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
+        <source>First-order lag of the torque sensors [ms], undone on the log&apos;s grid before the fit; default 0 (as measured).</source>
+        <translation>Verzögerung erster Ordnung der Drehmomentsensoren [ms], vor dem Fit auf dem Raster des Logs rückgängig gemacht; Standard 0 (wie gemessen).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
         <translation>Basisglied der Kette; Standard: die Wurzel des URDF.</translation>
     </message>

@@ -1402,13 +1402,13 @@
 <context>
     <name>LearningLaw</name>
     <message>
-        <location filename="../core/identify/ImprovedLaw.cpp" line="+59"/>
+        <location filename="../core/identify/ImprovedLaw.cpp" line="+61"/>
         <location filename="../core/identify/PaperLaw.cpp" line="+44"/>
         <source>trial record has only %1 samples to learn from</source>
         <translation>试验记录只有 %1 个可用于学习的采样</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+87"/>
         <location filename="../core/identify/PaperLaw.cpp" line="-26"/>
         <source>no completed trial to learn from</source>
         <translation>没有可供学习的已完成试验</translation>
@@ -1700,12 +1700,12 @@
 <context>
     <name>LogSignals</name>
     <message>
-        <location filename="../core/identify/LogSignals.cpp" line="+55"/>
-        <source>the log filter needs positive bandwidths and a stride of 1 or more</source>
-        <translation>日志滤波器需要正的带宽和不小于 1 的步长</translation>
+        <location filename="../core/identify/LogSignals.cpp" line="+57"/>
+        <source>the log filter needs positive bandwidths, a stride of 1 or more and a torque sensor lag of 0 s or more</source>
+        <translation>日志滤波器需要正的带宽、不小于 1 的步长和不小于 0 s 的力矩传感器滞后</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: the log has no measured velocities (dq columns) to use</source>
         <translation>%1：日志中没有可用的测量速度（dq 列）</translation>
     </message>
@@ -4330,7 +4330,7 @@
         <translation>相对输出路径的基准文件夹；默认：当前目录。</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="+214"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="+229"/>
         <location filename="../app/cli/LoopOptions.cpp" line="+14"/>
         <location filename="../app/cli/RunCommandLine.cpp" line="+5"/>
         <source>No progress lines on stderr.</source>
@@ -4411,9 +4411,9 @@
   learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
                        [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
                        [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
+                       [--max-gap MS] [--torque-sensor-lag MS] [--base-link L]
+                       [--tip-link L] [--export FILE] [--urdf-out FILE] [--report FILE]
+                       [--plots DIR] [--scenario FILE] [--workspace DIR] [--quiet]
       Identify a real robot&apos;s inertia and friction from its recorded logs (CSV)
       and compare the result with its URDF on the --validate logs.
   learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
@@ -4454,9 +4454,9 @@
   learnid-cli identify --robot ROBOT --log FILE [--log FILE2 ...]
                        [--validate FILE ...] [--columns SPEC] [--joint-terms LIST]
                        [--rho R] [--prior-share S] [--velocity auto|measured|q]
-                       [--max-gap MS] [--base-link L] [--tip-link L] [--export FILE]
-                       [--urdf-out FILE] [--report FILE] [--plots DIR] [--scenario FILE]
-                       [--workspace DIR] [--quiet]
+                       [--max-gap MS] [--torque-sensor-lag MS] [--base-link L]
+                       [--tip-link L] [--export FILE] [--urdf-out FILE] [--report FILE]
+                       [--plots DIR] [--scenario FILE] [--workspace DIR] [--quiet]
       根据真实机器人记录的日志（CSV）辨识其惯量和摩擦，
       并在 --validate 日志上将结果与其 URDF 进行比较。
   learnid-cli plan --out DIR [--scenario FILE] [--estimate FILE] [--history DIR]
@@ -4746,7 +4746,7 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>learnid-cli：已写入 %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/IdentifyOptions.cpp" line="-169"/>
+        <location filename="../app/cli/IdentifyOptions.cpp" line="-184"/>
         <source>--joint-terms: unknown term &apos;%1&apos;; the terms are armature, viscous, coulomb and offset, or none</source>
         <translation>--joint-terms：未知项 &apos;%1&apos;；可用的项为 armature、viscous、coulomb 和 offset，或 none</translation>
     </message>
@@ -4771,7 +4771,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>--max-gap：必须是正的毫秒数，实际为 &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+9"/>
+        <source>--torque-sensor-lag: must be a number of ms from 0 to 1000, got &apos;%1&apos;</source>
+        <translation>--torque-sensor-lag：必须是 0 到 1000 之间的毫秒数，实际为 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>--urdf-out: %1 is where --export writes</source>
         <translation>--urdf-out：%1 已是 --export 的写入位置</translation>
     </message>
@@ -4821,7 +4826,12 @@ on CiA 402 drives on a CAN bus (docs/can-protocol.md).</source>
         <translation>日志中允许的最长时间步长 [ms]；默认为拟合滤波器时间常数 1/rho 的一半（rho 为 50 时为 10 ms），至少 2.5 个采样周期。</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
+        <source>First-order lag of the torque sensors [ms], undone on the log&apos;s grid before the fit; default 0 (as measured).</source>
+        <translation>力矩传感器的一阶滞后 [ms]，在拟合前于日志的时间网格上消除；默认 0（按测量值）。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>The chain&apos;s base link; default: the URDF&apos;s root.</source>
         <translation>运动链的基座连杆；默认：URDF 的根连杆。</translation>
     </message>

@@ -104,6 +104,16 @@ QString readValues(const QCommandLineParser &parser, IdentifyOptions *o)
                 .arg(value("max-gap"));
         o->resample.maxGap = *ms / 1000.0;
     }
+    if (isSet("torque-sensor-lag")) {
+        // 0 included: the torques as measured (numberIn's interval is open).
+        const auto ms = numberIn(value("torque-sensor-lag"), -1.0, 1000.0 + 1e-9);
+        if (!ms || *ms < 0.0)
+            return QCoreApplication::translate("learnid-cli",
+                                               "--torque-sensor-lag: must be a number of ms from "
+                                               "0 to 1000, got '%1'")
+                .arg(value("torque-sensor-lag"));
+        o->filter.torqueSensorLag = *ms / 1000.0;
+    }
     const QString ws = isSet("workspace") ? value("workspace") : QDir::currentPath();
     if (isSet("export"))
         o->exportPath = resolveOutputPath(ws, value("export"), QStringLiteral("--export"));
@@ -175,6 +185,11 @@ void parseIdentifyCommandLine(const QStringList &args, CommandLine *cl)
                               "constant 1/rho of the fit's filter (10 ms at rho 50), at least 2.5 "
                               "sample periods."),
             "MS"),
+        cliOption("torque-sensor-lag",
+                  QT_TRANSLATE_NOOP("learnid-cli",
+                                    "First-order lag of the torque sensors [ms], undone on the "
+                                    "log's grid before the fit; default 0 (as measured)."),
+                  "MS"),
         cliOption(
             "base-link",
             QT_TRANSLATE_NOOP("learnid-cli", "The chain's base link; default: the URDF's root."),

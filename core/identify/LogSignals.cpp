@@ -1,6 +1,7 @@
 #include "identify/LogSignals.h"
 
 #include "identify/FilteringEstimator.h"
+#include "identify/SensorLag.h"
 #include "model/Error.h"
 
 #include <QCoreApplication>
@@ -51,8 +52,10 @@ Eigen::MatrixXd FilteredLog::rows(Eigen::MatrixXd series) const
 FilteredLog filterLog(const UniformLog &log, const LogFilterSettings &settings)
 {
     if (!(settings.rho > 0.0) || !std::isfinite(settings.rho) || !(settings.derivativeRho > 0.0) ||
-        !std::isfinite(settings.derivativeRho) || settings.stride < 1)
-        throw Error(Text::tr("the log filter needs positive bandwidths and a stride of 1 or more"));
+        !std::isfinite(settings.derivativeRho) || settings.stride < 1 ||
+        !(settings.torqueSensorLag >= 0.0) || !std::isfinite(settings.torqueSensorLag))
+        throw Error(Text::tr("the log filter needs positive bandwidths, a stride of 1 or more "
+                             "and a torque sensor lag of 0 s or more"));
     const bool hasVelocity = log.dq.cols() == log.q.cols() && log.dq.rows() == log.q.rows();
     if (settings.velocity == LogFilterSettings::Velocity::Measured && !hasVelocity) {
         throw Error(
@@ -79,7 +82,7 @@ FilteredLog filterLog(const UniformLog &log, const LogFilterSettings &settings)
     out.rho = settings.rho;
     out.cut = cut;
     out.stride = settings.stride;
-    out.tau = log.tau;
+    out.tau = withoutSensorLag(log.tau, log.period, settings.torqueSensorLag);
     out.q.resize(n, total);
     out.qd.resize(n, total);
     out.qdd.resize(n, total);

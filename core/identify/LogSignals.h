@@ -28,6 +28,9 @@ struct LogFilterSettings
     /// Keep every stride-th sample after filtering: F removes what a coarser grid would alias
     /// (|F|^2 < 1e-4 above 6 rho), so stride 1 to 4 at 200 Hz changes the fit by noise only.
     int stride = 1;
+    /// [s] The torque sensors' first-order lag, undone on the log's grid before the fit
+    /// (SensorLag.h; --torque-sensor-lag). 0: the torques are taken as measured.
+    double torqueSensorLag = 0.0;
 };
 
 /// A log ready for the fit: the motion estimated from q over the whole log, the torque as
@@ -38,7 +41,7 @@ struct FilteredLog
     double period = 0.0;        ///< [s] of the log's grid
     double t0 = 0.0;            ///< [s] time of sample 0
     Eigen::MatrixXd q, qd, qdd; ///< n x N, zero-phase estimates (derivativeRho)
-    Eigen::MatrixXd tau;        ///< n x N, as measured
+    Eigen::MatrixXd tau;        ///< n x N, as measured (the sensors' lag undone)
     double rho = 50.0;          ///< the filter of rows()
     Eigen::Index cut = 0;       ///< samples dropped at each end after filtering (settling)
     int stride = 1;

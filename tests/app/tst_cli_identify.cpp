@@ -316,6 +316,10 @@ void TestCliIdentify::badInput_exitsWithMessageAndWritesNothing_data()
     QTest::newRow("unknown joint term")
         << good << QStringList{QStringLiteral("--joint-terms"), QStringLiteral("viscous,stiction")}
         << 2 << QStringList{QStringLiteral("--joint-terms: unknown term 'stiction'")};
+    QTest::newRow("negative --torque-sensor-lag")
+        << good << QStringList{QStringLiteral("--torque-sensor-lag"), QStringLiteral("-1")} << 2
+        << QStringList{QStringLiteral("--torque-sensor-lag: must be a number of ms from 0 to "
+                                      "1000, got '-1'")};
     QTest::newRow("no --log") << good << QStringList{QStringLiteral("--no-log")} << 1
                               << QStringList{QStringLiteral("needs at least one --log FILE"),
                                              QStringLiteral("Usage:")};
@@ -364,9 +368,10 @@ void TestCliIdentify::help_listsTheCommandAndItsOptions()
     QVERIFY(usage.out.contains(QStringLiteral("learnid-cli identify --robot ROBOT --log FILE")));
     const test::ToolRun help = cli({QStringLiteral("identify"), QStringLiteral("--help")}, {});
     QCOMPARE(help.exitCode, 0);
-    for (const char *option : {"--robot", "--log", "--validate", "--columns", "--joint-terms",
-                               "--rho", "--prior-share", "--velocity", "--max-gap", "--export",
-                               "--urdf-out", "--scenario", "--workspace", "--quiet"})
+    for (const char *option :
+         {"--robot", "--log", "--validate", "--columns", "--joint-terms", "--rho", "--prior-share",
+          "--velocity", "--max-gap", "--torque-sensor-lag", "--export", "--urdf-out", "--scenario",
+          "--workspace", "--quiet"})
         QVERIFY2(help.out.contains(QLatin1String(option)), option);
 }
 

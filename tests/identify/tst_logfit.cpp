@@ -80,6 +80,7 @@ class TestLogFit : public QObject
 private slots:
     void fit_predictsAnUnseenMotion_withRealBodies();
     void stillJoint_keepsItsFrictionAtTheCadValues();
+    void laggedSensors_fitLikeUnlaggedOnceTheLagIsUndone();
     void logOfOtherJointCount_isRefused();
 };
 
@@ -133,6 +134,46 @@ void TestLogFit::stillJoint_keepsItsFrictionAtTheCadValues()
         reported =
             reported || names[b].name.contains(model.standardParameters()[int(viscous6)].name);
     QVERIFY2(reported, "joint 6's viscous friction is not reported undetermined");
+}
+
+void TestLogFit::laggedSensors_fitLikeUnlaggedOnceTheLagIsUndone()
+{
+    // Torque sensors with a 20 ms first-order lag, sampled y_k = y_k-1 + a (x_k - y_k-1), settled
+    // at the start. Undone (LogFilterSettings::torqueSensorLag, --torque-sensor-lag), the fit is
+    // the one the sensors' input gives, to rounding; taken as measured, the lag biases it.
+    const ChainModel model = puma();
+    const Eigen::VectorXd truth = perturbedStandard(model, 0.3, 7);
+    const double lag = 0.02;
+    const double a = 1.0 - std::exp(-period / lag);
+    const auto lagged = [a](UniformLog log) {
+        for (Eigen::Index k = 1; k < log.tau.cols(); ++k)
+            log.tau.col(k) = log.tau.col(k - 1) + a * (log.tau.col(k) - log.tau.col(k - 1));
+        return log;
+    };
+    const auto fit = [&](bool delay, double undo) {
+        LogFilterSettings filter;
+        filter.torqueSensorLag = undo;
+        std::vector<FilteredLog> logs;
+        for (const unsigned seed : {1u, 2u}) {
+            const UniformLog log = trueLog(model, truth, seed, 30.0);
+            logs.push_back(filterLog(delay ? lagged(log) : log, filter));
+        }
+        return fitLogs(model, logs, LogFitSettings{}).standard;
+    };
+    const FilteredLog validation = filterLog(trueLog(model, truth, 3, 20.0), LogFilterSettings{});
+    const double unlagged = torqueFigures(model, fit(false, 0.0), validation).overall;
+    const double undone = torqueFigures(model, fit(true, lag), validation).overall;
+    const double asMeasured = torqueFigures(model, fit(true, 0.0), validation).overall;
+    qInfo("validation torque error: unlagged %.4g, lag undone %.4g, lag as measured %.4g", unlagged,
+          undone, asMeasured);
+    QVERIFY2(std::abs(undone - unlagged) <= 1e-6 + 1e-3 * unlagged,
+             qPrintable(QStringLiteral("%1 against %2").arg(undone).arg(unlagged)));
+    QVERIFY2(asMeasured > 3.0 * unlagged,
+             qPrintable(QStringLiteral("%1 against %2").arg(asMeasured).arg(unlagged)));
+
+    LogFilterSettings negative;
+    negative.torqueSensorLag = -0.001;
+    QVERIFY_THROWS_EXCEPTION(Error, filterLog(trueLog(model, truth, 1, 5.0), negative));
 }
 
 void TestLogFit::logOfOtherJointCount_isRefused()
