@@ -105,14 +105,14 @@ QString readValues(const QCommandLineParser &parser, IdentifyOptions *o)
         o->resample.maxGap = *ms / 1000.0;
     }
     if (isSet("torque-sensor-lag")) {
-        // 0 included: the torques as measured (numberIn's interval is open).
-        const auto ms = numberIn(value("torque-sensor-lag"), -1.0, 1000.0 + 1e-9);
-        if (!ms || *ms < 0.0)
+        bool ok = false; // 0 and 1000 included (numberIn's interval is open)
+        const double ms = value("torque-sensor-lag").trimmed().toDouble(&ok);
+        if (!ok || !(ms >= 0.0 && ms <= 1000.0))
             return QCoreApplication::translate("learnid-cli",
                                                "--torque-sensor-lag: must be a number of ms from "
                                                "0 to 1000, got '%1'")
                 .arg(value("torque-sensor-lag"));
-        o->filter.torqueSensorLag = *ms / 1000.0;
+        o->filter.torqueSensorLag = ms / 1000.0;
     }
     const QString ws = isSet("workspace") ? value("workspace") : QDir::currentPath();
     if (isSet("export"))

@@ -76,15 +76,11 @@ std::shared_ptr<TrialGram> trialGram(const RobotModel &model, const TrialData &t
     std::vector<JointRows> a = midSampleJointRows(model, hat.q, hat.qd, hat.qdd, threads);
     const Eigen::Index rows = std::max(samples - 1, 0);
     // The torques the sensors were given (their lag undone), then the rotors they do not see.
-    Eigen::MatrixXd lagFree;
-    const Eigen::MatrixXd *measured = &record.tau;
-    if (settings.torqueSensorLag > 0.0) {
-        lagFree = withoutSensorLag(record.tau, record.samplePeriod, settings.torqueSensorLag);
-        measured = &lagFree;
-    }
-    Eigen::MatrixXd tauf = measured->leftCols(rows).transpose();
+    const Eigen::MatrixXd measured =
+        withoutSensorLag(record.tau, record.samplePeriod, settings.torqueSensorLag);
+    Eigen::MatrixXd tauf = measured.leftCols(rows).transpose();
     if (settings.jointTorqueSensor)
-        tauf += rotorTorque(filter, plan, record, *measured, hat.qdd, used);
+        tauf += rotorTorque(filter, plan, record, measured, hat.qdd, used);
     auto out = std::make_shared<TrialGram>();
     out->rho = settings.rho;
     out->jointTorqueSensor = settings.jointTorqueSensor;

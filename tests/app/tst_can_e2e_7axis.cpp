@@ -41,6 +41,15 @@ QJsonObject readJson(const QString &path)
     return QJsonDocument::fromJson(f.readAll()).object();
 }
 
+// A report's estimate ("phi" of "final" or of a trial) as numbers.
+QList<double> phiOf(const QJsonValue &estimate)
+{
+    QList<double> phi;
+    for (const QJsonValue v : estimate[QStringLiteral("phi")].toArray())
+        phi << v.toDouble();
+    return phi;
+}
+
 QByteArray readAll(const QString &path)
 {
     QFile f(path);
@@ -221,8 +230,7 @@ void TestCanE2e7Axis::sevenAxisSession_learnsAppliesWithReadBackAndStores()
         first = std::max(first, v.toDouble());
     for (const QJsonValue v : trials.last()[QStringLiteral("maxTrackingErrorDeg")].toArray())
         last = std::max(last, v.toDouble());
-    for (const QJsonValue v : report[QStringLiteral("final")][QStringLiteral("phi")].toArray())
-        m_canEstimate << v.toDouble();
+    m_canEstimate = phiOf(report[QStringLiteral("final")]);
     QVERIFY(m_canEstimate.size() > 3 * kJoints); // 57 base parameters and friction
     qInfo("7 axes over %s: %lld parameters, max tracking error %.3f -> %.3f deg (%lld ms)",
           qPrintable(test::canE2ePlugin()), qint64(m_canEstimate.size()), first, last, can.ms);
@@ -237,11 +245,8 @@ void TestCanE2e7Axis::sevenAxisSession_learnsAppliesWithReadBackAndStores()
     // one (TrialSeries.h); in the VM the third trial's error varies enough for that to happen.
     const int proposed = report.value(QStringLiteral("proposedEstimate")).toInt(-1);
     QVERIFY2(proposed >= 1 && proposed <= trials.size(), qPrintable(QString::number(proposed)));
-    QList<double> applied;
-    for (const QJsonValue v : proposed == trials.size()
-                                  ? report[QStringLiteral("final")][QStringLiteral("phi")].toArray()
-                                  : trials.at(proposed)[QStringLiteral("phi")].toArray())
-        applied << v.toDouble();
+    const QList<double> applied =
+        phiOf(proposed == trials.size() ? report[QStringLiteral("final")] : trials.at(proposed));
     QVERIFY2(proposed == trials.size() ||
                  can.err.contains(QStringLiteral("estimate %1 tracked best").arg(proposed)),
              qPrintable(can.err));
@@ -275,12 +280,9 @@ void TestCanE2e7Axis::recordedTrials_replayToTheSameEstimate()
              << QStringLiteral("logs/trial-%1.log").arg(k, 3, 10, QLatin1Char('0'));
     const Result replay = cli(args);
     QVERIFY2(replay.exitCode == 0, qPrintable(replay.err));
-    QList<double> replayed;
-    for (const QJsonValue v : readJson(m_dir.filePath(
-             QStringLiteral("replay.json")))[QStringLiteral("final")][QStringLiteral("phi")]
-                                  .toArray())
-        replayed << v.toDouble();
-    QCOMPARE(replayed, m_canEstimate);
+    QCOMPARE(
+        phiOf(readJson(m_dir.filePath(QStringLiteral("replay.json")))[QStringLiteral("final")]),
+        m_canEstimate);
 }
 
 void TestCanE2e7Axis::fault_endsWithClearErrorQuickly_data()
